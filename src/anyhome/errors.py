@@ -1,0 +1,32 @@
+"""One exception family. Every error a user can cause or act on is an AnyHomeError.
+
+The CLI prints ``str(error)`` on one line and exits non-zero; no traceback.
+"""
+
+
+class AnyHomeError(Exception):
+    """Base class of every error AnyHome raises on purpose."""
+
+
+class PlanError(AnyHomeError):
+    """The text could not be turned into a house plan (empty, unusable...)."""
+
+
+class FloorplanError(AnyHomeError):
+    """The room program could not be laid out as a floorplan within the retry budget."""
+
+
+class LayoutError(AnyHomeError):
+    """Objects could not be placed (only for hard failures; unplaceable items are dropped)."""
+
+
+class HouseFormatError(AnyHomeError):
+    """A house.json is not of this format or version, or is malformed."""
+
+
+class ExportError(AnyHomeError):
+    """An output file (GLB, SVG...) could not be written."""
+
+
+class EvalError(AnyHomeError):
+    """Evaluation could not run (missing house, bad expectations file...)."""

@@ -1,0 +1,32 @@
+"""Stage 1, plan: text -> HouseSpec. Planners are interchangeable (see ``Planner``)."""
+
+from __future__ import annotations
+
+from typing import Protocol
+
+import numpy as np
+
+from anyhome.errors import PlanError
+from anyhome.plan.spec import GroupSpec, HouseSpec, ItemSpec, RoomSpec
+
+__all__ = ["GroupSpec", "HouseSpec", "ItemSpec", "Planner", "RoomSpec", "get_planner", "plan_house"]
+
+
+class Planner(Protocol):
+    """Anything that turns text into a HouseSpec, deterministically for a given RNG state."""
+
+    name: str
+
+    def plan(self, text: str, rng: np.random.Generator) -> HouseSpec: ...
+
+
+def get_planner(name: str = "offline") -> Planner:
+    if name == "offline":
+        from anyhome.plan.offline import OfflinePlanner
+
+        return OfflinePlanner()
+    raise PlanError(f"unknown planner {name!r} (available: offline)")
+
+
+def plan_house(text: str, rng: np.random.Generator, planner: str = "offline") -> HouseSpec:
+    return get_planner(planner).plan(text, rng)

@@ -1,0 +1,171 @@
+"""HouseSpec: the amodal plan of a house, the output of every planner.
+
+A plan says *what* the house holds, never *where*: rooms with target areas, the bubble
+diagram (connections), and per room the furniture groups (an anchor and its members,
+each with a placement rule), ornaments, style and material words. The floorplan and
+layout stages turn it into geometry.
+
+Placement rules (the ten rules of the AnyHome paper) and their parameters
+------------------------------------------------------------------------
+Absolute rules (need no other object; usable by anchors, members and ornaments):
+
+``place_corner``     back against a wall and one side against the adjacent wall.
+``place_wall``       back against a wall, facing into the room.
+                     params: ``wall`` = ``"any"`` (default) | ``"longest"`` | ``"opposite_door"``
+``place_next_wall``  back against a wall, directly next to (side by side with) the
+                     previously placed wall object of the same group (a run of kitchen
+                     counters, cases "along the walls"); falls back to ``place_wall``.
+``place_center``     in the middle region of the room, clear of the walls.
+                     params: ``facing`` = ``"door"`` | ``"wall"`` | ``"any"`` (default)
+``place_next``       next to (side by side with, same facing) the previously placed copy
+                     of this item or, for the first one, like ``place_center``.
+
+Relative rules (``x`` is ``ItemSpec.target``: the name of another item of the same group,
+default the group's anchor; for ornaments, the name or category of any object already in
+the room, ``None`` meaning "any suitable one"):
+
+``place_beside``   left and/or right of x, backs aligned, same facing.
+                   params: ``side`` = ``"left"`` | ``"right"`` | ``"both"`` (default both,
+                   copies alternate sides)
+``place_around``   around x, each copy facing x (chairs around a table).
+                   params: ``sides`` = ``"all"`` (default) | ``"long"`` | ``"front"``
+``place_front``    in front of x (x's +y side), facing x.
+                   params: ``distance_m`` (gap, default 0.4), ``facing`` = ``"toward"``
+                   (default) | ``"same"`` | ``"away"``
+``place_top``      on x's top surface (z = top of x; support = x's id).
+``place_on_wall``  on the wall behind x, above it; with no target, on any free wall.
+                   params: ``elevation_m`` (bottom of the object above the floor)
+
+Group ``arrangement`` (how ``repeat`` copies of a group are laid out):
+``"free"`` each copy placed by the anchor's rule; ``"rows"`` anchors on a regular grid
+facing one wall ("desks in neat rows facing a whiteboard"); ``"along_walls"`` anchors in
+runs against the walls; ``"center"`` anchors around the room centre; ``"symmetric"``
+members mirrored about the anchor.
+
+Sizes are meters, ``size_m = (width, depth, height)``: width along the object's local x,
+depth front-to-back (local y, front faces +y), height along z.
+"""
+
+from __future__ import annotations
+
+from typing import Any, Literal
+
+from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
+
+Rule = Literal[
+    "place_corner",
+    "place_next_wall",
+    "place_wall",
+    "place_center",
+    "place_next",
+    "place_beside",
+    "place_around",
+    "place_front",
+    "place_top",
+    "place_on_wall",
+]
+RULES: tuple[str, ...] = Rule.__args__  # type: ignore[attr-defined]
+RELATIVE_RULES: frozenset[str] = frozenset(
+    {"place_beside", "place_around", "place_front", "place_top", "place_on_wall"}
+)
+Arrangement = Literal["free", "rows", "along_walls", "center", "symmetric"]
+
+MAX_ROOMS = 12
+"""Most rooms one plan may hold (the floorplan solver's supported range is 1..12)."""
+
+
+class _Model(BaseModel):
+    model_config = ConfigDict(extra="forbid", validate_assignment=True)
+
+
+class ItemSpec(_Model):
+    """One kind of object to place, possibly several copies of it."""
+
+    name: str = Field(min_length=1, description="open-vocabulary name, e.g. 'canopy bed'")
+    category: str = Field(min_length=1, description="asset family, e.g. 'bed'")
+    description: str = ""
+    size_m: tuple[float, float, float] = Field(description="(width, depth, height) in meters")
+    rule: Rule
+    target: str | None = None
+    params: dict[str, Any] = Field(default_factory=dict)
+    count: int = Field(default=1, ge=1, le=64)
+    material: str = ""
+
+    @field_validator("size_m")
+    @classmethod
+    def _positive_size(cls, v: tuple[float, float, float]) -> tuple[float, float, float]:
+        if not all(0.005 <= s <= 20.0 for s in v):
+            raise ValueError(f"every size must be within 0.005..20 m, got {v}")
+        return v
+
+
+class GroupSpec(_Model):
+    """A semantic asset group: an anchor and the members placed relative to it."""
+
+    name: str = Field(min_length=1)
+    anchor: ItemSpec
+    members: list[ItemSpec] = Field(default_factory=list)
+    arrangement: Arrangement = "free"
+    repeat: int = Field(default=1, ge=1, le=64)
+    priority: int = Field(default=0, description="lower is placed earlier")
+    required: bool = Field(default=False, description="the text asked for it explicitly")
+
+
+class RoomSpec(_Model):
+    """One planned room."""
+
+    id: str = Field(min_length=1)
+    name: str = Field(min_length=1)
+    type: str = Field(min_length=1, description="functional type, see anyhome.house.ROOM_TYPES")
+    area_m2: float = Field(gt=0.5, le=400.0)
+    height_m: float = Field(default=2.7, ge=2.0, le=12.0)
+    style: str = ""
+    materials: dict[str, str] = Field(default_factory=dict)
+    groups: list[GroupSpec] = Field(default_factory=list)
+    ornaments: list[ItemSpec] = Field(default_factory=list)
+
+    @model_validator(mode="after")
+    def _materials_complete(self) -> RoomSpec:
+        for key in ("floor", "walls", "ceiling"):
+            self.materials.setdefault(key, "")
+        return self
+
+
+class HouseSpec(_Model):
+    """The whole plan: rooms, bubble diagram, appearance."""
+
+    prompt: str
+    building: str = Field(default="home", description="kind of building: home, office, cafe...")
+    style: str = ""
+    palette: list[str] = Field(default_factory=list)
+    rooms: list[RoomSpec] = Field(min_length=1, max_length=MAX_ROOMS)
+    connections: list[tuple[str, str]] = Field(
+        default_factory=list,
+        description="bubble-diagram edges; (room_id, 'outside') marks the entrance room",
+    )
+    warnings: list[str] = Field(default_factory=list)
+
+    @model_validator(mode="after")
+    def _check_graph(self) -> HouseSpec:
+        ids = [r.id for r in self.rooms]
+        if len(set(ids)) != len(ids):
+            raise ValueError(f"room ids must be unique: {ids}")
+        known = set(ids) | {"outside"}
+        for a, b in self.connections:
+            if a not in known or b not in known or a == b:
+                raise ValueError(f"bad connection {a!r}-{b!r}")
+            if a == "outside":
+                raise ValueError("write the entrance as (room_id, 'outside')")
+        if not any(b == "outside" for _, b in self.connections):
+            raise ValueError("the plan has no entrance: add (room_id, 'outside')")
+        return self
+
+    @property
+    def entrance_room(self) -> str:
+        return next(a for a, b in self.connections if b == "outside")
+
+    def room(self, room_id: str) -> RoomSpec:
+        for r in self.rooms:
+            if r.id == room_id:
+                return r
+        raise KeyError(room_id)
