@@ -25,6 +25,8 @@ AGENT_RADIUS_M = 0.25
 """Radius the free space is eroded by in the navigability check."""
 NAV_IGNORE_HEIGHT_M = 0.03
 """Objects lower than this (and rugs) do not block navigation."""
+WALL_INSET_CELLS = 0.75
+"""Room interiors are shrunk by this many cells so a shared wall is at least one cell thick."""
 NAV_IGNORE_CATEGORIES = frozenset({"rug", "carpet", "mat", "yoga_mat", "play_mat"})
 """Flat floor coverings that an agent walks over."""
 
@@ -182,7 +184,7 @@ def navigability(
     room_ids = list(polys)
     half = cell_m / 2
     for k, rid in enumerate(room_ids):
-        inner = polys[rid].buffer(-half * 0.999, join_style="mitre")
+        inner = polys[rid].buffer(-WALL_INSET_CELLS * cell_m, join_style="mitre")
         if inner.is_empty:
             continue
         mask = _raster(inner, gx, gy, xs, ys)

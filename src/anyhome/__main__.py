@@ -1,0 +1,5 @@
+import sys
+
+from anyhome.cli import main
+
+sys.exit(main())

@@ -1,0 +1,199 @@
+"""The ``anyhome`` command line. User-facing output lives here and only here."""
+
+from __future__ import annotations
+
+import argparse
+import json
+import logging
+import sys
+import time
+from collections import Counter
+from pathlib import Path
+
+from shapely.geometry import Polygon
+
+from anyhome import __version__
+from anyhome.errors import AnyHomeError
+
+STAGE_LABELS = {
+    "plan": "planning rooms and furniture",
+    "floorplan": "solving the floorplan",
+    "layout": "placing objects",
+    "refine": "refining the layout",
+    "assets": "choosing assets",
+}
+
+
+def _err(msg: str) -> None:
+    print(msg, file=sys.stderr)
+
+
+class _StageProgress:
+    """Prints one line per stage on stderr: ``[2/5] solving the floorplan ... 0.04 s``."""
+
+    def __init__(self, enabled: bool) -> None:
+        self.enabled = enabled
+        self.order = list(STAGE_LABELS)
+
+    def __call__(self, stage: str, event: str, seconds: float) -> None:
+        if not self.enabled:
+            return
+        k = self.order.index(stage) + 1 if stage in self.order else 0
+        label = STAGE_LABELS.get(stage, stage)
+        if event == "start":
+            print(f"[{k}/{len(self.order)}] {label} ...", end="", file=sys.stderr, flush=True)
+        else:
+            print(f" {seconds:.2f} s", file=sys.stderr, flush=True)
+
+
+# ------------------------------------------------------------------ generate
+def cmd_generate(args: argparse.Namespace) -> int:
+    from anyhome.pipeline import generate, write_outputs
+
+    t0 = time.perf_counter()
+    house = generate(args.text, seed=args.seed, planner=args.planner,
+                     progress=_StageProgress(not args.quiet))
+    timings = dict(house.timings_s)
+    out = Path(args.out)
+    if not args.quiet:
+        print("[out] writing files ...", end="", file=sys.stderr, flush=True)
+    t1 = time.perf_counter()
+    files = write_outputs(house, out, glb=not args.no_glb, svg=not args.no_svg, timings=timings)
+    if not args.quiet:
+        print(f" {time.perf_counter() - t1:.2f} s", file=sys.stderr)
+    total = time.perf_counter() - t0
+    if args.json:
+        print(json.dumps({
+            "out": str(out), "files": [str(f) for f in files], "rooms": len(house.rooms),
+            "objects": len(house.objects), "dropped": len(house.dropped),
+            "warnings": house.warnings, "timings_s": timings, "total_s": total,
+        }))
+    else:
+        _print_summary(house, files, timings, total)
+    return 0
+
+
+def _print_summary(house, files, timings: dict[str, float], total: float) -> None:
+    per_room = Counter(o.room for o in house.objects)
+    print(f"House: {len(house.rooms)} rooms, {len(house.doors)} doors, "
+          f"{len(house.windows)} windows, {len(house.objects)} objects  (style: {house.style})")
+    for room in house.rooms:
+        area = Polygon(room.polygon).area
+        print(f"  {room.id:<14} {room.name:<22} {area:6.1f} m2  {per_room[room.id]:3d} objects")
+    if house.dropped:
+        print(f"Dropped {len(house.dropped)} item(s) that did not fit:")
+        for d in house.dropped[:10]:
+            print(f"  {d.room}: {d.name} ({d.reason})")
+        if len(house.dropped) > 10:
+            print(f"  ... and {len(house.dropped) - 10} more (see house.json 'dropped')")
+    for w in house.warnings:
+        print(f"Warning: {w}")
+    times = "  ".join(f"{k} {v:.2f}s" for k, v in timings.items())
+    print(f"Time: {total:.2f} s  ({times})")
+    print("Files: " + "  ".join(str(f) for f in files))
+
+
+# ---------------------------------------------------------------------- eval
+def cmd_eval(args: argparse.Namespace) -> int:
+    from anyhome.evaluate import evaluate_house, expectation_for_prompt, load_expectations
+    from anyhome.house import load
+
+    house = load(args.path)
+    expect = None
+    if args.expect:
+        if args.id:
+            table = load_expectations(args.expect)
+            if args.id not in table:
+                raise AnyHomeError(f"no entry with id {args.id!r} in {args.expect}")
+            expect = table[args.id]
+        else:
+            expect = expectation_for_prompt(args.expect, house.prompt)
+            if expect is None and not args.quiet:
+                _err(f"note: no entry in {args.expect} for this house's prompt; coverage skipped")
+    report = evaluate_house(house, expect)
+    if args.json:
+        print(json.dumps(report.to_dict(), indent=1))
+    else:
+        for line in report.summary_lines():
+            print(line)
+    if args.strict and not report.ok:
+        return 1
+    return 0
+
+
+# -------------------------------------------------------------------- export
+def cmd_export(args: argparse.Namespace) -> int:
+    from anyhome.export import write_glb, write_svg
+    from anyhome.house import load
+
+    house = load(args.path)
+    src = Path(args.path)
+    out = Path(args.out) if args.out else (src if src.is_dir() else src.parent)
+    out.mkdir(parents=True, exist_ok=True)
+    written = []
+    for fmt in args.format.split(","):
+        fmt = fmt.strip().lower()
+        if fmt == "glb":
+            written.append(write_glb(house, out / "house.glb"))
+        elif fmt == "svg":
+            written.append(write_svg(house, out / "floorplan.svg"))
+        else:
+            raise AnyHomeError(f"unknown export format {fmt!r} (available: glb, svg)")
+    print("Files: " + "  ".join(str(p) for p in written))
+    return 0
+
+
+# ---------------------------------------------------------------------- main
+def build_parser() -> argparse.ArgumentParser:
+    p = argparse.ArgumentParser(
+        prog="anyhome",
+        description="Free-form text to a structured, furnished 3D house, offline.",
+    )
+    p.add_argument("--version", action="version", version=f"anyhome {__version__}")
+    p.add_argument("-v", "--verbose", action="store_true", help="log debug messages")
+    sub = p.add_subparsers(dest="command", required=True)
+
+    g = sub.add_parser("generate", help="generate a house from text")
+    g.add_argument("text", help="the description, in quotes")
+    g.add_argument("--seed", type=int, default=0, help="random seed (default 0)")
+    g.add_argument("--out", default="out/house", help="output folder (default out/house)")
+    g.add_argument("--planner", default="offline", help="planner: offline (default)")
+    g.add_argument("--no-glb", action="store_true", help="skip house.glb")
+    g.add_argument("--no-svg", action="store_true", help="skip floorplan.svg")
+    g.add_argument("-q", "--quiet", action="store_true", help="no progress lines")
+    g.add_argument("--json", action="store_true", help="print the summary as JSON")
+    g.set_defaults(func=cmd_generate)
+
+    e = sub.add_parser("eval", help="check a house against the validity rules (and a prompt)")
+    e.add_argument("path", help="house folder or house.json")
+    e.add_argument("--expect", help="expectations file (JSON lines like shared/eval/prompts.jsonl)")
+    e.add_argument("--id", help="use this entry of --expect instead of matching the prompt")
+    e.add_argument("--strict", action="store_true", help="exit 1 on any violation")
+    e.add_argument("--json", action="store_true", help="print the full report as JSON")
+    e.add_argument("-q", "--quiet", action="store_true")
+    e.set_defaults(func=cmd_eval)
+
+    x = sub.add_parser("export", help="re-derive house.glb / floorplan.svg from house.json")
+    x.add_argument("path", help="house folder or house.json")
+    x.add_argument("--format", default="glb,svg", help="comma list: glb,svg (default both)")
+    x.add_argument("--out", help="output folder (default: the house's folder)")
+    x.set_defaults(func=cmd_export)
+    return p
+
+
+def main(argv: list[str] | None = None) -> int:
+    args = build_parser().parse_args(argv)
+    logging.basicConfig(level=logging.DEBUG if args.verbose else logging.WARNING,
+                        format="%(levelname)s %(name)s: %(message)s")
+    try:
+        return args.func(args)
+    except AnyHomeError as e:
+        _err(f"error: {e}")
+        return 2
+    except KeyboardInterrupt:
+        _err("interrupted")
+        return 130
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,184 @@
+"""Rule 5 of SCENE_FORMAT.md (floorplan) and the project rule "windows".
+
+Rule 5
+    Every room polygon is a valid, counter-clockwise shapely polygon; no two rooms
+    overlap by more than ``ROOM_OVERLAP_M2``; a door between two rooms lies on both
+    boundaries (:func:`geometry.on_boundary`), an outside door on its room's boundary and
+    on no other room's; the house has at least one entrance (a door to ``"outside"``);
+    every room is reachable from the outside through the door graph; every planned
+    connection has a door (or opening) between the same two rooms.
+Windows
+    Every window lies on its room's exterior boundary (on the room's boundary and on no
+    other room's), and every habitable room (:func:`house.is_habitable`) has one.
+"""
+
+from __future__ import annotations
+
+from collections import deque
+from collections.abc import Sequence
+
+import numpy as np
+from shapely.geometry import LineString, Polygon
+
+from anyhome import geometry
+from anyhome.evaluate.report import Violation
+from anyhome.house import House, is_habitable
+
+TOL = geometry.TOLERANCE_M
+OUTSIDE = "outside"
+ROOM_OVERLAP_M2 = 1e-4
+"""Intersection area above which two rooms overlap."""
+SHARED_WALL_MIN_M = 2 * TOL
+"""A segment shares more than this length with another room's boundary -> not exterior."""
+
+
+def check_floorplan(house: House) -> list[Violation]:
+    polys = {r.id: Polygon(r.polygon) for r in house.rooms}
+    out = _check_polygons(house, polys)
+    out += _check_overlaps(house, polys)
+    out += _check_doors(house, polys)
+    out += _check_reachability(house)
+    out += _check_connections(house)
+    return out
+
+
+def connections_realized(house: House) -> float:
+    """Fraction of planned connections that have a door; 1.0 when none is planned."""
+    if not house.connections:
+        return 1.0
+    pairs = {frozenset(d.rooms) for d in house.doors}
+    return sum(frozenset(c) in pairs for c in house.connections) / len(house.connections)
+
+
+def on_exterior(polys: dict[str, Polygon], room_id: str, segment: Sequence[Sequence[float]]) -> bool:
+    """The segment lies on ``room_id``'s boundary and runs along no other room's wall."""
+    if not geometry.on_boundary(polys[room_id], segment):
+        return False
+    line = LineString(segment)
+    for rid, poly in polys.items():
+        if rid == room_id:
+            continue
+        band = poly.exterior.buffer(TOL, join_style="mitre")
+        if line.intersects(band) and line.intersection(band).length > SHARED_WALL_MIN_M:
+            return False
+    return True
+
+
+def _check_polygons(house: House, polys: dict[str, Polygon]) -> list[Violation]:
+    out = []
+    for room in house.rooms:
+        poly = polys[room.id]
+        if len(room.polygon) < 3 or not poly.is_valid or poly.area <= 0:
+            out.append(Violation(5, "invalid_polygon",
+                                 f"room {room.id} has an invalid or empty polygon", (room.id,)))
+        elif not poly.exterior.is_ccw:
+            out.append(Violation(5, "polygon_not_ccw",
+                                 f"room {room.id} polygon is not counter-clockwise", (room.id,)))
+    return out
+
+
+def _check_overlaps(house: House, polys: dict[str, Polygon]) -> list[Violation]:
+    out = []
+    rooms = house.rooms
+    for i, a in enumerate(rooms):
+        for b in rooms[i + 1:]:
+            pa, pb = polys[a.id], polys[b.id]
+            if not pa.is_valid or not pb.is_valid:
+                continue
+            area = pa.intersection(pb).area
+            if area > ROOM_OVERLAP_M2:
+                out.append(Violation(5, "room_overlap",
+                                     f"rooms {a.id} and {b.id} overlap by {area:.2f} m2",
+                                     (a.id, b.id)))
+    return out
+
+
+def _check_doors(house: House, polys: dict[str, Polygon]) -> list[Violation]:
+    out = []
+    entrances = 0
+    for door in house.doors:
+        a, b = door.rooms
+        unknown = [r for r in (a, b) if r != OUTSIDE and r not in polys]
+        if unknown or a == b or (a == OUTSIDE and b == OUTSIDE):
+            out.append(Violation(5, "bad_door_rooms",
+                                 f"door {door.id} joins {a!r} and {b!r}", (door.id,)))
+            continue
+        if OUTSIDE in (a, b):
+            entrances += 1
+            room = b if a == OUTSIDE else a
+            ok = on_exterior(polys, room, door.segment)
+        else:
+            ok = geometry.on_boundary(polys[a], door.segment) and geometry.on_boundary(
+                polys[b], door.segment)
+        if not ok:
+            where = "the exterior wall of " + (b if a == OUTSIDE else a) if OUTSIDE in (a, b) \
+                else f"the wall shared by {a} and {b}"
+            out.append(Violation(5, "door_off_boundary", f"door {door.id} is not on {where}",
+                                 (door.id,)))
+    if house.rooms and entrances == 0:
+        out.append(Violation(5, "no_entrance", "the house has no door to the outside", ()))
+    return out
+
+
+def reachable_rooms(house: House) -> set[str]:
+    """Rooms reachable from the outside through the door graph."""
+    adj: dict[str, set[str]] = {}
+    for door in house.doors:
+        a, b = door.rooms
+        adj.setdefault(a, set()).add(b)
+        adj.setdefault(b, set()).add(a)
+    seen = {OUTSIDE}
+    todo = deque([OUTSIDE])
+    while todo:
+        for nxt in adj.get(todo.popleft(), ()):
+            if nxt not in seen:
+                seen.add(nxt)
+                todo.append(nxt)
+    return seen - {OUTSIDE}
+
+
+def _check_reachability(house: House) -> list[Violation]:
+    reached = reachable_rooms(house)
+    return [
+        Violation(5, "disconnected_room",
+                  f"room {r.id} cannot be reached from the entrance through doors", (r.id,))
+        for r in house.rooms if r.id not in reached
+    ]
+
+
+def _check_connections(house: House) -> list[Violation]:
+    pairs = {frozenset(d.rooms) for d in house.doors}
+    return [
+        Violation(5, "connection_missing",
+                  f"planned connection {a} - {b} has no door", (a, b))
+        for a, b in house.connections if frozenset((a, b)) not in pairs
+    ]
+
+
+# --------------------------------------------------------------- windows
+def check_windows(house: House) -> list[Violation]:
+    polys = {r.id: Polygon(r.polygon) for r in house.rooms}
+    out = []
+    lit: set[str] = set()
+    for win in house.windows:
+        if win.room not in polys:
+            out.append(Violation("windows", "bad_window_room",
+                                 f"window {win.id} lights unknown room {win.room!r}", (win.id,)))
+            continue
+        if _degenerate(win.segment) or not on_exterior(polys, win.room, win.segment):
+            out.append(Violation("windows", "window_off_boundary",
+                                 f"window {win.id} is not on an exterior wall of room {win.room}",
+                                 (win.id, win.room)))
+            continue
+        lit.add(win.room)
+    for room in house.rooms:
+        if is_habitable(room.type) and room.id not in lit:
+            out.append(Violation("windows", "habitable_without_window",
+                                 f"habitable room {room.id} ({room.name}) has no window",
+                                 (room.id,)))
+    return out
+
+
+def _degenerate(segment: Sequence[Sequence[float]]) -> bool:
+    (x1, y1), (x2, y2) = segment
+    return float(np.hypot(x2 - x1, y2 - y1)) <= TOL
