@@ -57,7 +57,9 @@ def main(argv: list[str] | None = None) -> int:
             per_seed = []
             for seed in seeds:
                 r = run_one(entry["prompt"], seed, Path(td) / pid)
+                te = time.perf_counter()
                 rep = evaluate_house(r["house"], entry.get("expect"))
+                stage_times.setdefault("eval", []).append(time.perf_counter() - te)
                 n_viol = len(rep.violations)
                 violations_total += n_viol
                 cov = rep.coverage.score if rep.coverage is not None else float("nan")

@@ -21,6 +21,7 @@ import numpy as np
 from shapely.geometry import LineString, Polygon
 
 from anyhome import geometry
+from anyhome.evaluate.polygons import is_usable, room_polygon
 from anyhome.evaluate.report import Violation
 from anyhome.house import House, is_habitable
 
@@ -33,7 +34,7 @@ SHARED_WALL_MIN_M = 2 * TOL
 
 
 def check_floorplan(house: House) -> list[Violation]:
-    polys = {r.id: Polygon(r.polygon) for r in house.rooms}
+    polys = {r.id: room_polygon(r.polygon) for r in house.rooms}
     out = _check_polygons(house, polys)
     out += _check_overlaps(house, polys)
     out += _check_doors(house, polys)
@@ -68,7 +69,7 @@ def _check_polygons(house: House, polys: dict[str, Polygon]) -> list[Violation]:
     out = []
     for room in house.rooms:
         poly = polys[room.id]
-        if len(room.polygon) < 3 or not poly.is_valid or poly.area <= 0:
+        if not is_usable(poly):
             out.append(Violation(5, "invalid_polygon",
                                  f"room {room.id} has an invalid or empty polygon", (room.id,)))
         elif not poly.exterior.is_ccw:
@@ -83,7 +84,7 @@ def _check_overlaps(house: House, polys: dict[str, Polygon]) -> list[Violation]:
     for i, a in enumerate(rooms):
         for b in rooms[i + 1:]:
             pa, pb = polys[a.id], polys[b.id]
-            if not pa.is_valid or not pb.is_valid:
+            if not is_usable(pa) or not is_usable(pb):
                 continue
             area = pa.intersection(pb).area
             if area > ROOM_OVERLAP_M2:
@@ -106,10 +107,11 @@ def _check_doors(house: House, polys: dict[str, Polygon]) -> list[Violation]:
         if OUTSIDE in (a, b):
             entrances += 1
             room = b if a == OUTSIDE else a
-            ok = on_exterior(polys, room, door.segment)
+            ok = not _degenerate(door.segment) and on_exterior(polys, room, door.segment)
         else:
-            ok = geometry.on_boundary(polys[a], door.segment) and geometry.on_boundary(
-                polys[b], door.segment)
+            ok = (not _degenerate(door.segment)
+                  and geometry.on_boundary(polys[a], door.segment)
+                  and geometry.on_boundary(polys[b], door.segment))
         if not ok:
             where = "the exterior wall of " + (b if a == OUTSIDE else a) if OUTSIDE in (a, b) \
                 else f"the wall shared by {a} and {b}"
@@ -157,7 +159,7 @@ def _check_connections(house: House) -> list[Violation]:
 
 # --------------------------------------------------------------- windows
 def check_windows(house: House) -> list[Violation]:
-    polys = {r.id: Polygon(r.polygon) for r in house.rooms}
+    polys = {r.id: room_polygon(r.polygon) for r in house.rooms}
     out = []
     lit: set[str] = set()
     for win in house.windows:

@@ -13,8 +13,8 @@ Rule 2 (no collisions)
     footprints and a z-interval prefilter. The supporter exception needs no special case:
     an object resting on its supporter's top has no vertical overlap.
 Rule 3 (grounded)
-    ``floor`` -> ``z == 0``; ``wall`` -> the footprint's back edge lies on an edge of the
-    room polygon and, projected on that wall, the object's ``[t0, t1] x [z, z + h]``
+    ``floor`` -> ``z == 0``; ``wall`` -> the footprint's back edge lies on a wall of the
+    room (:func:`geometry.on_boundary` of the room polygon) and, projected on that wall, the object's ``[t0, t1] x [z, z + h]``
     rectangle overlaps no door (``[0, height]``) or window (``[sill, sill + height]``)
     opening on that wall by more than 1 cm in both directions; ``ceiling`` ->
     ``z + h == room height``; an object id -> that object exists; anything else floats.
@@ -32,6 +32,7 @@ import shapely
 from shapely.geometry import Polygon
 
 from anyhome import geometry
+from anyhome.evaluate.polygons import is_usable, room_polygon
 from anyhome.evaluate.report import Violation
 from anyhome.house import House, HouseObject, Room
 
@@ -63,7 +64,7 @@ class ObjectIndex:
             by_id={o.id: o for o in objects},
             fp_by_id={o.id: fp for o, fp in zip(objects, footprints)},
             rooms={r.id: r for r in house.rooms},
-            room_polys={r.id: Polygon(r.polygon) for r in house.rooms},
+            room_polys={r.id: room_polygon(r.polygon) for r in house.rooms},
         )
 
 
@@ -75,8 +76,9 @@ def check_in_bounds(index: ObjectIndex) -> list[Violation]:
             out.append(Violation(1, "unknown_room", f"{obj.id}: room {obj.room!r} does not exist",
                                  (obj.id, obj.room)))
             continue
+        room_ok = is_usable(index.room_polys[obj.room])  # else rule 5 reports the room
         if obj.support in SURFACE_SUPPORTS:
-            if not geometry.inside(index.room_polys[obj.room], fp):
+            if room_ok and not geometry.inside(index.room_polys[obj.room], fp):
                 out.append(Violation(1, "out_of_bounds",
                                      f"{obj.id} ({obj.name}) sticks out of room {obj.room}",
                                      (obj.id, obj.room)))
@@ -86,7 +88,7 @@ def check_in_bounds(index: ObjectIndex) -> list[Violation]:
             out.append(Violation(1, "missing_supporter",
                                  f"{obj.id} ({obj.name}) stands on {obj.support!r}, "
                                  "which is no other object", (obj.id,)))
-            if not geometry.inside(index.room_polys[obj.room], fp):
+            if room_ok and not geometry.inside(index.room_polys[obj.room], fp):
                 out.append(Violation(1, "out_of_bounds",
                                      f"{obj.id} ({obj.name}) sticks out of room {obj.room}",
                                      (obj.id, obj.room)))
@@ -162,14 +164,16 @@ def check_grounded(index: ObjectIndex, house: House) -> list[Violation]:
 
 
 def _check_wall_object(obj: HouseObject, room: Room, house: House) -> list[Violation]:
+    """Back edge on the room boundary (:func:`geometry.on_boundary`, so a wall split by a
+    collinear vertex still counts as one wall), then the openings along that wall's line."""
     back = geometry.back_edge(obj.position, obj.size, obj.yaw)
-    for a, b in geometry.polygon_edges(room.polygon):
-        length = float(np.linalg.norm(b - a))
-        if length <= TOL:
-            continue
-        t0, t1, dist = geometry.wall_interval((a, b), back)
-        if dist <= TOL and t0 >= -TOL and t1 <= length + TOL:
-            return _covered_openings(obj, (a, b), t0, t1, house)
+    if len(room.polygon) >= 3 and geometry.on_boundary(Polygon(room.polygon), back):
+        for a, b in geometry.polygon_edges(room.polygon):
+            if float(np.linalg.norm(b - a)) <= TOL:
+                continue
+            t0, t1, dist = geometry.wall_interval((a, b), back)
+            if dist <= TOL:
+                return _covered_openings(obj, (a, b), t0, t1, house)
     return [Violation(3, "wall_object_off_wall",
                       f"{obj.id} ({obj.name}) is a wall object whose back is on no wall of "
                       f"room {room.id}", (obj.id, room.id))]

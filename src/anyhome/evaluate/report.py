@@ -40,7 +40,8 @@ class Violation:
         return {"rule": self.rule, "code": self.code, "message": self.message, "ids": list(self.ids)}
 
     def __str__(self) -> str:
-        return f"[rule {self.rule}: {self.code}] {self.message}"
+        rule = f"rule {self.rule}" if isinstance(self.rule, int) else self.rule
+        return f"[{rule}: {self.code}] {self.message}"
 
 
 @dataclass(frozen=True)

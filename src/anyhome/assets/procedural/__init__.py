@@ -1,0 +1,7 @@
+"""Procedural asset factories, one module per group of related families.
+
+Each module registers its families with :mod:`anyhome.assets.registry` on import;
+the registry imports the modules named in ``MODULES`` the first time it is asked.
+"""
+
+MODULES = ("beds", "decor", "kitchen_bath", "misc", "seating", "storage", "tables")

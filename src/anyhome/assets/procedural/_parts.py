@@ -1,0 +1,359 @@
+"""Shared pieces of the procedural factories: the parameter record, a mesh builder
+made of coloured primitives, and style helpers.
+
+A factory is a pair ``sample(rng, size, style) -> Params`` and ``build(params) ->
+trimesh.Trimesh``. ``build`` uses nothing but its parameters (randomness needed at
+build time comes from ``params.seed``), so a mesh can be rebuilt from the record that
+``Params.to_record`` writes.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from functools import lru_cache
+from typing import Any
+
+import numpy as np
+import trimesh
+
+from anyhome.assets.colors import mix, to_rgba
+
+Size = tuple[float, float, float]
+KNOB_DECIMALS = 4
+"""Knobs are rounded like house.json floats so a saved record rebuilds the same mesh."""
+CYL_SECTIONS = 16
+"""Sections of a cylinder or cone primitive."""
+
+ANTIQUE_WORDS = frozenset(
+    "antique victorian gothic baroque classic classical traditional rococo colonial "
+    "vintage ornate regency georgian french".split()
+)
+MODERN_WORDS = frozenset(
+    "modern scandinavian nordic minimal minimalist minimalistic contemporary mid century "
+    "midcentury japandi sleek".split()
+)
+INDUSTRIAL_WORDS = frozenset("industrial loft steampunk futuristic cyberpunk hightech tech".split())
+RUSTIC_WORDS = frozenset("rustic farmhouse cottage country cabin log medieval".split())
+
+WOODS = {
+    "light": ["#d8bf98", "#c9a77c", "#e0cfae", "#bf9b6e"],
+    "mid": ["#a0714a", "#8f6642", "#b08058", "#9a6a3c"],
+    "dark": ["#5c3b26", "#4a2f20", "#6b4330", "#3e2a1e"],
+}
+FABRICS = ["#b9b2a6", "#8c8f94", "#5f6b7a", "#a6896b", "#7d8c74", "#c9c1b4", "#6d5a6e", "#3f4a5a"]
+TEXTILE_WHITE = "#eeebe4"
+METAL = "#9a9da3"
+DARK_METAL = "#3c3d40"
+BLACK = "#1f1f22"
+GLASS = "#b8d4de"
+
+
+@dataclass(frozen=True)
+class Params:
+    """Parameters of one procedural asset; enough to rebuild its mesh.
+
+    ``size`` is the box (width x, depth y, height z) in meters; colours are hex strings;
+    ``knobs`` are the family's own parameters as sorted ``(name, value)`` pairs and read
+    as attributes (``params.leg_style``).
+    """
+
+    family: str
+    size: Size
+    style: str = ""
+    primary: str = "#a0714a"
+    secondary: str = TEXTILE_WHITE
+    accent: str = "#7d8c74"
+    seed: int = 0
+    knobs: tuple[tuple[str, Any], ...] = field(default=())
+
+    def __getattr__(self, name: str) -> Any:
+        if name.startswith("__") or name == "knobs":
+            raise AttributeError(name)
+        for k, v in object.__getattribute__(self, "knobs"):
+            if k == name:
+                return v
+        raise AttributeError(f"{self.family} params have no knob {name!r}")
+
+    def to_record(self) -> dict[str, Any]:
+        return {
+            "size": [float(s) for s in self.size],
+            "style": self.style,
+            "primary": self.primary,
+            "secondary": self.secondary,
+            "accent": self.accent,
+            "seed": int(self.seed),
+            "knobs": {k: v for k, v in self.knobs},
+        }
+
+    @classmethod
+    def from_record(cls, family: str, record: dict[str, Any]) -> Params:
+        return cls(
+            family=family,
+            size=tuple(float(s) for s in record["size"]),
+            style=str(record.get("style", "")),
+            primary=str(record.get("primary", "#a0714a")),
+            secondary=str(record.get("secondary", TEXTILE_WHITE)),
+            accent=str(record.get("accent", "#7d8c74")),
+            seed=int(record.get("seed", 0)),
+            knobs=_knobs(record.get("knobs", {})),
+        )
+
+
+def _clean(v: Any) -> Any:
+    if isinstance(v, (bool, np.bool_)):
+        return bool(v)
+    if isinstance(v, (int, np.integer)):
+        return int(v)
+    if isinstance(v, (float, np.floating)):
+        r = round(float(v), KNOB_DECIMALS)
+        return 0.0 if r == 0 else r
+    return str(v)
+
+
+def _knobs(knobs: dict[str, Any]) -> tuple[tuple[str, Any], ...]:
+    return tuple(sorted((str(k), _clean(v)) for k, v in knobs.items()))
+
+
+def make_params(
+    family: str,
+    rng: np.random.Generator,
+    size: Size,
+    style: str,
+    primary: list[str] | str,
+    secondary: list[str] | str = TEXTILE_WHITE,
+    accent: list[str] | str = "#7d8c74",
+    **knobs: Any,
+) -> Params:
+    """Assemble a Params, picking each colour from its candidate list with ``rng``."""
+
+    def pick(c: list[str] | str) -> str:
+        return c if isinstance(c, str) else str(c[int(rng.integers(len(c)))])
+
+    size = tuple(float(max(s, 1e-3)) for s in size)
+    return Params(
+        family=family,
+        size=size,  # type: ignore[arg-type]
+        style=style,
+        primary=pick(primary),
+        secondary=pick(secondary),
+        accent=pick(accent),
+        seed=int(rng.integers(2**31 - 1)),
+        knobs=_knobs(knobs),
+    )
+
+
+# ----------------------------------------------------------------- style helpers
+def style_words(style: str) -> set[str]:
+    return set(style.lower().replace("-", " ").split())
+
+
+def leg_style(rng: np.random.Generator, style: str) -> str:
+    """Leg shape for a style: turned (antique), tapered (modern), metal (industrial)."""
+    w = style_words(style)
+    if w & ANTIQUE_WORDS:
+        return "turned"
+    if w & MODERN_WORDS:
+        return "tapered"
+    if w & INDUSTRIAL_WORDS:
+        return "metal"
+    if w & RUSTIC_WORDS:
+        return "straight"
+    return str(rng.choice(["straight", "tapered", "straight", "turned", "metal"]))
+
+
+def wood_tones(style: str) -> list[str]:
+    """Candidate wood colours for a style."""
+    w = style_words(style)
+    if w & MODERN_WORDS:
+        return WOODS["light"] + ["#f0ede6", "#2b2b2b"]
+    if w & ANTIQUE_WORDS:
+        return WOODS["dark"] + WOODS["mid"][:1]
+    if w & INDUSTRIAL_WORDS:
+        return WOODS["dark"] + ["#2b2b2b", "#6b4330"]
+    if w & RUSTIC_WORDS:
+        return WOODS["mid"] + WOODS["dark"][:2]
+    return WOODS["light"] + WOODS["mid"] + WOODS["dark"]
+
+
+def fabric_tones(style: str) -> list[str]:
+    w = style_words(style)
+    if w & MODERN_WORDS:
+        return ["#c9c1b4", "#8c8f94", "#e3ddd2", "#5f6b7a", "#a7a195"]
+    if w & ANTIQUE_WORDS:
+        return ["#6e2233", "#2f4a3a", "#5a3a5e", "#7a5a30", "#3a3f66"]
+    return FABRICS
+
+
+def darker(c: str, t: float = 0.35) -> str:
+    return mix(c, "#000000", t)
+
+
+def lighter(c: str, t: float = 0.35) -> str:
+    return mix(c, "#ffffff", t)
+
+
+# ----------------------------------------------------------------- primitives
+@lru_cache(maxsize=None)
+def _unit_box() -> tuple[np.ndarray, np.ndarray]:
+    m = trimesh.creation.box(extents=(1.0, 1.0, 1.0))
+    return np.asarray(m.vertices) + 0.5, np.asarray(m.faces)  # [0, 1]^3
+
+
+@lru_cache(maxsize=None)
+def _unit_cylinder(sections: int) -> tuple[np.ndarray, np.ndarray]:
+    m = trimesh.creation.cylinder(radius=1.0, height=1.0, sections=sections)
+    v = np.asarray(m.vertices).copy()
+    v[:, 2] += 0.5  # z in [0, 1]
+    return v, np.asarray(m.faces)
+
+
+@lru_cache(maxsize=None)
+def _unit_sphere(subdivisions: int) -> tuple[np.ndarray, np.ndarray]:
+    m = trimesh.creation.icosphere(subdivisions=subdivisions, radius=1.0)
+    return np.asarray(m.vertices), np.asarray(m.faces)
+
+
+def rot_x(angle: float) -> np.ndarray:
+    return trimesh.transformations.rotation_matrix(angle, [1, 0, 0])
+
+
+def rot_y(angle: float) -> np.ndarray:
+    return trimesh.transformations.rotation_matrix(angle, [0, 1, 0])
+
+
+def rot_z(angle: float) -> np.ndarray:
+    return trimesh.transformations.rotation_matrix(angle, [0, 0, 1])
+
+
+def about(matrix: np.ndarray, point) -> np.ndarray:
+    """``matrix`` applied about ``point`` instead of the origin."""
+    t = np.eye(4)
+    t[:3, 3] = point
+    ti = np.eye(4)
+    ti[:3, 3] = -np.asarray(point, dtype=float)
+    return t @ matrix @ ti
+
+
+class Builder:
+    """Accumulates coloured primitives and emits one vertex-coloured mesh fitted to a box."""
+
+    def __init__(self) -> None:
+        self._v: list[np.ndarray] = []
+        self._f: list[np.ndarray] = []
+        self._c: list[np.ndarray] = []
+        self._n = 0
+
+    def add(self, vertices: np.ndarray, faces: np.ndarray, color: str, alpha: int = 255,
+            transform: np.ndarray | None = None) -> None:
+        v = np.asarray(vertices, dtype=float)
+        if transform is not None:
+            v = v @ transform[:3, :3].T + transform[:3, 3]
+        self._v.append(v)
+        self._f.append(np.asarray(faces, dtype=np.int64) + self._n)
+        self._c.append(np.tile(to_rgba(color, alpha), (len(v), 1)))
+        self._n += len(v)
+
+    def box(self, lo, hi, color: str, transform: np.ndarray | None = None, alpha: int = 255) -> None:
+        """Axis-aligned box from corner ``lo`` to corner ``hi``."""
+        lo = np.asarray(lo, dtype=float)
+        hi = np.asarray(hi, dtype=float)
+        v, f = _unit_box()
+        self.add(lo + v * (hi - lo), f, color, alpha, transform)
+
+    def cbox(self, center, extents, color: str, transform: np.ndarray | None = None,
+             alpha: int = 255) -> None:
+        """Box by centre and extents."""
+        c = np.asarray(center, dtype=float)
+        e = np.asarray(extents, dtype=float) / 2
+        self.box(c - e, c + e, color, transform, alpha)
+
+    def cyl(self, x: float, y: float, z0: float, z1: float, r: float, color: str,
+            r_top: float | None = None, sections: int = CYL_SECTIONS, ry: float | None = None,
+            transform: np.ndarray | None = None, alpha: int = 255) -> None:
+        """Vertical cylinder or cone frustum (``r_top``), elliptic if ``ry`` is given."""
+        v, f = _unit_cylinder(sections)
+        v = v.copy()
+        rt = r if r_top is None else r_top
+        scale = r + (rt - r) * v[:, 2]
+        yr = (ry if ry is not None else r) / r if r > 0 else 1.0
+        v[:, 0] *= scale
+        v[:, 1] *= scale * yr
+        v[:, 2] = z0 + v[:, 2] * (z1 - z0)
+        v[:, 0] += x
+        v[:, 1] += y
+        self.add(v, f, color, alpha, transform)
+
+    def rod(self, a, b, r: float, color: str, sections: int = 12, alpha: int = 255) -> None:
+        """Cylinder of radius ``r`` from point ``a`` to point ``b``."""
+        a = np.asarray(a, dtype=float)
+        b = np.asarray(b, dtype=float)
+        d = b - a
+        length = float(np.linalg.norm(d))
+        if length <= 1e-9:
+            return
+        v, f = _unit_cylinder(sections)
+        v = v * np.array([r, r, length])
+        m = trimesh.geometry.align_vectors([0, 0, 1], d / length)
+        m[:3, 3] = a
+        self.add(v, f, color, alpha, m)
+
+    def sphere(self, center, radii, color: str, subdivisions: int = 1,
+               transform: np.ndarray | None = None, alpha: int = 255) -> None:
+        """Ellipsoid; ``radii`` a number or (rx, ry, rz)."""
+        v, f = _unit_sphere(subdivisions)
+        self.add(v * np.broadcast_to(np.asarray(radii, dtype=float), (3,)) + np.asarray(center),
+                 f, color, alpha, transform)
+
+    def lathe(self, profile, color: str, x: float = 0.0, y: float = 0.0,
+              sections: int = 24, transform: np.ndarray | None = None) -> None:
+        """Surface of revolution about a vertical axis; ``profile`` is (n, 2) (radius, z)."""
+        prof = np.asarray(profile, dtype=float)
+        m = trimesh.creation.revolve(prof, sections=sections)
+        v = np.asarray(m.vertices) + np.array([x, y, 0.0])
+        self.add(v, m.faces, color, 255, transform)
+
+    def legs(self, xy, z0: float, z1: float, r: float, kind: str, color: str) -> None:
+        """Legs at the (x, y) points from ``z0`` up to ``z1`` in the given style."""
+        for x, y in xy:
+            if kind == "tapered":
+                self.cyl(x, y, z0, z1, r * 0.55, color, r_top=r)
+            elif kind == "turned":
+                h = z1 - z0
+                self.cyl(x, y, z0, z0 + 0.12 * h, r * 0.7, color, r_top=r * 0.9)
+                self.sphere((x, y, z0 + 0.3 * h), (r * 1.3, r * 1.3, 0.16 * h), color)
+                self.cyl(x, y, z0 + 0.1 * h, z0 + 0.75 * h, r * 0.7, color)
+                self.sphere((x, y, z0 + 0.75 * h), (r * 1.15, r * 1.15, 0.08 * h), color)
+                self.box((x - r, y - r, z0 + 0.8 * h), (x + r, y + r, z1), color)
+            elif kind == "metal":
+                self.cyl(x, y, z0, z1, r * 0.5, DARK_METAL, sections=10)
+            else:
+                self.box((x - r, y - r, z0), (x + r, y + r, z1), color)
+
+    def extend(self, other: Builder, transform: np.ndarray | None = None) -> None:
+        for v, f, c in zip(other._v, other._f, other._c, strict=True):
+            base = f.min() if len(f) else 0
+            vv = v if transform is None else v @ transform[:3, :3].T + transform[:3, 3]
+            self._v.append(vv)
+            self._f.append(f - base + self._n)
+            self._c.append(c)
+            self._n += len(v)
+
+    def mesh(self, size: Size) -> trimesh.Trimesh:
+        """One mesh, scaled and moved so its bounds are exactly the box of ``size``:
+        x and y centred on 0, bottom at z = 0."""
+        if not self._v:
+            raise ValueError("no parts built")
+        v = np.concatenate(self._v)
+        f = np.concatenate(self._f)
+        c = np.concatenate(self._c)
+        target = np.asarray(size, dtype=float)
+        lo, hi = v.min(axis=0), v.max(axis=0)
+        ext = np.where(hi - lo > 1e-12, hi - lo, 1.0)
+        v = (v - lo) / ext * target + np.array([-target[0] / 2, -target[1] / 2, 0.0])
+        return trimesh.Trimesh(vertices=v, faces=f, vertex_colors=c, process=False)
+
+
+def corners(w: float, d: float, inset: float) -> list[tuple[float, float]]:
+    """Four (x, y) points ``inset`` in from the corners of a w x d rectangle."""
+    x, y = w / 2 - inset, d / 2 - inset
+    return [(-x, -y), (x, -y), (x, y), (-x, y)]

@@ -1,0 +1,163 @@
+"""The registry of procedural asset families, name matching and asset records.
+
+A family is a pair of functions ``sample(rng, size, style) -> Params`` and
+``build(params) -> trimesh.Trimesh``; the mesh lies in the object's local frame
+(centred on x/y, bottom at z = 0, front facing +y) and fills the box exactly.
+"""
+
+from __future__ import annotations
+
+import re
+import zlib
+from collections.abc import Callable
+from dataclasses import dataclass, replace
+from functools import lru_cache
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import trimesh
+
+from anyhome.assets.colors import material_color
+from anyhome.assets.procedural._parts import Params, Size
+from anyhome.house import HouseObject
+
+SYNONYMS_FILE = Path(__file__).with_name("synonyms.yaml")
+SIZES_FILE = Path(__file__).with_name("typical_sizes.yaml")
+GENERIC = "generic"
+"""Family of objects whose name matches nothing: a composed block that still reads as a thing."""
+SOURCE = "procedural"
+
+
+@dataclass(frozen=True)
+class Family:
+    name: str
+    sample: Callable[[np.random.Generator, Size, str], Params]
+    build: Callable[[Params], trimesh.Trimesh]
+
+
+_REGISTRY: dict[str, Family] = {}
+
+
+def register(name: str, sample: Callable[..., Params], build: Callable[[Params], trimesh.Trimesh]) -> None:
+    """Add a family (later registrations of the same name replace earlier ones)."""
+    _REGISTRY[name] = Family(name, sample, build)
+
+
+@lru_cache(maxsize=1)
+def _loaded() -> dict[str, Family]:
+    import importlib
+
+    from anyhome.assets.procedural import MODULES
+
+    for module in MODULES:  # each registers its families on import
+        importlib.import_module(f"anyhome.assets.procedural.{module}")
+    return _REGISTRY
+
+
+def families() -> list[str]:
+    return sorted(_loaded())
+
+
+def get(name: str) -> Family:
+    fams = _loaded()
+    if name not in fams:
+        raise KeyError(f"unknown asset family {name!r}")
+    return fams[name]
+
+
+@lru_cache(maxsize=1)
+def synonyms() -> dict[str, str]:
+    import yaml
+
+    data = yaml.safe_load(SYNONYMS_FILE.read_text(encoding="utf-8")) or {}
+    return {str(k): str(v) for k, v in data.items()}
+
+
+@lru_cache(maxsize=1)
+def _typical_sizes() -> dict[str, tuple[float, float, float]]:
+    import yaml
+
+    data = yaml.safe_load(SIZES_FILE.read_text(encoding="utf-8")) or {}
+    return {str(k): tuple(float(x) for x in v) for k, v in data.items()}
+
+
+def typical_size(family: str) -> tuple[float, float, float]:
+    """A typical box (width, depth, height) in meters for a family."""
+    return _typical_sizes().get(family, _typical_sizes()[GENERIC])
+
+
+def _norm(text: str) -> str:
+    return "_".join(re.findall(r"[a-z0-9]+", text.lower()))
+
+
+def _lookup(key: str) -> str | None:
+    fams = _loaded()
+    syn = synonyms()
+    for k in (key, key[:-1] if key.endswith("s") else None, key[:-2] if key.endswith("es") else None):
+        if not k:
+            continue
+        if k in fams:
+            return k
+        if k in syn and syn[k] in fams:
+            return syn[k]
+    return None
+
+
+def family_for(category: str, name: str = "") -> str:
+    """The family to build an object as: the category if it is a family, else the best
+    match of the category or name (whole, word pairs, then single words, last word first,
+    through ``synonyms.yaml``), else ``"generic"``."""
+    for text in (category, name):
+        key = _norm(text)
+        if key and (hit := _lookup(key)):
+            return hit
+    for text in (category, name):
+        words = _norm(text).split("_")
+        for i in range(len(words) - 2, -1, -1):
+            if hit := _lookup(f"{words[i]}_{words[i + 1]}"):
+                return hit
+        for w in reversed(words):
+            if w and (hit := _lookup(w)):
+                return hit
+    return GENERIC
+
+
+def object_rng(obj: HouseObject) -> np.random.Generator:
+    """A generator seeded from a stable hash of the object id."""
+    return np.random.default_rng(zlib.crc32(obj.id.encode("utf-8")))
+
+
+def assign_asset(obj: HouseObject, rng: np.random.Generator, style: str = "") -> dict[str, Any]:
+    """Choose and parametrise the procedural asset for an object.
+
+    Returns the JSON-serialisable record to store in ``HouseObject.asset``; the object's
+    material words (else its description's) set the main colour.
+    """
+    name = family_for(obj.category, obj.name)
+    fam = get(name)
+    params = fam.sample(rng, tuple(obj.size), style)
+    color = material_color(obj.material) or material_color(obj.description)
+    if color:
+        params = replace(params, primary=color)
+    return {"source": SOURCE, "family": name, "params": params.to_record()}
+
+
+def params_from_record(record: dict[str, Any]) -> Params:
+    return Params.from_record(record["family"], record["params"])
+
+
+def build_object_mesh(obj: HouseObject) -> trimesh.Trimesh:
+    """The object's mesh in its local frame (see module doc), rebuilt from ``obj.asset``.
+
+    Without a procedural record an asset is sampled from a generator seeded by the
+    object id. The mesh is fitted to ``obj.size`` (so a resized object keeps its look).
+    """
+    record = obj.asset
+    if not record or record.get("source") != SOURCE or record.get("family") not in _loaded():
+        record = assign_asset(obj, object_rng(obj), "")
+    params = params_from_record(record)
+    size = tuple(float(s) for s in obj.size)
+    if size != params.size:
+        params = replace(params, size=size)
+    return get(params.family).build(params)

@@ -1,0 +1,215 @@
+"""Top-down floorplan SVG: rooms, walls, doors, windows, object footprints, scale, north.
+
+The SVG's y axis points down, so plan y is flipped (north is up on the page).
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from pathlib import Path
+from xml.sax.saxutils import escape
+
+import numpy as np
+from shapely.geometry import Point, Polygon
+from shapely.ops import polylabel
+
+from anyhome.errors import ExportError
+from anyhome.export.walls import WALL_THICKNESS_M, solid_blocks, wall_pieces
+from anyhome.geometry import footprint_corners
+from anyhome.house import House, atomic_write_text
+
+PX_PER_M = 60.0
+"""Drawing scale."""
+MARGIN_PX = 70.0
+LABEL_MIN_AREA_M2 = 0.35
+"""Objects with a footprint at least this large get a name label."""
+ROOM_FILLS = {
+    "bedroom": "#e8eefb", "bathroom": "#e3f4f6", "kitchen": "#fdf1de", "living_room": "#fbf3e4",
+    "dining_room": "#f8ebe2", "hallway": "#eeeeee", "entry": "#eeeeee", "office": "#eef6e8",
+    "study": "#eef6e8", "library": "#f1ece3", "playroom": "#fdeef4", "gym": "#eaf0f0",
+    "laundry": "#e8f1f6", "storage": "#ececec", "closet": "#ececec", "garage": "#e6e6e6",
+}
+DEFAULT_FILL = "#f3f1ea"
+WALL_COLOR = "#333333"
+DOOR_COLOR = "#c0392b"
+WINDOW_COLOR = "#2e86c1"
+OBJECT_FILL = "#d9d2c5"
+
+
+class _Canvas:
+    def __init__(self, house: House) -> None:
+        pts = np.array([p for r in house.rooms for p in r.polygon], dtype=float).reshape(-1, 2)
+        self.x0, self.y0 = pts.min(axis=0) if len(pts) else (0.0, 0.0)
+        self.x1, self.y1 = pts.max(axis=0) if len(pts) else (1.0, 1.0)
+        self.width = (self.x1 - self.x0) * PX_PER_M + 2 * MARGIN_PX
+        self.height = (self.y1 - self.y0) * PX_PER_M + 2 * MARGIN_PX + 40
+
+    def xy(self, x: float, y: float) -> tuple[float, float]:
+        return ((x - self.x0) * PX_PER_M + MARGIN_PX, (self.y1 - y) * PX_PER_M + MARGIN_PX)
+
+    def pts(self, points) -> str:
+        return " ".join("{:.1f},{:.1f}".format(*self.xy(float(x), float(y))) for x, y in points)
+
+
+def _text(x: float, y: float, s: str, size: float, weight: str = "normal", fill: str = "#222") -> str:
+    return (f'<text x="{x:.1f}" y="{y:.1f}" font-size="{size:.1f}" font-weight="{weight}" fill="{fill}" '
+            f'text-anchor="middle" dominant-baseline="middle">{escape(s)}</text>')
+
+
+def render_svg(house: House) -> str:
+    """The floorplan as SVG text."""
+    c = _Canvas(house)
+    out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{c.width:.0f}" height="{c.height:.0f}" '
+           f'viewBox="0 0 {c.width:.0f} {c.height:.0f}" font-family="Helvetica, Arial, sans-serif">',
+           f'<title>{escape(house.prompt[:200])}</title>',
+           f'<rect x="0" y="0" width="{c.width:.0f}" height="{c.height:.0f}" fill="white"/>',
+           '<g id="rooms">']
+    for room in house.rooms:
+        fill = ROOM_FILLS.get(room.type, DEFAULT_FILL)
+        out.append(f'<polygon id="room-{escape(room.id)}" class="room" points="{c.pts(room.polygon)}" '
+                   f'fill="{fill}" stroke="none"><title>{escape(room.name)}</title></polygon>')
+    out.append('</g><g id="objects">')
+    labels = []
+    for obj in sorted(house.objects, key=lambda o: (o.support not in ("floor", "wall"), o.position[2])):
+        corners = footprint_corners(obj.position, obj.size, obj.yaw)
+        on_top = obj.support not in ("floor", "wall")
+        style = 'fill="#c9bfae" fill-opacity="0.9"' if on_top else f'fill="{OBJECT_FILL}" fill-opacity="0.85"'
+        if obj.category in ("rug", "carpet", "mat", "yoga_mat"):
+            style = 'fill="#e0cdb0" fill-opacity="0.5"'
+        out.append(f'<polygon class="object" id="object-{escape(obj.id)}" points="{c.pts(corners)}" {style} '
+                   f'stroke="#7a6f60" stroke-width="1"><title>{escape(obj.name)}</title></polygon>')
+        front = (corners[2] + corners[3]) / 2
+        ctr = corners.mean(axis=0)
+        out.append(f'<line x1="{c.xy(*ctr)[0]:.1f}" y1="{c.xy(*ctr)[1]:.1f}" x2="{c.xy(*front)[0]:.1f}" '
+                   f'y2="{c.xy(*front)[1]:.1f}" stroke="#7a6f60" stroke-width="0.8" stroke-dasharray="2,2"/>')
+        if obj.size[0] * obj.size[1] >= LABEL_MIN_AREA_M2 and not on_top:
+            x, y = c.xy(*ctr)
+            labels.append(_text(x, y, obj.name[:18], 9, fill="#5a4f40"))
+    out += labels
+    out.append('</g><g id="walls">')
+    stroke = WALL_THICKNESS_M * PX_PER_M
+    for piece in wall_pieces(house):
+        u = piece.direction
+        spans = _floor_spans(piece)
+        for t0, t1 in spans:
+            a, b = piece.a + u * t0, piece.a + u * t1
+            (ax, ay), (bx, by) = c.xy(*a), c.xy(*b)
+            out.append(f'<line x1="{ax:.1f}" y1="{ay:.1f}" x2="{bx:.1f}" y2="{by:.1f}" stroke="{WALL_COLOR}" '
+                       f'stroke-width="{stroke:.1f}" stroke-linecap="square"/>')
+    out.append('</g><g id="openings">')
+    out += _windows(house, c)
+    out += _doors(house, c)
+    out.append('</g><g id="labels">')
+    for room in house.rooms:
+        poly = Polygon(room.polygon)
+        p = _label_point(poly, [o for o in house.objects if o.room == room.id])
+        x, y = c.xy(p.x, p.y)
+        out.append(_text(x, y - 8, room.name, 14, "bold"))
+        out.append(_text(x, y + 9, f"{poly.area:.1f} m²", 11, fill="#555"))
+    out.append('</g>')
+    out += _scale_and_north(c)
+    out.append('</svg>')
+    return "\n".join(out) + "\n"
+
+
+def _label_point(poly: Polygon, objects) -> Point:
+    """A point well inside the room and, if possible, off the furniture."""
+    free = poly
+    for o in objects:
+        free = free.difference(Polygon(footprint_corners(o.position, o.size, o.yaw)).buffer(0.3))
+    if not free.is_empty and free.area > 1.0:
+        if free.geom_type == "MultiPolygon":
+            free = max(free.geoms, key=lambda g: g.area)
+        return polylabel(free, tolerance=0.05)
+    return polylabel(poly, tolerance=0.05) if poly.is_valid else poly.representative_point()
+
+
+def _floor_spans(piece) -> list[tuple[float, float]]:
+    """Stretches of a wall piece that are solid at floor level (doors leave gaps)."""
+    spans: list[tuple[float, float]] = []
+    for t0, t1, z0, _ in solid_blocks(piece):
+        if z0 > 1e-6:
+            continue
+        if spans and abs(spans[-1][1] - t0) < 1e-6:
+            spans[-1] = (spans[-1][0], t1)
+        else:
+            spans.append((t0, t1))
+    return spans
+
+
+def _windows(house: House, c: _Canvas) -> list[str]:
+    out = []
+    for w in house.windows:
+        a, b = (np.asarray(p, dtype=float) for p in w.segment)
+        v = b - a
+        n = np.array([-v[1], v[0]]) / max(np.linalg.norm(v), 1e-9) * WALL_THICKNESS_M * 0.3
+        out.append(f'<polygon class="window" id="window-{escape(w.id)}" '
+                   f'points="{c.pts([a - n * 1.6, b - n * 1.6, b + n * 1.6, a + n * 1.6])}" fill="white" '
+                   f'stroke="{WINDOW_COLOR}" stroke-width="1.2"/>')
+        for s in (-1, 1):
+            (x1, y1), (x2, y2) = c.xy(*(a + s * n)), c.xy(*(b + s * n))
+            out.append(f'<line x1="{x1:.1f}" y1="{y1:.1f}" x2="{x2:.1f}" y2="{y2:.1f}" stroke="{WINDOW_COLOR}" '
+                       f'stroke-width="1.5"/>')
+    return out
+
+
+def _doors(house: House, c: _Canvas) -> list[str]:
+    out = []
+    centroids = {r.id: np.array(Polygon(r.polygon).centroid.coords[0]) for r in house.rooms}
+    for d in house.doors:
+        a, b = (np.asarray(p, dtype=float) for p in d.segment)
+        width = float(np.linalg.norm(b - a))
+        if width < 1e-6:
+            continue
+        (ax, ay), (bx, by) = c.xy(*a), c.xy(*b)
+        out.append(f'<line class="door" id="door-{escape(d.id)}" x1="{ax:.1f}" y1="{ay:.1f}" x2="{bx:.1f}" '
+                   f'y2="{by:.1f}" stroke="{DOOR_COLOR}" stroke-width="2" stroke-dasharray="4,3"/>')
+        if d.kind == "open":
+            continue
+        # the leaf swings into the first room that is not outside
+        inside = next((r for r in d.rooms if r in centroids), None)
+        u = (b - a) / width
+        n = np.array([-u[1], u[0]])
+        if inside is not None and (centroids[inside] - (a + b) / 2) @ n < 0:
+            n = -n
+        tip = a + n * width
+        (tx, ty) = c.xy(*tip)
+        r = width * PX_PER_M
+        cross = (tip - a)[0] * (b - a)[1] - (tip - a)[1] * (b - a)[0]
+        sweep = 1 if cross > 0 else 0  # page y is flipped
+        out.append(f'<line x1="{ax:.1f}" y1="{ay:.1f}" x2="{tx:.1f}" y2="{ty:.1f}" stroke="{DOOR_COLOR}" '
+                   f'stroke-width="2"/>')
+        out.append(f'<path d="M {tx:.1f} {ty:.1f} A {r:.1f} {r:.1f} 0 0 {sweep} {bx:.1f} {by:.1f}" fill="none" '
+                   f'stroke="{DOOR_COLOR}" stroke-width="1" stroke-dasharray="3,2"/>')
+    return out
+
+
+def _scale_and_north(c: _Canvas) -> list[str]:
+    span_m = max(1, int(math.floor((c.x1 - c.x0) / 4))) if c.x1 > c.x0 else 1
+    x0, y0 = MARGIN_PX, c.height - 30
+    out = ['<g id="scale">']
+    for i in range(span_m):
+        fill = "#333" if i % 2 == 0 else "white"
+        out.append(f'<rect x="{x0 + i * PX_PER_M:.1f}" y="{y0:.1f}" width="{PX_PER_M:.1f}" height="6" '
+                   f'fill="{fill}" stroke="#333" stroke-width="1"/>')
+    out.append(_text(x0, y0 - 9, "0", 10))
+    out.append(_text(x0 + span_m * PX_PER_M, y0 - 9, f"{span_m} m", 10))
+    nx, ny = c.width - MARGIN_PX / 2 - 10, MARGIN_PX / 2 + 10
+    out.append(f'<polygon id="north" points="{nx:.1f},{ny - 22:.1f} {nx - 8:.1f},{ny + 6:.1f} {nx:.1f},{ny:.1f} '
+               f'{nx + 8:.1f},{ny + 6:.1f}" fill="#333"/>')
+    out.append(_text(nx, ny + 18, "N", 12, "bold"))
+    out.append('</g>')
+    return out
+
+
+def write_svg(house: House, path: str | os.PathLike[str]) -> Path:
+    """Write a top-down floorplan SVG atomically; return its path."""
+    path = Path(path)
+    text = render_svg(house)
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        atomic_write_text(path, text)
+    except OSError as e:
+        raise ExportError(f"could not write {path}: {e.strerror}") from None
+    return path

@@ -1,0 +1,102 @@
+"""Doors: one per planned connection on a wall the two rooms share, plus the entrance.
+
+Each door goes near one end of its shared wall run (keeping the rest of the wall free
+for furniture) or in its middle, whichever keeps its keep-clear zone away from the
+other doors of its rooms. Living, dining and kitchen pairs get a wide opening.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+
+from anyhome.floorplan.grid import OUTSIDE
+from anyhome.floorplan.openings import Opening, run_bounds_m, snap_down_m, snap_m
+from anyhome.floorplan.walls import Run, runs_between
+from anyhome.geometry import DOOR_CLEARANCE_M
+
+DOOR_WIDTH_M = 0.9
+"""Width of an interior door."""
+ENTRANCE_WIDTH_M = 1.0
+"""Width of the entrance door."""
+OPEN_MIN_WIDTH_M = 1.2
+"""Narrowest wall opening (kind "open"); below this an open pair gets a plain door."""
+OPEN_MAX_WIDTH_M = 1.8
+"""Widest wall opening (kind "open")."""
+DOOR_END_MARGIN_M = 0.15
+"""Least distance from a door to the ends of its shared wall run."""
+DOOR_GAP_M = 0.3
+"""Least distance between two openings on the same wall line."""
+CENTER_PENALTY = 0.3
+"""Score added to a door in the middle of a wall (it splits the wall for furniture)."""
+OPEN_TYPES = frozenset({"living_room", "dining_room", "kitchen"})
+"""Room types whose pairs are joined by a wide opening instead of a door."""
+
+
+@dataclass(frozen=True)
+class PlacedDoor:
+    """A door between room indices ``rooms`` (the second may be OUTSIDE)."""
+
+    rooms: tuple[int, int]
+    opening: Opening
+    kind: str = "door"
+
+
+def door_kind(type_a: str, type_b: str | None) -> str:
+    return "open" if type_a in OPEN_TYPES and type_b in OPEN_TYPES else "door"
+
+
+def place_door(
+    rooms: tuple[int, int],
+    kind: str,
+    runs: list[Run],
+    cell_m: float,
+    placed: list[PlacedDoor],
+    rng: np.random.Generator,
+    penalty: Callable[[Opening], float] | None = None,
+) -> PlacedDoor | None:
+    """Best door for ``rooms`` on a run they share, or None if no run fits one."""
+    best, best_score = None, float("inf")
+    for run in runs_between(runs, *rooms):
+        for opening, this_kind, extra in _candidates(run, kind, rooms[1] == OUTSIDE, cell_m):
+            if any(opening.gap_to(d.opening) < DOOR_GAP_M for d in placed):
+                continue
+            score = extra + _zone_score(opening, rooms, placed) + 0.05 * rng.random()
+            if penalty is not None:
+                score += penalty(opening)
+            if score < best_score:
+                best, best_score = PlacedDoor(rooms, opening, this_kind), score
+    return best
+
+
+def _candidates(run: Run, kind: str, entrance: bool, cell_m: float):
+    """(opening, kind, score) candidates on one run: near either end and centred."""
+    line, start, end = run_bounds_m(run, cell_m)
+    free = end - start - 2 * DOOR_END_MARGIN_M
+    width = ENTRANCE_WIDTH_M if entrance else DOOR_WIDTH_M
+    if kind == "open" and free >= OPEN_MIN_WIDTH_M - 1e-9:
+        width = min(OPEN_MAX_WIDTH_M, snap_down_m(free))
+        lo = snap_m(start + (end - start - width) / 2)
+        return [(Opening(run.axis, line, lo, round(lo + width, 4)), "open", 0.0)]
+    if free < width - 1e-9:
+        return []
+    out = []
+    for lo, extra in (
+        (start + DOOR_END_MARGIN_M, 0.0),
+        (end - DOOR_END_MARGIN_M - width, 0.0),
+        (snap_m(start + (end - start - width) / 2), 0.0 if entrance else CENTER_PENALTY),
+    ):
+        lo = round(lo, 4)
+        out.append((Opening(run.axis, line, lo, round(lo + width, 4)), "door", extra))
+    return out
+
+
+def _zone_score(opening: Opening, rooms: tuple[int, int], placed: list[PlacedDoor]) -> float:
+    """Overlap (m2) of this door's keep-clear zone with those of its rooms' other doors."""
+    total = 0.0
+    for d in placed:
+        if set(d.rooms) & set(rooms) - {OUTSIDE}:
+            total += opening.zone_overlap_m2(d.opening, DOOR_CLEARANCE_M)
+    return total

@@ -1,0 +1,70 @@
+"""The room program in index form: what the solver needs from a HouseSpec."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from anyhome.floorplan.grid import OUTSIDE
+from anyhome.house import is_habitable
+from anyhome.plan.spec import HouseSpec
+
+MIN_SIDE_HABITABLE_M = 2.4
+"""Narrowest side of a habitable room."""
+MIN_SIDE_SERVICE_M = 1.6
+"""Narrowest side of a small service room (bathroom, closet...)."""
+CORRIDOR_WIDTH_M = 1.2
+"""Narrowest hallway."""
+CORRIDOR_TYPES = frozenset({"hallway"})
+"""Types grown as long, narrow corridors."""
+HUB_TYPES = frozenset({"hallway", "entry"})
+"""Types pulled to the middle of the footprint."""
+
+
+@dataclass(frozen=True)
+class Program:
+    """Rooms by index; ``links`` holds (a, b or OUTSIDE) per spec connection, in order."""
+
+    ids: tuple[str, ...]
+    types: tuple[str, ...]
+    areas_m2: np.ndarray
+    links: tuple[tuple[int, int], ...]
+
+    @classmethod
+    def from_spec(cls, spec: HouseSpec) -> Program:
+        ids = tuple(r.id for r in spec.rooms)
+        index = {rid: k for k, rid in enumerate(ids)} | {"outside": OUTSIDE}
+        return cls(
+            ids=ids,
+            types=tuple(r.type for r in spec.rooms),
+            areas_m2=np.array([r.area_m2 for r in spec.rooms], dtype=float),
+            links=tuple((index[a], index[b]) for a, b in spec.connections),
+        )
+
+    @property
+    def n(self) -> int:
+        return len(self.ids)
+
+    @property
+    def edges(self) -> list[tuple[int, int]]:
+        return [(a, b) for a, b in self.links if b != OUTSIDE]
+
+    def habitable(self, k: int) -> bool:
+        return is_habitable(self.types[k])
+
+    def needs_exterior(self) -> np.ndarray:
+        entrances = {a for a, b in self.links if b == OUTSIDE}
+        return np.array([self.habitable(k) or k in entrances for k in range(self.n)])
+
+    def hubs(self) -> np.ndarray:
+        ext = self.needs_exterior()
+        return np.array([self.types[k] in HUB_TYPES or not ext[k] for k in range(self.n)])
+
+    def min_side_m(self, k: int) -> float:
+        if self.types[k] in CORRIDOR_TYPES:
+            return CORRIDOR_WIDTH_M
+        return MIN_SIDE_HABITABLE_M if self.habitable(k) else MIN_SIDE_SERVICE_M
+
+    def label(self, k: int) -> str:
+        return "outside" if k == OUTSIDE else self.ids[k]

@@ -1,0 +1,117 @@
+"""Seed cells for room growth: a small force-directed layout of the bubble diagram.
+
+Connected rooms attract, all rooms repel by their size, rooms that need an exterior
+wall (habitable ones, the entrance room) are pulled to the footprint's edge and hub
+rooms (hallways, entries) to its middle. The positions then become one seed cell each.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from anyhome.floorplan.grid import FREE, Grid
+
+FORCE_ITERATIONS = 60
+"""Relaxation steps of the force layout."""
+ATTRACT_GAIN = 0.3
+"""Share of the excess distance a connected pair closes per step."""
+REPEL_GAIN = 0.5
+"""Share of the overlap of two rooms' discs removed per step."""
+EDGE_GAIN = 0.3
+"""Share of the distance to the footprint edge an exterior room closes per step."""
+CENTER_GAIN = 0.08
+"""Share of the distance to the centre a hub room closes per step."""
+
+
+def seed_cells(
+    grid: Grid,
+    areas_m2: np.ndarray,
+    edges: list[tuple[int, int]],
+    exterior: np.ndarray,
+    hub: np.ndarray,
+    rng: np.random.Generator,
+) -> list[tuple[int, int]]:
+    """One distinct free padded cell per room.
+
+    Parameters
+    ----------
+    areas_m2 : (n,) float
+    edges : index pairs of connected rooms
+    exterior : (n,) bool, rooms that need an exterior wall
+    hub : (n,) bool, rooms pulled to the middle
+    """
+    free = np.argwhere(grid.owner == FREE).astype(float) + 0.5  # padded cell centres
+    radius = np.sqrt(areas_m2) / grid.cell_m / 2.0
+    pos = free[rng.choice(len(free), size=len(areas_m2), replace=len(free) < len(areas_m2))]
+    pos = pos + rng.uniform(-0.4, 0.4, size=pos.shape)
+    border = _border_cells(grid)
+    center = free.mean(axis=0)
+    for _ in range(FORCE_ITERATIONS):
+        pos = pos + _repel(pos, radius) + _attract(pos, radius, edges)
+        pos = pos + _to_edge(pos, radius, exterior, border) + hub[:, None] * CENTER_GAIN * (center - pos)
+        pos = _snap_inside(pos, free, grid.owner == FREE)
+    return _distinct_cells(pos, free)
+
+
+def _repel(pos: np.ndarray, radius: np.ndarray) -> np.ndarray:
+    delta = pos[:, None, :] - pos[None, :, :]
+    dist = np.linalg.norm(delta, axis=2) + 1e-6
+    overlap = np.clip(radius[:, None] + radius[None, :] - dist, 0.0, None)
+    np.fill_diagonal(overlap, 0.0)
+    return REPEL_GAIN * 0.5 * np.sum((overlap / dist)[:, :, None] * delta, axis=1)
+
+
+def _attract(pos: np.ndarray, radius: np.ndarray, edges: list[tuple[int, int]]) -> np.ndarray:
+    move = np.zeros_like(pos)
+    for i, j in edges:
+        delta = pos[j] - pos[i]
+        dist = float(np.linalg.norm(delta)) + 1e-6
+        excess = dist - 0.9 * (radius[i] + radius[j])
+        if excess > 0:
+            step = ATTRACT_GAIN * 0.5 * excess * delta / dist
+            move[i] += step
+            move[j] -= step
+    return move
+
+
+def _to_edge(pos: np.ndarray, radius: np.ndarray, exterior: np.ndarray, border: np.ndarray) -> np.ndarray:
+    move = np.zeros_like(pos)
+    for i in np.flatnonzero(exterior):
+        d = np.linalg.norm(border - pos[i], axis=1)
+        k = int(np.argmin(d))
+        if d[k] > 0.6 * radius[i]:
+            move[i] = EDGE_GAIN * (border[k] - pos[i]) * (1.0 - 0.6 * radius[i] / d[k])
+    return move
+
+
+def _border_cells(grid: Grid) -> np.ndarray:
+    """Centres of free cells with a non-footprint 4-neighbour."""
+    inside = grid.owner == FREE
+    edge = np.zeros_like(inside)
+    edge[1:-1, 1:-1] = inside[1:-1, 1:-1] & ~(
+        inside[:-2, 1:-1] & inside[2:, 1:-1] & inside[1:-1, :-2] & inside[1:-1, 2:]
+    )
+    return np.argwhere(edge).astype(float) + 0.5
+
+
+def _snap_inside(pos: np.ndarray, free: np.ndarray, inside: np.ndarray) -> np.ndarray:
+    """Move positions outside the footprint to the nearest free cell centre."""
+    pos = np.clip(pos, free.min(axis=0), free.max(axis=0))
+    idx = np.floor(pos).astype(int)
+    for i in np.flatnonzero(~inside[idx[:, 0], idx[:, 1]]):
+        pos[i] = free[int(np.argmin(np.linalg.norm(free - pos[i], axis=1)))]
+    return pos
+
+
+def _distinct_cells(pos: np.ndarray, free: np.ndarray) -> list[tuple[int, int]]:
+    taken: set[tuple[int, int]] = set()
+    out = []
+    for p in pos:
+        order = np.argsort(np.linalg.norm(free - p, axis=1))
+        for k in order:
+            cell = (int(free[k][0]), int(free[k][1]))
+            if cell not in taken:
+                taken.add(cell)
+                out.append(cell)
+                break
+    return out

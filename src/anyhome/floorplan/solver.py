@@ -1,0 +1,264 @@
+"""solve_floorplan: HouseSpec -> Floorplan by seeded room growth with bounded retries.
+
+Each attempt draws a compact footprint (rectangle or L) sized from the target areas,
+places one seed per room with a force layout of the bubble diagram, grows the rooms
+until they fill the footprint, and then checks the hard constraints: usable room
+shapes and areas, a shared wall for every connection, an exterior wall for the
+entrance and every habitable room. Valid attempts are scored on area error and shape;
+the best of the first few is kept. A program that fails every attempt raises
+:class:`~anyhome.errors.FloorplanError` naming the most common failure.
+"""
+
+from __future__ import annotations
+
+import logging
+from collections import Counter
+from dataclasses import dataclass
+
+import numpy as np
+
+from anyhome.errors import FloorplanError
+from anyhome.floorplan.doors import PlacedDoor, door_kind, place_door
+from anyhome.floorplan.grid import OUTSIDE, Grid, make_footprint, min_side_cells
+from anyhome.floorplan.growth import Goal, grow_rooms
+from anyhome.floorplan.program import CORRIDOR_TYPES, Program
+from anyhome.floorplan.seeds import seed_cells
+from anyhome.floorplan.walls import (
+    Run,
+    bbox_aspect,
+    narrow_share,
+    room_outline,
+    runs_between,
+    simply_connected,
+    wall_runs,
+)
+from anyhome.floorplan.windows import PlacedWindow, free_slots, place_windows, window_room_ok
+from anyhome.house import Door, Floorplan, Room, Window
+from anyhome.plan.spec import HouseSpec
+
+log = logging.getLogger(__name__)
+
+MAX_ATTEMPTS = 250
+"""Attempts before giving up with a FloorplanError."""
+WANTED_CANDIDATES = 3
+"""Valid layouts to collect before keeping the best one."""
+AREA_TOLERANCE = 0.25
+"""Allowed relative deviation of a room's area from its target."""
+MAX_ROOM_ASPECT = 2.5
+"""Longest/shortest bounding-box side of a room (hallways excepted)."""
+MAX_NARROW_SHARE = 0.08
+"""Share of a room's floor allowed in arms narrower than its minimum side."""
+CORRIDOR_ALONG_LONG_AXIS_PROB = 0.75
+"""Chance a hallway runs along the footprint's long axis."""
+
+
+@dataclass(frozen=True)
+class Layout:
+    """One valid attempt."""
+
+    owner: np.ndarray
+    cell_m: float
+    doors: list[PlacedDoor]
+    windows: list[PlacedWindow]
+    score: float
+
+
+def solve_floorplan(spec: HouseSpec, rng: np.random.Generator) -> Floorplan:
+    """Lay out ``spec``'s rooms, doors and windows.
+
+    Parameters
+    ----------
+    spec : the planned house
+    rng : the only source of randomness; the same seed gives the same floorplan
+
+    Raises
+    ------
+    FloorplanError
+        if no attempt within :data:`MAX_ATTEMPTS` satisfies the hard constraints.
+    """
+    prog = Program.from_spec(spec)
+    _precheck(prog)
+    failures: Counter[str] = Counter()
+    found: list[Layout] = []
+    for attempt in range(MAX_ATTEMPTS):
+        result = _attempt(prog, rng)
+        if isinstance(result, str):
+            failures[result] += 1
+            continue
+        found.append(result)
+        if len(found) >= WANTED_CANDIDATES:
+            break
+    if not found:
+        reason, count = failures.most_common(1)[0]
+        raise FloorplanError(
+            f"could not lay out the {prog.n}-room program in {MAX_ATTEMPTS} attempts "
+            f"(most often: {reason}, {count}x)"
+        )
+    log.debug("floorplan: %d attempts, failures %s", attempt + 1, dict(failures))
+    best = min(found, key=lambda lay: lay.score)
+    return _to_floorplan(spec, prog, best)
+
+
+def _precheck(prog: Program) -> None:
+    """Reject programs whose rooms cannot have enough wall for their doors."""
+    degree = Counter(k for link in prog.links for k in link if k != OUTSIDE)
+    for k, deg in degree.items():
+        area = prog.areas_m2[k] * (1 + AREA_TOLERANCE)
+        perimeter = 2 * (np.sqrt(MAX_ROOM_ASPECT * area) + np.sqrt(area / MAX_ROOM_ASPECT))
+        if prog.types[k] not in CORRIDOR_TYPES and deg * 1.2 + 1.4 > perimeter:
+            raise FloorplanError(
+                f"room {prog.ids[k]!r} ({prog.areas_m2[k]:.1f} m2) is too small for its {deg} doors"
+            )
+
+
+def _attempt(prog: Program, rng: np.random.Generator) -> Layout | str:
+    """One try: a Layout, or a short reason it failed."""
+    grid = make_footprint(float(prog.areas_m2.sum()), prog.n, rng)
+    goals = _goals(prog, grid, rng)
+    seeds = seed_cells(grid, prog.areas_m2, prog.edges, prog.needs_exterior(), prog.hubs(), rng)
+    owner = grow_rooms(grid, seeds, goals, rng)
+    reason, score = _check_rooms(prog, owner, grid.cell_m)
+    if reason:
+        return reason
+    runs = wall_runs(owner)
+    doors = _place_doors(prog, runs, grid.cell_m, rng)
+    if isinstance(doors, str):
+        return doors
+    windows = _place_windows(prog, runs, doors, grid.cell_m)
+    if isinstance(windows, str):
+        return windows
+    return Layout(owner, grid.cell_m, doors, windows, score)
+
+
+def _goals(prog: Program, grid: Grid, rng: np.random.Generator) -> list[Goal]:
+    nx, ny = grid.shape
+    long_axis = 0 if nx >= ny else 1
+    goals = []
+    for k in range(prog.n):
+        axis = None
+        if prog.types[k] in CORRIDOR_TYPES:
+            axis = long_axis if rng.random() < CORRIDOR_ALONG_LONG_AXIS_PROB else 1 - long_axis
+        side = min_side_cells(prog.min_side_m(k), grid.cell_m)
+        goals.append(Goal(prog.areas_m2[k] / grid.cell_m**2, side, axis))
+    return goals
+
+
+def _check_rooms(prog: Program, owner: np.ndarray, cell_m: float) -> tuple[str, float]:
+    """('', score) if every room has a usable shape and area, else (reason, inf)."""
+    score = 0.0
+    for k in range(prog.n):
+        mask = owner == k
+        cells = int(mask.sum())
+        if cells == 0 or not simply_connected(mask):
+            return f"room {prog.ids[k]!r} did not grow into one simple shape", np.inf
+        min_side = prog.min_side_m(k)
+        ratio = cells * cell_m**2 / max(prog.areas_m2[k], min_side**2)
+        if abs(ratio - 1) > AREA_TOLERANCE and not (ratio > 1 and cells * cell_m**2 <= (1 + AREA_TOLERANCE) * min_side**2):
+            return f"room {prog.ids[k]!r} area off target", np.inf
+        aspect = bbox_aspect(mask)
+        if prog.types[k] not in CORRIDOR_TYPES and aspect > MAX_ROOM_ASPECT:
+            return f"room {prog.ids[k]!r} too elongated", np.inf
+        if narrow_share(mask, min_side_cells(min_side, cell_m)) > MAX_NARROW_SHARE:
+            return f"room {prog.ids[k]!r} too narrow", np.inf
+        score += abs(ratio - 1) + 0.1 * max(0.0, aspect - 1.6)
+    return "", score
+
+
+def _place_doors(prog: Program, runs: list[Run], cell_m: float, rng) -> list[PlacedDoor] | str:
+    """Doors for every link in order (entrances last), plus doors that make all reachable."""
+    placed: dict[int, PlacedDoor] = {}
+    order = sorted(range(len(prog.links)), key=lambda i: prog.links[i][1] == OUTSIDE)
+    for i in order:
+        a, b = prog.links[i]
+        kind = door_kind(prog.types[a], prog.types[b] if b != OUTSIDE else None)
+        door = place_door((a, b), kind, runs, cell_m, list(placed.values()), rng, _entrance_penalty(prog, a, b, runs, placed, cell_m))
+        if door is None:
+            return f"connection {prog.label(a)}-{prog.label(b)} has no shared wall long enough"
+        placed[i] = door
+    doors = [placed[i] for i in range(len(prog.links))]
+    return _connect_unreachable(prog, runs, cell_m, doors, rng)
+
+
+def _entrance_penalty(prog, a, b, runs, placed, cell_m):
+    """For a habitable entrance room: penalise doors that leave no room for a window."""
+    if b != OUTSIDE or not prog.habitable(a):
+        return None
+    others = list(placed.values())
+
+    def penalty(opening) -> float:
+        slots = free_slots(a, runs, others + [PlacedDoor((a, b), opening)], cell_m)
+        return 0.0 if window_room_ok(slots) else 100.0
+
+    return penalty
+
+
+def _connect_unreachable(prog, runs, cell_m, doors, rng) -> list[PlacedDoor] | str:
+    """Add doors from rooms the plan left unreachable to a reachable neighbour."""
+    doors = list(doors)
+    for _ in range(prog.n):
+        reached = _reached(prog, doors)
+        missing = [k for k in range(prog.n) if k not in reached]
+        if not missing:
+            return doors
+        door = _bridge(prog, runs, cell_m, doors, reached, missing, rng)
+        if door is None:
+            return f"room {prog.ids[missing[0]]!r} cannot be reached from the entrance"
+        log.info("floorplan: added a door %s-%s to reach every room", *map(prog.label, door.rooms))
+        doors.append(door)
+    return doors
+
+
+def _reached(prog: Program, doors: list[PlacedDoor]) -> set[int]:
+    reached = {OUTSIDE}
+    grew = True
+    while grew:
+        grew = False
+        for d in doors:
+            a, b = d.rooms
+            if (a in reached) != (b in reached):
+                reached |= {a, b}
+                grew = True
+    return reached - {OUTSIDE}
+
+
+def _bridge(prog, runs, cell_m, doors, reached, missing, rng) -> PlacedDoor | None:
+    for k in missing:
+        partners = sorted(
+            (p for p in reached if runs_between(runs, k, p)),
+            key=lambda p: -max(r.length for r in runs_between(runs, k, p)),
+        )
+        for p in partners:
+            door = place_door((p, k), "door", runs, cell_m, doors, rng)
+            if door is not None:
+                return door
+    return None
+
+
+def _place_windows(prog, runs, doors, cell_m) -> list[PlacedWindow] | str:
+    windows: list[PlacedWindow] = []
+    for k in range(prog.n):
+        slots = free_slots(k, runs, doors, cell_m)
+        placed = place_windows(k, prog.habitable(k), prog.types[k] == "bathroom", slots)
+        if prog.habitable(k) and not placed:
+            return f"habitable room {prog.ids[k]!r} has no exterior wall for a window"
+        windows.extend(placed)
+    return windows
+
+
+def _to_floorplan(spec: HouseSpec, prog: Program, lay: Layout) -> Floorplan:
+    rooms = [
+        Room(
+            id=r.id, name=r.name, type=r.type, height=r.height_m, style=r.style,
+            materials=dict(r.materials), polygon=room_outline(lay.owner == k, lay.cell_m),
+        )
+        for k, r in enumerate(spec.rooms)
+    ]
+    doors = []
+    for i, d in enumerate(lay.doors):
+        sides = spec.connections[i] if i < len(spec.connections) else tuple(map(prog.label, d.rooms))
+        doors.append(Door(id=f"door-{i}", rooms=tuple(sides), segment=d.opening.segment(), kind=d.kind))
+    windows = [
+        Window(id=f"win-{i}", room=prog.ids[w.room], segment=w.opening.segment(), height=w.height_m, sill=w.sill_m)
+        for i, w in enumerate(lay.windows)
+    ]
+    return Floorplan(rooms=rooms, doors=doors, windows=windows, connections=list(spec.connections))

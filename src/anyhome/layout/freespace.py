@@ -1,0 +1,418 @@
+"""Free space of one room: walls, openings, placed objects, vectorized validity, navigation.
+
+The checks here are *stricter* than the definitions in :mod:`anyhome.geometry` (small
+margins everywhere), so a pose accepted here stays valid after house.json rounds it to
+0.1 mm and when the evaluator re-checks it with the shapely definitions.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+import shapely
+from scipy import ndimage
+from shapely.geometry import LineString, Polygon
+from shapely.geometry.polygon import orient
+
+from anyhome.geometry import (
+    AGENT_RADIUS_M,
+    NAV_CELL_M,
+    blocks_navigation,
+    opening_zone,
+)
+from anyhome.house import Floorplan, HouseObject, Room
+
+EPS_COLLIDE_M = 0.002
+"""Two boxes may touch or overlap by at most this much (the contract allows 1 cm)."""
+DOOR_MARGIN_M = 0.015
+"""Gap kept between a floor object and a door's keep-clear rectangle."""
+INSIDE_TOL_M = 0.004
+"""How far a footprint may poke out of its room polygon (the contract allows 1 cm)."""
+WALL_OPENING_MARGIN_M = 0.05
+"""Gap kept along a wall between a wall object and a door or window opening."""
+CEILING_GAP_M = 0.05
+"""Gap kept between the top of a wall or on-top object and the ceiling."""
+WALKWAY_RADIUS_M = 0.3
+"""Agent radius of the per-room walkway check (0.6 m walkways) when the empty room allows it."""
+
+
+@dataclass(frozen=True)
+class Wall:
+    """One polygon edge of a room, seen from inside (``n`` points into the room)."""
+
+    index: int
+    a: np.ndarray
+    b: np.ndarray
+    u: np.ndarray
+    n: np.ndarray
+    length: float
+    openings: tuple[tuple[float, float, float, float, bool], ...]
+    """(t0, t1, z0, z1, is_door) of each door or window on this wall, t in meters from a."""
+
+    @property
+    def yaw(self) -> float:
+        """Yaw of an object whose back is on this wall and whose front faces the room."""
+        return float(np.arctan2(-self.n[0], self.n[1]))
+
+
+def rect_corners(xy: np.ndarray, wd: np.ndarray, yaw: np.ndarray) -> np.ndarray:
+    """Footprint corners of many boxes, as :func:`anyhome.geometry.footprint_corners`.
+
+    Parameters
+    ----------
+    xy : (n, 2) float
+    wd : (2,) or (n, 2) float, width and depth
+    yaw : (n,) float
+
+    Returns
+    -------
+    corners : (n, 4, 2) float, back-left, back-right, front-right, front-left
+    """
+    xy = np.atleast_2d(np.asarray(xy, dtype=float))
+    n = len(xy)
+    yaw = np.broadcast_to(np.asarray(yaw, dtype=float), (n,))
+    wd = np.broadcast_to(np.asarray(wd, dtype=float), (n, 2))
+    hw, hd = wd[:, 0] / 2.0, wd[:, 1] / 2.0
+    lx = np.stack([-hw, hw, hw, -hw], 1)
+    ly = np.stack([-hd, -hd, hd, hd], 1)
+    c, s = np.cos(yaw)[:, None], np.sin(yaw)[:, None]
+    x = lx * c - ly * s + xy[:, 0, None]
+    y = lx * s + ly * c + xy[:, 1, None]
+    return np.stack([x, y], -1)
+
+
+def _axes(c: np.ndarray) -> np.ndarray:
+    e = np.stack([c[:, 1] - c[:, 0], c[:, 3] - c[:, 0]], 1)
+    return e / np.maximum(np.linalg.norm(e, axis=-1, keepdims=True), 1e-12)
+
+
+def sat_overlap(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Separating-axis overlap of rectangles.
+
+    Parameters
+    ----------
+    a : (n, 4, 2) float, b : (m, 4, 2) float
+
+    Returns
+    -------
+    overlap : (n, m) float, the smallest interval overlap over the separating axes: > 0 is
+        the penetration depth, < 0 a separation (the largest gap along one of the axes).
+        Pairs of axis-aligned rectangles and pairs whose bounding boxes are more than
+        5 cm apart get the (exact, resp. conservative) bounding-box value.
+    """
+    if len(a) == 0 or len(b) == 0:
+        return np.zeros((len(a), len(b)))
+    amin, amax = a.min(1), a.max(1)
+    bmin, bmax = b.min(1), b.max(1)
+    out = (np.minimum(amax[:, None], bmax[None]) - np.maximum(amin[:, None], bmin[None])).min(-1)
+    al_a, al_b = _aligned(a), _aligned(b)
+    need = ~(al_a[:, None] & al_b[None]) & (out > -0.05)
+    if need.any():
+        i, j = np.nonzero(need)
+        out[i, j] = _sat_pairs(a[i], b[j])
+    return out
+
+
+def _aligned(c: np.ndarray) -> np.ndarray:
+    e = c[:, 1] - c[:, 0]
+    return (np.abs(e[:, 0]) < 1e-9) | (np.abs(e[:, 1]) < 1e-9)
+
+
+def _sat_pairs(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Overlap of rectangle a[k] with b[k], (p, 4, 2) each -> (p,)."""
+    axes = np.concatenate([_axes(a), _axes(b)], 1)  # (p, 4, 2)
+    pa = np.einsum("pkc,pac->pak", a, axes)
+    pb = np.einsum("pkc,pac->pak", b, axes)
+    ov = np.minimum(pa.max(-1), pb.max(-1)) - np.maximum(pa.min(-1), pb.min(-1))
+    return ov.min(-1)
+
+
+@dataclass
+class Placed:
+    obj: HouseObject
+    corners: np.ndarray
+    z0: float
+    z1: float
+    floor: bool
+    nav_mask: np.ndarray | None = None
+
+
+def room_polygon(room: Room) -> Polygon:
+    return orient(Polygon(room.polygon), 1.0)
+
+
+def room_walls(poly: Polygon, openings: list[tuple[np.ndarray, np.ndarray, float, float, bool]]) -> list[Wall]:
+    """Walls of a CCW polygon with the openings (segment ends, z0, z1, is_door) lying on each."""
+    pts = np.asarray(poly.exterior.coords)[:-1]
+    walls = []
+    for i in range(len(pts)):
+        a, b = pts[i], pts[(i + 1) % len(pts)]
+        v = b - a
+        length = float(np.linalg.norm(v))
+        if length < 1e-9:
+            continue
+        u = v / length
+        n = np.array([-u[1], u[0]])
+        ops = []
+        for p, q, z0, z1, is_door in openings:
+            dp, dq = (p - a) @ n, (q - a) @ n
+            if abs(dp) > 0.02 or abs(dq) > 0.02:
+                continue
+            t0, t1 = sorted(((p - a) @ u, (q - a) @ u))
+            if t1 < -0.02 or t0 > length + 0.02:
+                continue
+            ops.append((float(t0), float(t1), z0, z1, is_door))
+        walls.append(Wall(i, a, b, u, n, length, tuple(ops)))
+    return walls
+
+
+@dataclass
+class RoomSpace:
+    """Everything the solver needs to test poses in one room."""
+
+    floorplan: Floorplan
+    room: Room
+    poly: Polygon = field(init=False)
+    placed: list[Placed] = field(default_factory=list)
+
+    def __post_init__(self) -> None:
+        self.poly = room_polygon(self.room)
+        self.buf = self.poly.buffer(INSIDE_TOL_M, join_style="mitre")
+        shapely.prepare(self.buf)
+        self.vertices = np.asarray(self.poly.exterior.coords)[:-1]
+        self.bmin = self.vertices.min(0)
+        self.bmax = self.vertices.max(0)
+        self.height = float(self.room.height)
+        self.area = float(self.poly.area)
+        c = self.poly.centroid
+        self.centre = np.array([c.x, c.y]) if self.poly.contains(c) else np.array(
+            self.poly.representative_point().coords[0]
+        )
+        openings = []
+        zones = []
+        self.doors = []
+        for d in self.floorplan.doors:
+            seg = np.asarray(d.segment, dtype=float)
+            openings.append((seg[0], seg[1], 0.0, float(d.height), True))
+            z = np.asarray(opening_zone(d.segment).exterior.coords)[:4]
+            zb = (z.min(0), z.max(0))
+            if np.all(zb[1] >= self.bmin - 0.05) and np.all(zb[0] <= self.bmax + 0.05):
+                zones.append(z)
+            if self.room.id in d.rooms:
+                self.doors.append(d)
+        self.door_zones = np.asarray(zones).reshape(-1, 4, 2)
+        self.zone_polys = [Polygon(z) for z in zones]
+        wzones = []
+        for w in self.floorplan.windows:
+            seg = np.asarray(w.segment, dtype=float)
+            openings.append((seg[0], seg[1], float(w.sill), float(w.sill + w.height), False))
+            if w.room == self.room.id:
+                wzones.append(np.asarray(opening_zone(w.segment, 0.5).exterior.coords)[:4])
+        self.window_zones = np.asarray(wzones).reshape(-1, 4, 2)
+        self.walls = room_walls(self.poly, openings)
+        self.door_points = np.array(
+            [np.mean(np.asarray(d.segment, dtype=float), 0) for d in self.doors]
+        ).reshape(-1, 2)
+
+    # ------------------------------------------------------------ objects
+    def by_id(self, oid: str) -> Placed | None:
+        for p in self.placed:
+            if p.obj.id == oid:
+                return p
+        return None
+
+    @property
+    def objects(self) -> list[HouseObject]:
+        return [p.obj for p in self.placed]
+
+    def _arrays(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        if not self.placed:
+            return np.zeros((0, 4, 2)), np.zeros(0), np.zeros(0)
+        return (
+            np.stack([p.corners for p in self.placed]),
+            np.array([p.z0 for p in self.placed]),
+            np.array([p.z1 for p in self.placed]),
+        )
+
+    # ------------------------------------------------------------ validity
+    def valid(
+        self, corners: np.ndarray, z0: np.ndarray, z1: np.ndarray, floor: bool, doors: bool = True
+    ) -> np.ndarray:
+        """Mask of poses that are in bounds, collision-free and (floor/wall) clear of doors."""
+        n = len(corners)
+        ok = np.ones(n, dtype=bool)
+        if n == 0:
+            return ok
+        z0 = np.broadcast_to(np.asarray(z0, dtype=float), (n,))
+        z1 = np.broadcast_to(np.asarray(z1, dtype=float), (n,))
+        mins, maxs = corners.min(1), corners.max(1)
+        ok &= np.all(mins >= self.bmin - INSIDE_TOL_M, 1) & np.all(maxs <= self.bmax + INSIDE_TOL_M, 1)
+        limit = self.height if floor else self.height - CEILING_GAP_M
+        ok &= z1 <= limit + 1e-9
+        idx = np.nonzero(ok)[0]
+        if idx.size:
+            c = corners[idx]
+            pin = shapely.contains_xy(self.buf, c[..., 0].ravel(), c[..., 1].ravel()).reshape(-1, 4)
+            ok[idx] = pin.all(1) & ~self._vertex_inside(c)
+        idx = np.nonzero(ok)[0]
+        if idx.size and doors and len(self.door_zones):
+            ov = sat_overlap(corners[idx], self.door_zones)
+            ok[idx] = np.all(ov < -DOOR_MARGIN_M, 1)
+        idx = np.nonzero(ok)[0]
+        if idx.size and self.placed:
+            pc, pz0, pz1 = self._arrays()
+            zov = np.minimum(z1[idx, None], pz1[None]) - np.maximum(z0[idx, None], pz0[None])
+            ov = sat_overlap(corners[idx], pc)
+            ok[idx] = ~np.any((zov > EPS_COLLIDE_M) & (ov > EPS_COLLIDE_M), 1)
+        return ok
+
+    def _vertex_inside(self, c: np.ndarray) -> np.ndarray:
+        centre = c.mean(1)
+        ex, ey = c[:, 1] - c[:, 0], c[:, 3] - c[:, 0]
+        hw = np.linalg.norm(ex, axis=1) / 2
+        hd = np.linalg.norm(ey, axis=1) / 2
+        ex = ex / (2 * hw[:, None])
+        ey = ey / (2 * hd[:, None])
+        d = self.vertices[None] - centre[:, None]
+        lx = np.abs(np.einsum("nvc,nc->nv", d, ex))
+        ly = np.abs(np.einsum("nvc,nc->nv", d, ey))
+        return np.any((lx < hw[:, None] - 0.005) & (ly < hd[:, None] - 0.005), 1)
+
+    def clearance(self, corners: np.ndarray, cap_m: float = 1.0) -> np.ndarray:
+        """Approximate free distance from each footprint to floor objects and door zones."""
+        out = np.full(len(corners), cap_m)
+        floor = [p.corners for p in self.placed if p.floor]
+        others = floor + list(self.door_zones)
+        if others and len(corners):
+            ov = sat_overlap(corners, np.stack(others))
+            out = np.minimum(out, np.maximum(0.0, -ov.max(1)))
+        return out
+
+    def window_penalty(self, corners: np.ndarray) -> np.ndarray:
+        if not len(self.window_zones) or not len(corners):
+            return np.zeros(len(corners), dtype=bool)
+        return np.any(sat_overlap(corners, self.window_zones) > 0.0, 1)
+
+    def wall_clear(self, wall: Wall, t0: np.ndarray, t1: np.ndarray, z0: float, z1: float) -> np.ndarray:
+        """Mask of wall intervals [t0, t1] x [z0, z1] that cover no opening of ``wall``.
+
+        A wall object never overlaps a door interval at any height (its footprint would
+        otherwise narrow the doorway in the navigation raster).
+        """
+        ok = np.ones(len(t0), dtype=bool)
+        m = WALL_OPENING_MARGIN_M
+        for a, b, oz0, oz1, is_door in wall.openings:
+            hit = (t1 > a - m) & (t0 < b + m)
+            if not is_door and not (z1 > oz0 - m and z0 < oz1 + m):
+                continue
+            ok &= ~hit
+        return ok
+
+
+# ---------------------------------------------------------------- navigation
+class NavGrid:
+    """Per-room version of :func:`anyhome.geometry.navigability` on the same raster.
+
+    The room is rasterized on the house's 5 cm grid together with its door strips and
+    the keep-clear zones of its doors in the neighbouring rooms (which rule 4 keeps free
+    of floor objects). The room passes when one walkable component touches all its
+    doors and some of its own cells. The free space here is a subset of the house-wide
+    one, so a room that passes here passes the house-wide check.
+    """
+
+    def __init__(self, floorplan: Floorplan, space: RoomSpace, cell_m: float = NAV_CELL_M) -> None:
+        self.cell = cell_m
+        polys = [room_polygon(r) for r in floorplan.rooms]
+        minx, miny, _, _ = shapely.bounds(shapely.union_all(polys))
+        pad = 2 * cell_m
+        x0, y0 = minx - pad + cell_m / 2, miny - pad + cell_m / 2
+        bx0, by0 = space.bmin - 1.0
+        bx1, by1 = space.bmax + 1.0
+        j0 = max(0, int(np.floor((bx0 - x0) / cell_m)))
+        i0 = max(0, int(np.floor((by0 - y0) / cell_m)))
+        j1 = int(np.ceil((bx1 - x0) / cell_m)) + 1
+        i1 = int(np.ceil((by1 - y0) / cell_m)) + 1
+        self.xs = x0 + cell_m * np.arange(j0, j1)
+        self.ys = y0 + cell_m * np.arange(i0, i1)
+        self.gx, self.gy = np.meshgrid(self.xs, self.ys)
+        half = cell_m / 2
+        self.room_mask = self._raster(space.poly.buffer(-half * 0.999, join_style="mitre"))
+        free = self.room_mask.copy()
+        others = {r.id: p for r, p in zip(floorplan.rooms, polys)}
+        near = AGENT_RADIUS_M + 2 * cell_m
+        self.door_near = []
+        for d in space.doors:
+            free |= self._raster(LineString(d.segment).buffer(half * 1.5, cap_style="flat"))
+            for rid in d.rooms:
+                if rid != space.room.id and rid in others:
+                    inner = others[rid].buffer(-half * 0.999, join_style="mitre")
+                    free |= self._raster(opening_zone(d.segment).intersection(inner))
+            self.door_near.append(self._raster(LineString(d.segment).buffer(near)))
+        self.base_free = free
+        self.blocked = np.zeros_like(free)
+        self.radius: float | None = None
+        for r in (WALKWAY_RADIUS_M, AGENT_RADIUS_M):
+            self.radius = r
+            if self.ok():
+                break
+        else:
+            self.radius = None
+
+    def _raster(self, geom) -> np.ndarray:
+        mask = np.zeros(self.gx.shape, dtype=bool)
+        if geom.is_empty:
+            return mask
+        x0, y0, x1, y1 = geom.bounds
+        i0, i1 = np.searchsorted(self.ys, [y0, y1])
+        j0, j1 = np.searchsorted(self.xs, [x0, x1])
+        if i0 >= i1 or j0 >= j1:
+            return mask
+        mask[i0:i1, j0:j1] = shapely.contains_xy(geom, self.gx[i0:i1, j0:j1], self.gy[i0:i1, j0:j1])
+        return mask
+
+    def obstacle_mask(self, corners: np.ndarray) -> np.ndarray:
+        """Cells whose centre lies in (or on the edge of) a rotated rectangle."""
+        mask = np.zeros(self.gx.shape, dtype=bool)
+        lo, hi = corners.min(0), corners.max(0)
+        i0, i1 = np.searchsorted(self.ys, [lo[1] - 1e-6, hi[1] + 1e-6])
+        j0, j1 = np.searchsorted(self.xs, [lo[0] - 1e-6, hi[0] + 1e-6])
+        if i0 >= i1 or j0 >= j1:
+            return mask
+        c = corners.mean(0)
+        ex, ey = corners[1] - corners[0], corners[3] - corners[0]
+        hw, hd = np.linalg.norm(ex) / 2, np.linalg.norm(ey) / 2
+        ex, ey = ex / (2 * hw), ey / (2 * hd)
+        px = self.gx[i0:i1, j0:j1] - c[0]
+        py = self.gy[i0:i1, j0:j1] - c[1]
+        lx = np.abs(px * ex[0] + py * ex[1])
+        ly = np.abs(px * ey[0] + py * ey[1])
+        mask[i0:i1, j0:j1] = (lx <= hw + 1e-6) & (ly <= hd + 1e-6)
+        return mask
+
+    def ok(self, extra: np.ndarray | None = None) -> bool:
+        if self.radius is None:
+            return True
+        free = self.base_free & ~self.blocked
+        if extra is not None:
+            free &= ~extra
+        walk = ndimage.distance_transform_edt(free) * self.cell > self.radius
+        labels, _ = ndimage.label(walk)
+        common: set[int] | None = None
+        for m in self.door_near:
+            lab = set(np.unique(labels[m & walk]).tolist()) - {0}
+            common = lab if common is None else common & lab
+        in_room = set(np.unique(labels[self.room_mask & walk]).tolist()) - {0}
+        if common is None:
+            return bool(in_room)
+        return bool(common & in_room)
+
+    def set_blocked(self, placed: list[Placed]) -> None:
+        self.blocked = np.zeros_like(self.base_free)
+        for p in placed:
+            if p.nav_mask is not None:
+                self.blocked |= p.nav_mask
+
+
+def nav_blocks(obj: HouseObject) -> bool:
+    return blocks_navigation(obj.category, obj.size[2], obj.support)

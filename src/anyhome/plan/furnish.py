@@ -1,0 +1,334 @@
+"""Furniture groups and ornaments for planned rooms, from ``knowledge/furniture.yaml``.
+
+Groups and items are built as plain dicts (the fields of ``GroupSpec``/``ItemSpec``) so
+that text mentions can adjust them before they are validated into the spec models.
+"""
+
+from __future__ import annotations
+
+import copy
+import math
+import re
+from typing import Any
+
+import numpy as np
+
+from anyhome.plan.knowledge import load
+from anyhome.plan.parse import Mention
+
+SIZE_JITTER = 0.10
+"""Relative spread of sampled item widths and depths (heights vary by half of it)."""
+
+CHAIR_PITCH_M = 0.6
+"""Table edge length each chair around it needs."""
+
+MAX_TABLE_M = 8.0
+"""Longest table the planner will stretch a table to for more chairs."""
+
+ORNAMENT_RULES = ("place_top", "place_on_wall")
+"""Rules an ornament may use."""
+
+Item = dict[str, Any]
+Group = dict[str, Any]
+
+
+def _proto(use: str | None) -> dict[str, Any]:
+    return load("objects").get(use, {}) if use else {}
+
+
+def _sample(spec: Any, rng: np.random.Generator) -> int:
+    if isinstance(spec, (list, tuple)):
+        return int(rng.integers(int(spec[0]), int(spec[1]) + 1))
+    return int(spec if spec is not None else 1)
+
+
+def _slug(text: str) -> str:
+    return re.sub(r"[^a-z0-9]+", "_", text.lower()).strip("_") or "object"
+
+
+def make_item(entry: dict[str, Any], rng: np.random.Generator, ornament: bool = False) -> Item:
+    """An ItemSpec dict from a knowledge entry (``use`` prototype plus overrides)."""
+    proto = _proto(entry.get("use"))
+    if entry.get("names"):
+        name = str(entry["names"][int(rng.integers(len(entry["names"])))])
+    else:
+        name = str(entry.get("name") or entry.get("use") or entry.get("category") or "object")
+    size = list(entry.get("size") or proto.get("size") or [0.5, 0.5, 0.5])
+    j = rng.uniform(1 - SIZE_JITTER, 1 + SIZE_JITTER, size=3)
+    j[2] = 1 + (j[2] - 1) / 2
+    size = [float(np.clip(round(s * f, 3), 0.005, 20.0)) for s, f in zip(size, j)]
+    rule = entry.get("rule") or proto.get("rule") or "place_center"
+    if ornament and rule not in ORNAMENT_RULES:
+        rule = "place_top"
+    params = {**proto.get("params", {}), **entry.get("params", {})}
+    target = entry.get("target", proto.get("target") if ornament else None)
+    return {
+        "name": name,
+        "category": entry.get("category") or proto.get("category") or _slug(name),
+        "description": entry.get("description", ""),
+        "size_m": tuple(size),
+        "rule": rule,
+        "target": target,
+        "params": params,
+        "count": max(1, min(64, _sample(entry.get("count", 1), rng))),
+        "material": entry.get("material", ""),
+    }
+
+
+def _merge(base: dict[str, Any], over: dict[str, Any]) -> dict[str, Any]:
+    out = copy.deepcopy(base)
+    for k, v in over.items():
+        if k == "members":
+            members = out.get("members", [])
+            for i, mv in enumerate(v):
+                if i < len(members):
+                    members[i] = {**members[i], **mv}
+                else:
+                    members.append(mv)
+            out["members"] = members
+        elif k == "anchor":
+            out["anchor"] = {**out.get("anchor", {}), **v}
+            if "name" in v:
+                out["anchor"].pop("names", None)
+        elif k != "group":
+            out[k] = v
+    return out
+
+
+def group_def(entry: dict[str, Any]) -> dict[str, Any]:
+    """The group template named by ``entry['group']`` with the entry's overrides."""
+    template = load("furniture")["groups"].get(entry.get("group", ""), {})
+    d = _merge(template, entry)
+    d.setdefault("key", entry.get("group", "group"))
+    return d
+
+
+def build_group(d: dict[str, Any], area_m2: float, rng: np.random.Generator) -> Group:
+    anchor = make_item(d["anchor"], rng)
+    members = []
+    for m in d.get("members", []):
+        p = float(m.get("prob", 1.0))
+        if p >= 1.0 or rng.random() < p:
+            members.append(make_item(m, rng))
+    repeat = _sample(d.get("repeat", 1), rng)
+    if d.get("per_m2"):
+        lo, hi = d["repeat"] if isinstance(d.get("repeat"), list) else (1, max(1, repeat))
+        repeat = int(np.clip(round(area_m2 / float(d["per_m2"])), lo, hi))
+    g = {
+        "name": d.get("key", "group"),
+        "anchor": anchor,
+        "members": members,
+        "arrangement": d.get("arrangement", "free"),
+        "repeat": max(1, min(64, repeat)),
+        "priority": int(d.get("priority", 0)),
+        "required": False,
+    }
+    _fit_table(g)
+    return g
+
+
+def furniture_set(furnish: str, room_type: str) -> dict[str, Any]:
+    sets = load("furniture")["sets"]
+    return sets.get(furnish) or sets.get(room_type) or sets["other"]
+
+
+def furnish_room(furnish: str, room_type: str, area_m2: float, rng: np.random.Generator, beds: int | None = None) -> tuple[list[Group], list[Item], list[dict[str, Any]]]:
+    """Sampled groups and ornaments of one room, and the group templates left out."""
+    s = furniture_set(furnish, room_type)
+    groups: list[Group] = []
+    unused: list[dict[str, Any]] = []
+    for entry in s.get("groups", []):
+        if entry.get("one_of"):
+            choices = entry["one_of"]
+            entry = {**entry, "group": choices[int(rng.integers(len(choices)))]}
+        d = group_def(entry)
+        p = float(entry.get("prob", 1.0))
+        if p >= 1.0 or rng.random() < p:
+            groups.append(build_group(d, area_m2, rng))
+        else:
+            unused.append(d)
+    if beds:
+        for g in groups:
+            if g["anchor"]["category"] in ("bed", "bunk_bed"):
+                g["repeat"] = beds
+                break
+    ornaments = []
+    for entry in s.get("ornaments", []):
+        p = float(entry.get("prob", 1.0))
+        if p >= 1.0 or rng.random() < p:
+            ornaments.append(make_item(entry, rng, ornament=True))
+    return groups, ornaments, unused
+
+
+def _words(text: str) -> set[str]:
+    return set(text.replace("_", " ").split())
+
+
+def _matches(item: Item, category: str, head: str) -> int:
+    """2: same category, 1: the head noun appears in its name or category, 0: no."""
+    if item["category"] == category:
+        return 2
+    if head in _words(item["name"]) or head in _words(item["category"]):
+        return 1
+    return 0
+
+
+def _find(groups: list[Group], category: str, head: str) -> tuple[Group | None, Item | None]:
+    """The best-matching item: same category before same head noun, anchors before
+    members, and among equals the one planned in the most copies."""
+    for level in (2, 1):
+        for members in (False, True):
+            cands = [
+                (g, it) for g in groups
+                for it in (g["members"] if members else [g["anchor"]])
+                if _matches(it, category, head) == level
+            ]  # fmt: skip
+            if cands:
+                return max(cands, key=lambda c: c[0]["repeat"] * c[1]["count"])
+    return None, None
+
+
+def _fit_table(g: Group) -> None:
+    """Stretch a table so that the chairs placed around it fit."""
+    for m in g["members"]:
+        if m["rule"] != "place_around":
+            continue
+        w, d, h = g["anchor"]["size_m"]
+        sides = m["params"].get("sides", "all")
+
+        def capacity(w: float, d: float = d, sides: str = sides) -> int:
+            n = 2 * math.floor(w / CHAIR_PITCH_M)
+            return n + (2 * math.floor(d / CHAIR_PITCH_M) if sides == "all" else 0)
+
+        while capacity(w) < m["count"] and w < MAX_TABLE_M:
+            w += CHAIR_PITCH_M
+        g["anchor"]["size_m"] = (round(w, 3), d, h)
+
+
+def mention_count(m: Mention, proto: dict[str, Any], rng: np.random.Generator) -> int | None:
+    """Copies the text asks for: its number, a plural's range, or None if unsaid."""
+    if m.count is not None:
+        return m.count
+    if m.plural or m.many:
+        lo, hi = proto.get("plural", [2, 4])
+        return int(hi) if m.many else int(rng.integers(lo, hi + 1))
+    return None
+
+
+def apply_mention(m: Mention, groups: list[Group], ornaments: list[Item], unused: list[dict[str, Any]], area_m2: float, rng: np.random.Generator) -> None:
+    """Make a room hold what the text asks for (adjusting or adding groups)."""
+    proto = _proto(m.key)
+    category = proto.get("category", _slug(m.key))
+    head = m.key.split()[-1]
+    n = mention_count(m, proto, rng)
+    if n == 0:
+        groups[:] = [g for g in groups if _matches(g["anchor"], category, head) < 2]
+        ornaments[:] = [o for o in ornaments if o["category"] != category]
+        return
+    named = m.name != m.key
+    if proto.get("ornament"):
+        _apply_ornament(m, proto, category, head, n, groups, ornaments, unused, area_m2, rng)
+        return
+    g, item = _find(groups, category, head)
+    if g is None:
+        d = next((u for u in unused if _matches(u_anchor(u), category, head)), None)
+        if d is None and proto.get("group"):
+            d = group_def({"group": proto["group"]})
+        if d is None:
+            d = {"key": _slug(m.key), "anchor": {"use": m.key}}
+        g = build_group(d, area_m2, rng)
+        groups.append(g)
+        g2, item = _find([g], category, head)
+        item = item or g["anchor"]
+        if n is None and item is g["anchor"]:
+            g["repeat"] = 1 if not m.plural else g["repeat"]
+    g["required"] = True
+    g["priority"] = min(g["priority"], 0)
+    if named:
+        item["name"] = m.name
+    if m.size != 1.0:
+        item["size_m"] = tuple(round(min(20.0, s * m.size), 3) for s in item["size_m"])
+    if n is not None and m.count is not None:
+        if item is g["anchor"]:
+            g["repeat"] = max(1, min(64, n))
+        else:
+            item["count"] = max(1, min(64, math.ceil(n / g["repeat"])))
+    elif n is not None and g["repeat"] * item["count"] < n:
+        if item is g["anchor"]:
+            g["repeat"] = max(1, min(64, n))
+        else:
+            item["count"] = max(1, min(64, math.ceil(n / g["repeat"])))
+    _arrange(m, g, item)
+    _fit_table(g)
+
+
+def u_anchor(d: dict[str, Any]) -> Item:
+    a = d.get("anchor", {})
+    proto = _proto(a.get("use"))
+    name = a.get("name") or (a.get("names") or [a.get("use", "")])[0]
+    return {"name": name, "category": a.get("category") or proto.get("category", "")}
+
+
+def _arrange(m: Mention, g: Group, item: Item) -> None:
+    if m.arrangement is None:
+        return
+    if m.arrangement == "around":
+        if item is not g["anchor"]:
+            item["rule"], item["target"] = "place_around", None
+        return
+    if item is not g["anchor"] and m.arrangement != "rows":
+        return
+    g["arrangement"] = m.arrangement
+    anchor = g["anchor"]
+    if m.arrangement == "along_walls":
+        anchor["rule"] = "place_next_wall"
+    elif m.arrangement == "center":
+        anchor["rule"] = "place_center"
+    elif m.arrangement == "rows" and anchor["rule"] in ("place_wall", "place_next_wall", "place_corner"):
+        anchor["rule"] = "place_center"
+
+
+def _apply_ornament(m: Mention, proto: dict[str, Any], category: str, head: str, n: int | None, groups: list[Group], ornaments: list[Item], unused: list[dict[str, Any]], area_m2: float, rng: np.random.Generator) -> None:
+    found = next((o for o in ornaments if _matches(o, category, head) == 2), None)
+    if found is None:
+        found = next((o for o in ornaments if _matches(o, category, head) == 1), None)
+    if found is None:
+        found = make_item({"use": m.key}, rng, ornament=True)
+        ornaments.insert(0, found)
+    if m.name != m.key:
+        found["name"] = m.name
+    if n is not None:
+        found["count"] = max(1, min(64, n))
+    target = found.get("target")
+    if target and not any(_matches(it, target, target.split("_")[-1]) for g in groups for it in [g["anchor"], *g["members"]]):
+        if proto.get("group"):
+            g = build_group(group_def({"group": proto["group"]}), area_m2, rng)
+            g["required"] = True
+            groups.append(g)
+            ornaments.remove(found)
+            for it in g["members"]:
+                if it["category"] == category:
+                    it["name"], it["count"] = found["name"], found["count"]
+        else:
+            found["target"] = None
+
+
+def _has_target(groups: list[Group], target: str) -> bool:
+    t = target.replace("_", " ")
+    for g in groups:
+        for it in [g["anchor"], *g["members"]]:
+            if it["name"] == t or it["category"] == target or it["category"] == t.replace(" ", "_"):
+                return True
+    return False
+
+
+def finalize_ornaments(groups: list[Group], ornaments: list[Item]) -> list[Item]:
+    """Drop or loosen ornaments whose support is not in the room."""
+    out = []
+    for o in ornaments:
+        if o["target"] and not _has_target(groups, o["target"]):
+            if o["category"] == "tv" and o["rule"] == "place_top":
+                continue
+            o["target"] = None
+        out.append(o)
+    return out

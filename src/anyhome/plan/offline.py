@@ -1,0 +1,168 @@
+"""The embedded offline planner: text -> HouseSpec with no network and no model weights.
+
+Pipeline: :func:`anyhome.plan.parse.parse` reads the text; :mod:`~anyhome.plan.program`
+picks the rooms and links them; :mod:`~anyhome.plan.furnish` fills each room with
+furniture groups and ornaments and applies what the text asked for;
+:mod:`~anyhome.plan.appearance` chooses style, palette and materials. Every random choice
+draws from the ``numpy.random.Generator`` passed in, so one text and one seed always give
+the same plan. The knowledge lives in YAML files under ``knowledge/``
+(see docs/knowledge_base.md).
+"""
+
+from __future__ import annotations
+
+import logging
+from typing import Any
+
+import numpy as np
+
+from anyhome.errors import PlanError
+from anyhome.house import is_habitable
+from anyhome.plan import furnish as fu
+from anyhome.plan.appearance import Look, choose_look, item_material
+from anyhome.plan.knowledge import load
+from anyhome.plan.parse import Mention, Parsed, parse
+from anyhome.plan.program import Slot, choose_program, connect, plan_rooms, sample_areas
+from anyhome.plan.spec import GroupSpec, HouseSpec, ItemSpec, RoomSpec
+
+log = logging.getLogger(__name__)
+
+FLOOR_USE_FACTOR = 2.4
+"""Room area needed per m2 of furniture footprint (walkways, clearances)."""
+
+MAX_ROOM_AREA_M2 = 120.0
+"""Largest area the furniture may push a room to."""
+
+KEEP_DEFAULT_SURFACES = frozenset({"bathroom", "laundry", "changing_room", "balcony", "garage"})
+"""Room types whose floor and walls keep their own materials unless the text names them."""
+
+
+class OfflinePlanner:
+    """Plans a house from text with the packaged knowledge base."""
+
+    name = "offline"
+
+    def plan(self, text: str, rng: np.random.Generator) -> HouseSpec:
+        if not isinstance(text, str) or not text.strip():
+            raise PlanError("the text is empty: describe a house, e.g. 'a two-bedroom apartment'")
+        parsed = parse(text)
+        warnings = list(parsed.warnings)
+        if not parsed.recognized:
+            warnings.append("no building, room or object in the text was recognised; planned a default home")
+        program, implied = choose_program(parsed)
+        slots, main_key = plan_rooms(parsed, program, rng, warnings)
+        sample_areas(slots, parsed.building_size, rng)
+        prog = load("programs")["programs"].get(program or "", {})
+        connections = connect(slots, prog.get("entrance", []))
+        building = prog.get("building") or (slots[0].type.replace("_", " ") if program is None else "home")
+        rooms = _furnish(parsed, slots, main_key, prog, rng)
+        look = choose_look(parsed, implied, building, rng)
+        specs = [_room_spec(s, g, o, look, rng) for s, (g, o) in zip(slots, rooms)]
+        log.debug("planned %d rooms for %r", len(specs), text[:60])
+        return HouseSpec(
+            prompt=text,
+            building=building,
+            style=look.describe,
+            palette=look.palette,
+            rooms=specs,
+            connections=connections,
+            warnings=warnings,
+        )
+
+
+def _furnish(parsed: Parsed, slots: list[Slot], main_key: str | None, prog: dict[str, Any], rng: np.random.Generator) -> list[tuple[list[fu.Group], list[fu.Item]]]:
+    built = []
+    for s in slots:
+        groups, ornaments, unused = fu.furnish_room(s.furnish, s.type, s.area, rng, beds=s.beds)
+        for key in prog.get("extra", {}).get(s.key, []):
+            d = fu.group_def({"group": key})
+            groups.append(fu.build_group(d, s.area, rng))
+        built.append((groups, ornaments, unused))
+    for m in parsed.objects:
+        i = _room_for(m, slots, main_key)
+        groups, ornaments, unused = built[i]
+        fu.apply_mention(m, groups, ornaments, unused, slots[i].area, rng)
+    out = []
+    for s, (groups, ornaments, _) in zip(slots, built):
+        ornaments = fu.finalize_ornaments(groups, ornaments)
+        _grow_area(s, groups)
+        out.append((groups, ornaments))
+    return out
+
+
+def _room_for(m: Mention, slots: list[Slot], main_key: str | None) -> int:
+    if m.room is not None:
+        for i, s in enumerate(slots):
+            if s.mention == m.room:
+                return i
+    prefs = load("objects").get(m.key, {}).get("rooms", [])
+    for pref in prefs:
+        for i, s in enumerate(slots):
+            if s.furnish == pref or s.type == pref:
+                return i
+    for i, s in enumerate(slots):
+        if main_key and s.key == main_key:
+            return i
+    return next((i for i, s in enumerate(slots) if is_habitable(s.type)), 0)
+
+
+def _grow_area(s: Slot, groups: list[fu.Group]) -> None:
+    footprint = 0.0
+    for g in groups:
+        for it in [g["anchor"], *g["members"]]:
+            if it["rule"] in fu.ORNAMENT_RULES or it["category"] == "rug":
+                continue
+            w, d, _ = it["size_m"]
+            footprint += w * d * it["count"] * g["repeat"]
+    need = footprint * FLOOR_USE_FACTOR + 1.0
+    s.area = round(max(s.area, min(need, MAX_ROOM_AREA_M2)), 2)
+
+
+def _room_spec(s: Slot, groups: list[fu.Group], ornaments: list[fu.Item], look: Look, rng: np.random.Generator) -> RoomSpec:
+    defaults = load("rooms")["types"].get(s.type, load("rooms")["types"]["other"])["materials"]
+    materials = {"floor": look.floor, "walls": look.walls, "ceiling": look.ceiling}
+    keep = s.type in KEEP_DEFAULT_SURFACES or bool(defaults.get("wet")) or bool(
+        load("rooms")["types"].get(s.type, {}).get("wet")
+    )
+    if keep:
+        for surface in ("floor", "walls"):
+            if surface not in look.user_surfaces:
+                materials[surface] = defaults[surface]
+        if s.type == "balcony":
+            materials["ceiling"] = defaults["ceiling"]
+    furniture = look.furniture
+    if s.mention is not None:
+        for surface, words in look.room_overrides.get(s.mention, {}).items():
+            if surface == "furniture":
+                furniture = words
+            else:
+                materials[surface] = words
+    used: dict[str, int] = {}
+    group_specs = []
+    for g in sorted(groups, key=lambda g: (not g["required"], g["priority"])):
+        used[g["name"]] = used.get(g["name"], 0) + 1
+        name = g["name"] if used[g["name"]] == 1 else f"{g['name']}_{used[g['name']]}"
+        items = [_item(it, look, furniture, rng) for it in [g["anchor"], *g["members"]]]
+        group_specs.append(
+            GroupSpec(
+                name=name, anchor=items[0], members=items[1:], arrangement=g["arrangement"],
+                repeat=g["repeat"], priority=g["priority"], required=g["required"],
+            )  # fmt: skip
+        )
+    return RoomSpec(
+        id=s.id,
+        name=s.name,
+        type=s.type,
+        area_m2=round(float(np.clip(s.area, 0.6, 400.0)), 2),
+        style=look.describe,
+        materials=materials,
+        groups=group_specs,
+        ornaments=[_item(o, look, furniture, rng) for o in ornaments],
+    )
+
+
+def _item(it: fu.Item, look: Look, furniture: str, rng: np.random.Generator) -> ItemSpec:
+    data = dict(it)
+    if not data.get("material"):
+        data["material"] = item_material(data["category"], look, furniture, rng)
+    return ItemSpec(**data)

@@ -1,0 +1,379 @@
+"""Text parsing for the offline planner: counts, rooms, objects, styles, materials.
+
+``parse(text)`` finds, in one pass over the normalized text, the kind of building,
+the rooms and objects it names (with counts and the user's own words), arrangement
+phrases, styles, colours and material phrases. It makes no random choice; the
+planner (:mod:`anyhome.plan.offline`) turns the result into a ``HouseSpec``.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+
+from anyhome.plan.knowledge import load, normalize, vocabulary
+
+MAX_PARSE_CHARS = 4000
+"""Only this many characters of the text are parsed; the rest is ignored with a warning."""
+
+NUMBER_WORDS: dict[str, int] = {
+    "zero": 0, "no": 0, "a": 1, "an": 1, "one": 1, "single": 1, "two": 2, "double": 2,
+    "twin": 2, "pair": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8,
+    "nine": 9, "ten": 10, "eleven": 11, "twelve": 12, "dozen": 12, "thirteen": 13,
+    "fourteen": 14, "fifteen": 15, "sixteen": 16, "seventeen": 17, "eighteen": 18,
+    "nineteen": 19, "twenty": 20, "thirty": 30, "forty": 40, "fifty": 50, "hundred": 100,
+    "thousand": 1000,
+}  # fmt: skip
+"""Count words; "a"/"an" count as one."""
+
+MANY_WORDS = frozenset({"several", "many", "some", "few", "multiple", "lots", "plenty", "numerous"})
+"""Words meaning "more than one, number unsaid"."""
+
+FULL_WORDS = ("full of", "filled with", "lined with", "packed with", "lots of", "rows of")
+"""Phrases asking for the generous end of a plural's range."""
+
+SIZE_WORDS: dict[str, float] = {
+    "tiny": 0.7, "small": 0.8, "little": 0.8, "compact": 0.8, "cramped": 0.7, "cozy": 0.95,
+    "big": 1.25, "large": 1.25, "spacious": 1.3, "huge": 1.4, "grand": 1.3, "vast": 1.4,
+    "generous": 1.2, "long": 1.0, "open": 1.05, "great": 1.2,
+}  # fmt: skip
+"""Size adjectives -> area (rooms, buildings) or size (objects) factor."""
+
+STOP_WORDS = frozenset(
+    "the and or with of in on at for to by from into inside near next as is are has have "
+    "having that which where featuring containing plus also some my our their his her its "
+    "this these those there here it them each every per".split()
+)
+"""Words that end the look-back from a mention towards its count and adjectives."""
+
+CONTEXT_OPENERS = re.compile(
+    r"^\s*(?:,\s*)?(?:with|full of|filled with|lined with|packed with|featuring|containing|"
+    r"that has|which has|having|where|equipped with|furnished with)\b"
+)
+"""Text right after a room mention that makes the following objects belong to it."""
+
+IN_ROOM = re.compile(r"^\s*(?:in|inside|for|into|within|of)(?:\s+(?:the|a|an|my|our|each))?\s*$")
+"""Text between an object and a room that puts the object in that room."""
+
+ARRANGEMENTS: list[tuple[re.Pattern[str], str]] = [
+    (re.compile(r"\bin (?:\w+ )?rows?\b|\brows of\b|\bin a (?:\w+ )?grid\b|\bclassroom style\b"), "rows"),
+    (re.compile(r"\b(?:along|against|lining|around|on) (?:all )?(?:the |each )?(?:\w+ )?walls?\b"), "along_walls"),
+    (re.compile(r"\bin the (?:center|centre|middle)\b|\bcent(?:er|re)piece\b|\bin the (?:\w+ )?(?:center|centre|middle)\b"), "center"),
+    (re.compile(r"\baround (?:a|an|the|one) (?:\w+ )?(?:\w+ )?table\b"), "around"),
+    (re.compile(r"\bsymmetric(?:al|ally)?\b"), "symmetric"),
+]  # fmt: skip
+"""Arrangement phrases -> GroupSpec arrangement ("around" -> place_around a table)."""
+
+SURFACE_WORDS: dict[str, str] = {
+    "wall": "walls", "walls": "walls", "wallpaper": "walls", "accent": "walls",
+    "accents": "walls", "paneling": "walls", "panelling": "walls", "backsplash": "walls",
+    "floor": "floor", "floors": "floor", "flooring": "floor", "planks": "floor",
+    "floorboards": "floor", "parquet": "floor", "ceiling": "ceiling", "ceilings": "ceiling",
+    "beams": "ceiling", "furniture": "furniture", "furnishings": "furniture",
+    "furnishing": "furniture", "cabinets": "furniture", "cabinetry": "furniture",
+    "decor": "furniture", "details": "furniture", "countertops": "furniture",
+}  # fmt: skip
+"""Words after a material phrase that say which surface it dresses."""
+
+_TOKEN = re.compile(r"[a-z0-9]+(?:'[a-z0-9]+)*|[.,;:!?()]")
+_BED_BATH = re.compile(
+    r"\b(\d{1,3})\s*(?:b|br|bd|bed|beds|bdr|bdrm)\s*(?:,|and|\+)?\s*(\d{1,2}(?:\.5)?)\s*"
+    r"(?:b|ba|bth|bath|baths)\b"
+)
+_BR_ONLY = re.compile(r"\b(\d{1,3})\s*(?:br|bd|bdr|bdrm)\b")
+_PEOPLE = re.compile(
+    r"\b(?:family|household|group) of (\w+)\b|\bfor (\w+) (?:people|persons|adults|kids|children|guests)\b"
+)
+_COUPLE = re.compile(r"\b(?:couple|newlyweds|two people)\b")
+_UNKNOWN_ROOM = re.compile(r"\b([a-z]+) (room|nook|corner|suite|lounge|den)s?\b")
+
+
+@dataclass
+class Mention:
+    """A room or object named in the text."""
+
+    kind: str  # "room" | "object"
+    key: str  # rooms.yaml names key / objects.yaml key ("" for unknown rooms)
+    name: str  # the user's words, singular ("canopy bed", "wine cellar")
+    start: int
+    end: int
+    count: int | None = None  # explicit number, None if unsaid
+    plural: bool = False
+    many: bool = False  # "full of", "lots of", "several"
+    size: float = 1.0  # size factor from adjectives
+    words: list[str] = field(default_factory=list)  # adjectives kept in the name
+    room: int | None = None  # index of the room mention it belongs to (objects)
+    arrangement: str | None = None  # rows | along_walls | center | around | symmetric
+
+
+@dataclass
+class MaterialMention:
+    phrase: str  # "blue marble accent"
+    material: str  # "marble"
+    surfaces: list[str]  # floor | walls | ceiling | furniture
+    start: int
+    room: int | None = None  # room mention index, None -> whole house
+    explicit: bool = False  # a surface word (walls, floor...) named the surface
+
+
+@dataclass
+class Parsed:
+    """Everything ``parse`` found in the text."""
+
+    text: str
+    building: int | None = None  # index into programs.yaml buildings
+    building_size: float = 1.0
+    rooms: list[Mention] = field(default_factory=list)
+    objects: list[Mention] = field(default_factory=list)
+    styles: list[str] = field(default_factory=list)  # style keys, in order of appearance
+    colours: list[str] = field(default_factory=list)
+    materials: list[MaterialMention] = field(default_factory=list)
+    bedrooms: int | None = None  # from "3B2B" / "3br"
+    bathrooms: int | None = None
+    people: int | None = None
+    warnings: list[str] = field(default_factory=list)
+
+    @property
+    def recognized(self) -> bool:
+        return bool(
+            self.building is not None or self.rooms or self.objects or self.styles
+            or self.bedrooms or self.people
+        )  # fmt: skip
+
+
+def parse_number(word: str) -> int | None:
+    """``"12"`` -> 12, ``"twelve"`` -> 12, ``"a"`` -> 1; None for other words."""
+    if word.isdigit():
+        return int(word[:6])
+    return NUMBER_WORDS.get(word)
+
+
+def _tokens(text: str) -> list[tuple[str, int, int]]:
+    return [(m.group(), m.start(), m.end()) for m in _TOKEN.finditer(text)]
+
+
+def _look_back(m: Mention, text: str, tokens: list[tuple[str, int, int]], taken: list[tuple[int, int]], keep_words: bool) -> None:
+    """Fill count, size and adjectives of ``m`` from the words just before it."""
+    before = [t for t in tokens if t[2] <= m.start]
+    words: list[str] = []
+    prefix = text[max(0, m.start - 16) : m.start]
+    if any(prefix.rstrip().endswith(f) for f in FULL_WORDS):
+        m.many = True
+    for tok, s, e in reversed(before[-4:]):
+        if any(a <= s < b for a, b in taken):
+            break
+        n = parse_number(tok)
+        if n is not None:
+            m.count = n
+            break
+        if tok in MANY_WORDS:
+            m.many = True
+            break
+        if tok in SIZE_WORDS:
+            m.size *= SIZE_WORDS[tok]
+            continue
+        if tok in STOP_WORDS or not tok.isalpha() or tok.endswith("'s") or len(words) >= 2:
+            break
+        if keep_words:
+            words.insert(0, tok)
+    m.words = words
+    if m.count is not None and m.count > 1:
+        m.plural = True
+
+
+def _parse_building(text: str, p: Parsed) -> tuple[int, int] | None:
+    voc = vocabulary()
+    best = None
+    for mt in voc.building_regex.finditer(text):
+        best = mt
+        break
+    if best is None:
+        return None
+    p.building = voc.building_forms[best.group()]
+    tokens = _tokens(text[: best.start()])
+    for tok, _, _ in reversed(tokens[-3:]):
+        if tok in SIZE_WORDS:
+            p.building_size *= SIZE_WORDS[tok]
+        elif tok in STOP_WORDS:
+            break
+    return best.start(), best.end()
+
+
+def _find_mentions(text: str, p: Parsed, taken: list[tuple[int, int]]) -> list[Mention]:
+    voc = vocabulary()
+    found: list[Mention] = []
+    for mt in voc.regex.finditer(text):
+        if any(a < mt.end() and mt.start() < b for a, b in taken):
+            continue
+        entry, plural = voc.forms[mt.group()]
+        found.append(Mention(entry.kind, entry.key, entry.phrase, mt.start(), mt.end(), plural=plural))
+    found = _merge_adjacent(text, found)
+    spans = taken + [(m.start, m.end) for m in found]
+    for mt in _UNKNOWN_ROOM.finditer(text):
+        word = mt.group(1)
+        if word in STOP_WORDS or word in NUMBER_WORDS or word in SIZE_WORDS or word in MANY_WORDS:
+            continue
+        if any(a < mt.end() and mt.start() < b for a, b in spans):
+            continue
+        name = f"{word} {mt.group(2)}"
+        found.append(Mention("room", "", name, mt.start(), mt.end(), plural=mt.group().endswith("s")))
+    found.sort(key=lambda m: m.start)
+    return found
+
+
+def _merge_adjacent(text: str, found: list[Mention]) -> list[Mention]:
+    """Join object words written back to back ("buddha statue") into one mention."""
+    out: list[Mention] = []
+    for m in found:
+        prev = out[-1] if out else None
+        if (
+            prev is not None and prev.kind == "object" and m.kind == "object"
+            and not text[prev.end : m.start].strip() and not prev.plural
+        ):  # fmt: skip
+            m.name = f"{prev.name} {m.name}"
+            m.start = prev.start
+            out[-1] = m
+        else:
+            out.append(m)
+    return out
+
+
+def _apply_codes(text: str, p: Parsed) -> None:
+    mt = _BED_BATH.search(text)
+    if mt:
+        p.bedrooms = int(mt.group(1))
+        p.bathrooms = max(1, int(float(mt.group(2))))
+    else:
+        mt2 = _BR_ONLY.search(text)
+        if mt2:
+            p.bedrooms = int(mt2.group(1))
+    mt3 = _PEOPLE.search(text)
+    if mt3:
+        n = parse_number(mt3.group(1) or mt3.group(2) or "")
+        if n:
+            p.people = n
+    elif _COUPLE.search(text):
+        p.people = 2
+
+
+def _assign_rooms(text: str, mentions: list[Mention]) -> None:
+    """Attach each object mention to the room mention that governs it, if any."""
+    context: int | None = None
+    room_idx = {id(m): i for i, m in enumerate(x for x in mentions if x.kind == "room")}
+    for i, m in enumerate(mentions):
+        if m.kind == "room":
+            tail = text[m.end : m.end + 40]
+            context = room_idx[id(m)] if CONTEXT_OPENERS.match(tail) else None
+            continue
+        m.room = context
+        nxt = next((x for x in mentions[i + 1 :] if x.kind == "room"), None)
+        if nxt is not None:
+            between = text[m.end : nxt.start]
+            words_before = _strip_lookback(text, nxt)
+            if IN_ROOM.match(between[: len(between) - words_before]):
+                m.room = room_idx[id(nxt)]
+
+
+def _strip_lookback(text: str, m: Mention) -> int:
+    """Characters of adjectives/counts just before mention ``m`` (part of its phrase)."""
+    n = 0
+    if m.words:
+        n = len(" ".join(m.words)) + 1
+    return n
+
+
+def _apply_arrangements(text: str, mentions: list[Mention]) -> None:
+    for pattern, kind in ARRANGEMENTS:
+        for mt in pattern.finditer(text):
+            clause_start = max(
+                [x.end for x in mentions if x.kind == "room" and x.end <= mt.start()]
+                + [text.rfind(".", 0, mt.start()) + 1, 0]
+            )
+            cands = [x for x in mentions if x.kind == "object" and clause_start <= x.start < mt.start()]
+            prior_arr = [x for x in cands if x.arrangement is not None]
+            if prior_arr:
+                cands = [x for x in cands if x.start > prior_arr[-1].start]
+            if kind == "around":
+                cands = [x for x in cands if x.key != "table"][-1:]
+            for x in cands:
+                x.arrangement = x.arrangement or kind
+
+
+def _find_styles(text: str, p: Parsed) -> None:
+    voc = vocabulary()
+    for mt in voc.style_regex.finditer(text):
+        key = voc.style_forms[mt.group()]
+        if key not in p.styles:
+            p.styles.append(key)
+    for mt in voc.colour_regex.finditer(text):
+        c = mt.group()
+        if c not in ("dark", "light", "pale", "deep", "bright", "pastel") and c not in p.colours:
+            p.colours.append(c)
+
+
+def _find_materials(text: str, p: Parsed, rooms: list[Mention]) -> None:
+    voc = vocabulary()
+    defaults = load("styles")["materials"]
+    for mt in voc.material_regex.finditer(text):
+        material = mt.group()
+        words = [t for t, _, _ in _tokens(text[max(0, mt.start() - 30) : mt.start()])][-2:]
+        colour = [w for w in words if vocabulary().colour_regex.fullmatch(w)]
+        after = _tokens(text[mt.end() : mt.end() + 30])[:2]
+        surfaces: list[str] = []
+        explicit = False
+        phrase = " ".join(colour + [material])
+        for tok, _, _ in after:
+            if tok in SURFACE_WORDS:
+                surfaces.append(SURFACE_WORDS[tok])
+                explicit = True
+                phrase += " " + tok
+                break
+        if not surfaces:
+            surfaces = list(defaults.get(material, ["furniture"]))
+        room: int | None = None
+        tail = text[mt.end() : mt.end() + 50]
+        inm = re.match(r"^[\w ]{0,20}?\b(?:in|for|throughout) (?:the |a |an |my )?", tail)
+        if inm:
+            pos = mt.end() + inm.end()
+            room = next((i for i, r in enumerate(rooms) if r.start - len(" ".join(r.words)) - 2 <= pos <= r.start + 1), None)
+        if room is None:
+            for i, r in enumerate(rooms):
+                if r.end <= mt.start() and CONTEXT_OPENERS.match(text[r.end : r.end + 40]) and "." not in text[r.end : mt.start()] and mt.start() - r.end < 60:
+                    room = i
+        p.materials.append(MaterialMention(phrase, material, surfaces, mt.start(), room, explicit))
+
+
+def parse(text: str) -> Parsed:
+    """Parse ``text`` into a :class:`Parsed`; never raises on odd input."""
+    norm = normalize(text)
+    p = Parsed(text=norm)
+    if len(norm) > MAX_PARSE_CHARS:
+        p.warnings.append(f"text is {len(norm)} characters long; only the first {MAX_PARSE_CHARS} were read")
+        norm = norm[:MAX_PARSE_CHARS]
+        p.text = norm
+    taken: list[tuple[int, int]] = []
+    span = _parse_building(norm, p)
+    if span:
+        taken.append(span)
+    _apply_codes(norm, p)
+    mentions = _find_mentions(norm, p, taken)
+    tokens = _tokens(norm)
+    spans = taken + [(m.start, m.end) for m in mentions]
+    for m in mentions:
+        _look_back(m, norm, tokens, spans, keep_words=True)
+        if m.kind == "room":
+            kept = []
+            for w in m.words:
+                if w in vocabulary().style_forms or vocabulary().colour_regex.fullmatch(w):
+                    continue
+                kept.append(w)
+            m.words = kept
+        if m.words:
+            m.name = " ".join(m.words + [m.name])
+    _assign_rooms(norm, mentions)
+    _apply_arrangements(norm, mentions)
+    p.rooms = [m for m in mentions if m.kind == "room"]
+    p.objects = [m for m in mentions if m.kind == "object"]
+    _find_styles(norm, p)
+    _find_materials(norm, p, p.rooms)
+    return p

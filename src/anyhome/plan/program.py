@@ -1,0 +1,314 @@
+"""Room program and bubble diagram for the offline planner.
+
+``plan_rooms`` decides which rooms the house has (from the building program, the rooms
+the text names and the counts it gives) and ``connect`` links them into a connected
+bubble diagram with one entrance.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from anyhome.house import ROOM_TYPES
+from anyhome.plan.knowledge import load
+from anyhome.plan.parse import Mention, Parsed
+from anyhome.plan.spec import MAX_ROOMS
+
+HUB_MAX_DEGREE = 6
+"""Most connections (entrance included) a hub room (hallway, living room...) may hold."""
+
+ROOM_MAX_DEGREE = 3
+"""Most connections a non-hub room may hold (its parent and up to two rooms behind it)."""
+
+DEFAULT_PROGRAM = "home"
+"""Program used when the text names no building and no room."""
+
+HOME_TYPES = frozenset({"bedroom", "bathroom", "kitchen", "living_room"})
+"""Room types that turn a list of named rooms into a home."""
+
+AREA_LIMITS_M2 = (1.5, 120.0)
+"""Smallest and largest planned room area."""
+
+
+@dataclass
+class Slot:
+    """One planned room before it becomes a RoomSpec."""
+
+    name: str
+    type: str
+    furnish: str
+    area_range: tuple[float, float]
+    key: str = ""  # program room key
+    mention: int | None = None  # index into Parsed.rooms that named it
+    generic_name: bool = True  # the name is the program's default
+    size: float = 1.0
+    beds: int | None = None  # beds to plan (family sizes)
+    id: str = ""
+    area: float = 0.0
+    optional: bool = False
+    extra_groups: list[str] = field(default_factory=list)
+
+
+def _type_info(room_type: str) -> dict:
+    types = load("rooms")["types"]
+    return types.get(room_type, types["other"])
+
+
+def _slot_from_entry(e: dict) -> Slot:
+    t = e["type"] if e["type"] in ROOM_TYPES else "other"
+    area = e.get("area") or _type_info(t)["area"]
+    return Slot(e.get("name", t.replace("_", " ")), t, e.get("furnish", t), tuple(area), key=e.get("key", ""))
+
+
+def _slot_from_mention(m: Mention, idx: int) -> Slot:
+    info = load("rooms")["names"].get(m.key) if m.key else None
+    if info is None:
+        t = "other"
+        info = {}
+    else:
+        t = info["type"] if info["type"] in ROOM_TYPES else "other"
+    area = info.get("area") or _type_info(t)["area"]
+    name = m.name if m.words or not info.get("name") else info["name"]
+    s = Slot(name, t, info.get("furnish", t), tuple(area), mention=idx, generic_name=False, size=m.size)
+    return s
+
+
+def _sample_count(spec, rng: np.random.Generator) -> int:
+    if isinstance(spec, list):
+        return int(rng.integers(spec[0], spec[1] + 1))
+    return int(spec if spec is not None else 1)
+
+
+def choose_program(parsed: Parsed) -> tuple[str | None, list[str]]:
+    """Program key (None: only the named rooms) and the styles the building implies."""
+    if parsed.building is not None:
+        b = load("programs")["buildings"][parsed.building]
+        return b["program"], list(b.get("styles", []))
+    if parsed.rooms:
+        types = {_slot_from_mention(m, i).type for i, m in enumerate(parsed.rooms)}
+        if parsed.bedrooms or parsed.people or (len(types) >= 3 and types & HOME_TYPES):
+            return DEFAULT_PROGRAM, []
+        return None, []
+    return DEFAULT_PROGRAM, []
+
+
+def plan_rooms(parsed: Parsed, program: str | None, rng: np.random.Generator, warnings: list[str]) -> tuple[list[Slot], str | None]:
+    """Rooms of the house; returns the slots and the key of the program's main room."""
+    prog = load("programs")["programs"].get(program) if program else None
+    slots: list[Slot] = []
+    if prog is not None:
+        for e in prog["rooms"]:
+            n = _sample_count(e.get("count", 1), rng)
+            opt = e.get("optional")
+            if opt is not None and rng.random() >= float(opt):
+                n = 0
+            for _ in range(n):
+                s = _slot_from_entry(e)
+                s.optional = opt is not None
+                slots.append(s)
+    fixed = _fixed_counts(parsed)
+    _claim_mentions(parsed, slots, fixed)
+    _apply_fixed(slots, fixed, prog)
+    _apply_people(parsed, slots, fixed)
+    _add_hallway(slots, prog)
+    _cap(slots, warnings)
+    if prog is not None and not slots:
+        slots.append(_slot_from_entry(prog["rooms"][0]))
+    if not slots:
+        slots.append(_slot_from_entry({"type": "living_room", "name": "living room"}))
+    _name_and_number(slots)
+    return slots, (prog or {}).get("main")
+
+
+def _fixed_counts(parsed: Parsed) -> dict[str, int]:
+    fixed: dict[str, int] = {}
+    names = load("rooms")["names"]
+    for m in parsed.rooms:
+        info = names.get(m.key) or {}
+        if info.get("generic") and m.count is not None:
+            fixed[info["type"]] = fixed.get(info["type"], 0) + m.count
+    if parsed.bedrooms is not None:
+        fixed["bedroom"] = parsed.bedrooms
+    if parsed.bathrooms is not None:
+        fixed["bathroom"] = parsed.bathrooms
+    return fixed
+
+
+def _claim_mentions(parsed: Parsed, slots: list[Slot], fixed: dict[str, int]) -> None:
+    names = load("rooms")["names"]
+    for i, m in enumerate(parsed.rooms):
+        if m.count == 0:
+            continue
+        proto = _slot_from_mention(m, i)
+        generic = bool((names.get(m.key) or {}).get("generic"))
+        n = max(1, m.count or 1) if (generic or m.count) else 1
+        n = min(n, 64)
+        for _ in range(n):
+            same_name = [s for s in slots if s.mention is None and s.name == proto.name]
+            same_type = [s for s in slots if s.mention is None and s.type == proto.type]
+            target = (same_name or same_type or [None])[0]
+            if target is None:
+                target = Slot(proto.name, proto.type, proto.furnish, proto.area_range)
+                slots.append(target)
+            target.mention = i
+            target.size = proto.size
+            target.optional = False
+            target.name = proto.name
+            target.generic_name = generic
+            if not generic or target.type != proto.type:
+                target.furnish, target.type = proto.furnish, proto.type
+                target.area_range = proto.area_range
+
+
+def _apply_fixed(slots: list[Slot], fixed: dict[str, int], prog: dict | None) -> None:
+    for t, n in fixed.items():
+        of_type = [s for s in slots if s.type == t]
+        while len(of_type) > n:
+            victim = next((s for s in reversed(of_type) if s.mention is None), None)
+            victim = victim or next((s for s in reversed(of_type) if s.generic_name), None)
+            if victim is None:
+                break
+            slots.remove(victim)
+            of_type.remove(victim)
+        entry = next((e for e in (prog or {}).get("rooms", []) if e["type"] == t), None)
+        while len(of_type) < n:
+            s = _slot_from_entry(entry or {"type": t, "name": t.replace("_", " ")})
+            slots.append(s)
+            of_type.append(s)
+
+
+def _apply_people(parsed: Parsed, slots: list[Slot], fixed: dict[str, int]) -> None:
+    if not parsed.people or "bedroom" in fixed:
+        return
+    people = min(parsed.people, 40)
+    kids = max(0, people - 2)
+    beds_per_room = [1] * kids if kids <= 2 else [2] * (kids // 2) + [1] * (kids % 2)
+    want = 1 + len(beds_per_room)
+    bedrooms = [s for s in slots if s.type == "bedroom"]
+    while len(bedrooms) > want:
+        slots.remove(bedrooms.pop())
+    while len(bedrooms) < want:
+        s = _slot_from_entry({"type": "bedroom", "name": "bedroom"})
+        slots.append(s)
+        bedrooms.append(s)
+    for s, beds in zip(bedrooms[1:], beds_per_room):
+        s.furnish, s.beds = "kids_bedroom", beds
+        if s.generic_name:
+            s.name = "kids' bedroom"
+    if people >= 4 and "bathroom" not in fixed and sum(s.type == "bathroom" for s in slots) < 2:
+        slots.append(_slot_from_entry({"type": "bathroom", "name": "bathroom"}))
+
+
+def _cap(slots: list[Slot], warnings: list[str]) -> None:
+    by_type: dict[str, list[Slot]] = {}
+    for s in slots:
+        by_type.setdefault(s.type, []).append(s)
+    for t, group in by_type.items():
+        cap = int(_type_info(t).get("max", 6))
+        if len(group) > cap:
+            warnings.append(f"asked for {len(group)} rooms of type {t}; planned {cap}, the most one house holds")
+            for s in group[cap:]:
+                slots.remove(s)
+    if len(slots) <= MAX_ROOMS:
+        return
+    asked = len(slots)
+    for s in [s for s in reversed(slots) if s.optional and s.type != "hallway"]:
+        if len(slots) <= MAX_ROOMS:
+            break
+        slots.remove(s)
+    while len(slots) > MAX_ROOMS:
+        counts: dict[str, int] = {}
+        for s in slots:
+            if s.type != "hallway" or len(slots) <= 2:
+                counts[s.type] = counts.get(s.type, 0) + 1
+        t = max(counts, key=lambda k: counts[k])
+        slots.remove(next(s for s in reversed(slots) if s.type == t))
+    warnings.append(f"the text asks for {asked} rooms; planned {MAX_ROOMS}, the most one plan holds")
+
+
+def _add_hallway(slots: list[Slot], prog: dict | None) -> None:
+    if prog is None or any(s.type == "hallway" for s in slots):
+        return
+    private = sum(s.type in ("bedroom", "bathroom", "study", "closet") for s in slots)
+    if private >= 4:
+        slots.append(_slot_from_entry({"type": "hallway", "name": "hallway"}))
+
+
+def _slug(text: str) -> str:
+    return re.sub(r"[^a-z0-9]+", "_", text.lower()).strip("_") or "room"
+
+
+def _name_and_number(slots: list[Slot]) -> None:
+    """Unique names ("bedroom", "bedroom 2") and ids; a master bedroom when several."""
+    bedrooms = [s for s in slots if s.type == "bedroom" and s.furnish == "bedroom"]
+    if len([s for s in slots if s.type == "bedroom"]) >= 2 and bedrooms and bedrooms[0].generic_name:
+        if not any("master" in s.name for s in slots):
+            bedrooms[0].name, bedrooms[0].furnish = "master bedroom", "master_bedroom"
+    seen: dict[str, int] = {}
+    for s in slots:
+        seen[s.name] = seen.get(s.name, 0) + 1
+        if seen[s.name] > 1:
+            s.name = f"{s.name} {seen[s.name]}"
+    ids: set[str] = set()
+    for s in slots:
+        base = _slug(s.name)
+        rid, k = base, 2
+        while rid in ids:
+            rid, k = f"{base}_{k}", k + 1
+        ids.add(rid)
+        s.id = rid
+
+
+def sample_areas(slots: list[Slot], building_size: float, rng: np.random.Generator) -> None:
+    for s in slots:
+        lo, hi = s.area_range
+        a = float(rng.uniform(lo, hi)) * s.size * building_size
+        s.area = float(np.clip(a, *AREA_LIMITS_M2))
+
+
+def connect(slots: list[Slot], entrance_types: list[str]) -> list[tuple[str, str]]:
+    """A tree over the rooms (hubs first) plus one (room, "outside") entrance edge."""
+    types = load("rooms")["types"]
+
+    def is_hub(s: Slot) -> bool:
+        return bool(_type_info(s.type).get("hub"))
+
+    root = None
+    for t in [*entrance_types, "entry", "reception", "hallway", "living_room", "waiting_room"]:
+        root = next((s for s in slots if s.type == t), None)
+        if root is not None:
+            break
+    root = root or next((s for s in slots if is_hub(s)), slots[0])
+    degree = {s.id: 0 for s in slots}
+    degree[root.id] = 1
+    edges: list[tuple[str, str]] = []
+    placed = [root]
+    order = sorted((s for s in slots if s is not root), key=lambda s: (types.get(s.type, types["other"])["tier"], slots.index(s)))
+    for s in order:
+        attach = _type_info(s.type).get("attach", [])
+
+        def cap(p: Slot) -> int:
+            return HUB_MAX_DEGREE if is_hub(p) else ROOM_MAX_DEGREE
+
+        free = [p for p in placed if degree[p.id] < cap(p)]
+        ranked = [p for t in attach for p in free if p.type == t]
+        by_degree = sorted(placed, key=lambda p: degree[p.id])
+        parent = (
+            ranked
+            or [p for p in by_degree if p in free and is_hub(p)]
+            or [p for p in by_degree if p.type in attach]
+            or [p for p in by_degree if is_hub(p)]
+            or by_degree
+        )[0]
+        edges.append((parent.id, s.id))
+        degree[parent.id] += 1
+        degree[s.id] += 1
+        placed.append(s)
+    for s in slots:
+        if s.type == "hallway":
+            s.area = max(s.area, min(14.0, 1.5 + 1.3 * degree[s.id]))
+    return edges + [(root.id, "outside")]
+

@@ -1,0 +1,279 @@
+"""Each placement rule, alone in a simple room."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from shapely.geometry import Polygon
+
+from anyhome.geometry import back_edge, footprint_polygon, on_boundary
+from anyhome.layout import LayoutResult, layout_house
+
+from .helpers import check_valid, front, group, house_spec, item, l_shape, rect, single_room
+
+ROOM = rect(0, 0, 5, 4)
+
+
+def run(groups, polygon=ROOM, seed=0, ornaments=None, **fp_kw):
+    fp = single_room(polygon, **fp_kw)
+    spec = house_spec({"r1": groups}, ornaments={"r1": ornaments or []})
+    res = layout_house(spec, fp, np.random.default_rng(seed))
+    assert isinstance(res, LayoutResult)
+    assert check_valid(fp, res.objects) == []
+    return fp, res
+
+
+def named(res, name):
+    return [o for o in res.objects if o.name == name]
+
+
+def walls_touched(o, polygon, tol=0.011):
+    poly = footprint_polygon(o.position, o.size, o.yaw)
+    edges = Polygon(polygon).exterior
+    n = 0
+    pts = list(edges.coords)
+    from shapely.geometry import LineString
+
+    for a, b in zip(pts[:-1], pts[1:]):
+        if LineString([a, b]).distance(poly) < tol and poly.intersection(LineString([a, b]).buffer(tol)).length > 0.05:
+            n += 1
+    return n
+
+
+def faces(o, target):
+    """o's front points towards target's centre (within 45 degrees)."""
+    v = np.asarray(target.position[:2]) - np.asarray(o.position[:2])
+    return float(front(o.yaw) @ v) / np.linalg.norm(v) > math.cos(math.pi / 4)
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_place_corner_touches_two_walls(seed):
+    _, res = run([group("g", item("wardrobe", "wardrobe", (1.2, 0.6, 2.0), "place_corner"))], seed=seed)
+    (o,) = res.objects
+    assert o.rule == "place_corner"
+    assert on_boundary(Polygon(ROOM), back_edge(o.position, o.size, o.yaw))
+    assert walls_touched(o, ROOM) == 2
+
+
+def test_place_wall_back_on_wall_facing_room():
+    _, res = run([group("g", item("bed", "bed", (1.6, 2.0, 0.6), "place_wall"))])
+    (o,) = res.objects
+    assert on_boundary(Polygon(ROOM), back_edge(o.position, o.size, o.yaw))
+    centre = np.array([2.5, 2.0])
+    assert float(front(o.yaw) @ (centre - np.asarray(o.position[:2]))) > 0
+
+
+def test_place_wall_longest():
+    for seed in range(3):
+        _, res = run([group("g", item("sofa", "sofa", (1.8, 0.9, 0.8), "place_wall", params={"wall": "longest"}))], seed=seed)
+        (o,) = res.objects
+        assert abs(math.cos(o.yaw)) > 0.99  # back on a 5 m (horizontal) wall
+
+
+def test_place_next_wall_forms_a_run():
+    counter = item("counter", "counter", (0.6, 0.6, 0.9), "place_wall")
+    members = [item("sink", "sink", (0.8, 0.6, 0.9), "place_next_wall"),
+               item("stove", "stove", (0.6, 0.6, 0.9), "place_next_wall")]
+    _, res = run([group("kitchen", counter, members)])
+    objs = {o.name: o for o in res.objects}
+    assert set(objs) == {"counter", "sink", "stove"}
+    for o in objs.values():
+        assert on_boundary(Polygon(ROOM), back_edge(o.position, o.size, o.yaw))
+    # sink touches the counter side by side
+    a, b = objs["counter"], objs["sink"]
+    gap = footprint_polygon(a.position, a.size, a.yaw).distance(footprint_polygon(b.position, b.size, b.yaw))
+    assert gap < 0.05
+
+
+def test_along_walls_runs():
+    case = item("display case", "cabinet", (1.0, 0.5, 1.8), "place_wall")
+    _, res = run([group("cases", case, arrangement="along_walls", repeat=4)], polygon=rect(0, 0, 7, 5),
+                 door=((3.0, 0.0), (4.0, 0.0)))
+    assert len(res.objects) == 4
+    for o in res.objects:
+        assert on_boundary(Polygon(rect(0, 0, 7, 5)), back_edge(o.position, o.size, o.yaw))
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_place_center_clear_of_walls(seed):
+    _, res = run([group("g", item("table", "table", (1.2, 0.8, 0.75), "place_center"))], polygon=rect(0, 0, 6, 5), seed=seed)
+    (o,) = res.objects
+    poly = footprint_polygon(o.position, o.size, o.yaw)
+    assert Polygon(rect(0, 0, 6, 5)).exterior.distance(poly) >= 0.39
+    assert np.linalg.norm(np.asarray(o.position[:2]) - [3.0, 2.5]) < 1.5
+
+
+def test_place_next_side_by_side_same_facing():
+    anchor = item("table", "table", (1.0, 0.6, 0.75), "place_center")
+    _, res = run([group("g", anchor, arrangement="free", repeat=1,
+                        members=[item("bench", "bench", (1.0, 0.4, 0.45), "place_next", count=2)])],
+                 polygon=rect(0, 0, 6, 5))
+    b = named(res, "bench")
+    assert len(b) == 2
+    assert abs(math.cos(b[0].yaw - b[1].yaw) - 1) < 1e-6
+    d = footprint_polygon(b[0].position, b[0].size, b[0].yaw).distance(
+        footprint_polygon(b[1].position, b[1].size, b[1].yaw))
+    assert d < 0.35
+
+
+def test_place_beside_both_sides_backs_aligned():
+    bed = item("bed", "bed", (1.6, 2.0, 0.6), "place_wall")
+    ns = item("nightstand", "nightstand", (0.45, 0.4, 0.55), "place_beside", count=2)
+    _, res = run([group("bed", bed, [ns])])
+    b = named(res, "bed")[0]
+    n = named(res, "nightstand")
+    assert len(n) == 2
+    r = np.array([math.cos(b.yaw), math.sin(b.yaw)])
+    sides = sorted(np.sign((np.asarray(x.position[:2]) - b.position[:2]) @ r) for x in n)
+    assert sides == [-1, 1]
+    bb = back_edge(b.position, b.size, b.yaw).mean(0) @ front(b.yaw)
+    for x in n:
+        assert abs(back_edge(x.position, x.size, x.yaw).mean(0) @ front(x.yaw) - bb) < 1e-6
+        assert abs(math.cos(x.yaw - b.yaw) - 1) < 1e-6
+
+
+@pytest.mark.parametrize("count", [2, 4, 6])
+def test_place_around_chairs_face_table(count):
+    table = item("dining table", "table", (1.6, 0.9, 0.75), "place_center")
+    chair = item("chair", "chair", (0.45, 0.5, 0.9), "place_around", count=count)
+    _, res = run([group("dining", table, [chair])], polygon=rect(0, 0, 6, 5))
+    t = named(res, "dining table")[0]
+    chairs = named(res, "chair")
+    assert len(chairs) == count
+    for c in chairs:
+        assert faces(c, t)
+        assert c.anchor == t.id and c.group == "dining-0"
+
+
+def test_place_front_chair_faces_desk():
+    desk = item("desk", "desk", (1.2, 0.6, 0.75), "place_wall")
+    chair = item("chair", "chair", (0.5, 0.5, 0.9), "place_front", params={"distance_m": 0.1})
+    _, res = run([group("desk", desk, [chair])])
+    d, c = named(res, "desk")[0], named(res, "chair")[0]
+    assert faces(c, d)
+    # in front of the desk
+    assert float(front(d.yaw) @ (np.asarray(c.position[:2]) - d.position[:2])) > d.size[1] / 2
+
+
+def test_sofa_faces_tv():
+    sofa = item("sofa", "sofa", (2.0, 0.9, 0.85), "place_wall", params={"wall": "longest"})
+    tv = item("tv stand", "tv_stand", (1.4, 0.45, 0.5), "place_front", params={"distance_m": 2.0})
+    _, res = run([group("living", sofa, [tv])], polygon=rect(0, 0, 5, 4.5))
+    s, t = named(res, "sofa")[0], named(res, "tv stand")[0]
+    assert faces(s, t) and faces(t, s)
+
+
+def test_place_top_z_equals_top():
+    desk = item("desk", "desk", (1.2, 0.6, 0.75), "place_wall")
+    lamp = item("lamp", "lamp", (0.3, 0.3, 0.5), "place_top")
+    _, res = run([group("desk", desk, [lamp])])
+    d, lp = named(res, "desk")[0], named(res, "lamp")[0]
+    assert lp.support == d.id
+    assert lp.position[2] == pytest.approx(d.position[2] + d.size[2])
+    assert footprint_polygon(d.position, d.size, d.yaw).contains(footprint_polygon(lp.position, lp.size, lp.yaw))
+
+
+def test_place_top_shrinks_or_drops():
+    stand = item("nightstand", "nightstand", (0.4, 0.4, 0.55), "place_wall")
+    big = item("big lamp", "lamp", (0.6, 0.5, 0.8), "place_top")
+    huge = item("tv", "tv", (2.0, 0.5, 1.0), "place_top")
+    _, res = run([group("g", stand, [big, huge])])
+    lamp = named(res, "big lamp")[0]
+    assert lamp.size[0] < 0.6 and lamp.size[0] / lamp.size[2] == pytest.approx(0.6 / 0.8)
+    assert [d.name for d in res.dropped] == ["tv"]
+
+
+def test_place_on_wall_not_over_door_or_window():
+    door = ((1.0, 0.0), (2.0, 0.0))
+    windows = [((5.0, 1.0), (5.0, 3.0)), ((0.0, 0.5), (0.0, 3.5))]
+    art = item("painting", "painting", (1.0, 0.04, 0.7), "place_on_wall")
+    orn = [item("clock", "clock", (0.4, 0.05, 0.4), "place_on_wall", count=3)]
+    for seed in range(5):
+        _, res = run([group("art", art)], door=door, windows=windows, ornaments=orn, seed=seed)
+        assert len(res.objects) == 4
+        for o in res.objects:
+            assert o.support == "wall"
+            assert o.position[2] + o.size[2] <= 2.7 - 0.05 + 1e-9
+            be = back_edge(o.position, o.size, o.yaw)
+            # never over the door span of the south wall
+            if np.all(np.abs(be[:, 1]) < 1e-6):
+                assert be[:, 0].max() <= 1.0 or be[:, 0].min() >= 2.0
+
+
+def test_place_on_wall_behind_target():
+    bed = item("bed", "bed", (1.6, 2.0, 0.6), "place_wall")
+    art = item("painting", "painting", (1.0, 0.04, 0.6), "place_on_wall")
+    _, res = run([group("bed", bed, [art])])
+    b, p = named(res, "bed")[0], named(res, "painting")[0]
+    assert abs(math.cos(b.yaw - p.yaw) - 1) < 1e-6
+    assert np.linalg.norm(back_edge(b.position, b.size, b.yaw).mean(0) - back_edge(p.position, p.size, p.yaw).mean(0)) < 0.5
+    assert p.position[2] >= b.size[2]
+
+
+def test_rows_arrangement_two_rows_facing_board():
+    board = item("whiteboard", "whiteboard", (2.0, 0.05, 1.0), "place_on_wall", params={"elevation_m": 0.9})
+    desk = item("desk", "desk", (1.0, 0.5, 0.75), "place_center")
+    chair = item("chair", "chair", (0.45, 0.45, 0.85), "place_front", params={"distance_m": 0.1})
+    fp, res = run([group("board", board), group("desks", desk, [chair], arrangement="rows", repeat=8, priority=1)],
+                  polygon=rect(0, 0, 8, 7), door=((0.5, 0.0), (1.4, 0.0)))
+    desks, chairs = named(res, "desk"), named(res, "chair")
+    assert len(desks) == 8 and len(chairs) == 8
+    b = named(res, "whiteboard")[0]
+    nb = front(b.yaw)  # into the room
+    rows = {round(float(np.asarray(d.position[:2]) @ nb), 2) for d in desks}
+    assert len(rows) >= 2
+    assert len({round(d.yaw, 6) for d in desks}) == 1
+    for c in chairs:  # students look at the board
+        assert float(front(c.yaw) @ nb) < -0.99
+
+
+def test_l_shaped_room_valid():
+    poly = l_shape(6, 5, 2.5, 2)
+    groups = [
+        group("bed", item("bed", "bed", (1.6, 2.0, 0.6), "place_wall"),
+              [item("nightstand", "nightstand", (0.45, 0.4, 0.55), "place_beside", count=2)]),
+        group("desk", item("desk", "desk", (1.2, 0.6, 0.75), "place_corner"),
+              [item("chair", "chair", (0.5, 0.5, 0.9), "place_front")]),
+        group("table", item("table", "table", (1.0, 1.0, 0.75), "place_center"),
+              [item("stool", "stool", (0.4, 0.4, 0.45), "place_around", count=4)]),
+    ]
+    for seed in range(3):
+        _, res = run(groups, polygon=poly, seed=seed)
+        assert len(res.objects) >= 8
+
+
+def test_oversize_is_dropped_with_reason():
+    groups = [
+        group("huge", item("pool table", "table", (6.0, 5.0, 0.8), "place_center"),
+              [item("cue rack", "rack", (0.5, 0.1, 1.0), "place_on_wall")]),
+        group("tall", item("tower", "shelf", (0.5, 0.5, 3.5), "place_wall")),
+    ]
+    _, res = run(groups)
+    assert res.objects == []
+    reasons = {d.name: d.reason for d in res.dropped}
+    assert "larger" in reasons["pool table"]
+    assert "taller" in reasons["tower"]
+    assert "anchor" in reasons["cue rack"]
+
+
+def test_ornaments_on_surfaces_and_walls():
+    groups = [group("desk", item("desk", "desk", (1.2, 0.6, 0.75), "place_wall")),
+              group("shelf", item("bookshelf", "shelf", (0.8, 0.35, 1.0), "place_wall"))]
+    orn = [item("vase", "vase", (0.15, 0.15, 0.3), "place_top", count=2),
+           item("book stack", "books", (0.2, 0.15, 0.1), "place_top", target="bookshelf"),
+           item("poster", "poster", (0.6, 0.02, 0.8), "place_on_wall")]
+    _, res = run(groups, ornaments=orn)
+    by = {o.name: o for o in res.objects}
+    assert by["book stack"].support == by["bookshelf"].id
+    assert named(res, "vase")[0].support in {by["desk"].id, by["bookshelf"].id}
+    assert by["poster"].support == "wall" and by["poster"].group is None and by["poster"].anchor is None
+
+
+def test_doors_kept_clear_and_ids_readable():
+    groups = [group("g", item("cabinet", "cabinet", (0.8, 0.5, 1.2), "place_wall"), repeat=6)]
+    fp, res = run(groups, door=((0.0, 1.0), (0.0, 2.0)))
+    ids = [o.id for o in res.objects]
+    assert len(set(ids)) == len(ids)
+    assert all(i.startswith("r1-cabinet-") for i in ids)

@@ -1,0 +1,162 @@
+"""The offline planner: valid, deterministic, diverse plans; bad input handled."""
+
+import json
+import re
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from anyhome.errors import PlanError
+from anyhome.house import ROOM_TYPES
+from anyhome.plan import get_planner
+from anyhome.plan.offline import OfflinePlanner
+from anyhome.plan.spec import MAX_ROOMS, HouseSpec
+
+PROMPTS = Path("/work/shared/eval/prompts.jsonl")
+PUBLIC = (
+    [json.loads(line) for line in PROMPTS.read_text().splitlines() if line.strip()]
+    if PROMPTS.exists()
+    else []
+)
+TEXTS = [p["prompt"] for p in PUBLIC] or [
+    "A one-bedroom, one-bathroom haunted house featuring dark wood and antique furnishings.",
+    "A cat cafe.",
+    "A conference room with a long table and twelve chairs.",
+]
+
+
+def plan(text, seed=0):
+    return OfflinePlanner().plan(text, np.random.default_rng(seed))
+
+
+def _connected(h: HouseSpec) -> bool:
+    adj = {r.id: set() for r in h.rooms}
+    for a, b in h.connections:
+        if b != "outside":
+            adj[a].add(b)
+            adj[b].add(a)
+    seen, todo = set(), [h.entrance_room]
+    while todo:
+        r = todo.pop()
+        if r not in seen:
+            seen.add(r)
+            todo.extend(adj[r])
+    return seen == set(adj)
+
+
+@pytest.mark.parametrize("text", TEXTS)
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_public_prompts_plan_valid_houses(text, seed):
+    h = plan(text, seed)
+    HouseSpec.model_validate(h.model_dump())
+    assert 1 <= len(h.rooms) <= MAX_ROOMS
+    assert sum(b == "outside" for _, b in h.connections) == 1
+    assert _connected(h)
+    assert all(r.type in ROOM_TYPES for r in h.rooms)
+    for r in h.rooms:
+        assert set(r.materials) >= {"floor", "walls", "ceiling"} and all(r.materials.values())
+        for o in r.ornaments:
+            assert o.rule in ("place_top", "place_on_wall")
+
+
+def _count(text, term):
+    return sum(bool(re.search(rf"\b{re.escape(term)}(s|es)?\b", text)) for text in text)
+
+
+def _objects(h):
+    out = []
+    for r in h.rooms:
+        for g in r.groups:
+            for it in [g.anchor, *g.members]:
+                out += [f"{it.name} {it.category.replace('_', ' ')}"] * (it.count * g.repeat)
+        for o in r.ornaments:
+            out += [f"{o.name} {o.category.replace('_', ' ')}"] * o.count
+    return out
+
+
+def test_requested_counts_are_honoured():
+    h = plan("A three-bedroom family home with an open kitchen, a dining room and two bathrooms.")
+    names = [f"{r.name} {r.type.replace('_', ' ')}" for r in h.rooms]
+    assert _count(names, "bedroom") == 3 and _count(names, "bathroom") == 2
+    h = plan("A conference room with a long table and twelve chairs.")
+    assert _count(_objects(h), "chair") == 12
+    h = plan("A small office with four workstations and a meeting room.")
+    assert _count(_objects(h), "workstation") == 4
+
+
+def test_requested_groups_are_required_and_arranged():
+    h = plan("A classroom with desks and chairs arranged in neat rows facing a whiteboard.")
+    rows = [g for r in h.rooms for g in r.groups if g.arrangement == "rows"]
+    assert rows and rows[0].anchor.category == "desk" and rows[0].repeat >= 8 and rows[0].required
+
+
+def test_style_reaches_rooms_and_items():
+    h = plan("A gothic living room with wooden furniture.")
+    assert "gothic" in h.style
+    assert any("wooden" in it.material for r in h.rooms for g in r.groups for it in [g.anchor, *g.members])
+
+
+def test_same_seed_same_plan():
+    for text in TEXTS[:10]:
+        assert plan(text, 7).model_dump() == plan(text, 7).model_dump()
+
+
+def test_different_seeds_differ():
+    for text in ["A house.", "A cat cafe.", "A bedroom."]:
+        dumps = {json.dumps(plan(text, s).model_dump(), sort_keys=True) for s in range(4)}
+        assert len(dumps) > 1
+
+
+def test_empty_text_raises():
+    for text in ["", "   \n\t"]:
+        with pytest.raises(PlanError):
+            plan(text)
+
+
+def test_absurd_counts_are_capped_with_warning():
+    h = plan("a house with 200 bedrooms")
+    assert len(h.rooms) <= MAX_ROOMS and h.warnings
+    assert any("bedroom" in w for w in h.warnings)
+
+
+@pytest.mark.parametrize(
+    "text",
+    ["qwxz plorb", "一个有三个卧室的房子", "Ein Haus mit drei Schlafzimmern", "a " * 5000, "bedroom " * 2000,
+     "a house with no bathroom", "a house with 0 bedrooms and 99 kitchens"],
+)
+def test_odd_text_still_plans(text):
+    t0 = time.perf_counter()
+    h = plan(text)
+    assert time.perf_counter() - t0 < 2.0
+    assert h.rooms and _connected(h)
+
+
+def test_unrecognised_text_warns():
+    assert plan("qwxz plorb").warnings
+
+
+def test_long_text_ok():
+    text = ("A cozy cottage with a reading nook and a fireplace. " * 200)[:10000]
+    h = plan(text)
+    assert h.rooms and any("characters" in w for w in h.warnings)
+
+
+def test_speed():
+    planner = get_planner("offline")
+    planner.plan("warm up", np.random.default_rng(0))
+    t0 = time.perf_counter()
+    for i, text in enumerate(TEXTS):
+        planner.plan(text, np.random.default_rng(i))
+    assert (time.perf_counter() - t0) / len(TEXTS) < 0.05
+
+
+def test_degrees_are_modest():
+    for text in TEXTS:
+        h = plan(text)
+        deg = {}
+        for a, b in h.connections:
+            for x in (a, b):
+                deg[x] = deg.get(x, 0) + 1
+        assert max(v for k, v in deg.items() if k != "outside") <= 7

@@ -1,0 +1,89 @@
+"""Text parsing: counts, room and object mentions, styles, materials."""
+
+import pytest
+
+from anyhome.plan.parse import parse, parse_number
+
+
+@pytest.mark.parametrize(
+    ("word", "n"), [("12", 12), ("twelve", 12), ("a", 1), ("an", 1), ("three", 3), ("dozen", 12), ("chair", None)]
+)
+def test_parse_number(word, n):
+    assert parse_number(word) == n
+
+
+@pytest.mark.parametrize(
+    ("text", "beds", "baths"),
+    [("A 1B1B apartment", 1, 1), ("a 3b2b house", 3, 2), ("2br 1ba flat", 2, 1), ("a 3 bed 2 bath home", 3, 2)],
+)
+def test_bed_bath_codes(text, beds, baths):
+    p = parse(text)
+    assert (p.bedrooms, p.bathrooms) == (beds, baths)
+
+
+def _rooms(text):
+    return {m.key: m.count for m in parse(text).rooms}
+
+
+def test_room_counts_in_words_and_hyphens():
+    assert _rooms("A three-bedroom home with two bathrooms") == {"bedroom": 3, "bathroom": 2}
+    assert _rooms("a one-bedroom, one-bathroom house") == {"bedroom": 1, "bathroom": 1}
+
+
+def test_named_rooms_keep_user_words():
+    p = parse("A cottage with a reading nook, a wine cellar, a mudroom and a painting studio")
+    assert [m.name for m in p.rooms] == ["reading nook", "wine cellar", "mudroom", "painting studio"]
+
+
+def test_unknown_room_is_open_vocabulary():
+    p = parse("a house with a trophy room")
+    assert [m.name for m in p.rooms] == ["trophy room"] and p.rooms[0].key == ""
+
+
+def test_object_counts_and_plurals():
+    p = parse("A conference room with a long table and twelve chairs.")
+    objs = {m.key: m for m in p.objects}
+    assert objs["chair"].count == 12
+    assert objs["table"].name == "long table"
+    easels = parse("a painting studio full of easels").objects[0]
+    assert easels.key == "easel" and easels.plural and easels.many
+
+
+def test_objects_attach_to_their_room():
+    p = parse("A Victorian house with a parlor, a library full of bookshelves and a master bedroom with a canopy bed.")
+    rooms = [m.name for m in p.rooms]
+    by_key = {m.key: m for m in p.objects}
+    assert rooms[by_key["bookshelf"].room] == "library"
+    assert rooms[by_key["bed"].room] == "master bedroom"
+    assert by_key["bed"].name == "canopy bed"
+
+
+def test_adjacent_object_words_merge():
+    p = parse("a meditation room with a Buddha statue")
+    assert [(m.key, m.name) for m in p.objects] == [("statue", "buddha statue")]
+
+
+def test_arrangements():
+    p = parse("A museum display room with glass cases along the walls and a statue in the center.")
+    arr = {m.key: m.arrangement for m in p.objects}
+    assert arr == {"display case": "along_walls", "statue": "center"}
+    p = parse("A classroom with desks and chairs arranged in neat rows")
+    assert {m.arrangement for m in p.objects} == {"rows"}
+
+
+def test_styles_and_materials():
+    p = parse("A mid-century modern two-bedroom house with a blue marble accent in the bathroom.")
+    assert p.styles[0] == "midcentury"
+    mat = p.materials[0]
+    assert mat.phrase == "blue marble accent" and mat.surfaces == ["walls"]
+    assert p.rooms[mat.room].key == "bathroom"
+
+
+def test_building_and_family():
+    p = parse("A house for a family of five.")
+    assert p.people == 5 and p.building is not None
+
+
+def test_odd_input_never_raises():
+    for text in ["", "   ", "!!!", "日本語のテキスト", "x" * 10000, "a a a a a a", "0 bedrooms"]:
+        parse(text)
