@@ -3,14 +3,12 @@
 from __future__ import annotations
 
 import json
-from pathlib import Path
 
 import pytest
+from public_prompts import PUBLIC_PROMPTS as SHARED  # noqa: E402
 
 from anyhome.errors import EvalError
 from anyhome.evaluate import expectation_for_prompt, load_expectations, load_prompt_records
-
-SHARED = Path(__file__).resolve().parents[3] / "shared" / "eval" / "prompts.jsonl"
 
 
 def write(tmp_path, lines):
@@ -35,7 +33,6 @@ def test_load_and_lookup(tmp_path):
     assert [r["id"] for r in load_prompt_records(p)] == ["a", "b"]
 
 
-@pytest.mark.skipif(not SHARED.is_file(), reason="shared prompts file not present")
 def test_shared_prompts_file_loads():
     table = load_expectations(SHARED)
     assert len(table) >= 30

@@ -1,8 +1,8 @@
-"""Seed cells for room growth: a small force-directed layout of the bubble diagram.
+"""Seed positions of the rooms: a small force-directed layout of the bubble diagram.
 
 Connected rooms attract, all rooms repel by their size, rooms that need an exterior
 wall (habitable ones, the entrance room) are pulled to the footprint's edge and hub
-rooms (hallways, entries) to its middle. The positions then become one seed cell each.
+rooms (hallways, entries, service rooms) to its middle.
 """
 
 from __future__ import annotations
@@ -23,15 +23,15 @@ CENTER_GAIN = 0.08
 """Share of the distance to the centre a hub room closes per step."""
 
 
-def seed_cells(
+def seed_positions(
     grid: Grid,
     areas_m2: np.ndarray,
     edges: list[tuple[int, int]],
     exterior: np.ndarray,
     hub: np.ndarray,
     rng: np.random.Generator,
-) -> list[tuple[int, int]]:
-    """One distinct free padded cell per room.
+) -> np.ndarray:
+    """Position per room, in padded cell units, inside the footprint.
 
     Parameters
     ----------
@@ -50,7 +50,7 @@ def seed_cells(
         pos = pos + _repel(pos, radius) + _attract(pos, radius, edges)
         pos = pos + _to_edge(pos, radius, exterior, border) + hub[:, None] * CENTER_GAIN * (center - pos)
         pos = _snap_inside(pos, free, grid.owner == FREE)
-    return _distinct_cells(pos, free)
+    return pos
 
 
 def _repel(pos: np.ndarray, radius: np.ndarray) -> np.ndarray:
@@ -101,17 +101,3 @@ def _snap_inside(pos: np.ndarray, free: np.ndarray, inside: np.ndarray) -> np.nd
     for i in np.flatnonzero(~inside[idx[:, 0], idx[:, 1]]):
         pos[i] = free[int(np.argmin(np.linalg.norm(free - pos[i], axis=1)))]
     return pos
-
-
-def _distinct_cells(pos: np.ndarray, free: np.ndarray) -> list[tuple[int, int]]:
-    taken: set[tuple[int, int]] = set()
-    out = []
-    for p in pos:
-        order = np.argsort(np.linalg.norm(free - p, axis=1))
-        for k in order:
-            cell = (int(free[k][0]), int(free[k][1]))
-            if cell not in taken:
-                taken.add(cell)
-                out.append(cell)
-                break
-    return out

@@ -1,8 +1,9 @@
 """solve_floorplan: HouseSpec -> Floorplan by seeded room growth with bounded retries.
 
 Each attempt draws a compact footprint (rectangle or L) sized from the target areas,
-places one seed per room with a force layout of the bubble diagram, grows the rooms
-until they fill the footprint, and then checks the hard constraints: usable room
+places one seed per room with a force layout of the bubble diagram, slices the
+footprint into room rectangles following the seeds, and then checks the hard
+constraints: usable room
 shapes and areas, a shared wall for every connection, an exterior wall for the
 entrance and every habitable room. Valid attempts are scored on area error and shape;
 the best of the first few is kept. A program that fails every attempt raises
@@ -19,10 +20,10 @@ import numpy as np
 
 from anyhome.errors import FloorplanError
 from anyhome.floorplan.doors import PlacedDoor, door_kind, place_door
-from anyhome.floorplan.grid import OUTSIDE, Grid, make_footprint, min_side_cells
-from anyhome.floorplan.growth import Goal, grow_rooms
+from anyhome.floorplan.grid import FREE, OUTSIDE, Grid, make_footprint, min_side_cells
 from anyhome.floorplan.program import CORRIDOR_TYPES, Program
-from anyhome.floorplan.seeds import seed_cells
+from anyhome.floorplan.seeds import seed_positions
+from anyhome.floorplan.slicing import SliceRooms, slice_footprint
 from anyhome.floorplan.walls import (
     Run,
     bbox_aspect,
@@ -48,8 +49,6 @@ MAX_ROOM_ASPECT = 2.5
 """Longest/shortest bounding-box side of a room (hallways excepted)."""
 MAX_NARROW_SHARE = 0.08
 """Share of a room's floor allowed in arms narrower than its minimum side."""
-CORRIDOR_ALONG_LONG_AXIS_PROB = 0.75
-"""Chance a hallway runs along the footprint's long axis."""
 
 
 @dataclass(frozen=True)
@@ -114,9 +113,7 @@ def _precheck(prog: Program) -> None:
 def _attempt(prog: Program, rng: np.random.Generator) -> Layout | str:
     """One try: a Layout, or a short reason it failed."""
     grid = make_footprint(float(prog.areas_m2.sum()), prog.n, rng)
-    goals = _goals(prog, grid, rng)
-    seeds = seed_cells(grid, prog.areas_m2, prog.edges, prog.needs_exterior(), prog.hubs(), rng)
-    owner = grow_rooms(grid, seeds, goals, rng)
+    owner = _slice_rooms(prog, grid, rng)
     reason, score = _check_rooms(prog, owner, grid.cell_m)
     if reason:
         return reason
@@ -130,17 +127,28 @@ def _attempt(prog: Program, rng: np.random.Generator) -> Layout | str:
     return Layout(owner, grid.cell_m, doors, windows, score)
 
 
-def _goals(prog: Program, grid: Grid, rng: np.random.Generator) -> list[Goal]:
+def _slice_rooms(prog: Program, grid: Grid, rng: np.random.Generator) -> np.ndarray:
+    """Owner array of the footprint sliced into one rectangle per room (void = outside)."""
+    exterior = prog.needs_exterior()
+    pos = seed_positions(grid, prog.areas_m2, prog.edges, exterior, prog.hubs(), rng) - 1.0
+    cell = grid.cell_m
     nx, ny = grid.shape
-    long_axis = 0 if nx >= ny else 1
-    goals = []
-    for k in range(prog.n):
-        axis = None
-        if prog.types[k] in CORRIDOR_TYPES:
-            axis = long_axis if rng.random() < CORRIDOR_ALONG_LONG_AXIS_PROB else 1 - long_axis
-        side = min_side_cells(prog.min_side_m(k), grid.cell_m)
-        goals.append(Goal(prog.areas_m2[k] / grid.cell_m**2, side, axis))
-    return goals
+    void = np.argwhere(grid.owner[1:-1, 1:-1] == OUTSIDE)
+    cells = prog.areas_m2 / cell**2
+    min_side = np.array([min_side_cells(prog.min_side_m(k), cell) * cell for k in range(prog.n)])
+    corridor = np.array([t in CORRIDOR_TYPES for t in prog.types])
+    void_id = None
+    if len(void):
+        void_id = prog.n
+        cells = np.append(cells, len(void) * cells.sum() / (nx * ny - len(void)))
+        min_side, corridor = np.append(min_side, 2 * cell), np.append(corridor, True)
+        exterior, pos = np.append(exterior, False), np.vstack([pos, void.mean(axis=0) + 0.5])
+    rooms = SliceRooms(cells, min_side, corridor, exterior, void_id, pos, frozenset(prog.edges), cell)
+    owner = np.full((nx + 2, ny + 2), OUTSIDE, dtype=np.int32)
+    owner[1:-1, 1:-1] = FREE
+    for k, (x0, y0, x1, y1) in slice_footprint((0, 0, nx, ny), rooms, rng).items():
+        owner[x0 + 1 : x1 + 1, y0 + 1 : y1 + 1] = OUTSIDE if k == void_id else k
+    return owner
 
 
 def _check_rooms(prog: Program, owner: np.ndarray, cell_m: float) -> tuple[str, float]:

@@ -237,8 +237,11 @@ class _Refiner:
         return best
 
     def _snap_wall(self, o: HouseObject) -> HouseObject | None:
-        """Back flush on the nearest wall, front facing the room."""
+        """Back flush on the nearest wall, front facing the room (turned round if needed)."""
         w = self._nearest_wall(o)
+        if w is None:
+            o = o.model_copy(update={"yaw": _wrap(o.yaw + math.pi)})
+            w = self._nearest_wall(o)
         if w is None:
             return None
         mid = back_edge(o.position, o.size, o.yaw).mean(0)

@@ -3,6 +3,8 @@ dryer, fume_hood, toilet, bathtub, shower."""
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 
 from anyhome.assets.procedural._parts import (
@@ -32,10 +34,7 @@ def _cabinet_params(name, rng, size, style, **knobs):
 
 def _base_cabinet(b: Builder, p, w, d, h, top_t=0.04) -> None:
     body = p.primary
-    sec = p
     n = max(1, min(6, int(round(w / 0.6))))
-    from dataclasses import replace
-
     sec = replace(p, secondary=body)
     case(b, w, d - 0.02, h - top_t, sec, [("doors", n), ("drawers", n)], "plinth", 0.1)
     b.box((-w / 2, -d / 2, h - top_t), (w / 2, d / 2, h), p.secondary)
@@ -93,8 +92,6 @@ def build_vanity(p):
     b = Builder()
     t = 0.04
     n = max(1, min(4, int(round(w / 0.5))))
-    from dataclasses import replace
-
     q = replace(p, secondary=p.primary, knobs=(("legs", "tapered" if p.on_legs else "straight"),))
     case(b, w, d - 0.02, h - t, q, [("doors", n), ("drawers", 1)], "legs" if p.on_legs else "plinth",
          0.18 * h if p.on_legs else 0.08)

@@ -1,0 +1,1 @@
+"""Test configuration: puts tests/ on sys.path so tests can import public_prompts."""
