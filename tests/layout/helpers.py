@@ -81,7 +81,7 @@ def rounded(objects):
     return out
 
 
-def check_valid(fp: Floorplan, objects: list[HouseObject], nav_baseline: bool = True) -> list[str]:
+def check_valid(fp: Floorplan, objects: list[HouseObject], nav_baseline: bool = True, nav: bool = True) -> list[str]:
     """Problems with SCENE_FORMAT rules 1-4 and 6; an empty list means valid."""
     problems = []
     objs = rounded(objects)
@@ -137,12 +137,12 @@ def check_valid(fp: Floorplan, objects: list[HouseObject], nav_baseline: bool = 
     # rule 6 (only meaningful if the empty floorplan passes)
     rooms_arg = [(r.id, r.polygon) for r in fp.rooms]
     doors_arg = [(d.id, d.rooms, d.segment) for d in fp.doors]
-    if not nav_baseline or navigability(rooms_arg, doors_arg, []).ok:
+    if nav and (not nav_baseline or navigability(rooms_arg, doors_arg, []).ok):
         obst = [footprint_polygon(o.position, o.size, o.yaw) for o in objs
                 if blocks_navigation(o.category, o.size[2], o.support)]
-        nav = navigability(rooms_arg, doors_arg, obst)
-        if not nav.ok:
-            problems.append(f"not navigable: {nav.unreachable_rooms} {nav.unreachable_doors}")
+        res = navigability(rooms_arg, doors_arg, obst)
+        if not res.ok:
+            problems.append(f"not navigable: {res.unreachable_rooms} {res.unreachable_doors}")
     return problems
 
 

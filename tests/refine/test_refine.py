@@ -110,10 +110,9 @@ def test_refine_keeps_valid_layouts_valid_and_deterministic():
         assert check_valid(fp, out) == []
         assert len(out) == len(res.objects)
         # chairs face their table or desk
-        tables = [o for o in out if o.category in ("table", "desk") and o.support == "floor"]
+        by_id = {o.id: o for o in out}
         for c in (o for o in out if o.name == "chair"):
-            t = min(tables, key=lambda t: footprint_polygon(t.position, t.size, t.yaw).distance(
-                footprint_polygon(c.position, c.size, c.yaw)))
+            t = by_id[c.anchor]
             v = np.asarray(t.position[:2]) - c.position[:2]
             assert front(c.yaw) @ v > 0
 
@@ -124,3 +123,35 @@ def test_input_not_modified():
     before = [a.model_copy(), b.model_copy()]
     refine([a, b])
     assert [a, b] == before
+
+
+from hypothesis import given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+
+@settings(max_examples=25, deadline=None)
+@given(seed=st.integers(0, 2**16), jitter=st.floats(0.0, 0.3), turn=st.floats(0.0, 0.3))
+def test_refine_repairs_perturbed_layouts(seed, jitter, turn):
+    """Whatever comes in, what comes out satisfies rules 1-4 (unfixable objects are dropped)."""
+    fp = two_rooms()
+    spec = house_spec({
+        "living": [group("dining", item("dining table", "table", (1.4, 0.8, 0.75), "place_center"),
+                         [item("chair", "chair", (0.45, 0.5, 0.9), "place_around", count=4),
+                          item("vase", "vase", (0.2, 0.2, 0.3), "place_top")]),
+                   group("shelf", item("shelf", "shelf", (0.9, 0.35, 1.9), "place_wall"), repeat=2,
+                         members=[item("poster", "poster", (0.6, 0.02, 0.8), "place_on_wall")])],
+        "bed": [group("bed", item("bed", "bed", (1.6, 2.0, 0.6), "place_wall"),
+                      [item("nightstand", "nightstand", (0.45, 0.4, 0.55), "place_beside", count=2)])],
+    }, connections=[("living", "outside"), ("living", "bed")])
+    rng = np.random.default_rng(seed)
+    res = layout_house(spec, fp, rng)
+    bent = []
+    for o in res.objects:
+        dx, dy = rng.uniform(-jitter, jitter, 2)
+        bent.append(o.model_copy(update={
+            "position": (o.position[0] + dx, o.position[1] + dy, o.position[2] + rng.uniform(-0.02, 0.02)),
+            "yaw": o.yaw + rng.uniform(-turn, turn)}))
+    out = refine_objects(fp, bent, np.random.default_rng(seed))
+    assert check_valid(fp, out, nav=False) == []
+    ids = {o.id for o in out}
+    assert all(o.support in ("floor", "wall") or o.support in ids for o in out)

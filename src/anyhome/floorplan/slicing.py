@@ -14,7 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-CUT_EDGE_COST = 0.6
+CUT_EDGE_COST = 1.5
 """Score per bubble-diagram edge crossing a cut."""
 INFEASIBLE_COST = 10.0
 """Score of a part that breaks a hard rule (too thin, no exterior wall...)."""
@@ -22,6 +22,8 @@ EXTERIOR_PER_ROOM_M = 2.2
 """Exterior wall a part needs per room that must touch the outside."""
 SPLIT_NOISE = 0.35
 """Scale of the random score noise that varies layouts across seeds."""
+LOOKAHEAD = 6
+"""Best immediate cuts completed greedily before choosing one."""
 ROOM_ASPECT_SOFT = 1.5
 """Aspect above which a single room's shape starts to cost."""
 ROOM_ASPECT_MAX = 2.5
@@ -33,6 +35,8 @@ Rect = tuple[int, int, int, int]
 """(x0, y0, x1, y1) in cells, unpadded."""
 Ext = tuple[bool, bool, bool, bool]
 """Whether a part's (left, right, bottom, top) side is on the footprint's exterior."""
+Ports = dict[int, frozenset[int]]
+"""Sides (0 left, 1 right, 2 bottom, 3 top) of its part a room must touch for a door."""
 
 
 @dataclass(frozen=True)
@@ -49,32 +53,191 @@ class SliceRooms:
     cell_m: float
 
 
-def slice_footprint(rect: Rect, rooms: SliceRooms, rng: np.random.Generator) -> dict[int, Rect]:
-    """Rectangle per room (and the void) tiling ``rect``."""
-    out: dict[int, Rect] = {}
-    _slice(rect, list(range(len(rooms.cells))), (True, True, True, True), rooms, rng, out)
+@dataclass
+class Cut:
+    """An inner node of the slicing tree: a cut at ``at`` cells across ``axis``."""
+
+    axis: int
+    at: int
+    low: Cut | int
+    high: Cut | int
+
+
+def slice_footprint(rect: Rect, rooms: SliceRooms, rng: np.random.Generator) -> Cut | int:
+    """Slicing tree (leaves are room indices, the void included) tiling ``rect``."""
+    return _slice(rect, list(range(len(rooms.cells))), (True, True, True, True), {}, rooms, rng)
+
+
+def tree_rects(tree: Cut | int, rect: Rect, out: dict[int, Rect] | None = None) -> dict[int, Rect]:
+    """Rectangle of every leaf; an empty or inverted rectangle means the tree is invalid."""
+    out = {} if out is None else out
+    if isinstance(tree, int):
+        out[tree] = rect
+        return out
+    x0, y0, x1, y1 = rect
+    if tree.axis == 0:
+        low, high = (x0, y0, tree.at, y1), (tree.at, y0, x1, y1)
+    else:
+        low, high = (x0, y0, x1, tree.at), (x0, tree.at, x1, y1)
+    tree_rects(tree.low, low, out)
+    return tree_rects(tree.high, high, out)
+
+
+def tree_cuts(tree: Cut | int) -> list[Cut]:
+    return [] if isinstance(tree, int) else [tree, *tree_cuts(tree.low), *tree_cuts(tree.high)]
+
+
+def _slice(rect: Rect, ids: list[int], ext: Ext, ports: Ports, rooms: SliceRooms, rng) -> Cut | int:
+    """Cut ``rect`` recursively; ``ports`` maps a room to the sides it must touch.
+
+    The :data:`LOOKAHEAD` best cuts by their immediate score are completed greedily and
+    the one whose completed layout scores best (plus noise) is taken.
+    """
+    if len(ids) == 1:
+        return ids[0]
+    ranked = _ranked_cuts(rect, ids, ext, ports, rooms, rng)
+    if not ranked:  # a part too small to cut: let the room checks reject it
+        ranked = [(0.0, _parts(rect, ext, ports, 0, rect[0] + 1, ids[:1], ids[1:], rooms.edges))]
+    best = min(
+        ranked[:LOOKAHEAD],
+        key=lambda c: _completed_cost(c[1], rooms) + SPLIT_NOISE * rng.random(),
+    )[1]
+    (rect_a, ids_a, ext_a, ports_a), (rect_b, ids_b, ext_b, ports_b), _ = best
+    axis = 0 if rect_a[1] == rect_b[1] and rect_a[3] == rect_b[3] else 1
+    return Cut(
+        axis,
+        rect_a[2] if axis == 0 else rect_a[3],
+        _slice(rect_a, ids_a, ext_a, ports_a, rooms, rng),
+        _slice(rect_b, ids_b, ext_b, ports_b, rooms, rng),
+    )
+
+
+def _ranked_cuts(rect, ids, ext, ports, rooms: SliceRooms, rng=None) -> list:
+    """(immediate score, parts) of every candidate cut, best first."""
+    out = []
+    for axis, low, high in _splits(ids, rooms):
+        cut = _cut(rect, low, low + high, axis, rooms)
+        if cut is None:
+            continue
+        parts = _parts(rect, ext, ports, axis, cut, low, high, rooms.edges)
+        noise = SPLIT_NOISE * rng.random() if rng is not None else 0.0
+        out.append((_cut_score(parts, rooms) + noise, parts))
+    out.sort(key=lambda c: c[0])
     return out
 
 
-def _slice(rect: Rect, ids: list[int], ext: Ext, rooms: SliceRooms, rng, out: dict[int, Rect]) -> None:
-    if len(ids) == 1:
-        out[ids[0]] = rect
-        return
-    best, best_score = None, np.inf
+def _splits(ids: list[int], rooms: SliceRooms):
+    """(axis, low rooms, high rooms): prefixes of the seed order, and graph bipartitions."""
     for axis in (0, 1):
         order = sorted(ids, key=lambda k: rooms.pos[k, axis])
         for i in range(1, len(order)):
-            cut = _cut(rect, order[:i], order, axis, rooms)
-            if cut is None:
-                continue
-            parts = _parts(rect, ext, axis, cut, order[:i], order[i:])
-            score = _cut_score(parts, rooms) + SPLIT_NOISE * rng.random()
-            if score < best_score:
-                best, best_score = parts, score
-    if best is None:
-        best = _parts(rect, ext, 0, rect[0] + 1, ids[:1], ids[1:])  # degenerate: let checks reject
-    for part_rect, part_ids, part_ext in best:
-        _slice(part_rect, part_ids, part_ext, rooms, rng, out)
+            yield axis, order[:i], order[i:]
+    for side_a, side_b in _edge_bipartitions(ids, rooms):
+        for axis in (0, 1):
+            a_first = rooms.pos[side_a, axis].mean() <= rooms.pos[side_b, axis].mean()
+            yield (axis, side_a, side_b) if a_first else (axis, side_b, side_a)
+
+
+def _edge_bipartitions(ids: list[int], rooms: SliceRooms) -> list[tuple[list[int], list[int]]]:
+    """Splits of ``ids`` made by removing one edge of a spanning tree of its subgraph."""
+    members = set(ids)
+    adj = {k: [j for i, j in rooms.edges if i == k and j in members] for k in ids}
+    for i, j in rooms.edges:
+        if i in members and j in members:
+            adj[j].append(i)
+    tree_edges, seen, stack = [], {ids[0]}, [ids[0]]
+    while stack:
+        k = stack.pop()
+        for j in adj[k]:
+            if j not in seen:
+                seen.add(j)
+                tree_edges.append((k, j))
+                stack.append(j)
+    out = []
+    for cut_edge in tree_edges:
+        side = _component(cut_edge[1], [e for e in tree_edges if e != cut_edge])
+        rest = [k for k in ids if k not in side]
+        if rest and len(side) < len(ids):
+            out.append((sorted(side), rest))
+    return out
+
+
+def _component(start: int, edges: list[tuple[int, int]]) -> set[int]:
+    comp, grew = {start}, True
+    while grew:
+        grew = False
+        for i, j in edges:
+            if (i in comp) != (j in comp):
+                comp |= {i, j}
+                grew = True
+    return comp
+
+
+def _completed_cost(parts, rooms: SliceRooms) -> float:
+    """Cost of a cut when both parts are then sliced greedily to single rooms."""
+    cost = INFEASIBLE_COST * parts[2]
+    leaves: dict[int, Rect] = {}
+    for rect, ids, ext, ports in parts[:2]:
+        part: dict[int, Rect] = {}
+        _greedy_rects(rect, ids, ext, ports, rooms, part)
+        cost += _leaves_cost(part, rect, ext, ports, rooms)
+        leaves.update(part)
+    for i, j in rooms.edges:
+        if i in leaves and j in leaves:
+            cost += 4.0 * max(0.0, 1.3 - _shared(leaves[i], leaves[j]) * rooms.cell_m)
+    return cost
+
+
+def _greedy_rects(rect, ids, ext, ports, rooms: SliceRooms, out: dict[int, Rect]) -> None:
+    if len(ids) == 1:
+        out[ids[0]] = rect
+        return
+    ranked = _ranked_cuts(rect, ids, ext, ports, rooms)
+    if not ranked:
+        for k in ids:
+            out[k] = (rect[0], rect[1], rect[0], rect[1])
+        return
+    for part in ranked[0][1][:2]:
+        _greedy_rects(*part, rooms, out)
+
+
+def _leaves_cost(leaves: dict[int, Rect], rect: Rect, ext: Ext, ports: Ports, rooms: SliceRooms) -> float:
+    """Hard-rule violations of a completed part: shapes, ports, exterior walls."""
+    cell = rooms.cell_m
+    cost = 0.0
+    for k, r in leaves.items():
+        w, h = (r[2] - r[0]) * cell, (r[3] - r[1]) * cell
+        if w <= 0 or h <= 0:
+            cost += INFEASIBLE_COST
+            continue
+        cost += _room_shape_score(k, min(w, h), max(w, h), _leaf_ext(r, rect, ext), rooms)
+        cost += sum(_side_deficit(r, rect, side, cell) for side in ports.get(k, ()))
+        if rooms.exterior[k]:
+            cost += min((_side_deficit(r, rect, side, cell) for side in range(4) if ext[side]), default=INFEASIBLE_COST)
+    return cost
+
+
+def _leaf_ext(r: Rect, rect: Rect, ext: Ext) -> Ext:
+    return (
+        ext[0] and r[0] == rect[0], ext[1] and r[2] == rect[2],
+        ext[2] and r[1] == rect[1], ext[3] and r[3] == rect[3],
+    )
+
+
+def _side_deficit(r: Rect, rect: Rect, side: int, cell: float) -> float:
+    """Cost of a leaf having less than 1.3 m of wall on its part's ``side``."""
+    on = (r[0] == rect[0], r[2] == rect[2], r[1] == rect[1], r[3] == rect[3])[side]
+    length = (r[3] - r[1]) if side < 2 else (r[2] - r[0])
+    return 4.0 * max(0.0, 1.3 - (length * cell if on else 0.0))
+
+
+def _shared(a: Rect, b: Rect) -> int:
+    """Length (cells) of the wall two rectangles share."""
+    if a[2] == b[0] or b[2] == a[0]:
+        return max(0, min(a[3], b[3]) - max(a[1], b[1]))
+    if a[3] == b[1] or b[3] == a[1]:
+        return max(0, min(a[2], b[2]) - max(a[0], b[0]))
+    return 0
 
 
 def _cut(rect: Rect, first: list[int], ids: list[int], axis: int, rooms: SliceRooms) -> int | None:
@@ -84,25 +247,41 @@ def _cut(rect: Rect, first: list[int], ids: list[int], axis: int, rooms: SliceRo
     return cut if lo < cut < hi else None
 
 
-def _parts(rect: Rect, ext: Ext, axis: int, cut: int, a: list[int], b: list[int]):
+def _parts(rect: Rect, ext: Ext, ports: Ports, axis: int, cut: int, a: list[int], b: list[int], edges):
+    """The two parts of a cut: (rect, rooms, exterior sides, ports) each."""
     x0, y0, x1, y1 = rect
     left, right, bottom, top = ext
     if axis == 0:
-        return ((x0, y0, cut, y1), a, (left, False, bottom, top)), ((cut, y0, x1, y1), b, (False, right, bottom, top))
-    return ((x0, y0, x1, cut), a, (left, right, bottom, False)), ((x0, cut, x1, y1), b, (left, right, False, top))
+        rects = (x0, y0, cut, y1), (cut, y0, x1, y1)
+        exts = (left, False, bottom, top), (False, right, bottom, top)
+    else:
+        rects = (x0, y0, x1, cut), (x0, cut, x1, y1)
+        exts = (left, right, bottom, False), (left, right, False, top)
+    lost = (1, 0) if axis == 0 else (3, 2)  # side of each part that is now the cut
+    a_set, b_set = set(a), set(b)
+    port_a = {k: v - {lost[0]} for k, v in ports.items() if k in a_set}
+    port_b = {k: v - {lost[1]} for k, v in ports.items() if k in b_set}
+    for i, j in edges:
+        if i in a_set and j in b_set or i in b_set and j in a_set:
+            i, j = (i, j) if i in a_set else (j, i)
+            port_a[i] = port_a.get(i, frozenset()) | {lost[0]}
+            port_b[j] = port_b.get(j, frozenset()) | {lost[1]}
+    broken = sum(1 for k, v in ports.items() if v & {lost[0] if k in a_set else lost[1]})
+    return (rects[0], a, exts[0], port_a), (rects[1], b, exts[1], port_b), broken
 
 
 def _cut_score(parts, rooms: SliceRooms) -> float:
-    a_ids, b_ids = set(parts[0][1]), set(parts[1][1])
-    crossing = sum(1 for i, j in rooms.edges if (i in a_ids and j in b_ids) or (i in b_ids and j in a_ids))
-    return CUT_EDGE_COST * crossing + sum(_part_score(r, ids, ext, rooms) for r, ids, ext in parts)
+    part_a, part_b, broken = parts
+    crossing = sum(len(v) for v in part_a[3].values())
+    score = CUT_EDGE_COST * crossing + INFEASIBLE_COST * broken
+    return score + sum(_part_score(*part, rooms) for part in (part_a, part_b))
 
 
-def _part_score(rect: Rect, ids: list[int], ext: Ext, rooms: SliceRooms) -> float:
+def _part_score(rect: Rect, ids: list[int], ext: Ext, ports: Ports, rooms: SliceRooms) -> float:
     w_m = (rect[2] - rect[0]) * rooms.cell_m
     h_m = (rect[3] - rect[1]) * rooms.cell_m
     short, long_ = min(w_m, h_m), max(w_m, h_m)
-    score = _exterior_score(ids, ext, w_m, h_m, rooms)
+    score = _exterior_score(ids, ext, w_m, h_m, rooms) + _port_score(ids, ports)
     if len(ids) == 1:
         return score + _room_shape_score(ids[0], short, long_, ext, rooms)
     if short < rooms.min_side[ids].min() - 1e-6:
@@ -131,3 +310,16 @@ def _exterior_score(ids: list[int], ext: Ext, w_m: float, h_m: float, rooms: Sli
     if have == 0:
         return INFEASIBLE_COST * need
     return 2.0 * max(0.0, need * EXTERIOR_PER_ROOM_M - have) / EXTERIOR_PER_ROOM_M
+
+
+def _port_score(ids: list[int], ports: Ports) -> float:
+    """Cost of rooms that must touch opposite sides or crowd one side of a part."""
+    score = 0.0
+    per_side = [0, 0, 0, 0]
+    for k in ids:
+        sides = ports.get(k, frozenset())
+        if {0, 1} <= sides or {2, 3} <= sides:
+            score += 0.5
+        for side in sides:
+            per_side[side] += 1
+    return score + 0.2 * sum(max(0, c - 2) for c in per_side)

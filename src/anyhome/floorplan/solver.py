@@ -19,11 +19,14 @@ from dataclasses import dataclass
 import numpy as np
 
 from anyhome.errors import FloorplanError
+from anyhome.floorplan.anneal import anneal
 from anyhome.floorplan.doors import PlacedDoor, door_kind, place_door
 from anyhome.floorplan.grid import FREE, OUTSIDE, Grid, make_footprint, min_side_cells
 from anyhome.floorplan.program import CORRIDOR_TYPES, Program
 from anyhome.floorplan.seeds import seed_positions
-from anyhome.floorplan.slicing import SliceRooms, slice_footprint
+from anyhome.floorplan.slicing import SliceRooms, slice_footprint, tree_rects
+from anyhome.floorplan.spine import SPINE_CELL_M, spine_owner
+from anyhome.floorplan.tune import TuneRooms, tune_tree
 from anyhome.floorplan.walls import (
     Run,
     bbox_aspect,
@@ -39,8 +42,12 @@ from anyhome.plan.spec import HouseSpec
 
 log = logging.getLogger(__name__)
 
-MAX_ATTEMPTS = 250
+MAX_ATTEMPTS = 40
 """Attempts before giving up with a FloorplanError."""
+SLICING_MAX_ROOMS = 6
+"""Programs up to this size try the slicing search first; larger ones go to the spine."""
+SLICING_ATTEMPTS = 10
+"""Slicing attempts before falling back to the constructive spine layout."""
 WANTED_CANDIDATES = 3
 """Valid layouts to collect before keeping the best one."""
 AREA_TOLERANCE = 0.25
@@ -79,8 +86,9 @@ def solve_floorplan(spec: HouseSpec, rng: np.random.Generator) -> Floorplan:
     _precheck(prog)
     failures: Counter[str] = Counter()
     found: list[Layout] = []
+    slicing_attempts = SLICING_ATTEMPTS if prog.n <= SLICING_MAX_ROOMS else 0
     for attempt in range(MAX_ATTEMPTS):
-        result = _attempt(prog, rng)
+        result = _attempt(prog, rng) if attempt < slicing_attempts else _spine_attempt(prog, rng)
         if isinstance(result, str):
             failures[result] += 1
             continue
@@ -127,6 +135,23 @@ def _attempt(prog: Program, rng: np.random.Generator) -> Layout | str:
     return Layout(owner, grid.cell_m, doors, windows, score)
 
 
+def _spine_attempt(prog: Program, rng: np.random.Generator) -> Layout | str:
+    """One constructive spine layout (see :mod:`anyhome.floorplan.spine`)."""
+    owner = spine_owner(prog, rng)
+    if isinstance(owner, str):
+        return owner
+    runs = wall_runs(owner)
+    doors = _place_doors(prog, runs, SPINE_CELL_M, rng)
+    if isinstance(doors, str):
+        return doors
+    windows = _place_windows(prog, runs, doors, SPINE_CELL_M)
+    if isinstance(windows, str):
+        return windows
+    area = np.array([(owner == k).sum() for k in range(prog.n)]) * SPINE_CELL_M**2
+    score = float(np.abs(area / prog.areas_m2 - 1).sum()) + 1.0  # slicing wins ties
+    return Layout(owner, SPINE_CELL_M, doors, windows, score)
+
+
 def _slice_rooms(prog: Program, grid: Grid, rng: np.random.Generator) -> np.ndarray:
     """Owner array of the footprint sliced into one rectangle per room (void = outside)."""
     exterior = prog.needs_exterior()
@@ -144,9 +169,16 @@ def _slice_rooms(prog: Program, grid: Grid, rng: np.random.Generator) -> np.ndar
         min_side, corridor = np.append(min_side, 2 * cell), np.append(corridor, True)
         exterior, pos = np.append(exterior, False), np.vstack([pos, void.mean(axis=0) + 0.5])
     rooms = SliceRooms(cells, min_side, corridor, exterior, void_id, pos, frozenset(prog.edges), cell)
+    tree = slice_footprint((0, 0, nx, ny), rooms, rng)
+    targets = np.maximum(cells, (min_side / cell) ** 2)
+    if void_id is not None:
+        targets[void_id] = 1.0
+    tune_rooms = TuneRooms(targets, min_side, corridor, exterior, void_id, tuple(prog.edges), cell)
+    tree = anneal(tree, (0, 0, nx, ny), tune_rooms, rng)
+    tune_tree(tree, (0, 0, nx, ny), tune_rooms)
     owner = np.full((nx + 2, ny + 2), OUTSIDE, dtype=np.int32)
     owner[1:-1, 1:-1] = FREE
-    for k, (x0, y0, x1, y1) in slice_footprint((0, 0, nx, ny), rooms, rng).items():
+    for k, (x0, y0, x1, y1) in tree_rects(tree, (0, 0, nx, ny)).items():
         owner[x0 + 1 : x1 + 1, y0 + 1 : y1 + 1] = OUTSIDE if k == void_id else k
     return owner
 

@@ -15,6 +15,7 @@ from scipy import ndimage
 from shapely.geometry import LineString, Polygon
 from shapely.geometry.polygon import orient
 
+from anyhome import geometry
 from anyhome.geometry import (
     AGENT_RADIUS_M,
     NAV_CELL_M,
@@ -33,6 +34,8 @@ WALL_OPENING_MARGIN_M = 0.05
 """Gap kept along a wall between a wall object and a door or window opening."""
 CEILING_GAP_M = 0.05
 """Gap kept between the top of a wall or on-top object and the ceiling."""
+NAV_OBSTACLE_PAD_M = 0.002
+"""Obstacles block raster cells this far outside them too (robust to rounding)."""
 WALKWAY_RADIUS_M = 0.3
 """Agent radius of the per-room walkway check (0.6 m walkways) when the empty room allows it."""
 
@@ -103,15 +106,26 @@ def sat_overlap(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     """
     if len(a) == 0 or len(b) == 0:
         return np.zeros((len(a), len(b)))
-    amin, amax = a.min(1), a.max(1)
-    bmin, bmax = b.min(1), b.max(1)
-    out = (np.minimum(amax[:, None], bmax[None]) - np.maximum(amin[:, None], bmin[None])).min(-1)
+    amin, amax = _cmin(a), _cmax(a)
+    bmin, bmax = _cmin(b), _cmax(b)
+    ox = np.minimum(amax[:, 0, None], bmax[None, :, 0]) - np.maximum(amin[:, 0, None], bmin[None, :, 0])
+    oy = np.minimum(amax[:, 1, None], bmax[None, :, 1]) - np.maximum(amin[:, 1, None], bmin[None, :, 1])
+    out = np.minimum(ox, oy)
     al_a, al_b = _aligned(a), _aligned(b)
     need = ~(al_a[:, None] & al_b[None]) & (out > -0.05)
     if need.any():
         i, j = np.nonzero(need)
         out[i, j] = _sat_pairs(a[i], b[j])
     return out
+
+
+def _cmin(c: np.ndarray) -> np.ndarray:
+    """(n, 4, 2) corners -> (n, 2) lower bounds (faster than ``min(1)`` on a short axis)."""
+    return np.minimum(np.minimum(c[:, 0], c[:, 1]), np.minimum(c[:, 2], c[:, 3]))
+
+
+def _cmax(c: np.ndarray) -> np.ndarray:
+    return np.maximum(np.maximum(c[:, 0], c[:, 1]), np.maximum(c[:, 2], c[:, 3]))
 
 
 def _aligned(c: np.ndarray) -> np.ndarray:
@@ -246,15 +260,21 @@ class RoomSpace:
             return ok
         z0 = np.broadcast_to(np.asarray(z0, dtype=float), (n,))
         z1 = np.broadcast_to(np.asarray(z1, dtype=float), (n,))
-        mins, maxs = corners.min(1), corners.max(1)
-        ok &= np.all(mins >= self.bmin - INSIDE_TOL_M, 1) & np.all(maxs <= self.bmax + INSIDE_TOL_M, 1)
+        mins, maxs = _cmin(corners), _cmax(corners)
+        lo, hi = self.bmin - INSIDE_TOL_M, self.bmax + INSIDE_TOL_M
+        ok &= (mins[:, 0] >= lo[0]) & (mins[:, 1] >= lo[1]) & (maxs[:, 0] <= hi[0]) & (maxs[:, 1] <= hi[1])
         limit = self.height if floor else self.height - CEILING_GAP_M
         ok &= z1 <= limit + 1e-9
         idx = np.nonzero(ok)[0]
         if idx.size:
             c = corners[idx]
             pin = shapely.contains_xy(self.buf, c[..., 0].ravel(), c[..., 1].ravel()).reshape(-1, 4)
-            ok[idx] = pin.all(1) & ~self._vertex_inside(c)
+            pin = pin[:, 0] & pin[:, 1] & pin[:, 2] & pin[:, 3]
+            sub = np.nonzero(pin)[0]
+            inner = np.zeros(len(idx), dtype=bool)
+            if sub.size:
+                inner[sub] = ~self._vertex_inside(c[sub])
+            ok[idx] = inner
         idx = np.nonzero(ok)[0]
         if idx.size and doors and len(self.door_zones):
             ov = sat_overlap(corners[idx], self.door_zones)
@@ -337,7 +357,8 @@ class NavGrid:
         self.ys = y0 + cell_m * np.arange(i0, i1)
         self.gx, self.gy = np.meshgrid(self.xs, self.ys)
         half = cell_m / 2
-        self.room_mask = self._raster(space.poly.buffer(-half * 0.999, join_style="mitre"))
+        inset = getattr(geometry, "WALL_INSET_CELLS", 0.4995) * cell_m
+        self.room_mask = self._raster(space.poly.buffer(-inset, join_style="mitre"))
         free = self.room_mask.copy()
         others = {r.id: p for r, p in zip(floorplan.rooms, polys)}
         near = AGENT_RADIUS_M + 2 * cell_m
@@ -346,7 +367,7 @@ class NavGrid:
             free |= self._raster(LineString(d.segment).buffer(half * 1.5, cap_style="flat"))
             for rid in d.rooms:
                 if rid != space.room.id and rid in others:
-                    inner = others[rid].buffer(-half * 0.999, join_style="mitre")
+                    inner = others[rid].buffer(-inset, join_style="mitre")
                     free |= self._raster(opening_zone(d.segment).intersection(inner))
             self.door_near.append(self._raster(LineString(d.segment).buffer(near)))
         self.base_free = free
@@ -375,8 +396,8 @@ class NavGrid:
         """Cells whose centre lies in (or on the edge of) a rotated rectangle."""
         mask = np.zeros(self.gx.shape, dtype=bool)
         lo, hi = corners.min(0), corners.max(0)
-        i0, i1 = np.searchsorted(self.ys, [lo[1] - 1e-6, hi[1] + 1e-6])
-        j0, j1 = np.searchsorted(self.xs, [lo[0] - 1e-6, hi[0] + 1e-6])
+        i0, i1 = np.searchsorted(self.ys, [lo[1] - NAV_OBSTACLE_PAD_M, hi[1] + NAV_OBSTACLE_PAD_M])
+        j0, j1 = np.searchsorted(self.xs, [lo[0] - NAV_OBSTACLE_PAD_M, hi[0] + NAV_OBSTACLE_PAD_M])
         if i0 >= i1 or j0 >= j1:
             return mask
         c = corners.mean(0)
@@ -387,7 +408,7 @@ class NavGrid:
         py = self.gy[i0:i1, j0:j1] - c[1]
         lx = np.abs(px * ex[0] + py * ex[1])
         ly = np.abs(px * ey[0] + py * ey[1])
-        mask[i0:i1, j0:j1] = (lx <= hw + 1e-6) & (ly <= hd + 1e-6)
+        mask[i0:i1, j0:j1] = (lx <= hw + NAV_OBSTACLE_PAD_M) & (ly <= hd + NAV_OBSTACLE_PAD_M)
         return mask
 
     def ok(self, extra: np.ndarray | None = None) -> bool:

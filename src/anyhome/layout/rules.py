@@ -15,7 +15,7 @@ from anyhome.layout.freespace import RoomSpace, Wall
 
 GRID_STEP_M = 0.1
 """Spacing of candidate positions along walls and over the room."""
-MAX_CENTER_CANDIDATES = 2000
+MAX_CENTER_CANDIDATES = 1200
 """The centre grid is coarsened so it holds at most about this many positions."""
 CENTER_WALL_CLEARANCE_M = 0.4
 """``place_center`` prefers footprints at least this far from the walls."""

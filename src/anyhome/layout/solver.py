@@ -56,6 +56,10 @@ ROW_FRONT_CLEARANCE_M = 1.0
 """Free band kept in front of the wall the rows face."""
 ROW_SIDE_CLEARANCE_M = 0.3
 """Band kept along the other walls of a ``rows`` arrangement."""
+FRONT_WORDS = ("board", "screen", "projector", "lectern", "podium", "teacher", "television", "tv")
+"""Items that go on (or against) the wall a rows arrangement faces."""
+FRONT_WALL_BONUS = 2.0
+"""Score added to front items' poses on the wall the rows face."""
 SURFACE_WORDS = (
     "table", "desk", "nightstand", "night stand", "bedside", "dresser", "shelf", "cabinet",
     "counter", "sideboard", "console", "chest", "stand", "bench", "vanity", "bureau",
@@ -146,6 +150,7 @@ class RoomLayout:
         self.nav = NavGrid(floorplan, self.space)
         self.dropped: list[Dropped] = []
         self.counters: dict[str, int] = {}
+        self.rows_wall: Wall | None = None
 
     # ------------------------------------------------------------ bookkeeping
     def _snapshot(self) -> _Snapshot:
@@ -307,6 +312,17 @@ class RoomLayout:
     def _cands(self, item: ItemSpec, rule: str, size, ref: HouseObject | None,
                prev_same: HouseObject | None, prev_wall: HouseObject | None) -> tuple[R.Cands, str]:
         """Candidates for one copy of ``item`` by ``rule``; returns (cands, kind)."""
+        c, kind = self._rule_cands(item, rule, size, ref, prev_same, prev_wall)
+        w = self.rows_wall
+        if w is not None and len(c) and rule in WALL_RULES and _front_item(item):
+            rel = c.xy - w.a[None]
+            t, d = rel @ w.u, rel @ w.n
+            on = (np.abs(d - size[1] / 2) < 0.01) & (t >= -0.01) & (t <= w.length + 0.01)
+            c = R.Cands(c.xy, c.yaw, c.z, c.pref + FRONT_WALL_BONUS * on)
+        return c, kind
+
+    def _rule_cands(self, item: ItemSpec, rule: str, size, ref: HouseObject | None,
+                    prev_same: HouseObject | None, prev_wall: HouseObject | None) -> tuple[R.Cands, str]:
         p = item.params
         if rule == "place_corner":
             return R.place_corner(self.space, size) + R.place_wall(self.space, size).shifted_pref(-1.0), "floor"
@@ -627,7 +643,8 @@ class RoomLayout:
         return obj
 
     # ------------------------------------------------------------ rows
-    def _board_wall(self) -> Wall:
+    def _board_wall(self) -> Wall | None:
+        """The wall holding the anchor of an earlier group (a whiteboard, a screen), if any."""
         for o in self.space.objects:
             if o.anchor is not None or o.group is None:
                 continue
@@ -636,7 +653,7 @@ class RoomLayout:
                 rel = back - w.a
                 if abs(float(rel @ w.n)) < 0.05 and -0.05 <= float(rel @ w.u) <= w.length + 0.05:
                     return w
-        return max(self.space.walls, key=lambda w: w.length)
+        return None
 
     def _group_extent(self, g: GroupSpec, far: bool = True) -> tuple[float, float, float, float]:
         """Extent (x0, x1, y0, y1) of a group copy in its anchor's frame.
@@ -672,53 +689,73 @@ class RoomLayout:
                     x0, x1 = min(x0, -w / 2 - ext), max(x1, w / 2 + ext)
         return x0, x1, y0, y1
 
+    def _rows_grid(self, g: GroupSpec, wall: Wall, front_m: float) -> tuple[int, int, dict]:
+        """Capacity (rows, columns) of a rows arrangement facing ``wall`` and its geometry."""
+        x0, x1, y0, y1 = self._group_extent(g)
+        cw, cd = x1 - x0, y1 - y0
+        cu, cv = cw + ROW_AISLE_U_M, cd + ROW_AISLE_V_M
+        rel = self.space.vertices - wall.a
+        us, vs = rel @ wall.u, rel @ wall.n
+        u0, u1 = us.min() + ROW_SIDE_CLEARANCE_M, us.max() - ROW_SIDE_CLEARANCE_M
+        v0 = max(0.0, vs.min()) + front_m
+        v1 = vs.max() - ROW_SIDE_CLEARANCE_M
+        maxc = max(0, int(np.floor((u1 - u0 + ROW_AISLE_U_M) / cu + 1e-9)))
+        maxr = max(0, int(np.floor((v1 - v0 + ROW_AISLE_V_M) / cv + 1e-9)))
+        geo = dict(wall=wall, ext=(x0, x1, y0, y1), cu=cu, cv=cv, cd=cd, u0=u0, u1=u1, v0=v0)
+        return maxr, maxc, geo
+
     def _place_rows(self, g: GroupSpec) -> None:
+        """Anchors on a regular grid facing one wall, members attached to each."""
         item = g.anchor
+        n = g.repeat
         board = self._board_wall()
-        nb = board.n
+        if board is not None:
+            depth = max((o.size[1] for o in self.space.objects if o.anchor is None and o.group is not None),
+                        default=0.0)
+            front = ROW_FRONT_CLEARANCE_M + min(depth, 1.0)
+            plans = [self._rows_grid(g, board, front), self._rows_grid(g, board, ROW_SIDE_CLEARANCE_M + depth)]
+        else:  # face the longest wall, or the one across it when that fits more
+            walls = sorted(self.space.walls, key=lambda w: -w.length)
+            across = [w for w in walls if abs(float(w.u @ walls[0].u)) < 0.1]
+            later = [x.anchor for x in self.spec.groups if x is not g] + list(self.spec.ornaments)
+            front = ROW_FRONT_CLEARANCE_M if any(_front_item(x) for x in later) else ROW_SIDE_CLEARANCE_M
+            plans = [self._rows_grid(g, w, f) for w in walls[:1] + across[:1] for f in (front, ROW_SIDE_CLEARANCE_M)]
+        plans = [p for p in plans if p[0] * p[1] > 0]
+        if not plans:
+            prev = None
+            for c in range(n):
+                prev = self._place_group_copy(g, c, prev) or prev
+            return
+        maxr, maxc, geo = next((p for p in plans if p[0] * p[1] >= n), max(plans, key=lambda p: p[0] * p[1]))
+        wall, (x0, x1, y0, y1) = geo["wall"], geo["ext"]
+        self.rows_wall = wall
+        nb = wall.n
         faces_member = any(
             m.rule == "place_front" and m.target in (None, item.name)
             and m.params.get("facing", "toward") == "toward" for m in g.members
         )
         yaw = R.yaw_facing(nb if faces_member else -nb)
-        x0, x1, y0, y1 = self._group_extent(g)
-        cw, cd = x1 - x0, y1 - y0
-        cu, cv = cw + ROW_AISLE_U_M, cd + ROW_AISLE_V_M
-        rel = self.space.vertices - board.a
-        us, vs = rel @ board.u, rel @ nb
-        board_depth = max((o.size[1] for o in self.space.objects if o.anchor is None and o.group is not None), default=0.0)
-        u0, u1 = us.min() + ROW_SIDE_CLEARANCE_M, us.max() - ROW_SIDE_CLEARANCE_M
-        v0 = max(0.0, vs.min()) + ROW_FRONT_CLEARANCE_M + min(board_depth, 1.0)
-        v1 = vs.max() - ROW_SIDE_CLEARANCE_M
-        maxc = int(np.floor((u1 - u0 + ROW_AISLE_U_M) / cu + 1e-9))
-        maxr = int(np.floor((v1 - v0 + ROW_AISLE_V_M) / cv + 1e-9))
-        n = g.repeat
-        if maxc < 1 or maxr < 1:
-            prev = None
-            for c in range(n):
-                prev = self._place_group_copy(g, c, prev) or prev
-            return
         options = []
         for c in range(1, maxc + 1):
             r = math.ceil(n / c)
             if r <= maxr:
-                options.append(((r < 2 and n >= 2 and maxr >= 2), r * c - n, abs(c * cu - r * cv), c))
+                options.append(((r < 2 and n >= 2 and maxr >= 2), r * c - n, abs(c * geo["cu"] - r * geo["cv"]), c))
         cols = min(options)[3] if options else maxc
         rot = np.array([[math.cos(yaw), -math.sin(yaw)], [math.sin(yaw), math.cos(yaw)]])
         centre_local = rot @ np.array([(x0 + x1) / 2, (y0 + y1) / 2])
         cells = []
         for j in range(maxr):
             for i in range(cols):
-                u = (u0 + u1) / 2 + (i - (cols - 1) / 2) * cu
-                v = v0 + cd / 2 + j * cv
-                cells.append(board.a + board.u * u + nb * v - centre_local)
+                u = (geo["u0"] + geo["u1"]) / 2 + (i - (cols - 1) / 2) * geo["cu"]
+                v = geo["v0"] + geo["cd"] / 2 + j * geo["cv"]
+                cells.append(wall.a + wall.u * u + nb * v - centre_local)
         placed = 0
         for cell in cells:
             if placed >= n:
                 break
             label = f"{g.name}-{placed}"
-            shifts = [0.0, 0.1, -0.1, 0.2, -0.2]
-            xy = np.asarray([cell + board.u * s for s in shifts])
+            shifts = np.array([0.0, 0.1, -0.1, 0.2, -0.2])
+            xy = cell[None] + shifts[:, None] * wall.u[None]
             c = R.Cands(xy, np.full(len(xy), yaw), np.zeros(len(xy)), 1.0 - 0.1 * np.abs(shifts))
             order = self._rank(c, item.size_m, "floor", 0.0, spacing=False)
             choices = self._verified(c, order, item.size_m, "floor", None, k=2)
@@ -730,8 +767,16 @@ class RoomLayout:
                 self._restore(snap)
                 continue
             placed += 1
-        for _ in range(n - placed):
-            self._drop_group(g, "no room left for another place in the rows")
+        # copies the grid has no place for are placed freely, else dropped
+        prev = None
+        for c in range(placed, n):
+            prev = self._place_group_copy(g, c, prev) or prev
+
+
+def _front_item(item: ItemSpec) -> bool:
+    """Whether an item belongs at the front of a room set out in rows (a board, a lectern)."""
+    text = f"{item.name} {item.category}".lower()
+    return any(w in text for w in FRONT_WORDS)
 
 
 R_REL = frozenset({"place_beside", "place_around", "place_front", "place_top", "place_on_wall"})

@@ -42,9 +42,15 @@ FACE_TABLE_DISTANCE_M = 0.6
 """A seat this close to a table or desk is turned to face it."""
 MOVE_RADII_M = (0.02, 0.05, 0.1, 0.15, 0.2, 0.3)
 """Distances tried when moving an object out of a penetration."""
+YAW_SNAP_RAD = 0.2
+"""Floor and on-top objects turned less than this off a right angle are squared up."""
 SEAT_WORDS = ("chair", "stool", "seat")
 TABLE_WORDS = ("table", "desk", "counter", "bar", "workstation", "bench")
 WALL_RULES = ("place_wall", "place_corner", "place_next_wall")
+FACE_TABLE_RULES = ("place_around", "place_center", "place_next")
+"""Seats placed by these rules are turned to face the table they sit at; the others
+(``place_front`` with its explicit facing, seats against walls, beside things) keep
+the facing their rule gave them."""
 
 
 def refine_objects(floorplan: Floorplan, objects: list[HouseObject], rng: np.random.Generator) -> list[HouseObject]:
@@ -201,6 +207,10 @@ class _Refiner:
             o = self.objs[i]
             if o is None:
                 continue
+            snapped = _snap_yaw(o.yaw)
+            if o.support != "wall" and 1e-9 < abs(_wrap(snapped - o.yaw)) < YAW_SNAP_RAD:
+                self._try(i, o.model_copy(update={"yaw": snapped}))
+                o = self.objs[i]
             if o.support == "wall":
                 new = self._snap_wall(o)
                 if new is not None:
@@ -210,7 +220,7 @@ class _Refiner:
                     new = self._snap_wall(o)
                     if new is not None:
                         self._try(i, new)
-                if _is_seat(o):
+                if _is_seat(o) and o.rule in FACE_TABLE_RULES:
                     new = self._face_table(self.objs[i])
                     if new is not None:
                         self._try(i, new)
@@ -257,7 +267,9 @@ class _Refiner:
             if t.room != o.room or t.id == o.id or not _is_table(t) or t.support != "floor":
                 continue
             d = poly.distance(footprint_polygon(t.position, t.size, t.yaw))
-            if d < best_d:
+            if t.id == o.anchor and d < FACE_TABLE_DISTANCE_M:
+                best, best_d = t, -1.0  # the table it was placed around wins
+            elif d < best_d:
                 best, best_d = t, d
         if best is None:
             return None
@@ -322,8 +334,15 @@ class _Refiner:
             if w is None:
                 return False
             dirs = np.array([w.u, -w.u])
-        offs = np.concatenate([dirs * r for r in MOVE_RADII_M])
-        xy = base[None] + offs
+        offs = np.concatenate([np.zeros((1, 2))] + [dirs * r for r in MOVE_RADII_M])
+        yaws = [o.yaw]
+        snapped = _snap_yaw(o.yaw)
+        if abs(_wrap(snapped - o.yaw)) > 1e-9:
+            yaws.append(snapped)
+        xy = np.concatenate([base[None] + offs for _ in yaws])
+        yaw = np.concatenate([np.full(len(offs), y) for y in yaws])
+        order = np.argsort(np.linalg.norm(xy - base[None], axis=1) + 0.01 * (yaw != o.yaw), kind="stable")
+        xy, yaw = xy[order], yaw[order]
         kind = "floor" if o.support == "floor" else ("wall" if o.support == "wall" else "top")
         space.placed = []
         others = [x for x in self._live() if x.room == o.room and x.id != o.id and x.support != o.id]
@@ -332,12 +351,13 @@ class _Refiner:
         for x in others:
             c = rect_corners(np.asarray(x.position[:2])[None], x.size[:2], [x.yaw])[0]
             space.placed.append(Placed(x, c, x.position[2], x.position[2] + x.size[2], x.support == "floor"))
-        corners = rect_corners(xy, o.size[:2], np.full(len(xy), o.yaw))
+        corners = rect_corners(xy, o.size[:2], yaw)
         ok = space.valid(corners, np.full(len(xy), o.position[2]), np.full(len(xy), o.position[2] + o.size[2]),
                          floor=kind == "floor", doors=kind != "top")
         space.placed = []
         for j in np.nonzero(ok)[0]:
-            new = o.model_copy(update={"position": (float(xy[j, 0]), float(xy[j, 1]), o.position[2])})
+            new = o.model_copy(update={"position": (float(xy[j, 0]), float(xy[j, 1]), o.position[2]),
+                                       "yaw": float(yaw[j])})
             if self._try(i, new) and self.problems(self.objs[i]) == 0:
                 return True
         return False
@@ -366,6 +386,10 @@ class _Refiner:
                     self.objs[i] = o
             if self._nav_ok(self._live()):
                 return
+
+
+def _snap_yaw(yaw: float) -> float:
+    return _wrap(round(yaw / (math.pi / 2)) * (math.pi / 2))
 
 
 def _carry(child: HouseObject, old: HouseObject, new: HouseObject) -> HouseObject:

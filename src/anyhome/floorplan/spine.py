@@ -1,0 +1,244 @@
+"""Constructive floorplans: a spine of hub rooms with room blocks on both sides.
+
+Used for programs the slicing search cannot lay out reliably (many rooms, busy hubs).
+The bubble diagram is read as a tree rooted at the entrance room. The *spine* is the
+chain of branching rooms from the root (entrance hall -> living room -> hallway ...),
+laid east-west. Every other child of a spine room becomes a *block* north or south of
+it: full-depth columns, the child's column touching the spine, the child's own
+children in columns beside it (so they share a wall with it), a second grandchild
+stacked inside its parent's column. Every column reaches the outer edge, so every
+habitable room gets an exterior wall, and every tree edge is a shared wall by
+construction. Sides of different lengths leave L-shaped notches. The whole plan is
+then rotated or mirrored at random.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from anyhome.floorplan.grid import FREE, OUTSIDE
+from anyhome.floorplan.program import Program
+
+SPINE_CELL_M = 0.1
+"""Cell side of the owner grid the spine layout is drawn on."""
+DEPTH_RANGE_M = (3.2, 8.0)
+"""Range of the depth of the room blocks beside the spine."""
+DEPTH_JITTER = (0.9, 1.15)
+"""Random factor on the block depth derived from the room areas."""
+HALLWAY_MIN_M = 1.3
+"""Narrowest spine hallway (a 0.9 m door plus margins fits its end wall)."""
+SPINE_ASPECT_RANGE = (1.0, 1.5)
+"""Long/short side ratio of a spine room that has no blocks to size it."""
+
+Column = list[int]  # rooms stacked from the spine side outwards
+
+
+def spine_owner(prog: Program, rng: np.random.Generator) -> np.ndarray | str:
+    """Padded owner array (``[x, y]``) of one spine layout, or a reason it cannot be built."""
+    tree = _tree(prog, rng)
+    if isinstance(tree, str):
+        return tree
+    root, children = tree
+    spine = _spine(root, children)
+    blocks: dict[int, list[list[Column]]] = {}
+    for s in spine:
+        blocks[s] = []
+        for c in children[s]:
+            if c in spine:
+                continue
+            cols = _block(c, children, prog, rng)
+            if isinstance(cols, str):
+                return cols
+            blocks[s].append(cols)
+    depth = _block_depth(prog, spine, rng)
+    for s in spine:
+        for block in blocks[s]:
+            for col in block:
+                depth = max(depth, sum(_min_side(prog, k) for k in col))
+    rects: dict[int, tuple[int, int, int, int]] = {}
+    x = 0
+    for i, s in enumerate(spine):
+        sides = _split_sides(blocks[s], prog, rng, keep_one_side=_needs_open_side(prog, spine, i))
+        widths = [[[_column_width(c, depth, prog) for c in b] for b in side] for side in sides]
+        lengths = [sum(sum(bw) for bw in side) for side in widths]
+        own_len = _spine_length(prog, s, max(lengths), rng)
+        seg_len = max(own_len, *lengths)
+        d = _spine_depth(prog, s, seg_len)
+        y0 = -(d // 2)
+        rects[s] = (x, y0, x + seg_len, y0 + d)
+        for side_i, (side, side_w) in enumerate(zip(sides, widths)):
+            slack = seg_len - lengths[side_i]
+            cx = x + (slack if rng.random() < 0.5 else 0)
+            for block_cols, block_w in zip(side, side_w):
+                for col, w in zip(block_cols, block_w):
+                    _place_column(col, w, cx, y0, d, depth, side_i, prog, rects)
+                    cx += w
+        x += seg_len
+    owner = _rasterize(rects, prog.n)
+    return _random_symmetry(owner, rng)
+
+
+# ------------------------------------------------------------------ the tree
+def _tree(prog: Program, rng: np.random.Generator) -> tuple[int, list[list[int]]] | str:
+    entrances = [a for a, b in prog.links if b == OUTSIDE]
+    if not entrances:
+        return "no entrance room"
+    root = entrances[0]
+    adj: list[list[int]] = [[] for _ in range(prog.n)]
+    for a, b in prog.edges:
+        adj[a].append(b)
+        adj[b].append(a)
+    children: list[list[int]] = [[] for _ in range(prog.n)]
+    seen, order = {root}, [root]
+    for k in order:
+        nbrs = sorted(set(adj[k]) - seen)
+        for j in nbrs:
+            seen.add(j)
+            children[k].append(j)
+            order.append(j)
+    if len(seen) != prog.n:
+        return "the bubble diagram is not connected"
+    for k in range(prog.n):
+        rng.shuffle(children[k])
+    return root, children
+
+
+def _subtree_size(k: int, children: list[list[int]]) -> int:
+    return 1 + sum(_subtree_size(c, children) for c in children[k])
+
+
+def _spine(root: int, children: list[list[int]]) -> list[int]:
+    spine, cur = [root], root
+    while True:
+        branching = [c for c in children[cur] if len(children[c]) >= 2]
+        if not branching:
+            return spine
+        cur = max(branching, key=lambda c: _subtree_size(c, children))
+        spine.append(cur)
+
+
+# ---------------------------------------------------------------- the blocks
+def _block(c: int, children: list[list[int]], prog: Program, rng) -> list[Column] | str:
+    """Columns of child ``c``'s subtree, ``c``'s own column full depth."""
+    kids = children[c]
+    if len(kids) > 2:
+        return f"room {prog.ids[c]!r} has more than two sub-rooms"
+    right = _chain(kids[0], children, prog) if kids else []
+    left = _chain(kids[1], children, prog) if len(kids) > 1 else []
+    if isinstance(right, str):
+        return right
+    if isinstance(left, str):
+        return left
+    return list(reversed(left)) + [[c]] + right
+
+
+def _chain(n: int, children: list[list[int]], prog: Program) -> list[Column] | str:
+    """Columns of ``n``'s subtree going outwards from its parent's column."""
+    kids = children[n]
+    if len(kids) > 2:
+        return f"room {prog.ids[n]!r} has more than two sub-rooms"
+    column: Column = [n]
+    if len(kids) == 2:
+        stacked = kids[1]
+        if children[stacked]:
+            return f"room {prog.ids[stacked]!r} nests too deep"
+        if prog.habitable(stacked) and prog.habitable(n):
+            return f"rooms {prog.ids[n]!r} and {prog.ids[stacked]!r} both need an outside wall"
+        column = [stacked, n] if not prog.habitable(stacked) else [n, stacked]
+    rest = _chain(kids[0], children, prog) if kids else []
+    if isinstance(rest, str):
+        return rest
+    return [column] + rest
+
+
+def _split_sides(
+    blocks: list[list[Column]], prog: Program, rng, keep_one_side: bool
+) -> tuple[list[list[Column]], list[list[Column]]]:
+    def area(b: list[Column]) -> float:
+        return float(sum(prog.areas_m2[k] for col in b for k in col))
+
+    order = sorted(range(len(blocks)), key=lambda i: (-area(blocks[i]), rng.random()))
+    sides: tuple[list[list[Column]], list[list[Column]]] = ([], [])
+    totals = [0.0, 0.0]
+    first = int(rng.integers(2))
+    for i in order:
+        side = first if keep_one_side else int(np.argmin(totals)) if totals[0] != totals[1] else first
+        sides[side].append(blocks[i])
+        totals[side] += area(blocks[i])
+    return sides
+
+
+def _needs_open_side(prog: Program, spine: list[int], i: int) -> bool:
+    """A habitable spine room between two others needs one side free for windows."""
+    return 0 < i < len(spine) - 1 and prog.habitable(spine[i])
+
+
+# ----------------------------------------------------------------- the sizes
+def _cells(m: float) -> int:
+    return int(round(m / SPINE_CELL_M))
+
+
+def _min_side(prog: Program, k: int) -> int:
+    return _cells(prog.min_side_m(k))
+
+
+def _block_depth(prog: Program, spine: list[int], rng) -> int:
+    others = [k for k in range(prog.n) if k not in spine]
+    if not others:
+        return _cells(DEPTH_RANGE_M[0])
+    typical = float(np.sqrt(np.median([prog.areas_m2[k] for k in others])))
+    depth_m = np.clip(typical * rng.uniform(*DEPTH_JITTER), *DEPTH_RANGE_M)
+    return _cells(float(depth_m))
+
+
+def _column_width(col: Column, depth: int, prog: Program) -> int:
+    area_cells = sum(prog.areas_m2[k] for k in col) / SPINE_CELL_M**2
+    return max(int(np.ceil(area_cells / depth)), *(_min_side(prog, k) for k in col))
+
+
+def _spine_length(prog: Program, s: int, blocks_len: int, rng) -> int:
+    """The spine room's own length: its blocks' length, or its natural proportions."""
+    area = prog.areas_m2[s] / SPINE_CELL_M**2
+    natural = int(round(np.sqrt(area * rng.uniform(*SPINE_ASPECT_RANGE))))
+    if prog.types[s] == "hallway" and blocks_len:
+        return blocks_len
+    return max(natural, _min_side(prog, s))
+
+
+def _spine_depth(prog: Program, s: int, length: int) -> int:
+    area = prog.areas_m2[s] / SPINE_CELL_M**2
+    floor_m = HALLWAY_MIN_M if prog.types[s] == "hallway" else prog.min_side_m(s)
+    return max(int(round(area / length)), _cells(floor_m))
+
+
+def _place_column(col, w, cx, y0, d, depth, side, prog, rects) -> None:
+    """Stack ``col``'s rooms outward from the spine, north (side 0) or south (side 1)."""
+    total = sum(prog.areas_m2[k] for k in col)
+    heights = [max(int(round(depth * prog.areas_m2[k] / total)), _min_side(prog, k)) for k in col]
+    heights[-1] = depth - sum(heights[:-1])
+    offset = 0
+    for k, h in zip(col, heights):
+        if side == 0:
+            rects[k] = (cx, y0 + d + offset, cx + w, y0 + d + offset + h)
+        else:
+            rects[k] = (cx, y0 - offset - h, cx + w, y0 - offset)
+        offset += h
+
+
+def _rasterize(rects: dict[int, tuple[int, int, int, int]], n: int) -> np.ndarray:
+    xs0 = min(r[0] for r in rects.values())
+    ys0 = min(r[1] for r in rects.values())
+    xs1 = max(r[2] for r in rects.values())
+    ys1 = max(r[3] for r in rects.values())
+    owner = np.full((xs1 - xs0 + 2, ys1 - ys0 + 2), OUTSIDE, dtype=np.int32)
+    for k, (x0, y0, x1, y1) in rects.items():
+        owner[x0 - xs0 + 1 : x1 - xs0 + 1, y0 - ys0 + 1 : y1 - ys0 + 1] = k
+    assert not np.any(owner == FREE)
+    return owner
+
+
+def _random_symmetry(owner: np.ndarray, rng) -> np.ndarray:
+    owner = np.rot90(owner, int(rng.integers(4)))
+    if rng.random() < 0.5:
+        owner = owner[::-1, :]
+    return np.ascontiguousarray(owner)

@@ -1,0 +1,111 @@
+"""Local moves on a slicing tree: nudge cuts until connections share enough wall.
+
+The cost adds up what the hard checks later reject (shared walls shorter than a door
+needs, rooms off their area, too thin or too long, exterior walls too short for a
+window), all computed on the leaf rectangles, so a move costs microseconds. Hill
+climbing takes the best single-cut nudge per round, for a bounded number of rounds.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from anyhome.floorplan.slicing import Cut, Rect, tree_cuts, tree_rects
+
+TUNE_ROUNDS = 30
+"""Most hill-climbing rounds per layout."""
+NUDGES_CELLS = (-2, -1, 1, 2)
+"""Cut moves tried per round."""
+SHARED_WALL_M = 1.3
+"""Shared wall a connection should get (door width plus margins, a little spare)."""
+EXTERIOR_WALL_M = 1.5
+"""Exterior wall a room needing a window or entrance should get."""
+AREA_SLACK = 0.2
+"""Relative area error tolerated before the cost rises steeply."""
+MAX_ASPECT = 2.5
+
+
+@dataclass(frozen=True)
+class TuneRooms:
+    """Per leaf index: target cells, min side and flags (the void has target 0)."""
+
+    target_cells: np.ndarray
+    min_side_m: np.ndarray
+    corridor: np.ndarray
+    exterior: np.ndarray
+    void: int | None
+    edges: tuple[tuple[int, int], ...]
+    cell_m: float
+
+
+def tune_tree(tree: Cut | int, rect: Rect, rooms: TuneRooms) -> float:
+    """Improve the tree's cut positions in place; return the final cost."""
+    cost = layout_cost(tree_rects(tree, rect), rect, rooms)
+    for _ in range(TUNE_ROUNDS):
+        if cost < 1e-9:
+            break
+        best = None
+        for cut in tree_cuts(tree):
+            start = cut.at
+            for d in NUDGES_CELLS:
+                cut.at = start + d
+                c = layout_cost(tree_rects(tree, rect), rect, rooms)
+                if c < cost - 1e-9:
+                    cost, best = c, (cut, start + d)
+            cut.at = start
+        if best is None:
+            break
+        best[0].at = best[1]
+    return cost
+
+
+def layout_cost(rects: dict[int, Rect], outer: Rect, rooms: TuneRooms) -> float:
+    """Hard-rule violations of the leaf rectangles (0 when none)."""
+    cost = 0.0
+    for k, r in rects.items():
+        if r[2] <= r[0] or r[3] <= r[1]:
+            return np.inf
+        if k != rooms.void:
+            cost += _room_cost(k, r, rooms)
+    for i, j in rooms.edges:
+        shared = _shared(rects[i], rects[j]) * rooms.cell_m
+        if shared < SHARED_WALL_M:
+            cost += 10.0 * (SHARED_WALL_M - shared) + 2.0 * _gap(rects[i], rects[j]) * rooms.cell_m
+    for k in np.flatnonzero(rooms.exterior).tolist():
+        ext = _exterior(rects[k], outer, rects.get(rooms.void)) * rooms.cell_m
+        cost += 10.0 * max(0.0, EXTERIOR_WALL_M - ext)
+    return cost
+
+
+def _room_cost(k: int, r: Rect, rooms: TuneRooms) -> float:
+    w, h = (r[2] - r[0]) * rooms.cell_m, (r[3] - r[1]) * rooms.cell_m
+    err = abs((r[2] - r[0]) * (r[3] - r[1]) / rooms.target_cells[k] - 1.0)
+    cost = 10.0 * max(0.0, err - AREA_SLACK)
+    cost += 10.0 * max(0.0, rooms.min_side_m[k] - min(w, h))
+    if not rooms.corridor[k]:
+        cost += 5.0 * max(0.0, max(w, h) / min(w, h) - MAX_ASPECT)
+    return cost
+
+
+def _shared(a: Rect, b: Rect) -> int:
+    """Length (cells) of the wall two rectangles share."""
+    if a[2] == b[0] or b[2] == a[0]:
+        return max(0, min(a[3], b[3]) - max(a[1], b[1]))
+    if a[3] == b[1] or b[3] == a[1]:
+        return max(0, min(a[2], b[2]) - max(a[0], b[0]))
+    return 0
+
+
+def _gap(a: Rect, b: Rect) -> int:
+    """Manhattan gap (cells) between two rectangles (0 if they touch)."""
+    return max(0, a[0] - b[2], b[0] - a[2]) + max(0, a[1] - b[3], b[1] - a[3])
+
+
+def _exterior(r: Rect, outer: Rect, void: Rect | None) -> int:
+    """Length (cells) of a rectangle's walls on the footprint's outline."""
+    w, h = r[2] - r[0], r[3] - r[1]
+    length = (r[0] == outer[0]) * h + (r[2] == outer[2]) * h
+    length += (r[1] == outer[1]) * w + (r[3] == outer[3]) * w
+    return length + (_shared(r, void) if void is not None else 0)
