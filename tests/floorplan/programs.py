@@ -70,22 +70,25 @@ def large_home() -> HouseSpec:
 
 def planner_like_program(rng: np.random.Generator, n_rooms: int) -> HouseSpec:
     """A tree like the offline planner's: a hub (hallway or living room) with up to six
-    neighbours, other rooms with at most two sub-rooms, one entrance on the hub."""
+    neighbours, each with at most two sub-rooms (en-suite, pantry...) that are leaves,
+    one entrance on the hub."""
     types = sorted(t for t in ROOM_TYPES if t not in ("hallway", "entry"))
     hub_type = "hallway" if rng.random() < 0.5 else "living_room"
     rooms = [RoomSpec(id="r0", name=hub_type, type=hub_type, area_m2=8.0 if hub_type == "hallway" else 24.0)]
     children = {0: 0}
+    depth = {0: 0}
     conns = []
     for k in range(1, n_rooms):
         t = types[int(rng.integers(len(types)))]
         lo, hi = AREA_RANGE_M2.get(t, HABITABLE_RANGE_M2 if ROOM_TYPES[t] else SERVICE_RANGE_M2)
         rooms.append(RoomSpec(id=f"r{k}", name=t.replace("_", " "), type=t, area_m2=round(float(rng.uniform(lo, hi)), 1)))
-        parents = [p for p, c in children.items() if c < (6 if p == 0 else 2)]
+        parents = [p for p, c in children.items() if c < (6 if p == 0 else 2) and depth[p] < 2]
         parent = parents[int(rng.integers(len(parents)))] if rng.random() < 0.4 else 0
         if children[parent] >= (6 if parent == 0 else 2):
             parent = parents[0]
         children[parent] += 1
         children[k] = 0
+        depth[k] = depth[parent] + 1
         conns.append((f"r{parent}", f"r{k}"))
     conns.append(("r0", "outside"))
     return HouseSpec(prompt="planner-like", rooms=rooms, connections=conns)

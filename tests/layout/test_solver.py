@@ -2,10 +2,7 @@
 
 from __future__ import annotations
 
-import time
-
 import numpy as np
-import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -151,8 +148,8 @@ def test_missing_room_is_reported():
     assert res.objects == [] and res.dropped[0].room == "attic"
 
 
-def test_speed_five_rooms():
-    """A furnished five-room house (timing printed with -s; benchmarks/ holds the numbers)."""
+def test_five_furnished_rooms():
+    """A furnished five-room house stays valid (its speed is measured in benchmarks/)."""
     rooms_ = [Room(id=f"r{i}", name=f"r{i}", type="bedroom", polygon=rect(4.5 * i, 0, 4.5 * i + 4.5, 4.0))
               for i in range(5)]
     doors = [Door(id="d0", rooms=("r0", "outside"), segment=((1.0, 0.0), (1.9, 0.0)))]
@@ -170,27 +167,20 @@ def test_speed_five_rooms():
     orn = [item("vase", "vase", (0.15, 0.15, 0.3), "place_top"), item("clock", "clock", (0.4, 0.05, 0.4), "place_on_wall")]
     spec = house_spec(plan, connections=[("r0", "outside")] + [(f"r{i - 1}", f"r{i}") for i in range(1, 5)],
                       ornaments={k: orn for k in plan})
-    layout_house(spec, fp, np.random.default_rng(0))  # warm up
-    t = time.perf_counter()
     res = layout_house(spec, fp, np.random.default_rng(1))
-    dt = time.perf_counter() - t
     assert check_valid(fp, res.objects) == []
     assert len(res.objects) >= 40, res.dropped
-    print(f"five rooms, {len(res.objects)} objects: {dt:.3f} s")
 
 
-def test_real_pipeline_if_available():
-    plan = pytest.importorskip("anyhome.plan")
-    floorplan = pytest.importorskip("anyhome.floorplan")
-    if not hasattr(plan, "plan_house") or not hasattr(floorplan, "solve_floorplan"):
-        pytest.skip("planner or floorplan solver not available yet")
+def test_real_pipeline():
+    """Planner + floorplan + layout on real prompts: valid, with rows in the classroom."""
+    from anyhome.floorplan import solve_floorplan
+    from anyhome.plan import plan_house
+
     for text in ("A one-bedroom apartment with a living room and a kitchen.",
                  "A classroom with desks and chairs arranged in neat rows facing a whiteboard."):
-        try:
-            spec = plan.plan_house(text, np.random.default_rng(0))
-            fp = floorplan.solve_floorplan(spec, np.random.default_rng(0))
-        except Exception as e:  # other stages are still being written
-            pytest.skip(f"upstream stage not ready: {e}")
+        spec = plan_house(text, np.random.default_rng(0))
+        fp = solve_floorplan(spec, np.random.default_rng(0))
         res = layout_house(spec, fp, np.random.default_rng(0))
         assert check_valid(fp, res.objects) == []
         assert res.objects

@@ -17,6 +17,7 @@ from collections import Counter
 from dataclasses import dataclass
 
 import numpy as np
+from scipy import ndimage
 
 from anyhome.errors import FloorplanError
 from anyhome.floorplan.anneal import anneal
@@ -125,6 +126,8 @@ def _attempt(prog: Program, rng: np.random.Generator) -> Layout | str:
     reason, score = _check_rooms(prog, owner, grid.cell_m)
     if reason:
         return reason
+    if _has_courtyard(owner):
+        return "the footprint enclosed an empty courtyard"
     runs = wall_runs(owner)
     doors = _place_doors(prog, runs, grid.cell_m, rng)
     if isinstance(doors, str):
@@ -181,6 +184,13 @@ def _slice_rooms(prog: Program, grid: Grid, rng: np.random.Generator) -> np.ndar
     for k, (x0, y0, x1, y1) in tree_rects(tree, (0, 0, nx, ny)).items():
         owner[x0 + 1 : x1 + 1, y0 + 1 : y1 + 1] = OUTSIDE if k == void_id else k
     return owner
+
+
+def _has_courtyard(owner: np.ndarray) -> bool:
+    """True if some outside cells are enclosed by rooms (a hole in the footprint)."""
+    labels, n = ndimage.label(owner == OUTSIDE)
+    border = set(np.unique(np.concatenate([labels[0], labels[-1], labels[:, 0], labels[:, -1]])))
+    return any(k not in border for k in range(1, n + 1))
 
 
 def _check_rooms(prog: Program, owner: np.ndarray, cell_m: float) -> tuple[str, float]:

@@ -27,6 +27,8 @@ DEPTH_JITTER = (0.9, 1.15)
 """Random factor on the block depth derived from the room areas."""
 HALLWAY_MIN_M = 1.3
 """Narrowest spine hallway (a 0.9 m door plus margins fits its end wall)."""
+WINDOW_GAP_M = 1.9
+"""Outside stretch kept free beside a habitable spine room whose both sides hold blocks."""
 SPINE_ASPECT_RANGE = (1.0, 1.5)
 """Long/short side ratio of a spine room that has no blocks to size it."""
 
@@ -63,12 +65,18 @@ def spine_owner(prog: Program, rng: np.random.Generator) -> np.ndarray | str:
         lengths = [sum(sum(bw) for bw in side) for side in widths]
         own_len = _spine_length(prog, s, max(lengths), rng)
         seg_len = max(own_len, *lengths)
+        window_gap = prog.habitable(s) and all(lengths)
+        if window_gap:  # both sides taken: leave an outside stretch for its windows
+            seg_len = max(seg_len, max(lengths) + _cells(WINDOW_GAP_M))
         d = _spine_depth(prog, s, seg_len)
         y0 = -(d // 2)
         rects[s] = (x, y0, x + seg_len, y0 + d)
+        align_end = rng.random() < 0.5
         for side_i, (side, side_w) in enumerate(zip(sides, widths)):
             slack = seg_len - lengths[side_i]
-            cx = x + (slack if rng.random() < 0.5 else 0)
+            if not window_gap:
+                align_end = rng.random() < 0.5
+            cx = x + (slack if align_end else 0)
             for block_cols, block_w in zip(side, side_w):
                 for col, w in zip(block_cols, block_w):
                     _place_column(col, w, cx, y0, d, depth, side_i, prog, rects)
@@ -139,11 +147,11 @@ def _chain(n: int, children: list[list[int]], prog: Program) -> list[Column] | s
         return f"room {prog.ids[n]!r} has more than two sub-rooms"
     column: Column = [n]
     if len(kids) == 2:
-        stacked = kids[1]
-        if children[stacked]:
-            return f"room {prog.ids[stacked]!r} nests too deep"
-        if prog.habitable(stacked) and prog.habitable(n):
-            return f"rooms {prog.ids[n]!r} and {prog.ids[stacked]!r} both need an outside wall"
+        fits = [k for k in kids if not children[k] and not (prog.habitable(k) and prog.habitable(n))]
+        if not fits:
+            return f"room {prog.ids[n]!r} has two sub-rooms that cannot share its column"
+        stacked = min(fits, key=lambda k: prog.habitable(k))
+        kids = [k for k in kids if k != stacked]
         column = [stacked, n] if not prog.habitable(stacked) else [n, stacked]
     rest = _chain(kids[0], children, prog) if kids else []
     if isinstance(rest, str):

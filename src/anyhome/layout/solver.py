@@ -187,9 +187,6 @@ class RoomLayout:
             self.nav.blocked |= mask
         return obj
 
-    def _undo_last(self, snap: _Snapshot) -> None:
-        self._restore(snap)
-
     # ------------------------------------------------------------ choosing
     def _rank(self, c: R.Cands, size, kind: str, noise: float, spacing: bool) -> np.ndarray:
         """Indices of the valid candidates, best first."""

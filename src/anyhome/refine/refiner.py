@@ -28,6 +28,7 @@ from anyhome.geometry import (
 from anyhome.house import Floorplan, HouseObject
 from anyhome.layout.freespace import (
     WALL_OPENING_MARGIN_M,
+    Placed,
     RoomSpace,
     Wall,
     rect_corners,
@@ -60,7 +61,8 @@ def refine_objects(floorplan: Floorplan, objects: list[HouseObject], rng: np.ran
     ----------
     floorplan : rooms, doors and windows the objects stand in
     objects : placed objects (not modified)
-    rng : seeded generator (only used to break ties)
+    rng : seeded generator (part of the stage signature; the geometric refiner is
+        deterministic and draws nothing from it)
 
     Returns
     -------
@@ -346,8 +348,6 @@ class _Refiner:
         kind = "floor" if o.support == "floor" else ("wall" if o.support == "wall" else "top")
         space.placed = []
         others = [x for x in self._live() if x.room == o.room and x.id != o.id and x.support != o.id]
-        from anyhome.layout.freespace import Placed
-
         for x in others:
             c = rect_corners(np.asarray(x.position[:2])[None], x.size[:2], [x.yaw])[0]
             space.placed.append(Placed(x, c, x.position[2], x.position[2] + x.size[2], x.support == "floor"))
