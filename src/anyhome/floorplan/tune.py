@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from anyhome.floorplan.slicing import Cut, Rect, tree_cuts, tree_rects
+from anyhome.floorplan.slicing import Cut, Rect, _shared, tree_cuts, tree_rects
 
 TUNE_ROUNDS = 30
 """Most hill-climbing rounds per layout."""
@@ -87,15 +87,6 @@ def _room_cost(k: int, r: Rect, rooms: TuneRooms) -> float:
     if not rooms.corridor[k]:
         cost += 5.0 * max(0.0, max(w, h) / min(w, h) - MAX_ASPECT)
     return cost
-
-
-def _shared(a: Rect, b: Rect) -> int:
-    """Length (cells) of the wall two rectangles share."""
-    if a[2] == b[0] or b[2] == a[0]:
-        return max(0, min(a[3], b[3]) - max(a[1], b[1]))
-    if a[3] == b[1] or b[3] == a[1]:
-        return max(0, min(a[2], b[2]) - max(a[0], b[0]))
-    return 0
 
 
 def _gap(a: Rect, b: Rect) -> int:
