@@ -17,8 +17,9 @@ from shapely.geometry import Polygon
 from anyhome.assets import build_object_mesh, family_for
 from anyhome.assets.colors import material_color, to_rgba
 from anyhome.errors import ExportError
+from anyhome.export.output import write_file
 from anyhome.export.walls import WALL_THICKNESS_M, solid_blocks, wall_pieces
-from anyhome.house import House, atomic_write_bytes
+from anyhome.house import House
 
 FLOOR_THICKNESS_M = 0.05
 """Floor slabs run from z = -thickness to z = 0; ceilings from the room height up."""
@@ -130,9 +131,4 @@ def write_glb(house: House, path: str | os.PathLike[str]) -> Path:
         data = build_scene(house).export(file_type="glb")
     except Exception as e:  # trimesh raises many kinds
         raise ExportError(f"could not build the GLB for {path.name}: {e}") from e
-    try:
-        path.parent.mkdir(parents=True, exist_ok=True)
-        atomic_write_bytes(path, data)
-    except OSError as e:
-        raise ExportError(f"could not write {path}: {e.strerror}") from None
-    return path
+    return write_file(path, data)

@@ -14,10 +14,10 @@ import numpy as np
 from shapely.geometry import Point, Polygon
 from shapely.ops import polylabel
 
-from anyhome.errors import ExportError
+from anyhome.export.output import write_file
 from anyhome.export.walls import WALL_THICKNESS_M, solid_blocks, wall_pieces
 from anyhome.geometry import footprint_corners
-from anyhome.house import House, atomic_write_text
+from anyhome.house import House
 
 PX_PER_M = 60.0
 """Drawing scale."""
@@ -206,10 +206,4 @@ def _scale_and_north(c: _Canvas) -> list[str]:
 def write_svg(house: House, path: str | os.PathLike[str]) -> Path:
     """Write a top-down floorplan SVG atomically; return its path."""
     path = Path(path)
-    text = render_svg(house)
-    try:
-        path.parent.mkdir(parents=True, exist_ok=True)
-        atomic_write_text(path, text)
-    except OSError as e:
-        raise ExportError(f"could not write {path}: {e.strerror}") from None
-    return path
+    return write_file(path, render_svg(house).encode("utf-8"))
