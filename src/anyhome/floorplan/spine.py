@@ -59,8 +59,8 @@ def spine_owner(prog: Program, rng: np.random.Generator) -> np.ndarray | str:
                 depth = max(depth, sum(_min_side(prog, k) for k in col))
     rects: dict[int, tuple[int, int, int, int]] = {}
     x = 0
-    for i, s in enumerate(spine):
-        sides = _split_sides(blocks[s], prog, rng, keep_one_side=_needs_open_side(prog, spine, i))
+    for s in spine:
+        sides = _split_sides(blocks[s], prog, rng)
         widths = [[[_column_width(c, depth, prog) for c in b] for b in side] for side in sides]
         lengths = [sum(sum(bw) for bw in side) for side in widths]
         own_len = _spine_length(prog, s, max(lengths), rng)
@@ -160,8 +160,9 @@ def _chain(n: int, children: list[list[int]], prog: Program) -> list[Column] | s
 
 
 def _split_sides(
-    blocks: list[list[Column]], prog: Program, rng, keep_one_side: bool
+    blocks: list[list[Column]], prog: Program, rng
 ) -> tuple[list[list[Column]], list[list[Column]]]:
+    """Blocks north (0) and south (1) of their spine room, balancing area."""
     def area(b: list[Column]) -> float:
         return float(sum(prog.areas_m2[k] for col in b for k in col))
 
@@ -170,15 +171,10 @@ def _split_sides(
     totals = [0.0, 0.0]
     first = int(rng.integers(2))
     for i in order:
-        side = first if keep_one_side else int(np.argmin(totals)) if totals[0] != totals[1] else first
+        side = int(np.argmin(totals)) if totals[0] != totals[1] else first
         sides[side].append(blocks[i])
         totals[side] += area(blocks[i])
     return sides
-
-
-def _needs_open_side(prog: Program, spine: list[int], i: int) -> bool:
-    """A habitable spine room between two others needs one side free for windows."""
-    return 0 < i < len(spine) - 1 and prog.habitable(spine[i])
 
 
 # ----------------------------------------------------------------- the sizes
