@@ -3,7 +3,8 @@
 Used for programs the slicing search cannot lay out reliably (many rooms, busy hubs).
 The bubble diagram is read as a tree rooted at the entrance room. The *spine* is the
 chain of branching rooms from the root (entrance hall -> living room -> hallway ...),
-laid east-west. Every other child of a spine room becomes a *block* north or south of
+laid east-west; when the root has two branching children the chain runs both ways
+from it (its outside gap keeps an exterior wall for the entrance door). Every other child of a spine room becomes a *block* north or south of
 it: full-depth columns, the child's column touching the spine, the child's own
 children in columns beside it (so they share a wall with it), a second grandchild
 stacked inside its parent's column. Every column reaches the outer edge, so every
@@ -65,7 +66,7 @@ def spine_owner(prog: Program, rng: np.random.Generator) -> np.ndarray | str:
         lengths = [sum(sum(bw) for bw in side) for side in widths]
         own_len = _spine_length(prog, s, max(lengths), rng)
         seg_len = max(own_len, *lengths)
-        window_gap = prog.habitable(s) and all(lengths)
+        window_gap = (prog.habitable(s) or s == root) and all(lengths)
         if window_gap:  # both sides taken: leave an outside stretch for its windows
             seg_len = max(seg_len, max(lengths) + _cells(WINDOW_GAP_M))
         d = _spine_depth(prog, s, seg_len)
@@ -115,14 +116,25 @@ def _subtree_size(k: int, children: list[list[int]]) -> int:
     return 1 + sum(_subtree_size(c, children) for c in children[k])
 
 
-def _spine(root: int, children: list[list[int]]) -> list[int]:
-    spine, cur = [root], root
+def _chain_from(start: int, children: list[list[int]]) -> list[int]:
+    chain, cur = [start], start
     while True:
         branching = [c for c in children[cur] if len(children[c]) >= 2]
         if not branching:
-            return spine
+            return chain
         cur = max(branching, key=lambda c: _subtree_size(c, children))
-        spine.append(cur)
+        chain.append(cur)
+
+
+def _spine(root: int, children: list[list[int]]) -> list[int]:
+    """The chain of branching rooms through the root: the root's biggest branching
+    child leads east; a second branching child of the root leads west."""
+    east = _chain_from(root, children)
+    branching = [c for c in children[root] if len(children[c]) >= 2 and c not in east]
+    if not branching:
+        return east
+    west = _chain_from(max(branching, key=lambda c: _subtree_size(c, children)), children)
+    return list(reversed(west)) + east
 
 
 # ---------------------------------------------------------------- the blocks

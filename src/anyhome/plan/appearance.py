@@ -39,6 +39,9 @@ def choose_look(parsed: Parsed, implied: list[str], building: str, rng: np.rando
         keys = [str(pool[int(rng.integers(len(pool)))])]
     lead = styles[keys[0]]
     describe = "; ".join(styles[k]["describe"] for k in keys)
+    own = [w for w in parsed.style_words if w not in describe]
+    if own:  # the user's own words lead ("moroccan: mediterranean, terracotta...")
+        describe = ", ".join(own) + ": " + describe
     palette = list(dict.fromkeys([*parsed.colours, *lead["palette"], *(c for k in keys[1:] for c in styles[k]["palette"][:1])]))
     look = Look(keys, describe, palette, lead["floor"], lead["walls"], lead["ceiling"], lead["furniture"])
     furniture_words: list[str] = []

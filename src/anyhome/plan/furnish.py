@@ -14,6 +14,7 @@ from typing import Any
 import numpy as np
 
 from anyhome.plan.knowledge import load
+from anyhome.plan.openvocab import fallback_object
 from anyhome.plan.parse import Mention
 
 SIZE_JITTER = 0.10
@@ -173,10 +174,10 @@ def _matches(item: Item, category: str, head: str) -> int:
     return 0
 
 
-def _find(groups: list[Group], category: str, head: str) -> tuple[Group | None, Item | None]:
-    """The best-matching item: same category before same head noun, anchors before
-    members, and among equals the one planned in the most copies."""
-    for level in (2, 1):
+def _find(groups: list[Group], category: str, head: str, loose: bool = True) -> tuple[Group | None, Item | None]:
+    """The best-matching item: same category before same head noun (only if ``loose``),
+    anchors before members, and among equals the one planned in the most copies."""
+    for level in (2, 1) if loose else (2,):
         for members in (False, True):
             cands = [
                 (g, it) for g in groups
@@ -217,9 +218,9 @@ def mention_count(m: Mention, proto: dict[str, Any], rng: np.random.Generator) -
 
 def apply_mention(m: Mention, groups: list[Group], ornaments: list[Item], unused: list[dict[str, Any]], area_m2: float, rng: np.random.Generator) -> None:
     """Make a room hold what the text asks for (adjusting or adding groups)."""
-    proto = _proto(m.key)
-    category = proto.get("category", _slug(m.key))
-    head = m.key.split()[-1]
+    proto = _proto(m.key) if m.key else fallback_object()
+    category = proto.get("category", _slug(m.key or m.name.split()[-1]))
+    head = (m.key or m.name).split()[-1]
     n = mention_count(m, proto, rng)
     if n == 0:
         groups[:] = [g for g in groups if _matches(g["anchor"], category, head) < 2]
@@ -229,13 +230,16 @@ def apply_mention(m: Mention, groups: list[Group], ornaments: list[Item], unused
     if proto.get("ornament"):
         _apply_ornament(m, proto, category, head, n, groups, ornaments, unused, area_m2, rng)
         return
-    g, item = _find(groups, category, head)
+    # a one-word name ("table") may stand for any table; "bunk bed" only for bunk beds
+    g, item = _find(groups, category, head, loose=" " not in (m.key or m.name))
     if g is None:
         d = next((u for u in unused if _matches(u_anchor(u), category, head)), None)
         if d is None and proto.get("group"):
             d = group_def({"group": proto["group"]})
-        if d is None:
+        if d is None and m.key:
             d = {"key": _slug(m.key), "anchor": {"use": m.key}}
+        if d is None:
+            d = {"key": _slug(m.name), "anchor": {**proto, "name": m.name, "category": category}}
         g = build_group(d, area_m2, rng)
         groups.append(g)
         g2, item = _find([g], category, head)

@@ -20,7 +20,7 @@ from anyhome.errors import PlanError
 KNOWLEDGE_DIR = Path(__file__).with_name("knowledge")
 """Folder holding programs.yaml, rooms.yaml, objects.yaml, furniture.yaml, styles.yaml."""
 
-KNOWLEDGE_FILES = ("programs", "rooms", "objects", "furniture", "styles")
+KNOWLEDGE_FILES = ("programs", "rooms", "objects", "furniture", "styles", "concepts")
 
 
 def normalize(text: str) -> str:

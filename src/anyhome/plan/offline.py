@@ -57,6 +57,7 @@ class OfflinePlanner:
         building = prog.get("building") or (slots[0].type.replace("_", " ") if program is None else "home")
         rooms = _furnish(parsed, slots, main_key, prog, rng)
         look = choose_look(parsed, implied, building, rng)
+        building = parsed.building_word or building
         specs = [_room_spec(s, g, o, look, rng) for s, (g, o) in zip(slots, rooms)]
         log.debug("planned %d rooms for %r", len(specs), text[:60])
         return HouseSpec(
@@ -79,9 +80,12 @@ def _furnish(parsed: Parsed, slots: list[Slot], main_key: str | None, prog: dict
             groups.append(fu.build_group(d, s.area, rng))
         built.append((groups, ornaments, unused))
     for m in parsed.objects:
-        i = _room_for(m, slots, main_key)
-        groups, ornaments, unused = built[i]
-        fu.apply_mention(m, groups, ornaments, unused, slots[i].area, rng)
+        targets = [_room_for(m, slots, main_key)]
+        if m.each and m.room is not None:  # "three bedrooms, each with a desk"
+            targets = [i for i, s in enumerate(slots) if s.mention == m.room] or targets
+        for i in targets:
+            groups, ornaments, unused = built[i]
+            fu.apply_mention(m, groups, ornaments, unused, slots[i].area, rng)
     out = []
     for s, (groups, ornaments, _) in zip(slots, built):
         ornaments = fu.finalize_ornaments(groups, ornaments)

@@ -11,6 +11,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 
+from anyhome.plan import openvocab as ov
 from anyhome.plan.knowledge import load, normalize, vocabulary
 
 MAX_PARSE_CHARS = 4000
@@ -42,12 +43,15 @@ SIZE_WORDS: dict[str, float] = {
 STOP_WORDS = frozenset(
     "the and or with of in on at for to by from into inside near next as is are has have "
     "having that which where featuring containing plus also some my our their his her its "
-    "this these those there here it them each every per".split()
+    "this these those there here it them each every per own off".split()
 )
 """Words that end the look-back from a mention towards its count and adjectives."""
 
+EACH_OPENER = re.compile(r"^\s*(?:,\s*)?(?:each|every one|all)(?: of them)?\s*(?:,\s*)?(?=with|has|having|featuring|containing|equipped|furnished)")
+"""Text right after a plural room mention that gives every one of those rooms what follows."""
+
 CONTEXT_OPENERS = re.compile(
-    r"^\s*(?:,\s*)?(?:with|full of|filled with|lined with|packed with|featuring|containing|"
+    r"^\s*(?:,\s*)?(?:(?:each|every one|all)(?: of them)?\s*(?:,\s*)?)?(?:with|full of|filled with|lined with|packed with|featuring|containing|"
     r"that has|which has|having|where|equipped with|furnished with)\b"
 )
 """Text right after a room mention that makes the following objects belong to it."""
@@ -75,17 +79,21 @@ SURFACE_WORDS: dict[str, str] = {
 }  # fmt: skip
 """Words after a material phrase that say which surface it dresses."""
 
-_TOKEN = re.compile(r"[a-z0-9]+(?:'[a-z0-9]+)*|[.,;:!?()]")
+_TOKEN = re.compile(r"[^\W_]+(?:'[^\W_]+)*|[.,;:!?()]")
 _BED_BATH = re.compile(
     r"\b(\d{1,3})\s*(?:b|br|bd|bed|beds|bdr|bdrm)\s*(?:,|and|\+)?\s*(\d{1,2}(?:\.5)?)\s*"
     r"(?:b|ba|bth|bath|baths)\b"
 )
+_BED_BATH_WORDS = re.compile(r"\b(\w+) bed(?:room)?s?\s*(?:,|and|\+)?\s*(\w+) bath(?:room)?s?\b")
 _BR_ONLY = re.compile(r"\b(\d{1,3})\s*(?:br|bd|bdr|bdrm)\b")
 _PEOPLE = re.compile(
     r"\b(?:family|household|group) of (\w+)\b|\bfor (\w+) (?:people|persons|adults|kids|children|guests)\b"
 )
 _COUPLE = re.compile(r"\b(?:couple|newlyweds|two people)\b")
-_UNKNOWN_ROOM = re.compile(r"\b([a-z]+) (room|nook|corner|suite|lounge|den)s?\b")
+_UNKNOWN_ROOM = re.compile(
+    r"\b([^\W\d_]+) (room|nook|corner|suite|lounge|den|booth|cave|shed|chamber|parlou?r|studio|"
+    r"cellar|loft|workshop|bay|quarters|sanctuary)s?\b"
+)
 
 
 @dataclass
@@ -104,6 +112,9 @@ class Mention:
     words: list[str] = field(default_factory=list)  # adjectives kept in the name
     room: int | None = None  # index of the room mention it belongs to (objects)
     arrangement: str | None = None  # rows | along_walls | center | around | symmetric
+    concept: str | None = None  # rooms: furnishing set found by the embedding matcher
+    open_vocab: bool = False  # found by anyhome.plan.openvocab, not by a knowledge phrase
+    each: bool = False  # objects: "rooms, each with ..." -> one set in every such room
 
 
 @dataclass
@@ -122,10 +133,12 @@ class Parsed:
 
     text: str
     building: int | None = None  # index into programs.yaml buildings
+    building_word: str | None = None  # the user's word when the embedding matcher chose the program
     building_size: float = 1.0
     rooms: list[Mention] = field(default_factory=list)
     objects: list[Mention] = field(default_factory=list)
     styles: list[str] = field(default_factory=list)  # style keys, in order of appearance
+    style_words: list[str] = field(default_factory=list)  # the user's style words, as written
     colours: list[str] = field(default_factory=list)
     materials: list[MaterialMention] = field(default_factory=list)
     bedrooms: int | None = None  # from "3B2B" / "3br"
@@ -183,20 +196,35 @@ def _look_back(m: Mention, text: str, tokens: list[tuple[str, int, int]], taken:
 
 def _parse_building(text: str, p: Parsed) -> tuple[int, int] | None:
     voc = vocabulary()
-    best = None
-    for mt in voc.building_regex.finditer(text):
-        best = mt
-        break
-    if best is None:
+    matches = list(voc.building_regex.finditer(text))
+    if not matches:
         return None
+    best = matches[0]
+    for nxt in matches[1:]:  # "a boutique hotel": the head of adjacent building words wins
+        if text[best.end() : nxt.start()].strip():
+            break
+        best = nxt
     p.building = voc.building_forms[best.group()]
-    tokens = _tokens(text[: best.start()])
-    for tok, _, _ in reversed(tokens[-3:]):
+    _building_modifiers(text, best.start(), p)
+    return best.start(), best.end()
+
+
+def _building_modifiers(text: str, start: int, p: Parsed) -> None:
+    """Size words and the user's own style words just before the building word
+    ("a Craftsman bungalow", "a neon lit retro arcade")."""
+    voc = vocabulary()
+    for tok, _, _ in reversed(_tokens(text[:start])[-3:]):
         if tok in SIZE_WORDS:
             p.building_size *= SIZE_WORDS[tok]
-        elif tok in STOP_WORDS:
+            continue
+        if tok in STOP_WORDS or not tok.isalpha() or parse_number(tok) is not None or tok in MANY_WORDS:
             break
-    return best.start(), best.end()
+        if tok in voc.forms or tok in voc.style_forms or voc.colour_regex.fullmatch(tok) or tok in ov.non_objects():
+            continue
+        p.style_words.insert(0, tok)
+        ms = ov.map_style(tok)
+        if ms is not None and ms.key not in p.styles:
+            p.styles.append(ms.key)
 
 
 def _find_mentions(text: str, p: Parsed, taken: list[tuple[int, int]]) -> list[Mention]:
@@ -240,9 +268,13 @@ def _merge_adjacent(text: str, found: list[Mention]) -> list[Mention]:
 
 def _apply_codes(text: str, p: Parsed) -> None:
     mt = _BED_BATH.search(text)
+    mw = _BED_BATH_WORDS.search(text)
     if mt:
         p.bedrooms = int(mt.group(1))
         p.bathrooms = max(1, int(float(mt.group(2))))
+    elif mw and parse_number(mw.group(1)) is not None and parse_number(mw.group(2)) is not None:
+        p.bedrooms = parse_number(mw.group(1))
+        p.bathrooms = max(1, parse_number(mw.group(2)) or 1)
     else:
         mt2 = _BR_ONLY.search(text)
         if mt2:
@@ -259,13 +291,22 @@ def _apply_codes(text: str, p: Parsed) -> None:
 def _assign_rooms(text: str, mentions: list[Mention]) -> None:
     """Attach each object mention to the room mention that governs it, if any."""
     context: int | None = None
+    each: Mention | None = None
     room_idx = {id(m): i for i, m in enumerate(x for x in mentions if x.kind == "room")}
     for i, m in enumerate(mentions):
         if m.kind == "room":
+            if each is not None and m.count is None and "." not in text[each.end : m.start]:
+                m.count, m.plural = each.count, True  # "six guest rooms, each with its own bathroom"
+                continue
             tail = text[m.end : m.end + 40]
             context = room_idx[id(m)] if CONTEXT_OPENERS.match(tail) else None
+            plural_room = (m.count or 0) > 1 or m.plural
+            each = m if plural_room and m.count and EACH_OPENER.match(tail) else None
             continue
+        if each is not None and "." in text[each.end : m.start]:
+            each = None
         m.room = context
+        m.each = each is not None and context == room_idx[id(each)]
         nxt = next((x for x in mentions[i + 1 :] if x.kind == "room"), None)
         if nxt is not None:
             between = text[m.end : nxt.start]
@@ -305,6 +346,8 @@ def _find_styles(text: str, p: Parsed) -> None:
         key = voc.style_forms[mt.group()]
         if key not in p.styles:
             p.styles.append(key)
+        if mt.group() not in p.style_words:
+            p.style_words.append(mt.group())
     for mt in voc.colour_regex.finditer(text):
         c = mt.group()
         if c not in ("dark", "light", "pale", "deep", "bright", "pastel") and c not in p.colours:
@@ -343,6 +386,87 @@ def _find_materials(text: str, p: Parsed, rooms: list[Mention]) -> None:
         p.materials.append(MaterialMention(phrase, material, surfaces, mt.start(), room, explicit))
 
 
+def _singular(word: str) -> tuple[str, bool]:
+    if len(word) > 4 and word.endswith("ies"):
+        return word[:-3] + "y", True
+    if len(word) > 4 and word.endswith(("ches", "shes", "sses", "xes")):
+        return word[:-2], True
+    if len(word) > 3 and word.endswith("s") and not word.endswith(("ss", "us", "is")):
+        return word[:-1], True
+    return word, False
+
+
+def _known_spans(text: str, taken: list[tuple[int, int]], mentions: list[Mention]) -> list[tuple[int, int]]:
+    voc = vocabulary()
+    spans = list(taken)
+    for m in mentions:
+        spans.append((m.start - len(" ".join(m.words)) - (1 if m.words else 0), m.end))
+    for rx in (voc.style_regex, voc.material_regex, voc.colour_regex):
+        spans.extend((mt.start(), mt.end()) for mt in rx.finditer(text))
+    return spans
+
+
+def _open_vocabulary(text: str, p: Parsed, taken: list[tuple[int, int]], mentions: list[Mention], tokens: list[tuple[str, int, int]]) -> list[Mention]:
+    """Add what the knowledge base does not list, mapped by the embedding matcher."""
+    spans = _known_spans(text, taken, mentions)
+    if p.building is None:
+        fnp = ov.first_noun_phrase(text, tokens)
+        if fnp is not None:  # only the head counts ("a Moroccan riad" -> "riad")
+            head = fnp[0].split()[-1]
+            fnp = (head, fnp[2] - len(head), fnp[2])
+        if fnp and not any(a < fnp[2] and fnp[1] < b for a, b in spans) and fnp[0] not in ov.non_objects():
+            phrase = fnp[0]
+            mb = ov.map_building(phrase)
+            if mb is not None:
+                p.building = next(i for i, b in enumerate(load("programs")["buildings"]) if b["program"] == mb.key)
+                p.building_word = phrase
+                spans.append((fnp[1], fnp[2]))
+                head_start = fnp[2] - len(phrase.split()[-1])
+                _building_modifiers(text, head_start, p)
+            elif (mr := ov.map_room(phrase)) is not None:
+                m = Mention("room", "", phrase, fnp[1], fnp[2], concept=mr.key, open_vocab=True)
+                mentions.append(m)
+                spans.append((fnp[1], fnp[2]))
+    for m in mentions:
+        if m.kind != "room":
+            continue
+        if not m.key:
+            mr = ov.map_room(m.name)
+            m.concept = mr.key if mr else None
+        elif m.words:
+            mr = ov.map_modified_room(m.key, m.words)
+            m.concept = mr.key if mr else None
+    found = ov.find_object_phrases(text, tokens, spans, lambda t: parse_number(t) is not None)
+    unknown: list[str] = []
+    for phrase, s, e, _ in found:
+        words = phrase.split()
+        while words and words[0] in SIZE_WORDS:
+            words = words[1:]
+        if not words:
+            continue
+        head, plural = _singular(words[-1])
+        name = " ".join([*words[:-1], head])
+        kind, mo = ov.classify(name)
+        if kind == "room" and mo is not None:
+            m = Mention("room", "", name, s, e, plural=plural, concept=mo.key, open_vocab=True)
+            _look_back(m, text, tokens, spans, keep_words=False)
+            mentions.append(m)
+            continue
+        m = Mention("object", mo.key if mo else "", name, s, e, plural=plural, open_vocab=True)
+        _look_back(m, text, tokens, spans, keep_words=False)
+        m.plural = m.plural or plural
+        if mo is None:
+            unknown.append(name)
+        mentions.append(m)
+    if unknown:
+        p.warnings.append(
+            "no known object is like " + ", ".join(repr(u) for u in unknown)
+            + "; planned as plain pieces of furniture under the user's name"
+        )
+    mentions.sort(key=lambda m: m.start)
+    return mentions
+
+
 def parse(text: str) -> Parsed:
     """Parse ``text`` into a :class:`Parsed`; never raises on odd input."""
     norm = normalize(text)
@@ -370,6 +494,7 @@ def parse(text: str) -> Parsed:
             m.words = kept
         if m.words:
             m.name = " ".join(m.words + [m.name])
+    mentions = _open_vocabulary(norm, p, taken, mentions, tokens)
     _assign_rooms(norm, mentions)
     _apply_arrangements(norm, mentions)
     p.rooms = [m for m in mentions if m.kind == "room"]

@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from anyhome.house import ROOM_TYPES
+from anyhome.plan.concepts import furnish_type
 from anyhome.plan.knowledge import load
 from anyhome.plan.parse import Mention, Parsed
 from anyhome.plan.spec import MAX_ROOMS
@@ -63,15 +64,25 @@ def _slot_from_entry(e: dict) -> Slot:
     return Slot(e.get("name", t.replace("_", " ")), t, e.get("furnish", t), tuple(area), key=e.get("key", ""))
 
 
+def _concept_info(furnish: str) -> dict:
+    """Type and area of a furnishing set chosen by the embedding matcher."""
+    for info in load("rooms")["names"].values():
+        if info.get("furnish", info.get("type")) == furnish:
+            return {"type": info["type"], "furnish": furnish, **({"area": info["area"]} if "area" in info else {})}
+    return {"type": furnish_type(furnish), "furnish": furnish}
+
+
 def _slot_from_mention(m: Mention, idx: int) -> Slot:
     info = load("rooms")["names"].get(m.key) if m.key else None
+    if m.concept:
+        info = {**_concept_info(m.concept), **({"name": info["name"]} if info and "name" in info else {})}
     if info is None:
         t = "other"
         info = {}
     else:
         t = info["type"] if info["type"] in ROOM_TYPES else "other"
     area = info.get("area") or _type_info(t)["area"]
-    name = m.name if m.words or not info.get("name") else info["name"]
+    name = m.name if m.words or m.concept or not info.get("name") else info["name"]
     s = Slot(name, t, info.get("furnish", t), tuple(area), mention=idx, generic_name=False, size=m.size)
     return s
 
@@ -111,7 +122,8 @@ def plan_rooms(parsed: Parsed, program: str | None, rng: np.random.Generator, wa
                 slots.append(s)
     fixed = _fixed_counts(parsed)
     _claim_mentions(parsed, slots, fixed)
-    _apply_fixed(slots, fixed, prog)
+    totals = frozenset(t for t, n in (("bedroom", parsed.bedrooms), ("bathroom", parsed.bathrooms)) if n is not None)
+    _apply_fixed(slots, fixed, prog, totals)
     _apply_people(parsed, slots, fixed)
     _add_hallway(slots, prog)
     _cap(slots, warnings)
@@ -163,9 +175,11 @@ def _claim_mentions(parsed: Parsed, slots: list[Slot], fixed: dict[str, int]) ->
                 target.area_range = proto.area_range
 
 
-def _apply_fixed(slots: list[Slot], fixed: dict[str, int], prog: dict | None) -> None:
+def _apply_fixed(slots: list[Slot], fixed: dict[str, int], prog: dict | None, totals: frozenset[str] = frozenset()) -> None:
     for t, n in fixed.items():
-        of_type = [s for s in slots if s.type == t]
+        # a count of plain rooms ("three kids' bedrooms") leaves the rooms the text names
+        # otherwise ("a master suite") on top; a total ("a 2B1B") counts every room
+        of_type = [s for s in slots if s.type == t and (t in totals or s.mention is None or s.generic_name)]
         while len(of_type) > n:
             victim = next((s for s in reversed(of_type) if s.mention is None), None)
             victim = victim or next((s for s in reversed(of_type) if s.generic_name), None)

@@ -1,0 +1,187 @@
+"""Nearest known concept for a phrase the knowledge base does not list.
+
+Three concept tables are built from the knowledge files:
+
+* ``rooms``: furnishing sets (``furniture.yaml`` ``sets``), described by their key, every
+  room name of ``rooms.yaml`` that uses the set, and the phrases of ``concepts.yaml``;
+* ``objects``: object prototypes (``objects.yaml``), described by key, synonyms, category;
+* ``buildings``: building programs (``programs.yaml``), described by key and their words;
+* ``styles``: styles (``styles.yaml``), described by their words and description.
+
+A phrase is embedded whole or, for rooms and buildings with a generic head word,
+as its modifier alone ("séance room" -> "séance"); its score for a concept is the best cosine similarity to
+any of the concept's phrases. A match is kept only above the backend's threshold
+(``THRESHOLDS``, chosen on benchmarks/mapping_cases.yaml); below it the caller falls back
+to a neutral default and keeps the user's words as the name.
+"""
+
+from __future__ import annotations
+
+import functools
+import re
+from dataclasses import dataclass
+
+import numpy as np
+
+from anyhome.house import ROOM_TYPES
+from anyhome.plan.embed import Embedder, get_embedder
+from anyhome.plan.knowledge import load, normalize
+
+KINDS = ("rooms", "objects", "buildings", "styles")
+
+GENERIC_HEADS = frozenset(
+    "room rooms area space spaces corner nook zone chamber suite quarters hall den lounge "
+    "studio shop house center centre place spot bay".split()
+)
+"""Head words that say little about a room's function ("séance room" -> "séance")."""
+
+THRESHOLDS: dict[str, dict[str, float]] = {
+    "hybrid": {"rooms": 0.45, "objects": 0.45, "buildings": 0.45, "styles": 0.5},
+    "static": {"rooms": 0.65, "objects": 0.65, "buildings": 0.65, "styles": 0.7},
+    "minilm": {"rooms": 0.45, "objects": 0.5, "buildings": 0.45, "styles": 0.5},
+    "lexical": {"rooms": 0.45, "objects": 0.5, "buildings": 0.45, "styles": 0.5},
+}
+"""Least cosine similarity a match needs, per backend and table."""
+
+
+@dataclass(frozen=True)
+class Match:
+    key: str  # concept key (furnishing set, object prototype or program)
+    score: float
+    via: str  # the concept phrase that matched best
+
+
+def _room_phrases() -> dict[str, list[str]]:
+    sets = load("furniture")["sets"]
+    out: dict[str, list[str]] = {k: [k.replace("_", " ")] for k in sets if k != "other"}
+    for name, info in load("rooms")["names"].items():
+        furnish = info.get("furnish") or info.get("type")
+        if furnish in out:
+            out[furnish].append(normalize(name))
+    for key, phrases in (load("concepts").get("rooms") or {}).items():
+        if key in out:
+            out[key].extend(normalize(p) for p in phrases)
+    return out
+
+
+def _object_phrases() -> dict[str, list[str]]:
+    out: dict[str, list[str]] = {}
+    for key, proto in load("objects").items():
+        out[key] = [normalize(key), *(normalize(s) for s in proto.get("synonyms", []))]
+        cat = proto.get("category", "").replace("_", " ")
+        if cat and cat not in out[key]:
+            out[key].append(cat)
+    for key, phrases in (load("concepts").get("objects") or {}).items():
+        if key in out:
+            out[key].extend(normalize(p) for p in phrases)
+    return out
+
+
+def _building_phrases() -> dict[str, list[str]]:
+    out: dict[str, list[str]] = {}
+    for b in load("programs")["buildings"]:
+        out.setdefault(b["program"], [b["program"].replace("_", " ")])
+        out[b["program"]].extend(normalize(w) for w in b["words"])
+    for key, phrases in (load("concepts").get("buildings") or {}).items():
+        if key in out:
+            out[key].extend(normalize(p) for p in phrases)
+    return out
+
+
+def _style_phrases() -> dict[str, list[str]]:
+    out: dict[str, list[str]] = {}
+    for key, st in load("styles")["styles"].items():
+        out[key] = [normalize(w) for w in st["words"]] + [normalize(st["describe"])]
+    return out
+
+
+_PHRASES = {"rooms": _room_phrases, "objects": _object_phrases, "buildings": _building_phrases, "styles": _style_phrases}
+
+
+class ConceptIndex:
+    """Embedded concept phrases of one table, for one backend."""
+
+    def __init__(self, kind: str, embedder: Embedder) -> None:
+        self.kind = kind
+        self.embedder = embedder
+        table = _PHRASES[kind]()
+        self.keys = list(table)
+        self.phrases: list[str] = []
+        owner: list[int] = []
+        for i, k in enumerate(self.keys):
+            for p in dict.fromkeys(table[k]):
+                self.phrases.append(p)
+                owner.append(i)
+        self.owner = np.array(owner)
+        self.matrix = embedder.encode(self.phrases)
+
+    def scores(self, queries: list[str]) -> np.ndarray:
+        """(len(queries), len(keys)) best similarity of each query to each concept."""
+        q = self.embedder.encode(queries)
+        sim = q @ self.matrix.T
+        out = np.full((len(queries), len(self.keys)), -1.0, dtype=np.float32)
+        np.maximum.at(out.T, self.owner, sim.T)
+        return out
+
+    def rank(self, phrase: str, k: int = 3, exclude: frozenset[str] = frozenset()) -> list[Match]:
+        """The ``k`` best concepts for ``phrase`` (no threshold); concept phrases in
+        ``exclude`` are ignored (leave-one-out measurement)."""
+        queries = query_forms(phrase, self.kind)
+        q = self.embedder.encode(queries)
+        sim = q @ self.matrix.T  # (forms, phrases)
+        best_phrase = sim.max(axis=0)
+        if exclude:
+            best_phrase = np.where([p in exclude for p in self.phrases], -1.0, best_phrase)
+        per_key: dict[int, tuple[float, int]] = {}
+        for j, s in enumerate(best_phrase):
+            o = int(self.owner[j])
+            if o not in per_key or s > per_key[o][0]:
+                per_key[o] = (float(s), j)
+        ranked = sorted(per_key.items(), key=lambda kv: -kv[1][0])[:k]
+        return [Match(self.keys[o], round(s, 4), self.phrases[j]) for o, (s, j) in ranked]
+
+
+def query_forms(phrase: str, kind: str) -> list[str]:
+    """What is embedded for ``phrase``: for rooms and buildings with a generic head word,
+    the modifier alone ("séance room" -> "séance"; measured better than the whole phrase
+    or the best of both on benchmarks/mapping_cases.yaml), else the phrase."""
+    p = normalize(phrase)
+    forms = [p]
+    words = p.split()
+    if kind in ("rooms", "buildings") and len(words) >= 2 and words[-1] in GENERIC_HEADS:
+        return [" ".join(words[:-1])]
+    return forms
+
+
+@functools.lru_cache(maxsize=None)
+def index(kind: str, backend: str | None = None) -> ConceptIndex:
+    """The cached concept index of ``kind`` for the backend (default: ``get_embedder()``)."""
+    return ConceptIndex(kind, get_embedder(backend))
+
+
+def threshold(kind: str, backend: str | None = None) -> float:
+    """The least score a match of ``kind`` needs with this backend."""
+    name = index(kind, backend).embedder.name
+    return THRESHOLDS.get(name, THRESHOLDS["lexical"])[kind]
+
+
+def nearest(kind: str, phrase: str, backend: str | None = None, with_score: bool = False) -> Match | None:
+    """Best concept for ``phrase`` if it clears the backend's threshold, else None
+    (``with_score``: the best concept whatever its score)."""
+    if not re.search(r"[^\W\d_]", normalize(phrase)):
+        return None
+    idx = index(kind, backend)
+    best = idx.rank(phrase, k=1)
+    if not best:
+        return None
+    return best[0] if with_score or best[0].score >= threshold(kind, backend) else None
+
+
+def furnish_type(furnish: str) -> str:
+    """The functional room type of a furnishing set (``other`` when none says)."""
+    if furnish in ROOM_TYPES:
+        return furnish
+    for info in load("rooms")["names"].values():
+        if info.get("furnish") == furnish and info.get("type") in ROOM_TYPES:
+            return str(info["type"])
+    return "other"

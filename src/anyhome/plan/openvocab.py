@@ -1,0 +1,178 @@
+"""Open vocabulary: words of the text the knowledge base does not list.
+
+The lexical parser (:mod:`anyhome.plan.parse`) finds every phrase the knowledge base
+knows. This module finds what it missed and maps it through
+:func:`anyhome.plan.concepts.nearest`:
+
+* **objects**: noun phrases in an object list ("with a hammock, a jukebox and two
+  chaise longues") become object mentions mapped to the nearest object prototype; the
+  user's words stay the object's name. With no confident match the object still comes,
+  as a generic piece of the fallback size, and a warning says so.
+* **the building**: when no known building word is found, the head of the text's
+  first noun phrase ("A dojo with ...") is mapped to the nearest building program, or
+  failing that to the nearest room concept (a one-room building).
+* **rooms**: unknown room words ("séance room") and known heads with an unknown
+  modifier ("recital hall") get the furnishing of the nearest room concept.
+
+Knowledge (nouns that are never objects, the fallback object) is in
+``knowledge/concepts.yaml``.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable
+
+from anyhome.plan.concepts import GENERIC_HEADS, Match, nearest, threshold
+from anyhome.plan.knowledge import load
+
+DETERMINERS = frozenset("a an the one two three four five six seven eight nine ten eleven twelve dozen several some many few multiple lots plenty pair couple".split())
+"""Words that start a noun phrase in an object list."""
+
+LIST_OPENERS = frozenset("with featuring including containing plus has have having boasting".split())
+"""Words after which a clause lists objects."""
+
+PHRASE_BREAKS = frozenset(
+    "and or with in on at for to by from into inside near next as is are has have having that which "
+    "where featuring containing plus also of each every per its their his her my our this these those "
+    "there here it them but while so than like along around against under over above below behind "
+    "beside between facing off own".split()
+)
+"""Words that end a noun phrase."""
+
+MAX_PHRASE_WORDS = 3
+"""Longest open-vocabulary object phrase kept."""
+
+ROOM_MARGIN = 0.05
+"""How much better a list phrase must match a room concept than an object to be a room."""
+
+MAX_OPEN_OBJECTS = 12
+"""Most open-vocabulary object mentions taken from one text."""
+
+
+def non_objects() -> frozenset[str]:
+    return frozenset(load("concepts").get("non_objects", []))
+
+
+def find_object_phrases(text: str, tokens: list[tuple[str, int, int]], taken: list[tuple[int, int]], is_number: Callable[[str], bool]) -> list[tuple[str, int, int, list[str]]]:
+    """Noun phrases in object lists that no known phrase covers.
+
+    Returns (phrase, start, end, words-before-head) tuples; a phrase qualifies when a list
+    opener ("with", "featuring"...) precedes it in the same clause and a determiner, a
+    count, a comma or "and" stands right before it.
+    """
+    non_objects_ = non_objects()
+
+    def is_taken(s: int, e: int) -> bool:
+        return any(a < e and s < b for a, b in taken)
+
+    out: list[tuple[str, int, int, list[str]]] = []
+    in_list = False
+    i = 0
+    n = len(tokens)
+    while i < n:
+        tok, s, e = tokens[i]
+        if tok in ".;:!?()":
+            in_list = False
+            i += 1
+            continue
+        if tok in LIST_OPENERS:
+            in_list = True
+            i += 1
+            continue
+        prev = tokens[i - 1][0] if i > 0 else ""
+        starts = prev in DETERMINERS or is_number(prev) or prev in (",", "and", "of") or prev in LIST_OPENERS
+        if not (in_list and starts) or is_taken(s, e) or not tok.isalpha() or tok in PHRASE_BREAKS or tok in DETERMINERS:
+            i += 1
+            continue
+        j = i
+        words: list[str] = []
+        while j < n and len(words) < MAX_PHRASE_WORDS:
+            t, ts, te = tokens[j]
+            if not t.isalpha() or t in PHRASE_BREAKS or is_taken(ts, te) or is_number(t):
+                break
+            words.append(t)
+            j += 1
+        if words and words[-1] not in non_objects_ and len(words[-1]) >= 3:
+            out.append((" ".join(words), tokens[i][1], tokens[j - 1][2], words[:-1]))
+        i = max(j, i + 1)
+        if len(out) >= MAX_OPEN_OBJECTS:
+            break
+    return out
+
+
+def first_noun_phrase(text: str, tokens: list[tuple[str, int, int]]) -> tuple[str, int, int] | None:
+    """The text's opening noun phrase ("a dojo" -> "dojo"), up to the first break word."""
+    words: list[tuple[str, int, int]] = []
+    for tok, s, e in tokens:
+        if not words and tok in DETERMINERS:
+            continue
+        if not tok.isalpha() or tok in PHRASE_BREAKS:
+            break
+        words.append((tok, s, e))
+        if len(words) > 4:
+            return None
+    if not words:
+        return None
+    return " ".join(w for w, _, _ in words), words[0][1], words[-1][2]
+
+
+def map_object(phrase: str) -> Match | None:
+    """The object prototype for an unknown object phrase (None: keep it generic)."""
+    return nearest("objects", phrase)
+
+
+def classify(phrase: str) -> tuple[str, Match | None]:
+    """Whether an unknown list phrase names a room or an object, and its concept.
+
+    A phrase is a room when its room match clears the threshold and beats its object
+    match by ``ROOM_MARGIN`` ("a home theater", "a sauna"); otherwise an object.
+    """
+    mo = _best(nearest("objects", phrase, with_score=True), None)
+    mr = _best(nearest("rooms", phrase, with_score=True), None)
+    head = phrase.split()[-1]
+    if head != phrase and head not in GENERIC_HEADS:  # "front porch": the head decides too
+        hr = nearest("rooms", head, with_score=True)
+        ho = nearest("objects", head, with_score=True)
+        mr = _best(mr, hr)
+        mo = _best(mo, ho)
+    if mr is not None and mr.score >= threshold("rooms") and (mo is None or mr.score > mo.score + ROOM_MARGIN):
+        return "room", mr
+    return "object", mo if mo is not None and mo.score >= threshold("objects") else None
+
+
+def _best(a: Match | None, b: Match | None) -> Match | None:
+    if a is None or (b is not None and b.score > a.score):
+        return b
+    return a
+
+
+def map_room(phrase: str) -> Match | None:
+    """The furnishing set for an unknown room phrase."""
+    return nearest("rooms", phrase)
+
+
+def map_modified_room(head: str, words: list[str]) -> Match | None:
+    """A better furnishing for a known generic head with unknown modifiers ("recital hall")."""
+    if head.split()[-1] not in GENERIC_HEADS or not words:
+        return None
+    return nearest("rooms", " ".join([*words, head]))
+
+
+def map_building(phrase: str) -> Match | None:
+    """The building program for an unknown building word."""
+    return nearest("buildings", phrase)
+
+
+def map_style(word: str) -> Match | None:
+    """The style for an unknown style word before the building ("craftsman", "neon")."""
+    return nearest("styles", word)
+
+
+def fallback_object() -> dict:
+    """Prototype fields for an object no concept matches (``concepts.yaml``)."""
+    return dict(load("concepts").get("fallback_object") or {"size": [0.6, 0.6, 0.8], "rule": "place_wall"})
+
+
+def slug(text: str) -> str:
+    return re.sub(r"[^a-z0-9]+", "_", text.lower()).strip("_") or "object"
