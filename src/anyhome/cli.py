@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import os
 import json
 import logging
 import sys
@@ -59,6 +60,11 @@ class _StageProgress:
 def cmd_generate(args: argparse.Namespace) -> int:
     from anyhome.pipeline import generate, write_outputs
 
+    if args.embedder:
+        from anyhome.plan.embed import ENV_BACKEND, get_embedder
+
+        os.environ[ENV_BACKEND] = args.embedder
+        get_embedder()  # fails early, with one line, on an unknown or missing backend
     t0 = time.perf_counter()
     progress = _StageProgress(not args.quiet)
     try:
@@ -170,6 +176,11 @@ def build_parser() -> argparse.ArgumentParser:
     g.add_argument("--seed", type=int, default=0, help="random seed (default 0)")
     g.add_argument("--out", default="out/house", help="output folder (default out/house)")
     g.add_argument("--planner", default="offline", help="planner: offline (default)")
+    g.add_argument(
+        "--embedder",
+        help="text-embedding backend for unknown words: hybrid (default), static, minilm, lexical "
+        "(or set ANYHOME_EMBEDDER)",
+    )
     g.add_argument("--no-glb", action="store_true", help="skip house.glb")
     g.add_argument("--no-svg", action="store_true", help="skip floorplan.svg")
     g.add_argument("-q", "--quiet", action="store_true", help="no progress lines")

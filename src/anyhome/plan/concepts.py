@@ -44,6 +44,10 @@ THRESHOLDS: dict[str, dict[str, float]] = {
 """Least cosine similarity a match needs, per backend and table."""
 
 
+MAX_PHRASE_CHARS = 60
+"""Longer phrases are not words but run-on text; they match nothing."""
+
+
 @dataclass(frozen=True)
 class Match:
     key: str  # concept key (furnishing set, object prototype or program)
@@ -168,8 +172,8 @@ def threshold(kind: str, backend: str | None = None) -> float:
 def nearest(kind: str, phrase: str, backend: str | None = None, with_score: bool = False) -> Match | None:
     """Best concept for ``phrase`` if it clears the backend's threshold, else None
     (``with_score``: the best concept whatever its score)."""
-    if not re.search(r"[^\W\d_]", normalize(phrase)):
-        return None
+    if not re.search(r"[a-z]", normalize(phrase)) or len(phrase) > MAX_PHRASE_CHARS:
+        return None  # the packaged concepts are English; other scripts match nothing
     idx = index(kind, backend)
     best = idx.rank(phrase, k=1)
     if not best:

@@ -47,10 +47,18 @@ class OfflinePlanner:
             raise PlanError("the text is empty: describe a house, e.g. 'a two-bedroom apartment'")
         parsed = parse(text)
         warnings = list(parsed.warnings)
+        if not _mostly_latin(text):
+            warnings.append("the offline planner reads English; most of this text is in another script")
         if not parsed.recognized:
             warnings.append("no building, room or object in the text was recognised; planned a default home")
         program, implied = choose_program(parsed)
+        if parsed.one_room:  # "a one-room cabin": only the rooms the text names
+            program = None
         slots, main_key = plan_rooms(parsed, program, rng, warnings)
+        if parsed.one_room and len(slots) > 1:
+            warnings.append(
+                f"the text asks for a one-room building but names {len(slots)} rooms; planned the named rooms"
+            )
         sample_areas(slots, parsed.building_size, rng)
         prog = load("programs")["programs"].get(program or "", {})
         connections = connect(slots, prog.get("entrance", []))
@@ -69,6 +77,11 @@ class OfflinePlanner:
             connections=connections,
             warnings=warnings,
         )
+
+
+def _mostly_latin(text: str) -> bool:
+    letters = [c for c in text if c.isalpha()]
+    return not letters or sum(c.isascii() for c in letters) >= len(letters) / 2
 
 
 def _furnish(parsed: Parsed, slots: list[Slot], main_key: str | None, prog: dict[str, Any], rng: np.random.Generator) -> list[tuple[list[fu.Group], list[fu.Item]]]:

@@ -84,6 +84,9 @@ _BED_BATH = re.compile(
     r"\b(\d{1,3})\s*(?:b|br|bd|bed|beds|bdr|bdrm)\s*(?:,|and|\+)?\s*(\d{1,2}(?:\.5)?)\s*"
     r"(?:b|ba|bth|bath|baths)\b"
 )
+_ONE_ROOM = re.compile(r"\b(?:one|single|1) room (?:house|home|apartment|flat|cabin|cottage|studio|dwelling)\b")
+MAX_COUNT = 64
+"""Most copies of one thing (room or object) a text may ask for; more is capped with a warning."""
 _BED_BATH_WORDS = re.compile(r"\b(\w+) bed(?:room)?s?\s*(?:,|and|\+)?\s*(\w+) bath(?:room)?s?\b")
 _BR_ONLY = re.compile(r"\b(\d{1,3})\s*(?:br|bd|bdr|bdrm)\b")
 _PEOPLE = re.compile(
@@ -144,6 +147,7 @@ class Parsed:
     bedrooms: int | None = None  # from "3B2B" / "3br"
     bathrooms: int | None = None
     people: int | None = None
+    one_room: bool = False  # "a one-room house"
     warnings: list[str] = field(default_factory=list)
 
     @property
@@ -157,7 +161,7 @@ class Parsed:
 def parse_number(word: str) -> int | None:
     """``"12"`` -> 12, ``"twelve"`` -> 12, ``"a"`` -> 1; None for other words."""
     if word.isdigit():
-        return int(word[:6])
+        return int(word[:9])
     return NUMBER_WORDS.get(word)
 
 
@@ -209,9 +213,10 @@ def _parse_building(text: str, p: Parsed) -> tuple[int, int] | None:
     return best.start(), best.end()
 
 
-def _building_modifiers(text: str, start: int, p: Parsed) -> None:
+def _building_modifiers(text: str, start: int, p: Parsed, keep_unmapped: bool = True) -> None:
     """Size words and the user's own style words just before the building word
-    ("a Craftsman bungalow", "a neon lit retro arcade")."""
+    ("a Craftsman bungalow", "a neon lit retro arcade"); words that match no style are
+    kept only if ``keep_unmapped`` (the head word was recognised)."""
     voc = vocabulary()
     for tok, _, _ in reversed(_tokens(text[:start])[-3:]):
         if tok in SIZE_WORDS:
@@ -221,8 +226,10 @@ def _building_modifiers(text: str, start: int, p: Parsed) -> None:
             break
         if tok in voc.forms or tok in voc.style_forms or voc.colour_regex.fullmatch(tok) or tok in ov.non_objects():
             continue
-        p.style_words.insert(0, tok)
         ms = ov.map_style(tok)
+        if ms is None and not keep_unmapped:
+            continue
+        p.style_words.insert(0, tok)
         if ms is not None and ms.key not in p.styles:
             p.styles.append(ms.key)
 
@@ -427,6 +434,8 @@ def _open_vocabulary(text: str, p: Parsed, taken: list[tuple[int, int]], mention
                 m = Mention("room", "", phrase, fnp[1], fnp[2], concept=mr.key, open_vocab=True)
                 mentions.append(m)
                 spans.append((fnp[1], fnp[2]))
+            if mb is None:  # "a French patisserie": the opening phrase's modifiers are style words
+                _building_modifiers(text, fnp[1], p, keep_unmapped=False)
     for m in mentions:
         if m.kind != "room":
             continue
@@ -495,6 +504,12 @@ def parse(text: str) -> Parsed:
         if m.words:
             m.name = " ".join(m.words + [m.name])
     mentions = _open_vocabulary(norm, p, taken, mentions, tokens)
+    for m in mentions:
+        if m.count is not None and m.count > MAX_COUNT:
+            p.warnings.append(f"asked for {m.count} of {m.name!r}; planned at most {MAX_COUNT}")
+            m.count = MAX_COUNT
+    if _ONE_ROOM.search(norm):
+        p.one_room = True
     _assign_rooms(norm, mentions)
     _apply_arrangements(norm, mentions)
     p.rooms = [m for m in mentions if m.kind == "room"]

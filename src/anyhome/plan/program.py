@@ -8,6 +8,7 @@ bubble diagram with one entrance.
 from __future__ import annotations
 
 import re
+import unicodedata
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -21,8 +22,9 @@ from anyhome.plan.spec import MAX_ROOMS
 HUB_MAX_DEGREE = 6
 """Most connections (entrance included) a hub room (hallway, living room...) may hold."""
 
-ROOM_MAX_DEGREE = 3
-"""Most connections a non-hub room may hold (its parent and up to two rooms behind it)."""
+ROOM_MAX_DEGREE = 2
+"""Most connections a non-hub room may hold: its parent and one room behind it (two
+sub-rooms of a non-hub room often cannot both share its walls in the spine layout)."""
 
 DEFAULT_PROGRAM = "home"
 """Program used when the text names no building and no room."""
@@ -252,7 +254,8 @@ def _add_hallway(slots: list[Slot], prog: dict | None) -> None:
 
 
 def _slug(text: str) -> str:
-    return re.sub(r"[^a-z0-9]+", "_", text.lower()).strip("_") or "room"
+    ascii_text = unicodedata.normalize("NFKD", text).encode("ascii", "ignore").decode()
+    return re.sub(r"[^a-z0-9]+", "_", ascii_text.lower()).strip("_") or "room"
 
 
 def _name_and_number(slots: list[Slot]) -> None:
