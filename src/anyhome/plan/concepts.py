@@ -157,9 +157,13 @@ def query_forms(phrase: str, kind: str) -> list[str]:
     return forms
 
 
-@functools.lru_cache(maxsize=None)
 def index(kind: str, backend: str | None = None) -> ConceptIndex:
     """The cached concept index of ``kind`` for the backend (default: ``get_embedder()``)."""
+    return _index(kind, get_embedder(backend).name)
+
+
+@functools.lru_cache(maxsize=None)
+def _index(kind: str, backend: str) -> ConceptIndex:
     return ConceptIndex(kind, get_embedder(backend))
 
 

@@ -153,13 +153,12 @@ class MiniLMEmbedder:
                 "pip install torch==2.13.0 'anyhome[minilm]'"
             ) from e
         self._model = SentenceTransformer(str(path), device="cpu")
-        self._model.encode(["warm up"])
+        self._dim = int(self._model.encode(["warm up"]).shape[1])
         self.load_s = time.perf_counter() - t0
 
     def encode(self, texts: list[str]) -> np.ndarray:
         if not texts:
-            dim = self._model.get_sentence_embedding_dimension() or 384
-            return np.zeros((0, dim), dtype=np.float32)
+            return np.zeros((0, self._dim), dtype=np.float32)
         v = self._model.encode(list(texts), batch_size=128, convert_to_numpy=True, show_progress_bar=False)
         return _normalize_rows(v)
 
@@ -203,14 +202,19 @@ def available_backends() -> list[str]:
     return out
 
 
-@functools.lru_cache(maxsize=None)
 def get_embedder(name: str | None = None) -> Embedder:
-    """The embedder named ``name`` (or by ``ANYHOME_EMBEDDER``, or the best installed one)."""
+    """The embedder named ``name`` (or by ``ANYHOME_EMBEDDER``, or the best installed one),
+    loaded once per process."""
     name = (name or os.environ.get(ENV_BACKEND) or "auto").strip().lower()
     if name == "auto":
         name = "hybrid" if "static" in available_backends() else "lexical"
     if name not in _CLASSES:
         raise PlanError(f"unknown embedding backend {name!r}; choose one of {', '.join(BACKENDS)} or auto")
+    return _load(name)
+
+
+@functools.lru_cache(maxsize=None)
+def _load(name: str) -> Embedder:
     emb = _CLASSES[name]()
     log.debug("embedding backend %s loaded in %.3f s", name, emb.load_s)
     return emb

@@ -43,8 +43,12 @@ PHRASE_BREAKS = frozenset(
 MAX_PHRASE_WORDS = 3
 """Longest open-vocabulary object phrase kept."""
 
-ROOM_MARGIN = 0.05
+ROOM_MARGIN = 0.1
 """How much better a list phrase must match a room concept than an object to be a room."""
+
+LIST_ROOM_MIN = 0.65
+"""Least room score for a phrase in an object list to be taken as a room (a list names
+objects unless the room match is strong: "hammock" is not the "hammam")."""
 
 MAX_OPEN_OBJECTS = 12
 """Most open-vocabulary object mentions taken from one text."""
@@ -136,7 +140,7 @@ def classify(phrase: str) -> tuple[str, Match | None]:
         ho = nearest("objects", head, with_score=True)
         mr = _best(mr, hr)
         mo = _best(mo, ho)
-    if mr is not None and mr.score >= threshold("rooms") and (mo is None or mr.score > mo.score + ROOM_MARGIN):
+    if mr is not None and mr.score >= max(threshold("rooms"), LIST_ROOM_MIN) and (mo is None or mr.score > mo.score + ROOM_MARGIN):
         return "room", mr
     return "object", mo if mo is not None and mo.score >= threshold("objects") else None
 
