@@ -162,7 +162,8 @@ def _claim_mentions(parsed: Parsed, slots: list[Slot], fixed: dict[str, int]) ->
         n = min(n, 64)
         for _ in range(n):
             same_name = [s for s in slots if s.mention is None and s.name == proto.name]
-            same_type = [s for s in slots if s.mention is None and s.type == proto.type]
+            # rooms of the catch-all type "other" are too unlike to stand in for each other
+            same_type = [s for s in slots if s.mention is None and s.type == proto.type != "other"]
             target = (same_name or same_type or [None])[0]
             if target is None:
                 target = Slot(proto.name, proto.type, proto.furnish, proto.area_range)
