@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import statistics
 import sys
 import time
@@ -34,7 +35,7 @@ from anyhome.evaluate import evaluate_house, load_expectations
 from anyhome.house import is_habitable
 from anyhome.pipeline import generate
 from anyhome.plan import concepts
-from anyhome.plan.embed import available_backends, get_embedder
+from anyhome.plan.embed import ENV_BACKEND, available_backends, get_embedder
 from anyhome.plan.offline import OfflinePlanner
 
 HERE = Path(__file__).resolve().parent
@@ -89,16 +90,14 @@ def plan_times(backend: str, prompts: list[str]) -> dict:
     for kind in concepts.KINDS:  # fresh tables, not the cached ones
         concepts.ConceptIndex(kind, emb)
     load_s = emb.load_s + time.perf_counter() - t0
-    import os
-
-    os.environ["ANYHOME_EMBEDDER"] = backend
+    os.environ[ENV_BACKEND] = backend  # the planner asks get_embedder() for its backend
     planner = OfflinePlanner()
     times = []
     for text in prompts:
         t = time.perf_counter()
         planner.plan(text, np.random.default_rng(0))
         times.append(time.perf_counter() - t)
-    del os.environ["ANYHOME_EMBEDDER"]
+    del os.environ[ENV_BACKEND]
     return {"backend": backend, "model_load_s": emb.load_s, "load_with_concepts_s": load_s,
             "median_ms": statistics.median(times) * 1000, "p90_ms": float(np.percentile(times, 90)) * 1000,
             "max_ms": max(times) * 1000, "prompts": len(times)}  # fmt: skip

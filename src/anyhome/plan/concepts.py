@@ -62,9 +62,6 @@ def _room_phrases() -> dict[str, list[str]]:
         furnish = info.get("furnish") or info.get("type")
         if furnish in out:
             out[furnish].append(normalize(name))
-    for key, phrases in (load("concepts").get("rooms") or {}).items():
-        if key in out:
-            out[key].extend(normalize(p) for p in phrases)
     return out
 
 
@@ -75,9 +72,6 @@ def _object_phrases() -> dict[str, list[str]]:
         cat = proto.get("category", "").replace("_", " ")
         if cat and cat not in out[key]:
             out[key].append(cat)
-    for key, phrases in (load("concepts").get("objects") or {}).items():
-        if key in out:
-            out[key].extend(normalize(p) for p in phrases)
     return out
 
 
@@ -86,9 +80,6 @@ def _building_phrases() -> dict[str, list[str]]:
     for b in load("programs")["buildings"]:
         out.setdefault(b["program"], [b["program"].replace("_", " ")])
         out[b["program"]].extend(normalize(w) for w in b["words"])
-    for key, phrases in (load("concepts").get("buildings") or {}).items():
-        if key in out:
-            out[key].extend(normalize(p) for p in phrases)
     return out
 
 
@@ -102,13 +93,23 @@ def _style_phrases() -> dict[str, list[str]]:
 _PHRASES = {"rooms": _room_phrases, "objects": _object_phrases, "buildings": _building_phrases, "styles": _style_phrases}
 
 
+def concept_phrases(kind: str) -> dict[str, list[str]]:
+    """Every concept of ``kind`` with its phrases: from the knowledge files, plus those
+    that ``concepts.yaml`` adds for existing concepts."""
+    out = _PHRASES[kind]()
+    for key, phrases in (load("concepts").get(kind) or {}).items():
+        if key in out:
+            out[key].extend(normalize(p) for p in phrases)
+    return out
+
+
 class ConceptIndex:
     """Embedded concept phrases of one table, for one backend."""
 
     def __init__(self, kind: str, embedder: Embedder) -> None:
         self.kind = kind
         self.embedder = embedder
-        table = _PHRASES[kind]()
+        table = concept_phrases(kind)
         self.keys = list(table)
         self.phrases: list[str] = []
         owner: list[int] = []
@@ -118,14 +119,6 @@ class ConceptIndex:
                 owner.append(i)
         self.owner = np.array(owner)
         self.matrix = embedder.encode(self.phrases)
-
-    def scores(self, queries: list[str]) -> np.ndarray:
-        """(len(queries), len(keys)) best similarity of each query to each concept."""
-        q = self.embedder.encode(queries)
-        sim = q @ self.matrix.T
-        out = np.full((len(queries), len(self.keys)), -1.0, dtype=np.float32)
-        np.maximum.at(out.T, self.owner, sim.T)
-        return out
 
     def rank(self, phrase: str, k: int = 3, exclude: frozenset[str] = frozenset()) -> list[Match]:
         """The ``k`` best concepts for ``phrase`` (no threshold); concept phrases in

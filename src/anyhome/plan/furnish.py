@@ -16,6 +16,7 @@ import numpy as np
 from anyhome.plan.knowledge import load
 from anyhome.plan.openvocab import fallback_object
 from anyhome.plan.parse import Mention
+from anyhome.plan.spec import MAX_COUNT
 
 SIZE_JITTER = 0.10
 """Relative spread of sampled item widths and depths (heights vary by half of it)."""
@@ -71,7 +72,7 @@ def make_item(entry: dict[str, Any], rng: np.random.Generator, ornament: bool = 
         "rule": rule,
         "target": target,
         "params": params,
-        "count": max(1, min(64, _sample(entry.get("count", 1), rng))),
+        "count": max(1, min(MAX_COUNT, _sample(entry.get("count", 1), rng))),
         "material": entry.get("material", ""),
     }
 
@@ -120,7 +121,7 @@ def build_group(d: dict[str, Any], area_m2: float, rng: np.random.Generator) -> 
         "anchor": anchor,
         "members": members,
         "arrangement": d.get("arrangement", "free"),
-        "repeat": max(1, min(64, repeat)),
+        "repeat": max(1, min(MAX_COUNT, repeat)),
         "priority": int(d.get("priority", 0)),
         "required": False,
     }
@@ -254,14 +255,14 @@ def apply_mention(m: Mention, groups: list[Group], ornaments: list[Item], unused
         item["size_m"] = tuple(round(min(20.0, s * m.size), 3) for s in item["size_m"])
     if n is not None and m.count is not None:
         if item is g["anchor"]:
-            g["repeat"] = max(1, min(64, n))
+            g["repeat"] = max(1, min(MAX_COUNT, n))
         else:
-            item["count"] = max(1, min(64, math.ceil(n / g["repeat"])))
+            item["count"] = max(1, min(MAX_COUNT, math.ceil(n / g["repeat"])))
     elif n is not None and g["repeat"] * item["count"] < n:
         if item is g["anchor"]:
-            g["repeat"] = max(1, min(64, n))
+            g["repeat"] = max(1, min(MAX_COUNT, n))
         else:
-            item["count"] = max(1, min(64, math.ceil(n / g["repeat"])))
+            item["count"] = max(1, min(MAX_COUNT, math.ceil(n / g["repeat"])))
     _arrange(m, g, item)
     _fit_table(g)
 
@@ -302,7 +303,7 @@ def _apply_ornament(m: Mention, proto: dict[str, Any], category: str, head: str,
     if m.name != m.key:
         found["name"] = m.name
     if n is not None:
-        found["count"] = max(1, min(64, n))
+        found["count"] = max(1, min(MAX_COUNT, n))
     target = found.get("target")
     if target and not any(_matches(it, target, target.split("_")[-1]) for g in groups for it in [g["anchor"], *g["members"]]):
         if proto.get("group"):

@@ -20,7 +20,6 @@ Knowledge (nouns that are never objects, the fallback object) is in
 
 from __future__ import annotations
 
-import re
 from collections.abc import Callable
 
 from anyhome.plan.concepts import GENERIC_HEADS, Match, nearest, threshold
@@ -58,10 +57,10 @@ def non_objects() -> frozenset[str]:
     return frozenset(load("concepts").get("non_objects", []))
 
 
-def find_object_phrases(text: str, tokens: list[tuple[str, int, int]], taken: list[tuple[int, int]], is_number: Callable[[str], bool]) -> list[tuple[str, int, int, list[str]]]:
+def find_object_phrases(text: str, tokens: list[tuple[str, int, int]], taken: list[tuple[int, int]], is_number: Callable[[str], bool]) -> list[tuple[str, int, int]]:
     """Noun phrases in object lists that no known phrase covers.
 
-    Returns (phrase, start, end, words-before-head) tuples; a phrase qualifies when a list
+    Returns (phrase, start, end) triples; a phrase qualifies when a list
     opener ("with", "featuring"...) precedes it in the same clause and a determiner, a
     count, a comma or "and" stands right before it.
     """
@@ -70,7 +69,7 @@ def find_object_phrases(text: str, tokens: list[tuple[str, int, int]], taken: li
     def is_taken(s: int, e: int) -> bool:
         return any(a < e and s < b for a, b in taken)
 
-    out: list[tuple[str, int, int, list[str]]] = []
+    out: list[tuple[str, int, int]] = []
     in_list = False
     i = 0
     n = len(tokens)
@@ -98,7 +97,7 @@ def find_object_phrases(text: str, tokens: list[tuple[str, int, int]], taken: li
             words.append(t)
             j += 1
         if words and words[-1] not in non_objects_ and len(words[-1]) >= 3:
-            out.append((" ".join(words), tokens[i][1], tokens[j - 1][2], words[:-1]))
+            out.append((" ".join(words), tokens[i][1], tokens[j - 1][2]))
         i = max(j, i + 1)
         if len(out) >= MAX_OPEN_OBJECTS:
             break
@@ -119,11 +118,6 @@ def first_noun_phrase(text: str, tokens: list[tuple[str, int, int]]) -> tuple[st
     if not words:
         return None
     return " ".join(w for w, _, _ in words), words[0][1], words[-1][2]
-
-
-def map_object(phrase: str) -> Match | None:
-    """The object prototype for an unknown object phrase (None: keep it generic)."""
-    return nearest("objects", phrase)
 
 
 def classify(phrase: str) -> tuple[str, Match | None]:
@@ -177,6 +171,3 @@ def fallback_object() -> dict:
     """Prototype fields for an object no concept matches (``concepts.yaml``)."""
     return dict(load("concepts").get("fallback_object") or {"size": [0.6, 0.6, 0.8], "rule": "place_wall"})
 
-
-def slug(text: str) -> str:
-    return re.sub(r"[^a-z0-9]+", "_", text.lower()).strip("_") or "object"

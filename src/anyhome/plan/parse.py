@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 
 from anyhome.plan import openvocab as ov
 from anyhome.plan.knowledge import load, normalize, vocabulary
+from anyhome.plan.spec import MAX_COUNT
 
 MAX_PARSE_CHARS = 4000
 """Only this many characters of the text are parsed; the rest is ignored with a warning."""
@@ -85,8 +86,6 @@ _BED_BATH = re.compile(
     r"(?:b|ba|bth|bath|baths)\b"
 )
 _ONE_ROOM = re.compile(r"\b(?:one|single|1) room (?:house|home|apartment|flat|cabin|cottage|studio|dwelling)\b")
-MAX_COUNT = 64
-"""Most copies of one thing (room or object) a text may ask for; more is capped with a warning."""
 _BED_BATH_WORDS = re.compile(r"\b(\w+) bed(?:room)?s?\s*(?:,|and|\+)?\s*(\w+) bath(?:room)?s?\b")
 _BR_ONLY = re.compile(r"\b(\d{1,3})\s*(?:br|bd|bdr|bdrm)\b")
 _PEOPLE = re.compile(
@@ -454,7 +453,7 @@ def _open_vocabulary(text: str, p: Parsed, taken: list[tuple[int, int]], mention
             m.concept = mr.key if mr else None
     found = ov.find_object_phrases(text, tokens, spans, lambda t: parse_number(t) is not None)
     unknown: list[str] = []
-    for phrase, s, e, _ in found:
+    for phrase, s, e in found:
         words = phrase.split()
         while words and words[0] in SIZE_WORDS:
             words = words[1:]

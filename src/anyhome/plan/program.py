@@ -17,7 +17,7 @@ from anyhome.house import ROOM_TYPES
 from anyhome.plan.concepts import furnish_type
 from anyhome.plan.knowledge import load
 from anyhome.plan.parse import Mention, Parsed
-from anyhome.plan.spec import MAX_ROOMS
+from anyhome.plan.spec import MAX_COUNT, MAX_ROOMS
 
 HUB_MAX_DEGREE = 6
 """Most connections (entrance included) a hub room (hallway, living room...) may hold."""
@@ -159,7 +159,7 @@ def _claim_mentions(parsed: Parsed, slots: list[Slot], fixed: dict[str, int]) ->
         proto = _slot_from_mention(m, i)
         generic = bool((names.get(m.key) or {}).get("generic"))
         n = max(1, m.count or 1) if (generic or m.count) else 1
-        n = min(n, 64)
+        n = min(n, MAX_COUNT)
         for _ in range(n):
             same_name = [s for s in slots if s.mention is None and s.name == proto.name]
             # rooms of the catch-all type "other" are too unlike to stand in for each other

@@ -70,6 +70,10 @@ RELATIVE_RULES: frozenset[str] = frozenset(
 )
 Arrangement = Literal["free", "rows", "along_walls", "center", "symmetric"]
 
+MAX_COUNT = 64
+"""Most copies of one item (``count``) or group (``repeat``) a plan holds; a text asking
+for more is capped with a warning."""
+
 MAX_ROOMS = 12
 """Most rooms one plan may hold (the floorplan solver's supported range is 1..12)."""
 
@@ -88,7 +92,7 @@ class ItemSpec(_Model):
     rule: Rule
     target: str | None = None
     params: dict[str, Any] = Field(default_factory=dict)
-    count: int = Field(default=1, ge=1, le=64)
+    count: int = Field(default=1, ge=1, le=MAX_COUNT)
     material: str = ""
 
     @field_validator("size_m")
@@ -106,7 +110,7 @@ class GroupSpec(_Model):
     anchor: ItemSpec
     members: list[ItemSpec] = Field(default_factory=list)
     arrangement: Arrangement = "free"
-    repeat: int = Field(default=1, ge=1, le=64)
+    repeat: int = Field(default=1, ge=1, le=MAX_COUNT)
     priority: int = Field(default=0, description="lower is placed earlier")
     required: bool = Field(default=False, description="the text asked for it explicitly")
 
