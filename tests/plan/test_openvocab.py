@@ -115,3 +115,9 @@ def test_nonsense_is_not_a_style():
     h = plan("asdf qwer zxcv")
     assert "asdf" not in h.style
     assert any("recognised" in w for w in h.warnings)
+
+
+def test_object_on_a_room_goes_there():
+    h = plan("A house with two hammocks on the porch.")
+    porch = next(r for r in h.rooms if r.name == "porch")
+    assert ("hammock", 2) in items(porch)

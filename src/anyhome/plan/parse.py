@@ -57,7 +57,7 @@ CONTEXT_OPENERS = re.compile(
 )
 """Text right after a room mention that makes the following objects belong to it."""
 
-IN_ROOM = re.compile(r"^\s*(?:in|inside|for|into|within|of)(?:\s+(?:the|a|an|my|our|each))?\s*$")
+IN_ROOM = re.compile(r"^\s*(?:in|inside|for|into|within|of|on|at)(?:\s+(?:the|a|an|my|our|each))?\s*$")
 """Text between an object and a room that puts the object in that room."""
 
 ARRANGEMENTS: list[tuple[re.Pattern[str], str]] = [
