@@ -138,3 +138,30 @@ def test_degrees_are_modest():
             for x in (a, b):
                 deg[x] = deg.get(x, 0) + 1
         assert max(v for k, v in deg.items() if k != "outside") <= 7
+
+
+def test_named_counts_survive_the_room_cap():
+    spec = plan("A five-bedroom hacienda with a central courtyard, a tiled kitchen and four bathrooms.")
+    types = [r.type for r in spec.rooms]
+    assert len(spec.rooms) <= MAX_ROOMS
+    assert types.count("bedroom") == 5 and types.count("bathroom") == 4
+
+
+def test_counted_named_rooms_replace_the_programs_rooms_of_that_type():
+    for seed in range(4):
+        spec = plan("A clinic with two exam rooms and a waiting room.", seed)
+        exam_type = next(r.type for r in spec.rooms if r.name == "exam room")
+        assert sorted(r.name for r in spec.rooms if r.type == exam_type) == ["exam room", "exam room 2"]
+
+
+def test_named_rooms_may_pass_a_types_usual_maximum():
+    spec = plan("A music school with five practice rooms, each with an upright piano.")
+    practice = [r for r in spec.rooms if "practice room" in r.name]
+    assert len(practice) == 5
+    assert all(any("piano" in it.name for g in r.groups for it in [g.anchor, *g.members]) for r in practice)
+
+
+def test_rows_get_room_for_their_aisles():
+    spec = plan("An office with twelve desks in two rows.")
+    room = next(r for r in spec.rooms if any(g.anchor.name == "desk" and g.repeat == 12 for g in r.groups))
+    assert room.area_m2 >= 12 * 1.4 * 0.7 * 3

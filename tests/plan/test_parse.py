@@ -87,3 +87,56 @@ def test_building_and_family():
 def test_odd_input_never_raises():
     for text in ["", "   ", "!!!", "日本語のテキスト", "x" * 10000, "a a a a a a", "0 bedrooms"]:
         parse(text)
+
+
+def test_colour_and_material_words_may_modify_an_unknown_object():
+    p = parse("A dressing room with a tufted pink flumph and six steel vorpal tanks.")
+    names = [m.name for m in p.objects]
+    assert "tufted pink flumph" in names
+    assert any(n.endswith("vorpal tank") for n in names)
+    assert "pink" in p.colours
+
+
+def test_a_noun_after_a_room_word_is_an_object_in_that_room():
+    p = parse("A riad with a courtyard fountain and two guest bedrooms.")
+    court = next(i for i, r in enumerate(p.rooms) if r.name == "courtyard")
+    fountain = next(m for m in p.objects if m.name == "fountain")
+    assert fountain.room == court
+
+
+def test_area_and_corner_extend_a_room_name():
+    p = parse("A clinic with a kennel area and a café corner.")
+    names = [r.name for r in p.rooms]
+    assert "kennel area" in names and "café corner" in names
+    assert not p.objects
+
+
+def test_full_of_after_a_room_is_not_an_object():
+    p = parse("a painting studio full of easels")
+    assert [m.name for m in p.objects] == ["easel"]
+
+
+def test_rows_of_arranges_what_follows_and_asks_for_many():
+    pew = parse("A chapel with two rows of wooden pews facing an altar.").objects[0]
+    assert pew.key == "bench" and pew.many and pew.arrangement == "rows" and pew.count is None
+
+
+def test_possessive_room_names_are_kept_whole():
+    p = parse("A bunkhouse with a counselor's room and a washroom.")
+    assert "counselor's room" in [r.name for r in p.rooms]
+
+
+def test_participles_end_an_object_phrase():
+    p = parse("A boutique with a raised platform surrounded by mirrors.")
+    assert "raised platform" in [m.name for m in p.objects]
+
+
+def test_unknown_words_before_a_building_are_style_words_only_when_capitalised():
+    assert "quaker" in parse("A Quaker meeting house with benches.").style_words
+    p = parse("A mid-size accounting office with eight desks.")
+    assert p.style_words == [] and p.styles == []
+
+
+def test_sleeping_n_sets_the_household_size():
+    assert parse("A ski chalet sleeping ten, with bunk rooms.").people == 10
+    assert parse("a cabin that sleeps 6").people == 6

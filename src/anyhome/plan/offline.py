@@ -30,7 +30,10 @@ log = logging.getLogger(__name__)
 FLOOR_USE_FACTOR = 2.4
 """Room area needed per m2 of furniture footprint (walkways, clearances)."""
 
-MAX_ROOM_AREA_M2 = 120.0
+ROWS_USE_FACTOR = 3.4
+"""The same for groups set out in rows: every copy keeps aisles on two sides."""
+
+MAX_ROOM_AREA_M2 = 200.0
 """Largest area the furniture may push a room to."""
 
 KEEP_DEFAULT_SURFACES = frozenset({"bathroom", "laundry", "changing_room", "balcony", "garage"})
@@ -124,14 +127,14 @@ def _room_for(m: Mention, slots: list[Slot], main_key: str | None) -> int:
 
 
 def _grow_area(s: Slot, groups: list[fu.Group]) -> None:
-    footprint = 0.0
+    need = 1.0
     for g in groups:
+        factor = ROWS_USE_FACTOR if g.get("arrangement") == "rows" else FLOOR_USE_FACTOR
         for it in [g["anchor"], *g["members"]]:
             if it["rule"] in fu.ORNAMENT_RULES or it["category"] == "rug":
                 continue
             w, d, _ = it["size_m"]
-            footprint += w * d * it["count"] * g["repeat"]
-    need = footprint * FLOOR_USE_FACTOR + 1.0
+            need += w * d * it["count"] * g["repeat"] * factor
     s.area = round(max(s.area, min(need, MAX_ROOM_AREA_M2)), 2)
 
 

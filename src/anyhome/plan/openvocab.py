@@ -32,10 +32,11 @@ LIST_OPENERS = frozenset("with featuring including containing plus has have havi
 """Words after which a clause lists objects."""
 
 PHRASE_BREAKS = frozenset(
-    "and or with in on at for to by from into inside near next as is are has have having that which "
-    "where featuring containing plus also of each every per its their his her my our this these those "
-    "there here it them but while so than like along around against under over above below behind "
-    "beside between facing off own".split()
+    """and or with in on at for to by from into inside near next as is are has have having that which
+    where featuring containing plus also of each every per its their his her my our this these those
+    there here it them but while so than like along around against under over above below behind
+    beside between facing off own all both surrounded arranged placed painted covered hung mounted
+    stacked running overlooking holding leading opening looking sitting standing lining""".split()
 )
 """Words that end a noun phrase."""
 
@@ -49,6 +50,9 @@ LIST_ROOM_MIN = 0.65
 """Least room score for a phrase in an object list to be taken as a room (a list names
 objects unless the room match is strong: "hammock" is not the "hammam")."""
 
+MIN_STYLE_CHARS = 4
+"""Shortest unknown word the matcher may read as a style."""
+
 MAX_OPEN_OBJECTS = 12
 """Most open-vocabulary object mentions taken from one text."""
 
@@ -57,17 +61,25 @@ def non_objects() -> frozenset[str]:
     return frozenset(load("concepts").get("non_objects", []))
 
 
-def find_object_phrases(text: str, tokens: list[tuple[str, int, int]], taken: list[tuple[int, int]], is_number: Callable[[str], bool]) -> list[tuple[str, int, int]]:
+def find_object_phrases(
+    text: str, tokens: list[tuple[str, int, int]], taken: list[tuple[int, int]], is_number: Callable[[str], bool],
+    soft: list[tuple[int, int]] = (),
+) -> list[tuple[str, int, int]]:
     """Noun phrases in object lists that no known phrase covers.
 
     Returns (phrase, start, end) triples; a phrase qualifies when a list
     opener ("with", "featuring"...) precedes it in the same clause and a determiner, a
-    count, a comma or "and" stands right before it.
+    count, a comma or "and" stands right before it. Words in ``soft`` spans (colours,
+    materials, styles) may modify a phrase ("a tufted pink ottoman", "six steel
+    fermentation tanks") but never end it.
     """
     non_objects_ = non_objects()
 
     def is_taken(s: int, e: int) -> bool:
         return any(a < e and s < b for a, b in taken)
+
+    def is_soft(s: int, e: int) -> bool:
+        return any(a <= s and e <= b for a, b in soft)
 
     out: list[tuple[str, int, int]] = []
     in_list = False
@@ -85,17 +97,22 @@ def find_object_phrases(text: str, tokens: list[tuple[str, int, int]], taken: li
             continue
         prev = tokens[i - 1][0] if i > 0 else ""
         starts = prev in DETERMINERS or is_number(prev) or prev in (",", "and", "of") or prev in LIST_OPENERS
-        if not (in_list and starts) or is_taken(s, e) or not tok.isalpha() or tok in PHRASE_BREAKS or tok in DETERMINERS:
+        if not (in_list and starts) or (is_taken(s, e) and not is_soft(s, e)) or not tok.isalpha() or tok in PHRASE_BREAKS or tok in DETERMINERS:
             i += 1
             continue
         j = i
         words: list[str] = []
-        while j < n and len(words) < MAX_PHRASE_WORDS:
+        hard = 0  # words not in a soft span
+        while j < n and hard < MAX_PHRASE_WORDS:
             t, ts, te = tokens[j]
             if not t.isalpha() or t in PHRASE_BREAKS or is_taken(ts, te) or is_number(t):
                 break
             words.append(t)
+            hard += not is_soft(ts, te)
             j += 1
+        while words and is_soft(*tokens[i + len(words) - 1][1:]):
+            words.pop()
+        j = i + len(words)
         if words and words[-1] not in non_objects_ and len(words[-1]) >= 3:
             out.append((" ".join(words), tokens[i][1], tokens[j - 1][2]))
         i = max(j, i + 1)
@@ -163,8 +180,9 @@ def map_building(phrase: str) -> Match | None:
 
 
 def map_style(word: str) -> Match | None:
-    """The style for an unknown style word before the building ("craftsman", "neon")."""
-    return nearest("styles", word)
+    """The style for an unknown style word before the building ("craftsman", "neon");
+    words under ``MIN_STYLE_CHARS`` letters ("mid" of "mid-size") are not mapped."""
+    return nearest("styles", word) if len(word) >= MIN_STYLE_CHARS else None
 
 
 def fallback_object() -> dict:

@@ -31,7 +31,7 @@ NUMBER_WORDS: dict[str, int] = {
 MANY_WORDS = frozenset({"several", "many", "some", "few", "multiple", "lots", "plenty", "numerous"})
 """Words meaning "more than one, number unsaid"."""
 
-FULL_WORDS = ("full of", "filled with", "lined with", "packed with", "lots of", "rows of")
+FULL_WORDS = ("full of", "filled with", "lined with", "packed with", "lots of", "rows of", "row of", "wall of", "walls of", "shelves of", "racks of")
 """Phrases asking for the generous end of a plural's range."""
 
 SIZE_WORDS: dict[str, float] = {
@@ -61,13 +61,19 @@ IN_ROOM = re.compile(r"^\s*(?:in|inside|for|into|within|of|on|at)(?:\s+(?:the|a|
 """Text between an object and a room that puts the object in that room."""
 
 ARRANGEMENTS: list[tuple[re.Pattern[str], str]] = [
-    (re.compile(r"\bin (?:\w+ )?rows?\b|\brows of\b|\bin a (?:\w+ )?grid\b|\bclassroom style\b"), "rows"),
+    (re.compile(r"\bin (?:\w+ )?rows?\b|\bin a (?:\w+ )?grid\b|\bclassroom style\b"), "rows"),
     (re.compile(r"\b(?:along|against|lining|around|on) (?:all )?(?:the |each )?(?:\w+ )?walls?\b"), "along_walls"),
     (re.compile(r"\bin the (?:center|centre|middle)\b|\bcent(?:er|re)piece\b|\bin the (?:\w+ )?(?:center|centre|middle)\b"), "center"),
     (re.compile(r"\baround (?:a|an|the|one) (?:\w+ )?(?:\w+ )?table\b"), "around"),
     (re.compile(r"\bsymmetric(?:al|ally)?\b"), "symmetric"),
 ]  # fmt: skip
-"""Arrangement phrases -> GroupSpec arrangement ("around" -> place_around a table)."""
+"""Arrangement phrases -> GroupSpec arrangement ("around" -> place_around a table);
+each applies to the objects named before it in its clause."""
+
+FORWARD_ARRANGEMENTS: list[tuple[re.Pattern[str], str]] = [
+    (re.compile(r"\b(?:rows?|lines?) of\b"), "rows"),
+]
+"""Arrangement phrases that apply to the object named right after them ("two rows of pews")."""
 
 SURFACE_WORDS: dict[str, str] = {
     "wall": "walls", "walls": "walls", "wallpaper": "walls", "accent": "walls",
@@ -90,10 +96,11 @@ _BED_BATH_WORDS = re.compile(r"\b(\w+) bed(?:room)?s?\s*(?:,|and|\+)?\s*(\w+) ba
 _BR_ONLY = re.compile(r"\b(\d{1,3})\s*(?:br|bd|bdr|bdrm)\b")
 _PEOPLE = re.compile(
     r"\b(?:family|household|group) of (\w+)\b|\bfor (\w+) (?:people|persons|adults|kids|children|guests)\b"
+    r"|\bsleep(?:s|ing)? (?:up to )?(\w+)\b"
 )
 _COUPLE = re.compile(r"\b(?:couple|newlyweds|two people)\b")
 _UNKNOWN_ROOM = re.compile(
-    r"\b([^\W\d_]+) (room|nook|corner|suite|lounge|den|booth|cave|shed|chamber|parlou?r|studio|"
+    r"\b([^\W\d_]+(?:'s|s')?) (room|nook|corner|suite|lounge|den|booth|cave|shed|chamber|parlou?r|studio|"
     r"cellar|loft|workshop|bay|quarters|sanctuary)s?\b"
 )
 
@@ -117,6 +124,7 @@ class Mention:
     concept: str | None = None  # rooms: furnishing set found by the embedding matcher
     open_vocab: bool = False  # found by anyhome.plan.openvocab, not by a knowledge phrase
     each: bool = False  # objects: "rooms, each with ..." -> one set in every such room
+    host: Mention | None = None  # objects: the room word right before it ("a courtyard fountain")
 
 
 @dataclass
@@ -147,6 +155,7 @@ class Parsed:
     bathrooms: int | None = None
     people: int | None = None
     one_room: bool = False  # "a one-room house"
+    proper_words: frozenset[str] = frozenset()  # words written capitalised mid-sentence, lower-cased
     warnings: list[str] = field(default_factory=list)
 
     @property
@@ -172,9 +181,7 @@ def _look_back(m: Mention, text: str, tokens: list[tuple[str, int, int]], taken:
     """Fill count, size and adjectives of ``m`` from the words just before it."""
     before = [t for t in tokens if t[2] <= m.start]
     words: list[str] = []
-    prefix = text[max(0, m.start - 16) : m.start]
-    if any(prefix.rstrip().endswith(f) for f in FULL_WORDS):
-        m.many = True
+    first = m.start  # where the phrase with its adjectives starts
     for tok, s, e in reversed(before[-4:]):
         if any(a <= s < b for a, b in taken):
             break
@@ -187,11 +194,16 @@ def _look_back(m: Mention, text: str, tokens: list[tuple[str, int, int]], taken:
             break
         if tok in SIZE_WORDS:
             m.size *= SIZE_WORDS[tok]
+            first = s
             continue
         if tok in STOP_WORDS or not tok.isalpha() or tok.endswith("'s") or len(words) >= 2:
             break
         if keep_words:
             words.insert(0, tok)
+        first = s
+    prefix = text[max(0, first - 16) : first]  # "rows of wooden pews", "full of old books"
+    if any(prefix.rstrip().endswith(f) for f in FULL_WORDS):
+        m.many = True
     m.words = words
     if m.count is not None and m.count > 1:
         m.plural = True
@@ -199,7 +211,11 @@ def _look_back(m: Mention, text: str, tokens: list[tuple[str, int, int]], taken:
 
 def _parse_building(text: str, p: Parsed, taken: list[tuple[int, int]]) -> tuple[int, int] | None:
     voc = vocabulary()
-    matches = list(voc.building_regex.finditer(text))
+    longer = [mt.span() for mt in voc.regex.finditer(text)]
+    matches = [
+        b for b in voc.building_regex.finditer(text)
+        if not any(a <= b.start() and b.end() <= e and e - a > b.end() - b.start() for a, e in longer)
+    ]  # fmt: skip  ("a box office": a room, not an office building)
     if not matches:
         return None
     best = matches[0]
@@ -207,15 +223,39 @@ def _parse_building(text: str, p: Parsed, taken: list[tuple[int, int]]) -> tuple
         if text[best.end() : nxt.start()].strip():
             break
         best = nxt
+    opening = _opening_building(text, best.start(), taken)
+    if opening is not None:  # "a steakhouse with ... a bar": the text's subject is the building
+        program, span, head = opening
+        p.building = next(i for i, b in enumerate(load("programs")["buildings"]) if b["program"] == program)
+        p.building_word = head
+        _building_modifiers(text, span[0], p, taken=taken)
+        return span
     p.building = voc.building_forms[best.group()]
     _building_modifiers(text, best.start(), p, taken=taken)
     return best.start(), best.end()
 
 
+def _opening_building(text: str, known_start: int, taken: list[tuple[int, int]]) -> tuple[str, tuple[int, int], str] | None:
+    """The program for the head of the text's opening noun phrase when the first known
+    building word only comes after it; None when the head maps to no building."""
+    tokens = _tokens(text)
+    fnp = ov.first_noun_phrase(text, tokens)
+    if fnp is None or fnp[2] > known_start:
+        return None
+    head = fnp[0].split()[-1]
+    s = fnp[2] - len(head)
+    if any(a < fnp[2] and s < b for a, b in taken) or head in ov.non_objects() or head in vocabulary().forms:
+        return None
+    mb = ov.map_building(head)
+    return (mb.key, (s, fnp[2]), head) if mb is not None else None
+
+
 def _building_modifiers(text: str, start: int, p: Parsed, keep_unmapped: bool = True, taken: list[tuple[int, int]] = ()) -> None:
     """Size words and the user's own style words just before the building word
     ("a Craftsman bungalow", "a neon lit retro arcade"); words that match no style are
-    kept only if ``keep_unmapped`` (the head word was recognised)."""
+    kept only if ``keep_unmapped`` (the head word was recognised) and the user wrote
+    them capitalised mid-sentence, as names of styles are ("a Craftsman bungalow", not "a
+    day spa")."""
     voc = vocabulary()
     for tok, s, _ in reversed(_tokens(text[:start])[-3:]):
         if any(a <= s < b for a, b in taken):
@@ -228,7 +268,7 @@ def _building_modifiers(text: str, start: int, p: Parsed, keep_unmapped: bool = 
         if tok in voc.forms or tok in voc.style_forms or voc.colour_regex.fullmatch(tok) or tok in ov.non_objects():
             continue
         ms = ov.map_style(tok)
-        if ms is None and not keep_unmapped:
+        if ms is None and not (keep_unmapped and tok in p.proper_words):
             continue
         p.style_words.insert(0, tok)
         if ms is not None and ms.key not in p.styles:
@@ -294,7 +334,7 @@ def _apply_codes(text: str, p: Parsed, taken: list[tuple[int, int]]) -> None:
             p.bedrooms = int(mt2.group(1))
     mt3 = _PEOPLE.search(text)
     if mt3:
-        n = parse_number(mt3.group(1) or mt3.group(2) or "")
+        n = parse_number(mt3.group(1) or mt3.group(2) or mt3.group(3) or "")
         if n:
             p.people = n
     elif _COUPLE.search(text):
@@ -318,6 +358,9 @@ def _assign_rooms(text: str, mentions: list[Mention]) -> None:
             continue
         if each is not None and "." in text[each.end : m.start]:
             each = None
+        if m.host is not None and id(m.host) in room_idx:
+            m.room = room_idx[id(m.host)]
+            continue
         m.room = context
         m.each = each is not None and context == room_idx[id(each)]
         nxt = next((x for x in mentions[i + 1 :] if x.kind == "room"), None)
@@ -337,6 +380,11 @@ def _strip_lookback(text: str, m: Mention) -> int:
 
 
 def _apply_arrangements(text: str, mentions: list[Mention]) -> None:
+    for pattern, kind in FORWARD_ARRANGEMENTS:
+        for mt in pattern.finditer(text):
+            nxt = next((x for x in mentions if x.start >= mt.end()), None)
+            if nxt is not None and nxt.kind == "object" and nxt.start - mt.end() <= 30:
+                nxt.arrangement = nxt.arrangement or kind
     for pattern, kind in ARRANGEMENTS:
         for mt in pattern.finditer(text):
             clause_start = max(
@@ -409,19 +457,23 @@ def _singular(word: str) -> tuple[str, bool]:
     return word, False
 
 
-def _known_spans(text: str, taken: list[tuple[int, int]], mentions: list[Mention]) -> list[tuple[int, int]]:
+def _known_spans(text: str, taken: list[tuple[int, int]], mentions: list[Mention]) -> tuple[list[tuple[int, int]], list[tuple[int, int]]]:
+    """Spans of what the lexical pass found: (mentions and codes, modifier words).
+
+    Modifier words (styles, materials, colours) may stand inside an open-vocabulary
+    object phrase; mentions may not."""
     voc = vocabulary()
     spans = list(taken)
     for m in mentions:
         spans.append((m.start - len(" ".join(m.words)) - (1 if m.words else 0), m.end))
-    for rx in (voc.style_regex, voc.material_regex, voc.colour_regex):
-        spans.extend((mt.start(), mt.end()) for mt in rx.finditer(text))
-    return spans
+    soft = [(mt.start(), mt.end()) for rx in (voc.style_regex, voc.material_regex, voc.colour_regex) for mt in rx.finditer(text)]
+    return spans, soft
 
 
 def _open_vocabulary(text: str, p: Parsed, taken: list[tuple[int, int]], mentions: list[Mention], tokens: list[tuple[str, int, int]]) -> list[Mention]:
     """Add what the knowledge base does not list, mapped by the embedding matcher."""
-    spans = _known_spans(text, taken, mentions)
+    hard, soft = _known_spans(text, taken, mentions)
+    spans = hard + soft
     if p.building is None:
         fnp = ov.first_noun_phrase(text, tokens)
         if fnp is not None:  # only the head counts ("a Moroccan riad" -> "riad")
@@ -451,7 +503,9 @@ def _open_vocabulary(text: str, p: Parsed, taken: list[tuple[int, int]], mention
         elif m.words:
             mr = ov.map_modified_room(m.key, m.words)
             m.concept = mr.key if mr else None
-    found = ov.find_object_phrases(text, tokens, spans, lambda t: parse_number(t) is not None)
+    hard += spans[len(hard) + len(soft) :]  # what the building step above added
+    _room_compounds(text, tokens, mentions, hard)
+    found = ov.find_object_phrases(text, tokens, hard, lambda t: parse_number(t) is not None, soft=soft)
     unknown: list[str] = []
     for phrase, s, e in found:
         words = phrase.split()
@@ -482,10 +536,64 @@ def _open_vocabulary(text: str, p: Parsed, taken: list[tuple[int, int]], mention
     return mentions
 
 
+NOT_NOUNS = frozenset("full empty upstairs downstairs outside inside below above nearby too only alone together overlooking".split())
+"""Words after a room word that are not a noun ("a studio full of easels", "a loft upstairs")."""
+
+ROOM_SUFFIXES = frozenset("area corner bay zone space nook wing section suite end".split())
+"""Words that, right after a room word, make a larger room name ("kennel area", "café corner")."""
+
+
+def _room_compounds(text: str, tokens: list[tuple[str, int, int]], mentions: list[Mention], hard: list[tuple[int, int]]) -> None:
+    """A room word followed by one more noun: "a kennel area" extends the room's name;
+    "a courtyard fountain" adds a fountain in the courtyard."""
+    starts = {s: k for k, (_, s, _) in enumerate(tokens)}
+    for m in [x for x in mentions if x.kind == "room"]:
+        k = starts.get(m.end + 1)  # the very next word, one space on
+        if k is None:
+            continue
+        word, s, e = tokens[k]
+        after = tokens[k + 1][0] if k + 1 < len(tokens) else "."
+        if CONTEXT_OPENERS.match(text[m.end :]) or word in NOT_NOUNS:
+            continue
+        if (
+            not word.isalpha() or word in STOP_WORDS or word in ov.PHRASE_BREAKS or word in NUMBER_WORDS
+            or any(a < e and s < b for a, b in hard) or word.endswith(("ing", "ed", "ly"))
+            or not (after in ov.PHRASE_BREAKS or not after.isalpha())
+        ):  # fmt: skip
+            continue
+        head, plural = _singular(word)
+        if head in ROOM_SUFFIXES:
+            m.name, m.end = f"{m.name} {head}", e
+            hard.append((s, e))
+            continue
+        if head in ov.non_objects() or len(head) < 3:
+            continue
+        kind, mo = ov.classify(head)
+        if kind != "object":
+            continue
+        obj = Mention("object", mo.key if mo else "", head, s, e, plural=plural, open_vocab=True, host=m)
+        mentions.append(obj)
+        hard.append((s, e))
+    mentions.sort(key=lambda m: m.start)
+
+
+_CAPITALISED = re.compile(r"\b[A-Z][a-z]+\b")
+
+
+def _proper_words(text: str) -> frozenset[str]:
+    """Words capitalised where a sentence does not start ("a Quaker meeting house")."""
+    out = set()
+    for mt in _CAPITALISED.finditer(text):
+        before = text[: mt.start()].rstrip()
+        if before and before[-1] not in ".!?:;\"'(":
+            out.add(mt.group().lower())
+    return frozenset(out)
+
+
 def parse(text: str) -> Parsed:
     """Parse ``text`` into a :class:`Parsed`; never raises on odd input."""
     norm = normalize(text)
-    p = Parsed(text=norm)
+    p = Parsed(text=norm, proper_words=_proper_words(text))
     if len(norm) > MAX_PARSE_CHARS:
         p.warnings.append(f"text is {len(norm)} characters long; only the first {MAX_PARSE_CHARS} were read")
         norm = norm[:MAX_PARSE_CHARS]

@@ -124,11 +124,12 @@ def plan_rooms(parsed: Parsed, program: str | None, rng: np.random.Generator, wa
                 slots.append(s)
     fixed = _fixed_counts(parsed)
     _claim_mentions(parsed, slots, fixed)
+    _drop_replaced(parsed, slots)
     totals = frozenset(t for t, n in (("bedroom", parsed.bedrooms), ("bathroom", parsed.bathrooms)) if n is not None)
     _apply_fixed(slots, fixed, prog, totals)
     _apply_people(parsed, slots, fixed)
     _add_hallway(slots, prog)
-    _cap(slots, warnings)
+    _cap(slots, warnings, fixed)
     if prog is not None and not slots:
         slots.append(_slot_from_entry(prog["rooms"][0]))
     if not slots:
@@ -178,6 +179,19 @@ def _claim_mentions(parsed: Parsed, slots: list[Slot], fixed: dict[str, int]) ->
                 target.area_range = proto.area_range
 
 
+COUNTED_KEEPS = frozenset({"bedroom", "bathroom", "hallway", "entry", "other"})
+"""Types whose program rooms stay when the text counts separately named rooms of the
+type ("two guest bedrooms" keeps the master bedroom)."""
+
+
+def _drop_replaced(parsed: Parsed, slots: list[Slot]) -> None:
+    """"Three massage rooms" in a spa: the text fixed how many treatment rooms there are,
+    so the program's unclaimed rooms of that type go."""
+    counted = {s.type for s in slots if s.mention is not None and parsed.rooms[s.mention].count}
+    for s in [s for s in slots if s.mention is None and s.type in counted - COUNTED_KEEPS]:
+        slots.remove(s)
+
+
 def _apply_fixed(slots: list[Slot], fixed: dict[str, int], prog: dict | None, totals: frozenset[str] = frozenset()) -> None:
     for t, n in fixed.items():
         # a count of plain rooms ("three kids' bedrooms") leaves the rooms the text names
@@ -219,20 +233,29 @@ def _apply_people(parsed: Parsed, slots: list[Slot], fixed: dict[str, int]) -> N
         slots.append(_slot_from_entry({"type": "bathroom", "name": "bathroom"}))
 
 
-def _cap(slots: list[Slot], warnings: list[str]) -> None:
+def _cap(slots: list[Slot], warnings: list[str], fixed: dict[str, int] | None = None) -> None:
+    """Bound rooms per type (the rooms the text names may pass a type's usual maximum)
+    and rooms per plan; what the text did not ask for goes first."""
+    fixed = fixed or {}
     by_type: dict[str, list[Slot]] = {}
     for s in slots:
         by_type.setdefault(s.type, []).append(s)
     for t, group in by_type.items():
-        cap = int(_type_info(t).get("max", 6))
+        asked = max(fixed.get(t, 0), sum(s.mention is not None for s in group))
+        cap = max(int(_type_info(t).get("max", 6)), min(asked, MAX_ROOMS))
         if len(group) > cap:
             warnings.append(f"asked for {len(group)} rooms of type {t}; planned {cap}, the most one house holds")
-            for s in group[cap:]:
+            for s in sorted(group, key=lambda s: s.mention is not None)[: len(group) - cap]:
                 slots.remove(s)
     if len(slots) <= MAX_ROOMS:
         return
     asked = len(slots)
     for s in [s for s in reversed(slots) if s.optional and s.type != "hallway"]:
+        if len(slots) <= MAX_ROOMS:
+            break
+        slots.remove(s)
+    # then rooms the program added that the text neither named nor counted
+    for s in [s for s in reversed(slots[1:]) if s.mention is None and s.type not in fixed]:
         if len(slots) <= MAX_ROOMS:
             break
         slots.remove(s)
