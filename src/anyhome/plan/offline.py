@@ -30,8 +30,11 @@ log = logging.getLogger(__name__)
 FLOOR_USE_FACTOR = 2.4
 """Room area needed per m2 of furniture footprint (walkways, clearances)."""
 
-ROWS_USE_FACTOR = 3.4
-"""The same for groups set out in rows: every copy keeps aisles on two sides."""
+ROWS_USE_FACTOR = 1.4
+"""Area of a rows arrangement per m2 of its cells (front and side clearances)."""
+
+ROW_AISLE_M = 0.5
+"""Aisle kept on two sides of each copy of a group set out in rows (as the layout does)."""
 
 MAX_ROOM_AREA_M2 = 200.0
 """Largest area the furniture may push a room to."""
@@ -129,13 +132,23 @@ def _room_for(m: Mention, slots: list[Slot], main_key: str | None) -> int:
 def _grow_area(s: Slot, groups: list[fu.Group]) -> None:
     need = 1.0
     for g in groups:
-        factor = ROWS_USE_FACTOR if g.get("arrangement") == "rows" else FLOOR_USE_FACTOR
+        if g.get("arrangement") == "rows":  # a grid of cells with aisles between them
+            need += _rows_cell_m2(g) * g["repeat"] * ROWS_USE_FACTOR
+            continue
         for it in [g["anchor"], *g["members"]]:
             if it["rule"] in fu.ORNAMENT_RULES or it["category"] == "rug":
                 continue
             w, d, _ = it["size_m"]
-            need += w * d * it["count"] * g["repeat"] * factor
+            need += w * d * it["count"] * g["repeat"] * FLOOR_USE_FACTOR
     s.area = round(max(s.area, min(need, MAX_ROOM_AREA_M2)), 2)
+
+
+def _rows_cell_m2(g: fu.Group) -> float:
+    """Floor of one copy of a rows group with its share of the aisles."""
+    floor = [it for it in [g["anchor"], *g["members"]] if it["rule"] not in fu.ORNAMENT_RULES]
+    width = max(it["size_m"][0] for it in floor)
+    depth = sum(it["size_m"][1] for it in floor)
+    return (width + ROW_AISLE_M) * (depth + ROW_AISLE_M)
 
 
 def _room_spec(s: Slot, groups: list[fu.Group], ornaments: list[fu.Item], look: Look, rng: np.random.Generator) -> RoomSpec:

@@ -70,7 +70,7 @@ RELATIVE_RULES: frozenset[str] = frozenset(
 )
 Arrangement = Literal["free", "rows", "along_walls", "center", "symmetric"]
 
-MAX_COUNT = 64
+MAX_COUNT = 120
 """Most copies of one item (``count``) or group (``repeat``) a plan holds; a text asking
 for more is capped with a warning."""
 
