@@ -124,7 +124,7 @@ class ConceptIndex:
         """The ``k`` best concepts for ``phrase`` (no threshold); concept phrases in
         ``exclude`` are ignored (leave-one-out measurement)."""
         queries = query_forms(phrase, self.kind)
-        q = self.embedder.encode(queries)
+        q = np.stack([_query_vector(self.embedder.name, t) for t in queries])
         sim = q @ self.matrix.T  # (forms, phrases)
         best_phrase = sim.max(axis=0)
         if exclude:
@@ -136,6 +136,13 @@ class ConceptIndex:
                 per_key[o] = (float(s), j)
         ranked = sorted(per_key.items(), key=lambda kv: -kv[1][0])[:k]
         return [Match(self.keys[o], round(s, 4), self.phrases[j]) for o, (s, j) in ranked]
+
+
+@functools.lru_cache(maxsize=4096)
+def _query_vector(backend: str, text: str) -> np.ndarray:
+    """One query's embedding, cached: a phrase is looked up in several tables (a list
+    phrase is tried as a room and as an object), and texts repeat across seeds."""
+    return get_embedder(backend).encode([text])[0]
 
 
 def query_forms(phrase: str, kind: str) -> list[str]:
