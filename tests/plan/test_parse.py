@@ -140,3 +140,10 @@ def test_unknown_words_before_a_building_are_style_words_only_when_capitalised()
 def test_sleeping_n_sets_the_household_size():
     assert parse("A ski chalet sleeping ten, with bunk rooms.").people == 10
     assert parse("a cabin that sleeps 6").people == 6
+
+
+def test_known_and_unknown_objects_after_a_room_word_go_in_that_room():
+    for text, name in (("A villa with a courtyard fountain.", "fountain"), ("A villa with a courtyard flumph.", "flumph")):
+        p = parse(text)
+        court = next(i for i, r in enumerate(p.rooms) if r.name == "courtyard")
+        assert next(m for m in p.objects if m.name == name).room == court

@@ -555,6 +555,10 @@ def _room_compounds(text: str, tokens: list[tuple[str, int, int]], mentions: lis
         after = tokens[k + 1][0] if k + 1 < len(tokens) else "."
         if CONTEXT_OPENERS.match(text[m.end :]) or word in NOT_NOUNS:
             continue
+        known = next((x for x in mentions if x.kind == "object" and x.start == s), None)
+        if known is not None:  # "a courtyard fountain", "a kitchen island"
+            known.host = m
+            continue
         if (
             not word.isalpha() or word in STOP_WORDS or word in ov.PHRASE_BREAKS or word in NUMBER_WORDS
             or any(a < e and s < b for a, b in hard) or word.endswith(("ing", "ed", "ly"))
