@@ -165,3 +165,32 @@ def test_rows_get_room_for_their_aisles():
     spec = plan("An office with twelve desks in two rows.")
     room = next(r for r in spec.rooms if any(g.anchor.name == "desk" and g.repeat == 12 for g in r.groups))
     assert room.area_m2 >= 12 * 1.4 * 0.7 * 3
+
+
+def test_a_venue_main_room_takes_the_users_name_for_the_building():
+    names = [r.name for r in plan("A sushi restaurant with a kitchen.").rooms]
+    assert "sushi restaurant" in names
+
+
+def test_plural_named_rooms_without_a_count_give_two():
+    names = [r.name for r in plan("A minimalist Japanese home with tatami rooms.").rooms]
+    assert sum("tatami room" in n for n in names) == 2
+
+
+def test_a_named_room_in_a_small_household_is_kept():
+    spec = plan("A house for a couple with twin toddlers: a master bedroom, a nursery with two cribs.")
+    nursery = next(r for r in spec.rooms if r.name == "nursery")
+    assert any("crib" in g.anchor.name for g in nursery.groups)
+
+
+def test_many_tvs_hang_on_the_walls():
+    spec = plan("A sports bar with twelve TVs along the walls.")
+    tvs = [o for r in spec.rooms for o in r.ornaments if o.category == "tv"]
+    assert sum(o.count for o in tvs) == 12 and all(o.rule == "place_on_wall" for o in tvs)
+
+
+def test_a_modifier_does_not_remap_a_known_room():
+    spec = plan("A day spa with a eucalyptus steam room.")
+    room = next(r for r in spec.rooms if r.name == "eucalyptus steam room")
+    assert not any(r.name == "steam room" for r in spec.rooms)
+    assert any("sauna" in it.name or "bench" in it.name for g in room.groups for it in [g.anchor, *g.members])

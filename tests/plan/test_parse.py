@@ -147,3 +147,14 @@ def test_known_and_unknown_objects_after_a_room_word_go_in_that_room():
         p = parse(text)
         court = next(i for i, r in enumerate(p.rooms) if r.name == "courtyard")
         assert next(m for m in p.objects if m.name == name).room == court
+
+
+def test_household_members_are_added_up():
+    assert parse("A house for two parents and three kids.").people == 5
+    assert parse("A house for a couple with twin toddlers: a nursery.").people == 4
+    assert not any(m.name == "toddler" for m in parse("A house for a couple with twin toddlers.").objects)
+
+
+def test_the_building_phrase_keeps_one_plain_modifier():
+    assert parse("A sushi restaurant with a counter.").building_phrase == "sushi restaurant"
+    assert parse("a two-bedroom apartment").building_phrase == "apartment"

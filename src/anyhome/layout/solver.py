@@ -736,7 +736,9 @@ class RoomLayout:
         for c in range(1, maxc + 1):
             r = math.ceil(n / c)
             if r <= maxr:
-                options.append(((r < 2 and n >= 2 and maxr >= 2), r * c - n, abs(c * geo["cu"] - r * geo["cv"]), c))
+                # one long row, or rows of one, read as no rows at all
+                lopsided = (r < 2 and n >= 2 and maxr >= 2) or (c < 2 and n >= 4 and maxc >= 2)
+                options.append((lopsided, r * c - n, abs(c * geo["cu"] - r * geo["cv"]), c))
         cols = min(options)[3] if options else maxc
         rot = np.array([[math.cos(yaw), -math.sin(yaw)], [math.sin(yaw), math.cos(yaw)]])
         centre_local = rot @ np.array([(x0 + x1) / 2, (y0 + y1) / 2])

@@ -293,6 +293,11 @@ def _arrange(m: Mention, g: Group, item: Item) -> None:
         anchor["rule"] = "place_center"
 
 
+WALL_MOUNT_FROM = 3
+"""From this many copies, an object that may hang (``wall_mount_m`` in objects.yaml) goes on
+the walls instead of on top of furniture."""
+
+
 def _apply_ornament(m: Mention, proto: dict[str, Any], category: str, head: str, n: int | None, groups: list[Group], ornaments: list[Item], unused: list[dict[str, Any]], area_m2: float, rng: np.random.Generator) -> None:
     found = next((o for o in ornaments if _matches(o, category, head) == 2), None)
     if found is None:
@@ -304,6 +309,10 @@ def _apply_ornament(m: Mention, proto: dict[str, Any], category: str, head: str,
         found["name"] = m.name
     if n is not None:
         found["count"] = max(1, min(MAX_COUNT, n))
+    if proto.get("wall_mount_m") and found["count"] >= WALL_MOUNT_FROM:  # "twelve TVs along the walls"
+        found["rule"], found["target"] = "place_on_wall", None
+        found["params"] = {"elevation_m": float(proto["wall_mount_m"])}
+        return
     target = found.get("target")
     if target and not any(_matches(it, target, target.split("_")[-1]) for g in groups for it in [g["anchor"], *g["members"]]):
         if proto.get("group"):

@@ -30,7 +30,7 @@ log = logging.getLogger(__name__)
 FLOOR_USE_FACTOR = 2.4
 """Room area needed per m2 of furniture footprint (walkways, clearances)."""
 
-ROWS_USE_FACTOR = 1.4
+ROWS_USE_FACTOR = 1.8
 """Area of a rows arrangement per m2 of its cells (front and side clearances)."""
 
 ROW_AISLE_M = 0.5

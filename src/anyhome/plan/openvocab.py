@@ -169,7 +169,7 @@ def map_room(phrase: str) -> Match | None:
 
 def map_modified_room(head: str, words: list[str]) -> Match | None:
     """A better furnishing for a known generic head with unknown modifiers ("recital hall")."""
-    if head.split()[-1] not in GENERIC_HEADS or not words:
+    if head not in GENERIC_HEADS or not words:  # "eucalyptus steam room" stays a steam room
         return None
     return nearest("rooms", " ".join([*words, head]))
 

@@ -23,7 +23,8 @@ NUMBER_WORDS: dict[str, int] = {
     "twin": 2, "pair": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8,
     "nine": 9, "ten": 10, "eleven": 11, "twelve": 12, "dozen": 12, "thirteen": 13,
     "fourteen": 14, "fifteen": 15, "sixteen": 16, "seventeen": 17, "eighteen": 18,
-    "nineteen": 19, "twenty": 20, "thirty": 30, "forty": 40, "fifty": 50, "hundred": 100,
+    "nineteen": 19, "twenty": 20, "thirty": 30, "forty": 40, "fifty": 50, "sixty": 60,
+    "seventy": 70, "eighty": 80, "ninety": 90, "hundred": 100,
     "thousand": 1000,
 }  # fmt: skip
 """Count words; "a"/"an" count as one."""
@@ -99,6 +100,11 @@ _PEOPLE = re.compile(
     r"|\bsleep(?:s|ing)? (?:up to )?(\w+)\b"
 )
 _COUPLE = re.compile(r"\b(?:couple|newlyweds|two people)\b")
+_MEMBERS = re.compile(
+    r"\b(\w+) (parents|adults|grandparents|roommates|flatmates|friends|kids|children|toddlers|babies|"
+    r"boys|girls|teens|teenagers|sons|daughters)\b"
+)
+"""Household members counted when no "family of N" is given ("two parents and three kids")."""
 _UNKNOWN_ROOM = re.compile(
     r"\b([^\W\d_]+(?:'s|s')?) (room|nook|corner|suite|lounge|den|booth|cave|shed|chamber|parlou?r|studio|"
     r"cellar|loft|workshop|bay|quarters|sanctuary)s?\b"
@@ -145,6 +151,7 @@ class Parsed:
     building: int | None = None  # index into programs.yaml buildings
     building_word: str | None = None  # the user's word when the embedding matcher chose the program
     building_size: float = 1.0
+    building_phrase: str | None = None  # the user's words for the building ("pilates studio", "sushi restaurant")
     rooms: list[Mention] = field(default_factory=list)
     objects: list[Mention] = field(default_factory=list)
     styles: list[str] = field(default_factory=list)  # style keys, in order of appearance
@@ -229,10 +236,27 @@ def _parse_building(text: str, p: Parsed, taken: list[tuple[int, int]]) -> tuple
         p.building = next(i for i, b in enumerate(load("programs")["buildings"]) if b["program"] == program)
         p.building_word = head
         _building_modifiers(text, span[0], p, taken=taken)
+        p.building_phrase = _with_modifier(text, span[0], head, taken)
         return span
     p.building = voc.building_forms[best.group()]
     _building_modifiers(text, best.start(), p, taken=taken)
+    p.building_phrase = _with_modifier(text, best.start(), best.group(), taken)
     return best.start(), best.end()
+
+
+def _with_modifier(text: str, start: int, phrase: str, taken: list[tuple[int, int]]) -> str:
+    """The building word with the one plain word before it ("sushi" restaurant), if any."""
+    voc = vocabulary()
+    before = _tokens(text[:start])[-1:]
+    for tok, s, _ in before:
+        if (
+            tok.isalpha() and tok not in STOP_WORDS and tok not in SIZE_WORDS and tok not in MANY_WORDS
+            and parse_number(tok) is None and tok not in voc.style_forms and not voc.colour_regex.fullmatch(tok)
+            and not voc.material_regex.fullmatch(tok) and not any(a <= s < b for a, b in taken) and len(tok) > 2
+            and tok not in voc.forms and tok not in voc.building_forms
+        ):  # fmt: skip
+            return f"{tok} {phrase}"
+    return phrase
 
 
 def _opening_building(text: str, known_start: int, taken: list[tuple[int, int]]) -> tuple[str, tuple[int, int], str] | None:
@@ -265,7 +289,7 @@ def _building_modifiers(text: str, start: int, p: Parsed, keep_unmapped: bool = 
             continue
         if tok in STOP_WORDS or not tok.isalpha() or parse_number(tok) is not None or tok in MANY_WORDS:
             break
-        if tok in voc.forms or tok in voc.style_forms or voc.colour_regex.fullmatch(tok) or tok in ov.non_objects():
+        if tok in voc.forms or tok in voc.style_forms or voc.colour_regex.fullmatch(tok) or tok in ov.non_objects() or tok in voc.building_forms:
             continue
         ms = ov.map_style(tok)
         if ms is None and not (keep_unmapped and tok in p.proper_words):
@@ -337,8 +361,17 @@ def _apply_codes(text: str, p: Parsed, taken: list[tuple[int, int]]) -> None:
         n = parse_number(mt3.group(1) or mt3.group(2) or mt3.group(3) or "")
         if n:
             p.people = n
-    elif _COUPLE.search(text):
-        p.people = 2
+    else:
+        adults = 2 if _COUPLE.search(text) else 0
+        kids = 0
+        for mt in _MEMBERS.finditer(text):
+            n = parse_number(mt.group(1)) or 0
+            if mt.group(2) in ("parents", "adults", "grandparents", "roommates", "flatmates", "friends"):
+                adults += n
+            else:
+                kids += n
+        if adults or kids:
+            p.people = max(adults, 2 if kids else 1) + kids
 
 
 def _assign_rooms(text: str, mentions: list[Mention]) -> None:

@@ -134,8 +134,26 @@ def plan_rooms(parsed: Parsed, program: str | None, rng: np.random.Generator, wa
         slots.append(_slot_from_entry(prog["rooms"][0]))
     if not slots:
         slots.append(_slot_from_entry({"type": "living_room", "name": "living room"}))
+    _name_main_room(parsed, slots, prog)
     _name_and_number(slots)
     return slots, (prog or {}).get("main")
+
+
+VENUE_TYPES = frozenset({"shop", "cafe", "restaurant", "bar", "gym", "studio", "gallery", "hall", "library", "playroom"})
+"""Types of a program's main room that take the user's name for the building ("a pilates
+studio" -> a room named "pilates studio")."""
+
+
+def _name_main_room(parsed: Parsed, slots: list[Slot], prog: dict | None) -> None:
+    phrase = parsed.building_phrase
+    if prog is None or not phrase:
+        return
+    main = next((s for s in slots if s.key == prog.get("main")), None)
+    if main is None or main.mention is not None or main.type not in VENUE_TYPES or main.name == phrase:
+        return
+    if any(s.name == phrase for s in slots):
+        return
+    main.name = phrase
 
 
 def _fixed_counts(parsed: Parsed) -> dict[str, int]:
@@ -159,15 +177,18 @@ def _claim_mentions(parsed: Parsed, slots: list[Slot], fixed: dict[str, int]) ->
             continue
         proto = _slot_from_mention(m, i)
         generic = bool((names.get(m.key) or {}).get("generic"))
-        n = max(1, m.count or 1) if (generic or m.count) else 1
+        n = max(1, m.count or 1) if (generic or m.count) else (2 if m.plural else 1)  # "tatami rooms"
         n = min(n, MAX_COUNT)
+        first: Slot | None = None  # more rooms than the program has copy the first one's furnishing
         for _ in range(n):
-            same_name = [s for s in slots if s.mention is None and s.name == proto.name]
+            same_name = [s for s in slots if s.mention is None and s.name in (proto.name, m.key)]
             # rooms of the catch-all type "other" are too unlike to stand in for each other
             same_type = [s for s in slots if s.mention is None and s.type == proto.type != "other"]
-            target = (same_name or same_type or [None])[0]
+            same_set = [s for s in slots if s.mention is None and s.furnish == proto.furnish != "other"]
+            target = (same_name or same_set or same_type or [None])[0]
             if target is None:
-                target = Slot(proto.name, proto.type, proto.furnish, proto.area_range)
+                like = first or proto
+                target = Slot(proto.name, like.type, like.furnish, like.area_range)
                 slots.append(target)
             target.mention = i
             target.size = proto.size
@@ -177,6 +198,7 @@ def _claim_mentions(parsed: Parsed, slots: list[Slot], fixed: dict[str, int]) ->
             if not generic or target.type != proto.type:
                 target.furnish, target.type = proto.furnish, proto.type
                 target.area_range = proto.area_range
+            first = first or target
 
 
 COUNTED_KEEPS = frozenset({"bedroom", "bathroom", "hallway", "entry", "other"})
@@ -219,13 +241,17 @@ def _apply_people(parsed: Parsed, slots: list[Slot], fixed: dict[str, int]) -> N
     beds_per_room = [1] * kids if kids <= 2 else [2] * (kids // 2) + [1] * (kids % 2)
     want = 1 + len(beds_per_room)
     bedrooms = [s for s in slots if s.type == "bedroom"]
-    while len(bedrooms) > want:
-        slots.remove(bedrooms.pop())
+    while len(bedrooms) > want and any(s.mention is None for s in bedrooms):  # never a named room
+        victim = next(s for s in reversed(bedrooms) if s.mention is None)
+        bedrooms.remove(victim)
+        slots.remove(victim)
     while len(bedrooms) < want:
         s = _slot_from_entry({"type": "bedroom", "name": "bedroom"})
         slots.append(s)
         bedrooms.append(s)
     for s, beds in zip(bedrooms[1:], beds_per_room):
+        if s.mention is not None and not s.generic_name:
+            continue  # "a nursery" keeps its own furnishing
         s.furnish, s.beds = "kids_bedroom", beds
         if s.generic_name:
             s.name = "kids' bedroom"
