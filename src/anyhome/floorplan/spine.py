@@ -30,6 +30,11 @@ HALLWAY_MIN_M = 1.3
 """Narrowest spine hallway (a 0.9 m door plus margins fits its end wall)."""
 WINDOW_GAP_M = 1.9
 """Outside stretch kept free beside a habitable spine room whose both sides hold blocks."""
+BIG_ROOM_ASPECT = 1.8
+"""Long/short ratio a large room in a block column is held to: its side of the spine
+is made deeper than the common block depth when it needs it."""
+BIG_DEPTH_MAX_M = 16.0
+"""Deepest a side of the spine may grow for a large room."""
 SPINE_ASPECT_RANGE = (1.0, 1.5)
 """Long/short side ratio of a spine room that has no blocks to size it."""
 
@@ -62,7 +67,8 @@ def spine_owner(prog: Program, rng: np.random.Generator) -> np.ndarray | str:
     x = 0
     for s in spine:
         sides = _split_sides(blocks[s], prog, rng)
-        widths = [[[_column_width(c, depth, prog) for c in b] for b in side] for side in sides]
+        side_depth = [max([depth, *(_deep_enough(col, prog) for b in side for col in b)]) for side in sides]
+        widths = [[[_column_width(c, side_depth[i], prog) for c in b] for b in side] for i, side in enumerate(sides)]
         lengths = [sum(sum(bw) for bw in side) for side in widths]
         own_len = _spine_length(prog, s, max(lengths), rng)
         seg_len = max(own_len, *lengths)
@@ -80,7 +86,7 @@ def spine_owner(prog: Program, rng: np.random.Generator) -> np.ndarray | str:
             cx = x + (slack if align_end else 0)
             for block_cols, block_w in zip(side, side_w):
                 for col, w in zip(block_cols, block_w):
-                    _place_column(col, w, cx, y0, d, depth, side_i, prog, rects)
+                    _place_column(col, w, cx, y0, d, side_depth[side_i], side_i, prog, rects)
                     cx += w
         x += seg_len
     owner = _rasterize(rects, prog.n)
@@ -205,6 +211,14 @@ def _block_depth(prog: Program, spine: list[int], rng) -> int:
     typical = float(np.sqrt(np.median([prog.areas_m2[k] for k in others])))
     depth_m = np.clip(typical * rng.uniform(*DEPTH_JITTER), *DEPTH_RANGE_M)
     return _cells(float(depth_m))
+
+
+def _deep_enough(col: Column, prog: Program) -> int:
+    """Depth a one-room column needs to stay within ``BIG_ROOM_ASPECT`` (an auditorium
+    beside a foyer must not become a 50 m strip); 0 for stacked columns."""
+    if len(col) != 1:
+        return 0
+    return min(_cells(float(np.sqrt(prog.areas_m2[col[0]] / BIG_ROOM_ASPECT))), _cells(BIG_DEPTH_MAX_M))
 
 
 def _column_width(col: Column, depth: int, prog: Program) -> int:

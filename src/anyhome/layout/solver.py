@@ -56,7 +56,7 @@ ROW_FRONT_CLEARANCE_M = 1.0
 """Free band kept in front of the wall the rows face."""
 ROW_SIDE_CLEARANCE_M = 0.3
 """Band kept along the other walls of a ``rows`` arrangement."""
-FRONT_WORDS = ("board", "screen", "projector", "lectern", "podium", "teacher", "television", "tv")
+FRONT_WORDS = ("board", "screen", "projector", "lectern", "podium", "teacher", "television", "tv", "stage", "altar", "pulpit", "mihrab")
 """Items that go on (or against) the wall a rows arrangement faces."""
 FRONT_WALL_BONUS = 2.0
 """Score added to front items' poses on the wall the rows face."""
@@ -715,7 +715,9 @@ class RoomLayout:
             walls = sorted(self.space.walls, key=lambda w: -w.length)
             across = [w for w in walls if abs(float(w.u @ walls[0].u)) < 0.1]
             later = [x.anchor for x in self.spec.groups if x is not g] + list(self.spec.ornaments)
-            front = ROW_FRONT_CLEARANCE_M if any(_front_item(x) for x in later) else ROW_SIDE_CLEARANCE_M
+            fronts = [x for x in later if _front_item(x)]
+            # room in front of the rows for what they face (a board, a 4 m deep stage)
+            front = ROW_FRONT_CLEARANCE_M + max((x.size_m[1] for x in fronts), default=0.0) if fronts else ROW_SIDE_CLEARANCE_M
             plans = [self._rows_grid(g, w, f) for w in walls[:1] + across[:1] for f in (front, ROW_SIDE_CLEARANCE_M)]
         plans = [p for p in plans if p[0] * p[1] > 0]
         if not plans:
