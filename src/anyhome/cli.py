@@ -79,6 +79,14 @@ def cmd_generate(args: argparse.Namespace) -> int:
     files = write_outputs(house, out, glb=not args.no_glb, svg=not args.no_svg, timings=timings)
     if not args.quiet:
         print(f" {time.perf_counter() - t1:.2f} s", file=sys.stderr)
+    if args.render:
+        if not args.quiet:
+            print("[render] bird's-eye and room views ...", end="", file=sys.stderr, flush=True)
+        t2 = time.perf_counter()
+        files += _render(house, out, args)
+        timings["render"] = time.perf_counter() - t2
+        if not args.quiet:
+            print(f" {timings['render']:.2f} s", file=sys.stderr)
     total = time.perf_counter() - t0
     if args.json:
         print(json.dumps({
@@ -161,6 +169,54 @@ def cmd_export(args: argparse.Namespace) -> int:
     return 0
 
 
+# -------------------------------------------------------------------- assets
+def cmd_assets(args: argparse.Namespace) -> int:
+    from anyhome.assets import FAMILIES
+
+    if args.json:
+        print(json.dumps(list(FAMILIES)))
+        return 0
+    if args.details:
+        from anyhome.assets.catalog import describe
+
+        for d in describe():
+            w, dep, h = d["typical_size_m"]
+            cats = ", ".join(d.get("categories", [])[:6])
+            print(f"{d['name']:<20} {w:.2f} x {dep:.2f} x {h:.2f} m  {d['triangles'][0]}-{d['triangles'][1]} triangles  {cats}")
+        return 0
+    print(f"{len(FAMILIES)} procedural asset families:")
+    for name in FAMILIES:
+        print(f"  {name}")
+    return 0
+
+
+# -------------------------------------------------------------------- render
+def cmd_render(args: argparse.Namespace) -> int:
+    from anyhome.house import load
+
+    house = load(args.path)
+    src = Path(args.path)
+    out = Path(args.out) if args.out else (src if src.is_dir() else src.parent)
+    files = _render(house, out, args)
+    print("Files: " + "  ".join(str(f) for f in files))
+    return 0
+
+
+def _render(house, out: Path, args: argparse.Namespace) -> list[Path]:
+    from anyhome.render import render_house
+
+    result = render_house(house, out, size_px=args.size, view_size_px=args.view_size,
+                          views=not args.no_views, depth=args.depth)
+    return [Path(f) for f in result.get("files", [])]
+
+
+def _render_options(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--size", type=int, default=1024, help="bird's-eye image size in pixels (default 1024)")
+    parser.add_argument("--view-size", type=int, default=512, help="per-room view size in pixels (default 512)")
+    parser.add_argument("--no-views", action="store_true", help="only the bird's-eye view")
+    parser.add_argument("--depth", action="store_true", help="also write depth and object-id maps")
+
+
 # ---------------------------------------------------------------------- main
 def build_parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(
@@ -185,6 +241,8 @@ def build_parser() -> argparse.ArgumentParser:
     g.add_argument("--no-svg", action="store_true", help="skip floorplan.svg")
     g.add_argument("-q", "--quiet", action="store_true", help="no progress lines")
     g.add_argument("--json", action="store_true", help="print the summary as JSON")
+    g.add_argument("--render", action="store_true", help="also write birdseye.png and views/<room>.png")
+    _render_options(g)
     g.set_defaults(func=cmd_generate)
 
     e = sub.add_parser("eval", help="check a house against the validity rules (and a prompt)")
@@ -201,6 +259,17 @@ def build_parser() -> argparse.ArgumentParser:
     x.add_argument("--format", default="glb,svg", help="comma list: glb,svg (default both)")
     x.add_argument("--out", help="output folder (default: the house's folder)")
     x.set_defaults(func=cmd_export)
+
+    r = sub.add_parser("render", help="render a house headless: birdseye.png and views/<room id>.png")
+    r.add_argument("path", help="house folder or house.json")
+    r.add_argument("--out", help="output folder (default: the house's folder)")
+    _render_options(r)
+    r.set_defaults(func=cmd_render)
+
+    a = sub.add_parser("assets", help="list the procedural asset families")
+    a.add_argument("--json", action="store_true", help="print a JSON list of family names")
+    a.add_argument("--details", action="store_true", help="size, triangles and categories per family")
+    a.set_defaults(func=cmd_assets)
     return p
 
 

@@ -96,3 +96,10 @@ def test_export_rederives_files(haunted, tmp_path):
     proc = anyhome("export", str(out / "house.json"), "--out", str(tmp_path / "x"))
     assert (tmp_path / "x" / "house.glb").stat().st_size > 1000
     assert "floorplan.svg" in proc.stdout
+
+
+def test_assets_lists_the_families_as_json():
+    names = json.loads(anyhome("assets", "--json").stdout)
+    assert isinstance(names, list) and len(names) >= 60 and all(isinstance(n, str) for n in names)
+    assert {"bed", "sofa", "piano", "toilet"} <= set(names)
+    assert names == sorted(names) and len(set(names)) == len(names)
