@@ -118,7 +118,7 @@ def test_full_of_after_a_room_is_not_an_object():
 
 def test_rows_of_arranges_what_follows_and_asks_for_many():
     pew = parse("A chapel with two rows of wooden pews facing an altar.").objects[0]
-    assert pew.key == "bench" and pew.many and pew.arrangement == "rows" and pew.count is None
+    assert pew.key == "pew" and pew.many and pew.arrangement == "rows" and pew.count is None
 
 
 def test_possessive_room_names_are_kept_whole():

@@ -27,6 +27,9 @@ SIZES_FILE = Path(__file__).with_name("typical_sizes.yaml")
 GENERIC = "generic"
 """Family of objects whose name matches nothing: a composed block that still reads as a thing."""
 SOURCE = "procedural"
+BROAD_FAMILIES = frozenset({"table", "chair", "bench", "cabinet", "shelf", "box", "bed", "counter", "desk", "stool"})
+"""Families a category may name loosely; a one-word name that is a family of its own
+(a "pew" of category bench) is built as that family instead."""
 
 
 @dataclass(frozen=True)
@@ -91,9 +94,9 @@ def _norm(text: str) -> str:
     return "_".join(re.findall(r"[a-z0-9]+", text.lower()))
 
 
-def _lookup(key: str) -> str | None:
+def _lookup(key: str, use_synonyms: bool = True) -> str | None:
     fams = _loaded()
-    syn = synonyms()
+    syn = synonyms() if use_synonyms else {}
     for k in (key, key[:-1] if key.endswith("s") else None, key[:-2] if key.endswith("es") else None):
         if not k:
             continue
@@ -104,10 +107,28 @@ def _lookup(key: str) -> str | None:
     return None
 
 
+def _specific_name(name: str, category: str) -> str | None:
+    """The family a name asks for by itself, when it should overrule the category: a
+    name of two or more words that is a family or a synonym ("pool table", "billiard
+    table"), or a one-word family name ("pew") given with a broad category ("bench").
+    Other single words are too loose ("chest", "mat", a "bench" of category weight_bench)."""
+    key = _norm(name)
+    if not key:
+        return None
+    if "_" in key:
+        hit = _lookup(key)
+        return hit if hit != GENERIC else None  # a known fallback never overrules a category
+    hit = _lookup(key, use_synonyms=False)
+    return hit if hit and _lookup(_norm(category)) in BROAD_FAMILIES else None
+
+
 def family_for(category: str, name: str = "") -> str:
-    """The family to build an object as: the category if it is a family, else the best
-    match of the category or name (whole, word pairs, then single words, last word first,
-    through ``synonyms.yaml``), else ``"generic"``."""
+    """The family to build an object as: the family a name asks for by itself (see
+    ``_specific_name``), else the category if it is a family, else the best match of the
+    category or name (whole, word pairs, then single words, last word first, through
+    ``synonyms.yaml``), else ``"generic"``."""
+    if hit := _specific_name(name, category):
+        return hit
     for text in (category, name):
         key = _norm(text)
         if key and (hit := _lookup(key)):

@@ -4,4 +4,5 @@ Each module registers its families with :mod:`anyhome.assets.registry` on import
 the registry imports the modules named in ``MODULES`` the first time it is asked.
 """
 
-MODULES = ("beds", "decor", "kitchen_bath", "misc", "seating", "storage", "tables")
+MODULES = ("beds", "care_shop", "curios", "decor", "fixtures", "games", "kitchen_bath", "misc", "outdoor",
+           "performance", "pets", "seating", "storage", "tables", "vehicles", "worship")

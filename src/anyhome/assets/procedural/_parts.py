@@ -225,6 +225,13 @@ def rot_z(angle: float) -> np.ndarray:
     return trimesh.transformations.rotation_matrix(angle, [0, 0, 1])
 
 
+def move(offset) -> np.ndarray:
+    """Translation by ``offset`` (3,) as a 4x4 matrix."""
+    t = np.eye(4)
+    t[:3, 3] = offset
+    return t
+
+
 def about(matrix: np.ndarray, point) -> np.ndarray:
     """``matrix`` applied about ``point`` instead of the origin."""
     t = np.eye(4)
@@ -312,6 +319,34 @@ class Builder:
         v = np.asarray(m.vertices) + np.array([x, y, 0.0])
         self.add(v, m.faces, color, 255, transform)
 
+    def add_colored(self, vertices: np.ndarray, faces: np.ndarray, colors: np.ndarray) -> None:
+        """A part with its own per-vertex RGBA colours (``colors`` : (n, 4) uint8)."""
+        v = np.asarray(vertices, dtype=float)
+        self._v.append(v)
+        self._f.append(np.asarray(faces, dtype=np.int64) + self._n)
+        self._c.append(np.asarray(colors, dtype=np.uint8).reshape(len(v), 4))
+        self._n += len(v)
+
+    def hull(self, points, color: str, alpha: int = 255, transform: np.ndarray | None = None) -> None:
+        """Convex hull of ``points`` ((n, 3) float): wedges, prisms, tapered slabs."""
+        m = trimesh.convex.convex_hull(np.asarray(points, dtype=float))
+        self.add(m.vertices, m.faces, color, alpha, transform)
+
+    def torus(self, center, major: float, minor: float, color: str, transform: np.ndarray | None = None,
+              sections: int = 24, minor_sections: int = 6) -> None:
+        """Ring about the vertical axis through ``center`` (then ``transform``, about the origin)."""
+        m = trimesh.creation.torus(major, minor, major_sections=sections, minor_sections=minor_sections)
+        self.add(np.asarray(m.vertices) + np.asarray(center, dtype=float), m.faces, color, 255, transform)
+
+    def extrude_x(self, profile, x0: float, x1: float, color: str, alpha: int = 255) -> None:
+        """A polygon in the (y, z) plane (``profile`` : (n, 2) float) extruded from x0 to x1."""
+        from shapely.geometry import Polygon
+
+        m = trimesh.creation.extrude_polygon(Polygon(np.asarray(profile, dtype=float)), x1 - x0)
+        v = np.asarray(m.vertices)
+        # (u, v, t) -> (x = x0 + t, y = u, z = v): a cyclic permutation keeps faces outward
+        self.add(np.column_stack([v[:, 2] + x0, v[:, 0], v[:, 1]]), m.faces, color, alpha)
+
     def legs(self, xy, z0: float, z1: float, r: float, kind: str, color: str) -> None:
         """Legs at the (x, y) points from ``z0`` up to ``z1`` in the given style."""
         for x, y in xy:
@@ -357,3 +392,17 @@ def corners(w: float, d: float, inset: float) -> list[tuple[float, float]]:
     """Four (x, y) points ``inset`` in from the corners of a w x d rectangle."""
     x, y = w / 2 - inset, d / 2 - inset
     return [(-x, -y), (x, -y), (x, y), (-x, y)]
+
+
+def lengthwise(size: Size, draw) -> trimesh.Trimesh:
+    """Mesh of an object drawn along x: ``draw(builder, length, breadth, height)`` lays the
+    long side on x; when the box is deeper than wide the drawing is turned onto y."""
+    w, d, h = size
+    b = Builder()
+    if w >= d:
+        draw(b, w, d, h)
+        return b.mesh(size)
+    draw(b, d, w, h)
+    turned = Builder()
+    turned.extend(b, rot_z(np.pi / 2))
+    return turned.mesh(size)

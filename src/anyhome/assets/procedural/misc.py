@@ -241,8 +241,9 @@ def build_cat_tree(p):
     z_prev = 0.04 + cube
     for k in range(p.levels):
         z = z_prev + (h - z_prev) / (p.levels - k)
-        x = rng.uniform(-w / 2 + 0.1, w / 2 - 0.1)
-        y = rng.uniform(-d / 2 + 0.1, d / 2 - 0.1)
+        mx, my = min(0.1, w / 4), min(0.1, d / 4)
+        x = rng.uniform(-w / 2 + mx, w / 2 - mx)
+        y = rng.uniform(-d / 2 + my, d / 2 - my)
         b.cyl(x, y, 0.04 if k == 0 else z_prev - 0.03, z - 0.03, 0.045, p.secondary, sections=12)
         pw, pd = min(0.4, w * 0.6), min(0.4, d * 0.6)
         cx = float(np.clip(x, -w / 2 + pw / 2, w / 2 - pw / 2))

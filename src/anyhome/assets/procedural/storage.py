@@ -241,6 +241,10 @@ def build_display_case(p):
     return b.mesh(p.size)
 
 
+WINE_RACK_MAX_CELLS = 220
+"""Most bottle cells in one wine rack (keeps a wall-sized rack under the triangle budget)."""
+
+
 def sample_wine_rack(rng, size, style):
     return make_params("wine_rack", rng, size, style, wood_tones(style), "#27401f", "#6b1a2a")
 
@@ -249,8 +253,9 @@ def build_wine_rack(p):
     w, d, h = p.size
     b = Builder()
     rng = np.random.default_rng(p.seed)
-    cols = max(2, int(w / 0.11))
-    rows = max(2, int(h / 0.11))
+    cell = max(0.11, float(np.sqrt(w * h / WINE_RACK_MAX_CELLS)))  # bigger cells in a huge rack
+    cols = max(2, int(w / cell))
+    rows = max(2, int(h / cell))
     for x in np.linspace(-w / 2, w / 2, cols + 1):
         b.box((x - 0.01, -d / 2, 0), (x + 0.01, d / 2, h), p.primary)
     for z in np.linspace(0, h, rows + 1):

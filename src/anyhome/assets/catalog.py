@@ -1,0 +1,82 @@
+"""A catalog of the procedural asset families: what each one is, how big, how heavy, and
+which object categories of the knowledge base (``plan/knowledge/objects.yaml``) it builds.
+
+    >>> from anyhome.assets.catalog import describe
+    >>> next(d for d in describe() if d["name"] == "sofa")["typical_size_m"]
+    [2.2, 0.95, 0.85]
+
+Everything :func:`describe` returns is plain JSON (lists, strings, numbers).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from anyhome.assets.registry import GENERIC, families, family_for, get, synonyms, typical_size
+
+SAMPLES = ((0, ""), (1, "modern"), (2, "victorian"), (3, "industrial"), (4, "rustic"), (5, ""))
+"""(seed, style) pairs over which triangle counts are measured."""
+
+
+def family_names() -> list[str]:
+    """Names of every procedural family, sorted."""
+    return families()
+
+
+def triangle_range(name: str, samples: tuple[tuple[int, str], ...] = SAMPLES) -> tuple[int, int]:
+    """Fewest and most triangles of a family at its typical size over (seed, style) ``samples``."""
+    fam = get(name)
+    size = typical_size(name)
+    counts = [len(fam.build(fam.sample(np.random.default_rng(seed), size, style)).faces) for seed, style in samples]
+    return min(counts), max(counts)
+
+
+def knowledge_map() -> dict[str, dict[str, list[str]]]:
+    """Family -> {"categories": [...], "objects": [...]}: the ``objects.yaml`` prototypes
+    (and their categories) that are built as it, judged as the planner writes them
+    (``family_for(category, name)``). Every family has an entry, possibly empty."""
+    from anyhome.plan.knowledge import load
+
+    cats: dict[str, set[str]] = {name: set() for name in families()}
+    objs: dict[str, set[str]] = {name: set() for name in families()}
+    for key, proto in load("objects").items():
+        category = str((proto or {}).get("category") or "")
+        fam = family_for(category, str(key))
+        objs[fam].add(str(key))
+        if category:
+            cats[fam].add(category)
+    return {name: {"categories": sorted(cats[name]), "objects": sorted(objs[name])} for name in families()}
+
+
+def documented_fallbacks() -> list[str]:
+    """Words that ``synonyms.yaml`` sends on purpose to the generic block (things with no
+    family of their own yet)."""
+    return sorted(k for k, v in synonyms().items() if v == GENERIC)
+
+
+def describe() -> list[dict[str, Any]]:
+    """One JSON-serialisable record per family, sorted by name.
+
+    Keys: ``name``; ``typical_size_m`` (width, depth, height); ``triangles`` ([fewest,
+    most] over a few seeds and styles at the typical size); ``categories`` and
+    ``objects`` (the ``objects.yaml`` categories and prototypes built as this family);
+    ``synonyms`` (the words of ``synonyms.yaml`` that name it).
+    """
+    known = knowledge_map()
+    syn: dict[str, list[str]] = {}
+    for word, fam in synonyms().items():
+        syn.setdefault(fam, []).append(word)
+    records = []
+    for name in families():
+        lo, hi = triangle_range(name)
+        records.append({
+            "name": name,
+            "typical_size_m": [float(s) for s in typical_size(name)],
+            "triangles": [int(lo), int(hi)],
+            "categories": known[name]["categories"],
+            "objects": known[name]["objects"],
+            "synonyms": sorted(syn.get(name, [])),
+        })
+    return records
