@@ -206,7 +206,7 @@ def _render(house, out: Path, args: argparse.Namespace) -> list[Path]:
     from anyhome.render import render_house
 
     result = render_house(house, out, size_px=args.size, view_size_px=args.view_size,
-                          views=not args.no_views, depth=args.depth)
+                          views=not args.no_views, depth=args.depth, ids=args.depth)
     return [Path(f) for f in result.get("files", [])]
 
 

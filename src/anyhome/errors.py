@@ -30,3 +30,7 @@ class ExportError(AnyHomeError):
 
 class EvalError(AnyHomeError):
     """Evaluation could not run (missing house, bad expectations file...)."""
+
+
+class RenderError(AnyHomeError):
+    """Images could not be rendered (renderer missing, no OpenGL context, bad camera...)."""

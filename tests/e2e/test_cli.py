@@ -103,3 +103,17 @@ def test_assets_lists_the_families_as_json():
     assert isinstance(names, list) and len(names) >= 60 and all(isinstance(n, str) for n in names)
     assert {"bed", "sofa", "piano", "toilet"} <= set(names)
     assert names == sorted(names) and len(set(names)) == len(names)
+
+
+def test_render_writes_birdseye_and_one_view_per_room(haunted, tmp_path):
+    out, _ = haunted
+    proc = anyhome("render", str(out), "--out", str(tmp_path), "--size", "96", "--view-size", "64")
+    rooms = json.loads((out / "house.json").read_text())["rooms"]
+    assert (tmp_path / "birdseye.png").stat().st_size > 0
+    assert sorted(p.stem for p in (tmp_path / "views").glob("*.png")) == sorted(r["id"] for r in rooms)
+    assert "birdseye.png" in proc.stdout
+
+
+def test_render_of_a_missing_house_is_one_line(tmp_path):
+    proc = anyhome("render", str(tmp_path / "nothing"), check=False)
+    assert proc.returncode != 0 and proc.stderr.strip().count("\n") == 0 and "error:" in proc.stderr

@@ -1,0 +1,149 @@
+"""render_house: a bird's-eye image of the whole house and one eye-level view per room."""
+
+from __future__ import annotations
+
+import json
+import logging
+import os
+import re
+import time
+from pathlib import Path
+from typing import Any
+
+import trimesh
+
+from anyhome.errors import RenderError
+from anyhome.house import House
+from anyhome.render.cameras import Camera, birdseye_camera, room_camera
+from anyhome.render.gl import import_moderngl
+from anyhome.render.images import write_bytes, write_npy, write_png
+from anyhome.render.lights import room_lights
+from anyhome.render.meshes import scene_meshes
+from anyhome.render.renderer import SUPERSAMPLE, Frame, Renderer
+
+log = logging.getLogger(__name__)
+
+BIRDSEYE_NAME = "birdseye"
+"""Stem of the bird's-eye files."""
+VIEWS_DIR = "views"
+"""Folder of the per-room views."""
+META_FILE = "render.json"
+"""Cameras and instance legend of the written images."""
+
+
+def _stem(room_id: str) -> str:
+    """A file-name-safe stem for a room id."""
+    return re.sub(r"[^A-Za-z0-9_.-]+", "_", room_id).strip("._") or "room"
+
+
+def _write_frame(out: Path, rel_stem: str, frame: Frame, files: list[Path]) -> None:
+    files.append(write_png(out / f"{rel_stem}.png", frame.color))
+    if frame.depth is not None:
+        files.append(write_npy(out / f"{rel_stem}.depth.npy", frame.depth))
+    if frame.ids is not None:
+        files.append(write_npy(out / f"{rel_stem}.ids.npy", frame.ids))
+
+
+def render_house(
+    house: House,
+    out_dir: str | os.PathLike[str],
+    size_px: int = 1024,
+    view_size_px: int = 512,
+    views: bool = True,
+    depth: bool = False,
+    ids: bool = False,
+    scene: trimesh.Scene | None = None,
+    supersample: int = SUPERSAMPLE,
+) -> dict[str, Any]:
+    """Render a house headlessly (OpenGL on EGL; software Mesa works) into ``out_dir``.
+
+    Writes ``birdseye.png`` (the whole house from above, ceilings hidden), and with
+    ``views`` one ``views/<room id>.png`` per room (eye height, ceilings on). With
+    ``depth`` each image gets ``<stem>.depth.npy`` ((h, w) float32, meters along the
+    optical axis, inf where nothing is drawn); with ``ids`` a ``<stem>.ids.npy`` ((h, w)
+    int32 index into ``instances`` of ``render.json``, -1 for sky and ground; indices
+    below ``len(house.objects)`` are the object's index in ``house.objects``).
+    ``render.json`` holds each image's camera (intrinsics, world-to-camera in the plan
+    frame, OpenGL convention) and the instance legend.
+
+    Parameters
+    ----------
+    house : the house to render
+    out_dir : folder to write into (created)
+    size_px : side of the square bird's-eye image
+    view_size_px : side of the square per-room views
+    views : render the per-room views
+    depth, ids : also write depth and instance maps
+    scene : the house's trimesh Scene; built with ``anyhome.export.glb.build_scene`` if None
+    supersample : anti-aliasing factor per axis (1 is fastest, without anti-aliasing)
+
+    Returns
+    -------
+    dict with ``files`` (list of Path), ``images`` (name -> camera record),
+    ``n_triangles`` and ``timings_s`` (scene, upload, birdseye, views, write, total).
+
+    Raises
+    ------
+    RenderError
+        if moderngl or a headless OpenGL context is missing, or a file cannot be written.
+    """
+    for name, value in (("size_px", size_px), ("view_size_px", view_size_px)):
+        if not isinstance(value, int) or value < 1:
+            raise RenderError(f"{name} must be a positive integer, got {value!r}")
+    import_moderngl()  # fail fast, before building the scene
+    t_start = time.perf_counter()
+    timings: dict[str, float] = {}
+    out = Path(out_dir)
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except OSError as e:
+        raise RenderError(f"could not create {out}: {e.strerror}") from None
+    t = time.perf_counter()
+    if scene is None:
+        from anyhome.export.glb import build_scene
+
+        scene = build_scene(house)
+    meshes = scene_meshes(house, scene)
+    timings["scene"] = time.perf_counter() - t
+    files: list[Path] = []
+    records: dict[str, Any] = {}
+    write_s = 0.0
+    t = time.perf_counter()
+    with Renderer(meshes, room_lights(house, meshes.fixtures), supersample) as renderer:
+        timings["upload"] = time.perf_counter() - t
+
+        def shoot(name: str, camera: Camera, ceilings: bool) -> float:
+            nonlocal write_s
+            t0 = time.perf_counter()
+            frame = renderer.render(camera, ceilings=ceilings, depth=depth, ids=ids)
+            t1 = time.perf_counter()
+            _write_frame(out, name, frame, files)
+            write_s += time.perf_counter() - t1
+            records[name] = {"file": f"{name}.png", **camera.to_record()}
+            return t1 - t0
+
+        timings["birdseye"] = shoot(BIRDSEYE_NAME, birdseye_camera(house, size_px), ceilings=False)
+        timings["views"] = 0.0
+        if views:
+            used: set[str] = set()
+            for room in house.rooms:
+                stem = _stem(room.id)
+                while stem in used:  # two ids that sanitize alike
+                    stem += "_"
+                used.add(stem)
+                name = f"{VIEWS_DIR}/{stem}"
+                camera = room_camera(house, room, view_size_px)
+                timings["views"] += shoot(name, camera, ceilings=True)
+                records[name]["room"] = room.id
+    timings["write"] = write_s
+    meta = {"frame": "plan (x east, y north, z up, meters); cameras look down -z, y up",
+            "depth": "meters along the optical axis; inf where nothing is drawn",
+            "instances": meshes.instances, "images": records}
+    t = time.perf_counter()
+    meta_path = out / META_FILE
+    write_bytes(meta_path, (json.dumps(meta, indent=1) + "\n").encode("utf-8"))
+    files.append(meta_path)
+    timings["write"] += time.perf_counter() - t
+    timings["total"] = time.perf_counter() - t_start
+    log.debug("rendered %d images in %.2f s", len(records), timings["total"])
+    return {"files": files, "images": records, "n_triangles": meshes.n_triangles, "timings_s": timings}
