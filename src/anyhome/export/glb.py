@@ -3,6 +3,12 @@
 The plan frame (x east, y north, z up) is turned into glTF's +Y-up frame by a single
 root node ``house`` whose matrix maps plan ``(x, y, z)`` to glTF ``(x, z, -y)``; every
 other node hangs under it with its transform in plan coordinates.
+
+Surfaces carry PBR materials with procedural textures (``anyhome.materials``): floors,
+walls and ceilings get planar UVs in meters / tile size; each object node holds one
+child node per material part (``object:<id>:<role>``). Ceilings stay their own nodes
+(category ``ceiling``) so a viewer can hide them. Texture size: ``texture_px``, else
+``$ANYHOME_TEXTURE_PX``, else 256.
 """
 
 from __future__ import annotations
@@ -11,15 +17,27 @@ import os
 from pathlib import Path
 
 import numpy as np
+import shapely
 import trimesh
 from shapely.geometry import Polygon
 
-from anyhome.assets import build_object_mesh, family_for
-from anyhome.assets.colors import material_color, to_rgba
+from anyhome.assets import FAMILIES, assign_asset, build_object_mesh, family_for
+from anyhome.assets.registry import SOURCE, object_rng
 from anyhome.errors import ExportError
+from anyhome.export.architecture import architecture_meshes
 from anyhome.export.output import write_file
 from anyhome.export.walls import WALL_THICKNESS_M, solid_blocks, wall_pieces
-from anyhome.house import House
+from anyhome.house import House, HouseObject, Room
+from anyhome.materials import (
+    MaterialSpec,
+    material_key,
+    object_parts,
+    pbr_material,
+    surface_material,
+    texture_size_px,
+)
+from anyhome.materials.gltf import embed_textures
+from anyhome.materials.uv import face_normals, textured_mesh
 
 FLOOR_THICKNESS_M = 0.05
 """Floor slabs run from z = -thickness to z = 0; ceilings from the room height up."""
@@ -28,18 +46,9 @@ PLAN_TO_GLTF = np.array(
     [[1.0, 0.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0], [0.0, -1.0, 0.0, 0.0], [0.0, 0.0, 0.0, 1.0]]
 )
 """Plan (x, y, z) -> glTF (x, z, -y)."""
-DEFAULT_COLORS = {"floor": "#a0714a", "walls": "#ece8e0", "ceiling": "#f6f4f0"}
-ROUGHNESS = {"floor": 0.6, "walls": 0.9, "ceiling": 0.95}
-
-
-def _material(kind: str, words: str) -> trimesh.visual.material.PBRMaterial:
-    color = material_color(words or "") or DEFAULT_COLORS[kind]
-    return trimesh.visual.material.PBRMaterial(
-        name=f"{kind}:{words or 'default'}",
-        baseColorFactor=to_rgba(color),
-        metallicFactor=0.0,
-        roughnessFactor=ROUGHNESS[kind],
-    )
+ROOM_PARTS: tuple[str, ...] = ("floor", "walls", "ceiling")
+WALL_PROBE_M = 0.03
+"""A wall face belongs to the room this far in front of it (see room_wall_meshes)."""
 
 
 def _slab(polygon, z0: float, z1: float) -> trimesh.Trimesh:
@@ -82,6 +91,36 @@ def wall_meshes(house: House, thickness: float = WALL_THICKNESS_M) -> dict[str, 
     return out
 
 
+def room_wall_meshes(house: House, thickness: float = WALL_THICKNESS_M) -> dict[str, trimesh.Trimesh]:
+    """Wall faces grouped by the room they face, so each side of a wall shared by two
+    rooms wears its own room's wall material.
+
+    An upright face belongs to the room a point ``WALL_PROBE_M`` in front of it lies in;
+    faces that face no room (outside faces, tops, the reveals of openings) stay with the
+    room that owns the wall piece (see :func:`wall_meshes`).
+    """
+    owned = wall_meshes(house, thickness)
+    index = {room.id: i for i, room in enumerate(house.rooms)}
+    parts = [(index[rid], m) for rid, m in owned.items() if rid in index]
+    if not parts:
+        return {}
+    corners = np.concatenate([np.asarray(m.vertices)[np.asarray(m.faces)] for _, m in parts])
+    room_of = np.concatenate([np.full(len(m.faces), i) for i, m in parts])
+    normals = face_normals(corners)
+    probe = corners.mean(axis=1)[:, :2] + normals[:, :2] * WALL_PROBE_M
+    upright = np.abs(normals[:, 2]) < 0.5
+    for i, room in enumerate(house.rooms):
+        poly = Polygon(room.polygon)
+        room_of[upright & shapely.contains_xy(poly, probe[:, 0], probe[:, 1])] = i
+    out = {}
+    for i, room in enumerate(house.rooms):
+        mine = corners[room_of == i]
+        if len(mine):
+            out[room.id] = trimesh.Trimesh(vertices=mine.reshape(-1, 3),
+                                           faces=np.arange(3 * len(mine)).reshape(-1, 3), process=False)
+    return out
+
+
 def object_transform(position, yaw: float) -> np.ndarray:
     """Local object frame -> plan frame."""
     m = trimesh.transformations.rotation_matrix(float(yaw), [0, 0, 1])
@@ -89,46 +128,105 @@ def object_transform(position, yaw: float) -> np.ndarray:
     return m
 
 
-def build_scene(house: House) -> trimesh.Scene:
-    """The house as a trimesh Scene (glTF frame via the root node)."""
-    scene = trimesh.Scene()
-    scene.graph.update(frame_from=scene.graph.base_frame, frame_to=ROOT_NODE, matrix=PLAN_TO_GLTF)
-    scene.metadata.update({"generator": "anyhome", "prompt": house.prompt, "seed": house.seed,
-                           "style": house.style, "up": "+Y", "units": "meters"})
-    walls = wall_meshes(house)
+class _SceneBuilder:
+    """Adds nodes under the root node and remembers every material spec used."""
 
-    def add(mesh: trimesh.Trimesh, name: str, meta: dict, transform=None) -> None:
+    def __init__(self, house: House, texture_px: int | None, textures: bool) -> None:
+        self.scene = trimesh.Scene()
+        self.scene.graph.update(frame_from=self.scene.graph.base_frame, frame_to=ROOT_NODE,
+                                matrix=PLAN_TO_GLTF)
+        self.scene.metadata.update({"generator": "anyhome", "prompt": house.prompt, "seed": house.seed,
+                                    "style": house.style, "up": "+Y", "units": "meters"})
+        self.px = texture_size_px(texture_px)
+        self.textures = textures
+        self.walls = room_wall_meshes(house)
+        self.specs: dict[str, MaterialSpec] = {}
+
+    def add(self, mesh: trimesh.Trimesh, name: str, meta: dict, transform=None,
+            parent: str = ROOT_NODE) -> None:
         mesh.metadata.update(meta)
-        scene.add_geometry(mesh, node_name=name, geom_name=name, parent_node_name=ROOT_NODE,
-                           transform=transform, metadata=dict(meta))
+        self.scene.add_geometry(mesh, node_name=name, geom_name=name, parent_node_name=parent,
+                                transform=transform, metadata=dict(meta))
 
-    for room in house.rooms:
+    def surface(self, mesh: trimesh.Trimesh, spec: MaterialSpec) -> trimesh.Trimesh:
+        self.specs[material_key(spec)] = spec
+        return textured_mesh(mesh.vertices, mesh.faces, pbr_material(spec, self.textures), spec.tile_m)
+
+    def room(self, room: Room) -> None:
         base = {"room": room.id, "room_name": room.name, "room_type": room.type}
-        floor = _slab(room.polygon, -FLOOR_THICKNESS_M, 0.0)
-        floor.visual = trimesh.visual.TextureVisuals(material=_material("floor", room.materials.get("floor", "")))
-        add(floor, f"room:{room.id}:floor", {**base, "name": f"{room.name} floor", "category": "floor"})
-        if room.id in walls:
-            w = walls[room.id]
-            w.visual = trimesh.visual.TextureVisuals(material=_material("walls", room.materials.get("walls", "")))
-            add(w, f"room:{room.id}:walls", {**base, "name": f"{room.name} walls", "category": "walls"})
-        ceil = _slab(room.polygon, room.height, room.height + FLOOR_THICKNESS_M)
-        ceil.visual = trimesh.visual.TextureVisuals(
-            material=_material("ceiling", room.materials.get("ceiling", "")))
-        add(ceil, f"room:{room.id}:ceiling", {**base, "name": f"{room.name} ceiling", "category": "ceiling"})
-    for obj in house.objects:
-        mesh = build_object_mesh(obj)
+        slabs = {"floor": _slab(room.polygon, -FLOOR_THICKNESS_M, 0.0),
+                 "ceiling": _slab(room.polygon, room.height, room.height + FLOOR_THICKNESS_M)}
+        for part in ROOM_PARTS:
+            mesh = slabs.get(part) if part != "walls" else self.walls.get(room.id)
+            if mesh is None:
+                continue
+            words = room.materials.get(part, "")
+            spec = surface_material(words, part, self.px)
+            meta = {**base, "name": f"{room.name} {part}", "category": part, "material": words,
+                    "texture": spec.kind}
+            self.add(self.surface(mesh, spec), f"room:{room.id}:{part}", meta)
+
+    def object(self, obj: HouseObject) -> None:
+        node = f"object:{obj.id}"
         meta = {"id": obj.id, "name": obj.name, "category": obj.category, "room": obj.room,
                 "support": obj.support, "material": obj.material,
                 "family": (obj.asset or {}).get("family") or family_for(obj.category, obj.name)}
-        add(mesh, f"object:{obj.id}", meta, object_transform(obj.position, obj.yaw))
-    return scene
+        self.scene.graph.update(frame_from=ROOT_NODE, frame_to=node,
+                                matrix=object_transform(obj.position, obj.yaw), metadata=dict(meta))
+        params = _asset_record(obj)["params"]
+        seen: dict[str, int] = {}
+        for part in object_parts(build_object_mesh(obj), params, obj.material, self.px, self.textures):
+            seen[part.role] = seen.get(part.role, 0) + 1
+            suffix = "" if seen[part.role] == 1 else f"-{seen[part.role]}"
+            self.specs[material_key(part.spec)] = part.spec
+            self.add(part.mesh, f"{node}:{part.role}{suffix}",
+                     {"object": obj.id, "room": obj.room, "category": obj.category,
+                      "role": part.role, "texture": part.spec.kind}, parent=node)
 
 
-def write_glb(house: House, path: str | os.PathLike[str]) -> Path:
-    """Write the house as a binary glTF (GLB) file atomically; return its path."""
+def _asset_record(obj: HouseObject) -> dict:
+    """The asset record ``build_object_mesh`` builds the object from (sampled from the
+    object id when the object has no usable record)."""
+    record = obj.asset
+    if not record or record.get("source") != SOURCE or record.get("family") not in FAMILIES:
+        record = assign_asset(obj, object_rng(obj), "")
+    return record
+
+
+def _build(house: House, texture_px: int | None, textures: bool
+           ) -> tuple[trimesh.Scene, dict[str, MaterialSpec]]:
+    b = _SceneBuilder(house, texture_px, textures)
+    for room in house.rooms:
+        b.room(room)
+    for obj in house.objects:
+        b.object(obj)
+    for name, mesh, meta in architecture_meshes(house):  # doors, windows, skirting, lights
+        b.add(mesh, name, meta)
+    return b.scene, b.specs
+
+
+def build_scene(house: House, texture_px: int | None = None) -> trimesh.Scene:
+    """The house as a trimesh Scene (glTF frame via the root node), with textured PBR
+    materials (PIL images on the materials).
+
+    Nodes: ``room:<id>:floor|walls|ceiling`` (one mesh each) and ``object:<id>`` (no
+    mesh; the object's transform and metadata) with one child per material part,
+    ``object:<id>:<role>`` (role primary, secondary, accent, glass..., a ``-2`` suffix
+    for repeats), in the object's local frame.
+    """
+    return _build(house, texture_px, textures=True)[0]
+
+
+def write_glb(house: House, path: str | os.PathLike[str], texture_px: int | None = None) -> Path:
+    """Write the house as a binary glTF (GLB) file atomically; return its path.
+
+    Texture images are encoded once per distinct image (base colour JPEG, maps PNG) and
+    shared by every material that uses them.
+    """
     path = Path(path)
     try:
-        data = build_scene(house).export(file_type="glb")
+        scene, specs = _build(house, texture_px, textures=False)
+        data = embed_textures(scene.export(file_type="glb"), specs)
     except Exception as e:  # trimesh raises many kinds
         raise ExportError(f"could not build the GLB for {path.name}: {e}") from e
     return write_file(path, data)

@@ -6,9 +6,10 @@ the room whose light reaches it and the instance it belongs to. Corners are grou
 into batches by layer (``"ceiling"`` or ``"main"``) and base-colour texture.
 
 Colour spaces: base-colour textures are sRGB (decoded in the shader, as glTF says).
-glTF also says ``baseColorFactor`` and vertex colours are linear, but AnyHome's
-exporters write sRGB values there (hex colours copied as they are); ``FACTORS_ARE_SRGB``
-decodes them so renders show the colours the house asked for.
+glTF says ``baseColorFactor`` and vertex colours are linear. The in-memory scene of
+:func:`anyhome.export.glb.build_scene` keeps AnyHome's sRGB values there (hex colours as
+they are; ``write_glb`` converts them to linear in the file, see
+:func:`anyhome.materials.gltf.linear_factors`), so ``FACTORS_ARE_SRGB`` decodes them here.
 
 Layers: ``"main"`` (opaque, always drawn), ``"ceiling"`` (ceilings and ceiling light
 fixtures, hidden from above) and ``"glass"`` (blended, drawn last, casts no shadow and

@@ -1,0 +1,209 @@
+"""Material words -> a material spec (texture kind, colour, roughness, metallic, scale).
+
+The knowledge lives in ``materials.yaml`` next to this module. A phrase is split into
+clauses ("oak and matte black metal" -> "oak", "matte black metal"); the first clause
+that names a material decides, and inside it the highest-ranked word wins, ties going
+to the last word (the head noun). The surface then adapts the kind (wood on a floor is
+planks) and per-surface overrides apply. Colours come from
+:func:`anyhome.assets.colors.material_color`, else the kind's default.
+
+>>> surface_material("dark walnut", "floor").kind
+'planks'
+"""
+
+from __future__ import annotations
+
+import os
+import re
+from dataclasses import dataclass, replace
+from functools import lru_cache
+from pathlib import Path
+from typing import Any
+
+from anyhome.assets.colors import material_color, shade, to_hex, to_rgba
+from anyhome.materials.textures import DEFAULT_SIZE_PX, GENERATORS, VARIANTS
+
+MATERIALS_FILE = Path(__file__).with_name("materials.yaml")
+SURFACES: tuple[str, ...] = ("floor", "walls", "ceiling", "furniture")
+UNTEXTURED: tuple[str, ...] = ("plain", "glass")
+"""Kinds drawn with constant factors only."""
+TEXTURE_PX_ENV = "ANYHOME_TEXTURE_PX"
+"""Environment variable that sets the texture size in texels (default 256)."""
+MIN_ROUGHNESS = 0.06
+"""Finish words never make a surface smoother than this."""
+_OVERRIDABLE = ("roughness", "metallic", "tile_m", "alpha", "color")
+_RANKS = {"patterns": 2, "materials": 1, "generic": 0}
+_CLAUSE_SPLIT = re.compile(r"\s*(?:,|;|/|\band\b|\bwith\b|\bon\b|\bin\b|\bover\b|\bplus\b)\s*")
+
+
+@dataclass(frozen=True)
+class MaterialSpec:
+    """How one surface looks; hashable, so equal specs share one texture set.
+
+    kind : a texture kind (``anyhome.materials.textures.kinds()``), or "plain" / "glass"
+    variant : the kind's pattern variant ("" for its default)
+    color : ``"#rrggbb"`` base colour
+    roughness, metallic : PBR factors in [0, 1]
+    tile_m : meters one texture repeat covers (UV = meters / tile_m)
+    alpha : opacity (< 1 is drawn blended)
+    size_px : texture size in texels
+    """
+
+    kind: str
+    variant: str = ""
+    color: str = "#b0aaa0"
+    roughness: float = 0.6
+    metallic: float = 0.0
+    tile_m: float = 1.0
+    alpha: float = 1.0
+    size_px: int = DEFAULT_SIZE_PX
+
+    @property
+    def textured(self) -> bool:
+        return self.kind in GENERATORS
+
+    @property
+    def name(self) -> str:
+        kind = f"{self.kind}/{self.variant}" if self.variant else self.kind
+        return f"{kind} {self.color}"
+
+
+@lru_cache(maxsize=1)
+def _data() -> dict[str, Any]:
+    import yaml
+
+    loader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
+    return yaml.load(MATERIALS_FILE.read_text(encoding="utf-8"), Loader=loader)
+
+
+@lru_cache(maxsize=1)
+def _lexicon() -> dict[str, tuple[int, dict[str, Any]]]:
+    """word or phrase -> (rank, entry)."""
+    out: dict[str, tuple[int, dict[str, Any]]] = {}
+    for group, rank in _RANKS.items():
+        for word, entry in (_data()["words"].get(group) or {}).items():
+            out[str(word)] = (rank, {"kind": entry} if isinstance(entry, str) else dict(entry))
+    return out
+
+
+def texture_size_px(size_px: int | None = None) -> int:
+    """The texture size to use: ``size_px``, else ``$ANYHOME_TEXTURE_PX``, else 256."""
+    if size_px is not None:
+        return int(size_px)
+    env = os.environ.get(TEXTURE_PX_ENV, "").strip()
+    return int(env) if env.isdigit() and int(env) >= 8 else DEFAULT_SIZE_PX
+
+
+def _words(text: str) -> list[str]:
+    return re.findall(r"[a-z]+", text.lower())
+
+
+def _match(clause: str) -> tuple[dict[str, Any], list[str]] | None:
+    """The winning entry of one clause and the clause's words, or None."""
+    lex = _lexicon()
+    words = _words(clause)
+    best: tuple[int, dict[str, Any]] | None = None
+    i = 0
+    while i < len(words):
+        pair = f"{words[i]} {words[i + 1]}" if i + 1 < len(words) else ""
+        key = pair if pair in lex else words[i] if words[i] in lex else None
+        if key is not None and (best is None or lex[key][0] >= best[0]):
+            best = lex[key]  # ties: the later word wins
+        i += 2 if pair and key == pair else 1
+    return None if best is None else (best[1], words)
+
+
+def clauses(words: str) -> list[str]:
+    """The clauses of a material phrase, in order."""
+    return [c for c in _CLAUSE_SPLIT.split(words.lower()) if c.strip()]
+
+
+def material_clauses(words: str) -> list[tuple[dict[str, Any], list[str]]]:
+    """(entry, words) for each clause of ``words`` that names a material, in order."""
+    return [m for c in clauses(words) if (m := _match(c)) is not None]
+
+
+def _kind_defaults(kind: str, variant: str) -> dict[str, Any]:
+    base = dict(_data()["kinds"][kind])
+    variants = base.pop("variants", {}) or {}
+    base.update(variants.get(variant, {}))
+    return base
+
+
+def _finish(words: list[str]) -> tuple[float, float]:
+    """(roughness shift, colour tone factor) named by finish and tone words."""
+    finish, tone = _data().get("finish") or {}, _data().get("tone") or {}
+    dr = sum(float(finish[w]) for w in words if w in finish)
+    factor = 1.0
+    for w in words:
+        if w in tone:
+            factor *= float(tone[w])
+    return dr, factor
+
+
+def spec_from_entry(entry: dict[str, Any], surface: str, words: list[str], color: str | None,
+                    size_px: int | None = None) -> MaterialSpec:
+    """Resolve a lexicon entry for a surface into a spec.
+
+    The kind first becomes the surface's kind (``surfaces.<surface>.becomes``), then the
+    entry's own override for the surface applies; kind defaults fill what is left.
+    """
+    if surface not in SURFACES:
+        raise ValueError(f"surface must be one of {', '.join(SURFACES)}, got {surface!r}")
+    own = entry.get(surface) or {}
+    kind = str(entry["kind"])
+    kind = str(own.get("kind", _data()["surfaces"][surface]["becomes"].get(kind, kind)))
+    variant = str(own.get("variant", entry.get("variant", "") if kind == entry["kind"] else ""))
+    if variant not in _known_variants(kind):
+        variant = ""
+    d = _kind_defaults(kind, variant)
+    d.update({k: v for k, v in {**entry, **own}.items() if k in _OVERRIDABLE})
+    dr, tone = _finish(words)
+    base = color or d.get("color", "#b0aaa0")
+    if tone != 1.0:
+        base = to_hex(shade(to_rgba(base)[:3].astype(float), tone))
+    return MaterialSpec(
+        kind=kind,
+        variant=variant,
+        color=str(base),
+        roughness=round(min(1.0, max(MIN_ROUGHNESS, float(d.get("roughness", 0.6)) + dr)), 3),
+        metallic=float(d.get("metallic", 0.0)),
+        tile_m=float(d.get("tile_m", 1.0)),
+        alpha=float(d.get("alpha", 1.0)),
+        size_px=texture_size_px(size_px),
+    )
+
+
+def _known_variants(kind: str) -> set[str]:
+    return set((_data()["kinds"].get(kind) or {}).get("variants", {}) or {}) | set(VARIANTS.get(kind, ()))
+
+
+def surface_material(words: str, surface: str, size_px: int | None = None,
+                     color: str | None = None) -> MaterialSpec:
+    """The material a surface made of ``words`` gets.
+
+    Parameters
+    ----------
+    words : material words ("dark walnut planks", "blue velvet"); may be empty
+    surface : "floor", "walls", "ceiling" or "furniture"
+    size_px : texture size (default: :func:`texture_size_px`)
+    color : base colour to use instead of the one the words name
+    """
+    if surface not in SURFACES:
+        raise ValueError(f"surface must be one of {', '.join(SURFACES)}, got {surface!r}")
+    words = words or ""
+    found = material_clauses(words)
+    if found:
+        entry, clause_words = found[0]
+    else:
+        default = _data()["surfaces"][surface]["default"] or ""
+        hit = material_clauses(default)
+        entry, clause_words = hit[0] if hit else ({"kind": "plain"}, [])
+        color = color or material_color(words) or material_color(default)
+    color = color or material_color(" ".join(clause_words)) or material_color(words)
+    return spec_from_entry(entry, surface, clause_words, color, size_px)
+
+
+def with_color(spec: MaterialSpec, color: str) -> MaterialSpec:
+    """The same material in another colour."""
+    return replace(spec, color=color)
