@@ -14,7 +14,7 @@ import trimesh
 
 from anyhome.errors import RenderError
 from anyhome.house import House
-from anyhome.render.cameras import Camera, birdseye_camera, room_camera
+from anyhome.render.cameras import Camera, birdseye_camera, door_leaf_boxes, room_camera
 from anyhome.render.gl import import_moderngl
 from anyhome.render.images import write_bytes, write_npy, write_png
 from anyhome.render.lights import room_lights
@@ -125,6 +125,7 @@ def render_house(
         timings["birdseye"] = shoot(BIRDSEYE_NAME, birdseye_camera(house, size_px), ceilings=False)
         timings["views"] = 0.0
         if views:
+            leaves = door_leaf_boxes(house)
             used: set[str] = set()
             for room in house.rooms:
                 stem = _stem(room.id)
@@ -132,7 +133,7 @@ def render_house(
                     stem += "_"
                 used.add(stem)
                 name = f"{VIEWS_DIR}/{stem}"
-                camera = room_camera(house, room, view_size_px)
+                camera = room_camera(house, room, view_size_px, leaves)
                 timings["views"] += shoot(name, camera, ceilings=True)
                 records[name]["room"] = room.id
     timings["write"] = write_s

@@ -10,7 +10,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from shapely.geometry import LineString, Point, Polygon
+from shapely.geometry import LineString, MultiPoint, Point, Polygon
 
 from anyhome.geometry import footprint_polygon
 from anyhome.house import House, Room
@@ -180,13 +180,28 @@ def _blockers(spot: np.ndarray, target: np.ndarray, boxes: list[tuple[Polygon, f
     return sum(1 for fp, _, z1 in boxes if z1 > BLOCKER_TOP_M and fp.intersects(cone))
 
 
-def room_camera(house: House, room: Room, size_px: int) -> Camera:
+def door_leaf_boxes(house: House) -> list[tuple[Polygon, float, float]]:
+    """Footprints and heights of the open door leaves (a camera must not stand in one)."""
+    from anyhome.export.architecture import architecture_meshes
+
+    out = []
+    for _, mesh, meta in architecture_meshes(house):
+        if meta.get("category") == "door_leaf":
+            v = np.asarray(mesh.vertices)
+            out.append((MultiPoint(v[:, :2]).convex_hull.buffer(0.05), float(v[:, 2].min()), float(v[:, 2].max())))
+    return out
+
+
+def room_camera(house: House, room: Room, size_px: int,
+                leaves: list[tuple[Polygon, float, float]] | None = None) -> Camera:
     """An eye-level camera standing near a corner or door of ``room``, looking across
-    the room towards the farthest visible corner (the longest diagonal)."""
+    the room towards the farthest visible corner (the longest diagonal); ``leaves``
+    (:func:`door_leaf_boxes`) keep it out of open doors."""
     poly = Polygon(room.polygon).buffer(0)
     inner = _inner(poly)
     boxes = [(footprint_polygon(o.position, o.size, o.yaw), o.position[2], o.position[2] + o.size[2])
              for o in house.objects_in(room.id)]
+    boxes += [b for b in (leaves or []) if b[0].intersects(poly)]
     corners = [np.asarray(p, dtype=float) for p in room.polygon]
     sight = poly.buffer(0.01)
     best, best_score = None, -np.inf
