@@ -2,7 +2,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from conftest import read_png
+from render_png import read_png
 
 from anyhome.errors import RenderError
 from anyhome.render.images import encode_png, write_npy, write_png

@@ -7,7 +7,7 @@ import sys
 import numpy as np
 import pytest
 import shapely
-from conftest import SIZE_PX, VIEW_PX, read_png
+from render_png import SIZE_PX, VIEW_PX, read_png
 from shapely.ops import unary_union
 
 from anyhome.errors import RenderError

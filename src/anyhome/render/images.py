@@ -11,7 +11,7 @@ from pathlib import Path
 import numpy as np
 
 from anyhome.errors import RenderError
-from anyhome.house import atomic_write_bytes
+from anyhome.export.output import write_file
 
 PNG_COMPRESSION = 6
 """zlib level of the PNG data."""
@@ -49,12 +49,7 @@ def encode_png(image: np.ndarray) -> bytes:
 
 def write_bytes(path: Path, data: bytes) -> Path:
     """Write ``data`` to ``path`` atomically (creating its folder); RenderError on failure."""
-    try:
-        path.parent.mkdir(parents=True, exist_ok=True)
-        atomic_write_bytes(path, data)
-    except OSError as e:
-        raise RenderError(f"could not write {path}: {e.strerror}") from None
-    return path
+    return write_file(path, data, error=RenderError)
 
 
 def write_png(path: Path, image: np.ndarray) -> Path:
