@@ -1,6 +1,7 @@
 from __future__ import annotations
 
 import json
+import os
 
 import pytest
 from render_png import SIZE_PX, VIEW_PX
@@ -33,13 +34,17 @@ def small_house():
 
 @pytest.fixture(scope="session")
 def gl_available() -> None:
-    """Skip when moderngl or a headless EGL context is missing."""
-    pytest.importorskip("moderngl")
+    """Skip when moderngl or a headless EGL context is missing, except under CI (``CI``
+    set, as .ci/run does), where the renders must run and a missing renderer fails."""
+    if not os.environ.get("CI"):
+        pytest.importorskip("moderngl")
     from anyhome.render.gl import create_context
 
     try:
         ctx = create_context()
     except RenderError as e:
+        if os.environ.get("CI"):
+            raise
         pytest.skip(str(e))
     ctx.release()
 

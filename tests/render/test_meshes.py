@@ -44,7 +44,7 @@ def test_appearance_of_vertex_colours_and_textures() -> None:
     look = corner_appearance(box)
     assert look.color.shape == (len(box.faces) * 3, 4)
     assert np.allclose(look.color[0], [1.0, 0.0, 0.0, 1.0])
-    PIL = pytest.importorskip("PIL.Image")
+    import PIL.Image as PIL  # noqa: N814
     img = PIL.new("RGB", (4, 4), (0, 128, 0))
     mat = trimesh.visual.material.PBRMaterial(baseColorTexture=img, baseColorFactor=[255, 255, 255, 128],
                                               roughnessFactor=0.3, alphaMode="BLEND")
@@ -62,7 +62,8 @@ def test_srgb_to_linear_endpoints() -> None:
 
 def test_textured_floor_is_drawn_with_its_texture(gl_available) -> None:
     """A floor with a red texture (white factor) renders red from above."""
-    PIL = pytest.importorskip("PIL.Image")
+    import PIL.Image as PIL  # noqa: N814
+
     from anyhome.render import Renderer, birdseye_camera
     from anyhome.render.lights import room_lights
 
