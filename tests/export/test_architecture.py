@@ -110,13 +110,18 @@ def test_meshes_small_finite_closed(generated) -> None:
         assert isinstance(mesh.visual.material, trimesh.visual.material.PBRMaterial), name
 
 
-def test_leaves_inside_their_rooms_and_out_of_walls(generated) -> None:
+
+def _leaves(generated):
+    """(door, leaf mesh, leaf metadata, leaf footprint) for every door that has a leaf."""
     house, pieces = generated
     for door in house.doors:
-        if door.kind != "door":
-            continue
-        mesh, meta = pieces[f"door:{door.id}:leaf"]
-        leaf = _hull2d(mesh.vertices[:, :2])
+        if door.kind == "door":
+            mesh, meta = pieces[f"door:{door.id}:leaf"]
+            yield door, mesh, meta, _hull2d(mesh.vertices[:, :2])
+
+def test_leaves_inside_their_rooms_and_out_of_walls(generated) -> None:
+    house, _ = generated
+    for door, mesh, meta, leaf in _leaves(generated):
         rooms = [house.room(r) for r in door.rooms if r != OUTSIDE]
         union = unary_union([Polygon(r.polygon) for r in rooms]).buffer(WALL_THICKNESS_M)
         assert union.contains(leaf), door.id
@@ -139,12 +144,8 @@ def test_leaves_inside_their_rooms_and_out_of_walls(generated) -> None:
 
 def test_leaves_keep_the_way_clear(generated) -> None:
     """An open leaf may not cut its room's walkway in two."""
-    house, pieces = generated
-    for door in house.doors:
-        if door.kind != "door":
-            continue
-        mesh, meta = pieces[f"door:{door.id}:leaf"]
-        leaf = _hull2d(mesh.vertices[:, :2])
+    house, _ = generated
+    for door, mesh, meta, leaf in _leaves(generated):
         inner = Polygon(house.room(meta["swing_room"]).polygon).buffer(-WALL_THICKNESS_M / 2, join_style="mitre")
         walk = inner.buffer(-arch.LEAF_WALKWAY_M / 2, join_style="mitre")
         cut = walk.difference(leaf.buffer(arch.LEAF_WALKWAY_M / 2))
