@@ -65,10 +65,11 @@ def cmd_generate(args: argparse.Namespace) -> int:
 
         os.environ[ENV_BACKEND] = args.embedder
         get_embedder()  # fails early, with one line, on an unknown or missing backend
+    planner = _planner(args)
     t0 = time.perf_counter()
     progress = _StageProgress(not args.quiet)
     try:
-        house = generate(args.text, seed=args.seed, planner=args.planner, progress=progress)
+        house = generate(args.text, seed=args.seed, planner=planner, progress=progress)
     finally:
         progress.close()
     timings = dict(house.timings_s)
@@ -93,10 +94,54 @@ def cmd_generate(args: argparse.Namespace) -> int:
             "out": str(out), "files": [str(f) for f in files], "rooms": len(house.rooms),
             "objects": len(house.objects), "dropped": len(house.dropped),
             "warnings": house.warnings, "timings_s": timings, "total_s": total,
+            **({"llm": _llm_usage(planner, house)} if args.planner == "llm" else {}),
         }))
     else:
         _print_summary(house, files, timings, total)
+        if args.planner == "llm":
+            _print_llm(_llm_usage(planner, house))
     return 0
+
+
+def _planner(args: argparse.Namespace):
+    """The planner object of ``generate``; the LLM one from options, env and config file."""
+    from anyhome.plan import PLANNERS, get_planner
+
+    if args.planner not in PLANNERS:
+        get_planner(args.planner)  # raises the one-line error
+    if args.planner != "llm":
+        return get_planner(args.planner)
+    from anyhome.plan.llm import LLMPlanner, load_config
+
+    options = {
+        "base_url": args.llm_base_url, "model": args.llm_model, "temperature": args.llm_temperature,
+        "top_p": args.llm_top_p, "max_tokens": args.llm_max_tokens, "timeout_s": args.llm_timeout,
+        "concurrency": args.llm_concurrency, **({"cache": False} if args.no_cache else {}),
+    }  # fmt: skip
+    return LLMPlanner(load_config(options, config_file=args.config))
+
+
+def _llm_usage(planner, house) -> dict:
+    """What the LLM planner did in this run: made calls and cache hits (not in house.json,
+    where a rerun from the cache must write the same file), and the plan's totals."""
+    usage = planner.client.usage if planner.client is not None else None
+    prov = house.provenance or {}
+    return {
+        "model": prov.get("llm", {}).get("model"), "base_url": prov.get("llm", {}).get("base_url"),
+        "calls": usage.calls if usage else 0, "cache_hits": usage.cache_hits if usage else 0,
+        "prompt_tokens": usage.prompt_tokens if usage else 0, "completion_tokens": usage.completion_tokens if usage else 0,
+        "call_latency_s": round(usage.latency_s, 3) if usage else 0.0,
+        "stages": {s["stage"]: s["source"] for s in prov.get("stages", [])},
+    }  # fmt: skip
+
+
+def _print_llm(u: dict) -> None:
+    sources = Counter(u["stages"].values())
+    fell = [k for k, v in u["stages"].items() if v == "offline"]
+    print(f"LLM: {u['model']} at {u['base_url']}: {u['calls']} calls, {u['cache_hits']} from the cache, "
+          f"{u['prompt_tokens']} + {u['completion_tokens']} tokens, {u['call_latency_s']:.1f} s in calls")
+    print(f"  stages: {sources['llm']} from the LLM, {sources['llm_repaired']} repaired, {sources['offline']} from the offline planner"
+          + (f" ({', '.join(fell[:6])}{', ...' if len(fell) > 6 else ''})" if fell else ""))
 
 
 def _print_summary(house, files, timings: dict[str, float], total: float) -> None:
@@ -231,7 +276,19 @@ def build_parser() -> argparse.ArgumentParser:
     g.add_argument("text", help="the description, in quotes")
     g.add_argument("--seed", type=int, default=0, help="random seed (default 0)")
     g.add_argument("--out", default="out/house", help="output folder (default out/house)")
-    g.add_argument("--planner", default="offline", help="planner: offline (default)")
+    g.add_argument("--planner", default="offline", help="planner: offline (default) or llm")
+    llm = g.add_argument_group(
+        "LLM planner (--planner llm; also from ANYHOME_LLM_* variables and the config file)"
+    )
+    llm.add_argument("--llm-base-url", help="OpenAI-compatible endpoint (default http://127.0.0.1:8080/v1)")
+    llm.add_argument("--llm-model", help="model name (default: the first the server lists)")
+    llm.add_argument("--llm-temperature", type=float, help="sampling temperature (default 0.7)")
+    llm.add_argument("--llm-top-p", type=float, help="nucleus sampling top-p (default 1.0)")
+    llm.add_argument("--llm-max-tokens", type=int, help="most tokens per reply (default 1024)")
+    llm.add_argument("--llm-timeout", type=float, help="seconds per request before falling back (default 180)")
+    llm.add_argument("--llm-concurrency", type=int, help="per-room requests in flight (default 2)")
+    llm.add_argument("--no-cache", action="store_true", help="ask the model again instead of reusing cached replies")
+    llm.add_argument("--config", help="TOML config file with an [llm] table (default ~/.config/anyhome/config.toml)")
     g.add_argument(
         "--embedder",
         help="text-embedding backend for unknown words: hybrid (default), static, minilm, lexical "

@@ -34,3 +34,10 @@ class EvalError(AnyHomeError):
 
 class RenderError(AnyHomeError):
     """Images could not be rendered (renderer missing, no OpenGL context, bad camera...)."""
+
+
+class LLMError(PlanError):
+    """The LLM planner is misconfigured (bad base URL, bad config file, no openai client).
+
+    A server that is down, slow or answers nonsense is *not* an error: the offline planner
+    fills the stages it could not plan, with a warning."""

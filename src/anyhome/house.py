@@ -163,6 +163,7 @@ class House(_Model):
     dropped: list[Dropped] = Field(default_factory=list)
     warnings: list[str] = Field(default_factory=list)
     plan: dict[str, Any] | None = Field(default=None, description="the HouseSpec it came from")
+    provenance: dict[str, Any] | None = Field(default=None, description="how the plan was made (LLM stages, tokens, latency)")
 
     _timings_s: dict[str, float] = PrivateAttr(default_factory=dict)
 

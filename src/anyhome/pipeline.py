@@ -15,11 +15,15 @@ import time
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from anyhome.errors import AnyHomeError, ExportError
 from anyhome.house import HOUSE_FILE, House
+
+if TYPE_CHECKING:
+    from anyhome.plan import Planner
 
 log = logging.getLogger(__name__)
 
@@ -48,7 +52,7 @@ def _stage(name: str, timings: dict[str, float], progress: Progress) -> Iterator
 def generate(
     text: str,
     seed: int = 0,
-    planner: str = "offline",
+    planner: str | Planner = "offline",
     progress: Progress | None = None,
 ) -> House:
     """Generate a house from text.
@@ -57,7 +61,8 @@ def generate(
     ----------
     text : the description, free-form
     seed : reproduces the house with the same text and planner
-    planner : "offline" (default, embedded) or another registered planner
+    planner : "offline" (default, embedded), "llm" (configured from the environment and
+        the config file, see anyhome.plan.llm.config), or a Planner instance
     progress : optional callback, see :data:`Progress`
 
     Returns
@@ -67,7 +72,7 @@ def generate(
     from anyhome.assets import assign_asset
     from anyhome.floorplan import solve_floorplan
     from anyhome.layout import layout_house
-    from anyhome.plan import plan_house
+    from anyhome.plan import get_planner
     from anyhome.refine import refine_objects
 
     progress = progress or _quiet
@@ -77,8 +82,9 @@ def generate(
         zip(STAGES, (np.random.default_rng(s) for s in np.random.SeedSequence(int(seed)).spawn(5)))
     )
     timings: dict[str, float] = {}
+    planner = get_planner(planner) if isinstance(planner, str) else planner
     with _stage("plan", timings, progress):
-        spec = plan_house(text, rngs["plan"], planner)
+        spec = planner.plan(text, rngs["plan"])
     with _stage("floorplan", timings, progress):
         floorplan = solve_floorplan(spec, rngs["floorplan"])
     with _stage("layout", timings, progress):
@@ -94,7 +100,7 @@ def generate(
         style=spec.style,
         building=spec.building,
         palette=spec.palette,
-        planner=planner,
+        planner=planner.name,
         rooms=floorplan.rooms,
         connections=floorplan.connections,
         doors=floorplan.doors,
@@ -102,7 +108,8 @@ def generate(
         objects=objects,
         dropped=result.dropped,
         warnings=spec.warnings,
-        plan=spec.model_dump(mode="json"),
+        plan=spec.model_dump(mode="json", exclude={"provenance"}),
+        provenance=spec.provenance,
     )
     house._timings_s.update(timings)
     return house

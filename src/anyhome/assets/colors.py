@@ -16,13 +16,13 @@ _COLORS_FILE = Path(__file__).with_name("colors.yaml")
 
 
 @lru_cache(maxsize=1)
-def _tables() -> tuple[dict[str, tuple[int, int, int]], dict[str, tuple[int, int, int]], dict[str, float]]:
+def _tables() -> tuple[dict[str, tuple[int, int, int]], dict[str, tuple[int, int, int]], dict[str, float], dict[str, float]]:
     import yaml
 
     data = yaml.safe_load(_COLORS_FILE.read_text(encoding="utf-8"))
     colors = {k: tuple(v) for k, v in data["colors"].items()}
     materials = {k: tuple(v) for k, v in data["materials"].items()}
-    return colors, materials, dict(data["modifiers"])
+    return colors, materials, dict(data["modifiers"]), dict(data.get("muting") or {})
 
 
 def _words(text: str) -> list[str]:
@@ -33,12 +33,13 @@ def material_color(text: str) -> str | None:
     """Base colour named by a material phrase, or None if it names none.
 
     Colour words win over material words ("pink velvet" is pink); a two-word material
-    ("white oak") wins over its parts; the modifier right before the match shades it.
+    ("white oak") wins over its parts; the modifiers right before the match shade it
+    ("dark") or mute it ("faded": greyer).
 
     >>> material_color("dark walnut")
     '#392518'
     """
-    colors, materials, modifiers = _tables()
+    colors, materials, modifiers, muting = _tables()
     words = _words(text)
     found: tuple[int, int, int] | None = None
     at = -1
@@ -63,7 +64,16 @@ def material_color(text: str) -> str | None:
     for w in words[max(0, at - 2) : at]:
         if w in modifiers:
             rgb = shade(rgb, modifiers[w])
+        elif w in muting:
+            rgb = desaturate(rgb, muting[w])
     return to_hex(rgb)
+
+
+def desaturate(rgb: np.ndarray, keep: float) -> np.ndarray:
+    """Move an RGB triple towards its own grey (luma), keeping ``keep`` of the colour."""
+    rgb = np.asarray(rgb, dtype=float)
+    grey = float(rgb @ np.array([0.299, 0.587, 0.114]))
+    return grey + (rgb - grey) * keep
 
 
 def shade(rgb: np.ndarray, factor: float) -> np.ndarray:

@@ -20,12 +20,20 @@ class Planner(Protocol):
     def plan(self, text: str, rng: np.random.Generator) -> HouseSpec: ...
 
 
+PLANNERS = ("offline", "llm")
+
+
 def get_planner(name: str = "offline") -> Planner:
+    """A planner by name; "llm" takes its settings from the environment and config file."""
     if name == "offline":
         from anyhome.plan.offline import OfflinePlanner
 
         return OfflinePlanner()
-    raise PlanError(f"unknown planner {name!r} (available: offline)")
+    if name == "llm":
+        from anyhome.plan.llm import LLMPlanner, load_config
+
+        return LLMPlanner(load_config())
+    raise PlanError(f"unknown planner {name!r} (available: {', '.join(PLANNERS)})")
 
 
 def plan_house(text: str, rng: np.random.Generator, planner: str = "offline") -> HouseSpec:

@@ -199,3 +199,40 @@ def _item(it: fu.Item, look: Look, furniture: str, rng: np.random.Generator) -> 
     if not data.get("material"):
         data["material"] = item_material(data["category"], look, furniture, rng)
     return ItemSpec(**data)
+
+
+# ---------------------------------------------------------------- stage fallbacks
+# The LLM planner asks a model for each stage and falls back to these for a stage the
+# model could not plan: the look of the house, and the furniture of one room.
+
+
+def offline_look(text: str, rng: np.random.Generator) -> Look:
+    """The style, palette and materials the offline planner reads from ``text``."""
+    parsed = parse(text)
+    program, implied = choose_program(parsed)
+    prog = load("programs")["programs"].get(program or "", {})
+    return choose_look(parsed, implied, parsed.building_word or prog.get("building") or "home", rng)
+
+
+def furnish_key(name: str, room_type: str) -> str:
+    """The furnishing set of a room known by name: the knowledge base's own entry, else
+    the nearest set by meaning, else the room type's set."""
+    info = load("rooms")["names"].get(name.strip().lower())
+    if info:
+        return str(info.get("furnish", info["type"]))
+    from anyhome.plan.openvocab import map_room
+
+    match = map_room(name)
+    return match.key if match is not None else room_type
+
+
+def fallback_room(name: str, room_type: str, area_m2: float, room_id: str, look: Look, rng: np.random.Generator) -> RoomSpec:
+    """A room of the given name, type and area, furnished and dressed offline."""
+    slot = Slot(name, room_type, furnish_key(name, room_type), (area_m2, area_m2), id=room_id, area=area_m2)
+    groups, ornaments, _ = fu.furnish_room(slot.furnish, room_type, area_m2, rng)
+    return _room_spec(slot, groups, fu.finalize_ornaments(groups, ornaments), look, rng)
+
+
+def item_spec(data: dict[str, Any], look: Look, rng: np.random.Generator) -> ItemSpec:
+    """An item with the look's material when it names none."""
+    return _item(data, look, look.furniture, rng)

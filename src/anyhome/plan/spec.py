@@ -148,6 +148,9 @@ class HouseSpec(_Model):
         description="bubble-diagram edges; (room_id, 'outside') marks the entrance room",
     )
     warnings: list[str] = Field(default_factory=list)
+    provenance: dict[str, Any] | None = Field(
+        default=None, description="where each stage came from (the LLM planner: stages, tokens, latency)"
+    )
 
     @model_validator(mode="after")
     def _check_graph(self) -> HouseSpec:

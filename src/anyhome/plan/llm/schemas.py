@@ -1,0 +1,166 @@
+"""What each LLM stage must reply: pydantic models and the JSON Schema sent to the server.
+
+The schemas are strict-mode compatible (every property required, no extra properties,
+no ``$ref``: definitions are inlined so every server's grammar converter reads them) and
+every array is bounded (``maxItems``), so a small model cannot loop.
+"""
+
+from __future__ import annotations
+
+import copy
+from functools import lru_cache
+from typing import Annotated, Any, Literal
+
+from pydantic import BaseModel, ConfigDict, Field
+
+from anyhome.house import ROOM_TYPES
+from anyhome.plan.spec import MAX_COUNT, MAX_ROOMS, RELATIVE_RULES, RULES
+
+MAX_GROUPS = 5
+"""Most furniture groups one room reply may hold."""
+MAX_MEMBERS = 3
+MAX_ORNAMENTS = 8
+MAX_PALETTE = 6
+MAX_CONNECTIONS = 2 * MAX_ROOMS
+MAX_ITEM_COUNT = 40
+NAME_CHARS = 60
+WORDS_CHARS = 80
+
+RoomType = Literal[tuple(ROOM_TYPES)]  # type: ignore[valid-type]
+RuleName = Literal[tuple(RULES)]  # type: ignore[valid-type]
+AnchorRule = Literal[tuple(r for r in RULES if r not in RELATIVE_RULES)]  # type: ignore[valid-type]
+OrnamentRule = Literal["place_top", "place_on_wall"]
+ArrangementName = Literal["free", "rows", "along_walls", "center", "symmetric"]
+Name = Annotated[str, Field(min_length=1, max_length=NAME_CHARS)]
+Words = Annotated[str, Field(min_length=1, max_length=WORDS_CHARS)]
+RoomId = Annotated[str, Field(pattern=r"^[a-z][a-z0-9_]{0,31}$")]
+Size3 = Annotated[list[float], Field(min_length=3, max_length=3)]
+
+
+class _Reply(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+
+
+class RoomReply(_Reply):
+    id: RoomId
+    name: Name
+    type: RoomType
+    area_m2: float
+
+
+class ProgramReply(_Reply):
+    """Stage 1: the house program and its bubble diagram."""
+
+    building: Name
+    rooms: Annotated[list[RoomReply], Field(min_length=1, max_length=MAX_ROOMS)]
+    connections: Annotated[list[Annotated[list[str], Field(min_length=2, max_length=2)]], Field(max_length=MAX_CONNECTIONS)]
+    entrance: str
+
+
+class ItemReply(_Reply):
+    name: Name
+    category: Name
+    size_m: Size3
+    rule: RuleName
+    target: Annotated[str, Field(max_length=NAME_CHARS)]
+    count: Annotated[int, Field(ge=1, le=MAX_ITEM_COUNT)]
+
+
+class AnchorReply(ItemReply):
+    rule: AnchorRule  # an anchor is placed by an absolute rule
+
+
+class GroupReply(_Reply):
+    name: Name
+    anchor: AnchorReply
+    members: Annotated[list[ItemReply], Field(max_length=MAX_MEMBERS)]
+    arrangement: ArrangementName
+    repeat: Annotated[int, Field(ge=1, le=MAX_COUNT)]
+
+
+class FurnitureReply(_Reply):
+    """Stage 2, per room: furniture groups (anchor, members, rules, sizes in meters)."""
+
+    groups: Annotated[list[GroupReply], Field(min_length=1, max_length=MAX_GROUPS)]
+
+
+class OrnamentReply(_Reply):
+    name: Name
+    category: Name
+    size_m: Size3
+    rule: OrnamentRule
+    target: Annotated[str, Field(max_length=NAME_CHARS)]
+    count: Annotated[int, Field(ge=1, le=MAX_ITEM_COUNT)]
+
+
+class OrnamentsReply(_Reply):
+    """Stage 3, per room: small objects on furniture and on the walls."""
+
+    ornaments: Annotated[list[OrnamentReply], Field(max_length=MAX_ORNAMENTS)]
+
+
+class RoomLookReply(_Reply):
+    id: RoomId
+    floor: Words
+    walls: Words
+    ceiling: Words
+
+
+class AppearanceReply(_Reply):
+    """Stage 4: style, palette and the material words of every surface."""
+
+    style: Words
+    palette: Annotated[list[Words], Field(min_length=1, max_length=MAX_PALETTE)]
+    furniture: Words
+    rooms: Annotated[list[RoomLookReply], Field(max_length=MAX_ROOMS)]
+
+
+STAGES: dict[str, type[_Reply]] = {
+    "program": ProgramReply,
+    "furniture": FurnitureReply,
+    "ornaments": OrnamentsReply,
+    "appearance": AppearanceReply,
+}
+
+
+def _inline(node: Any, defs: dict[str, Any]) -> Any:
+    if isinstance(node, dict):
+        if "$ref" in node:
+            return _inline(copy.deepcopy(defs[node["$ref"].rsplit("/", 1)[-1]]), defs)
+        return {k: _inline(v, defs) for k, v in node.items() if k not in ("title", "$defs")}
+    if isinstance(node, list):
+        return [_inline(v, defs) for v in node]
+    return node
+
+
+def _strict(node: Any) -> Any:
+    """Every object closed and every property required, as strict structured output wants."""
+    if isinstance(node, dict):
+        node = {k: _strict(v) for k, v in node.items()}
+        if node.get("type") == "object" and "properties" in node:
+            node["additionalProperties"] = False
+            node["required"] = list(node["properties"])
+        return node
+    if isinstance(node, list):
+        return [_strict(v) for v in node]
+    return node
+
+
+@lru_cache(maxsize=None)
+def _schema(stage: str) -> dict[str, Any]:
+    raw = STAGES[stage].model_json_schema()
+    return _strict(_inline(raw, raw.get("$defs", {})))
+
+
+def json_schema(stage: str, room_ids: list[str] | None = None, targets: list[str] | None = None) -> dict[str, Any]:
+    """The self-contained JSON Schema of a stage's reply (a fresh copy).
+
+    What the request already knows narrows it, so a server that enforces schemas cannot
+    produce a wrong reference: ``room_ids`` (appearance) the ids a room entry may name,
+    ``targets`` (ornaments) the furniture an ornament may stand on or hang above."""
+    schema = copy.deepcopy(_schema(stage))
+    if stage == "appearance" and room_ids:
+        schema["properties"]["rooms"]["items"]["properties"]["id"] = {"type": "string", "enum": list(room_ids)}
+    if stage == "ornaments" and targets is not None:
+        schema["properties"]["ornaments"]["items"]["properties"]["target"] = {"type": "string", "enum": ["", *targets]}
+    return schema

@@ -1,0 +1,49 @@
+import json
+from pathlib import Path
+
+from anyhome.plan.llm.cache import ReplyCache, request_key
+
+MSGS = [{"role": "user", "content": "hi"}]
+
+
+def test_key_changes_with_every_input() -> None:
+    base = request_key("http://a/v1", "m", MSGS, {"type": "object"}, {"temperature": 0.7})
+    assert base == request_key("http://a/v1/", "m", MSGS, {"type": "object"}, {"temperature": 0.7})
+    others = [
+        request_key("http://b/v1", "m", MSGS, {"type": "object"}, {"temperature": 0.7}),
+        request_key("http://a/v1", "m2", MSGS, {"type": "object"}, {"temperature": 0.7}),
+        request_key("http://a/v1", "m", [{"role": "user", "content": "ho"}], {"type": "object"}, {"temperature": 0.7}),
+        request_key("http://a/v1", "m", MSGS, {"type": "array"}, {"temperature": 0.7}),
+        request_key("http://a/v1", "m", MSGS, {"type": "object"}, {"temperature": 0.2}),
+    ]
+    assert len({base, *others}) == 6
+
+
+def test_put_get_roundtrip_and_disabled(tmp_path: Path) -> None:
+    c = ReplyCache(tmp_path)
+    assert c.get("ab" * 32) is None
+    c.put("ab" * 32, {"content": "{}", "prompt_tokens": 3})
+    assert c.get("ab" * 32)["prompt_tokens"] == 3
+    assert (tmp_path / "ab" / f"{'ab' * 32}.json").is_file()
+    off = ReplyCache(tmp_path, enabled=False)
+    assert off.get("ab" * 32) is None
+    off.put("cd" * 32, {"content": "{}"})
+    assert not (tmp_path / "cd").exists()
+
+
+def test_damaged_entry_is_a_miss(tmp_path: Path) -> None:
+    c = ReplyCache(tmp_path)
+    key = "ef" * 32
+    (tmp_path / "ef").mkdir()
+    (tmp_path / "ef" / f"{key}.json").write_text("{not json", encoding="utf-8")
+    assert c.get(key) is None
+    (tmp_path / "ef" / f"{key}.json").write_text(json.dumps({"content": 3}), encoding="utf-8")
+    assert c.get(key) is None
+
+
+def test_server_notes_merge_and_persist(tmp_path: Path) -> None:
+    c = ReplyCache(tmp_path)
+    c.remember_server("http://a/v1/", mode="json_object_schema")
+    c.remember_server("http://a/v1", model="smol")
+    assert ReplyCache(tmp_path).server_note("http://a/v1") == {"mode": "json_object_schema", "model": "smol"}
+    assert c.server_note("http://other/v1") == {}
