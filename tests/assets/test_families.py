@@ -112,7 +112,7 @@ def test_resized_object_still_fits() -> None:
         ("bench", "pews", "pew"),
         ("weight_bench", "bench", "weight_bench"),
         ("box", "chest", "box"),
-        ("lamp", "stage light", "lamp"),
+        ("lamp", "stage light", "stage_light"),
         ("exercise_bike", "spin bike", "exercise_bike"),
         ("motorcycle", "", "bicycle"),
         ("dog_crate", "", "kennel"),

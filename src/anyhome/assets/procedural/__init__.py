@@ -4,5 +4,7 @@ Each module registers its families with :mod:`anyhome.assets.registry` on import
 the registry imports the modules named in ``MODULES`` the first time it is asked.
 """
 
-MODULES = ("beds", "care_shop", "curios", "decor", "fixtures", "games", "kitchen_bath", "misc", "outdoor",
-           "performance", "pets", "seating", "storage", "tables", "vehicles", "worship")
+MODULES = ("appliances", "beds", "booths", "care_shop", "clinic", "crafts", "curios", "decor", "exhibits",
+           "fixtures", "games", "industry", "instruments", "kitchen_bath", "machines", "misc", "outdoor",
+           "performance", "pets", "play", "seating", "storage", "tables", "training", "utility", "vehicles",
+           "worship", "yard")
