@@ -69,7 +69,9 @@ def test_server_down_gives_the_offline_house_with_warnings(closed_port_url, tmp_
 def test_no_model_and_no_server_plans_offline(closed_port_url, tmp_path: Path) -> None:
     planner = LLMPlanner(LLMConfig(base_url=closed_port_url, cache_dir=tmp_path))
     spec = planner.plan(CAT, np.random.default_rng(0))
-    assert spec.provenance["totals"]["stages_from_offline"] == "all"
+    stages = spec.provenance["stages"]
+    assert spec.provenance["totals"]["stages_from_offline"] == len(stages) == 2 + 2 * len(spec.rooms)
+    assert all("unreachable" in s["errors"][0] and s["requests"] == 0 for s in stages)
     assert any("planned the whole house" in w for w in spec.warnings)
 
 

@@ -140,7 +140,7 @@ class LLMClient:
         if self._model:
             return self._model
         note = self.cache.server_note(self.config.base_url)
-        if self.config.cache and note.get("model"):
+        if note.get("model"):
             self._model = str(note["model"])
             return self._model
         try:

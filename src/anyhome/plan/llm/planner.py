@@ -155,9 +155,10 @@ class LLMPlanner:
         try:
             model_name = self.client.model()
         except Unavailable as e:
-            model_name = self.config.model or ""
             warnings.append(f"LLM: {e}; the offline planner planned the whole house")
-            return self._finish(offline, offline.warnings + warnings, records, model_name, all_offline=True)
+            labels = ["program", *(f"furniture:{r.id}" for r in offline.rooms), "appearance", *(f"ornaments:{r.id}" for r in offline.rooms)]
+            records = [StageRecord(label, errors=[str(e)]) for label in labels]
+            return self._finish(offline, offline.warnings + warnings, records, self.config.model or "")
 
         # 1. program and bubble diagram
         types = ", ".join(ROOM_TYPES)
@@ -231,7 +232,7 @@ class LLMPlanner:
         warnings.extend(w for ws in per_job for w in ws)
         return results
 
-    def _finish(self, spec: HouseSpec, warnings: list[str], records: list[StageRecord], model_name: str, all_offline: bool = False) -> HouseSpec:
+    def _finish(self, spec: HouseSpec, warnings: list[str], records: list[StageRecord], model_name: str) -> HouseSpec:
         warnings = list(dict.fromkeys(warnings))
         stages = [r.to_json() for r in records]
         provenance = {
@@ -244,7 +245,7 @@ class LLMPlanner:
                 "completion_tokens": sum(s["completion_tokens"] for s in stages),
                 "latency_s": round(sum(s["latency_s"] for s in stages), 3),
                 "stages_from_llm": sum(s["source"] != "offline" for s in stages),
-                "stages_from_offline": sum(s["source"] == "offline" for s in stages) if not all_offline else "all",
+                "stages_from_offline": sum(s["source"] == "offline" for s in stages),
             },
         }
         return spec.model_copy(update={"warnings": warnings, "provenance": provenance})
