@@ -138,7 +138,7 @@ def _llm_usage(planner, house) -> dict:
 def _print_llm(u: dict) -> None:
     sources = Counter(u["stages"].values())
     fell = [k for k, v in u["stages"].items() if v == "offline"]
-    print(f"LLM: {u['model']} at {u['base_url']}: {u['calls']} calls, {u['cache_hits']} from the cache, "
+    print(f"LLM: {u['model'] or '(model unknown)'} at {u['base_url']}: {u['calls']} calls, {u['cache_hits']} from the cache, "
           f"{u['prompt_tokens']} + {u['completion_tokens']} tokens, {u['call_latency_s']:.1f} s in calls")
     print(f"  stages: {sources['llm']} from the LLM, {sources['llm_repaired']} repaired, {sources['offline']} from the offline planner"
           + (f" ({', '.join(fell[:6])}{', ...' if len(fell) > 6 else ''})" if fell else ""))
