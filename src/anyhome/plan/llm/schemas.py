@@ -84,13 +84,8 @@ class FurnitureReply(_Reply):
     groups: Annotated[list[GroupReply], Field(min_length=1, max_length=MAX_GROUPS)]
 
 
-class OrnamentReply(_Reply):
-    name: Name
-    category: Name
-    size_m: Size3
-    rule: OrnamentRule
-    target: Annotated[str, Field(max_length=NAME_CHARS)]
-    count: Annotated[int, Field(ge=1, le=MAX_ITEM_COUNT)]
+class OrnamentReply(ItemReply):
+    rule: OrnamentRule  # on top of furniture or on a wall
 
 
 class OrnamentsReply(_Reply):
