@@ -1,9 +1,17 @@
 """Turn the exporter's trimesh Scene into flat vertex batches for the GPU.
 
 Every triangle corner becomes one vertex (no index buffer) carrying its plan-frame
-position and normal, texture coordinates, linear base colour, roughness/metallic,
-the room whose light reaches it and the instance it belongs to. Corners are grouped
-into batches by layer (``"ceiling"`` or ``"main"``) and base-colour texture.
+position and normal, a tangent (for normal maps), texture coordinates, linear base
+colour, roughness/metallic factors, the room whose light reaches it and the instance it
+belongs to. Corners are grouped into batches by layer (``"ceiling"`` or ``"main"``) and
+textures: base colour, metallicRoughness and normal map (glTF's three PBR maps; the
+last two are shared by every colour of a material, so they add hardly any batches).
+
+Tangents are computed here, per vertex in numpy, from each triangle's positions and UVs
+(:func:`corner_tangents`), only for meshes with a normal map; the shader
+Gram-Schmidts them against the interpolated normal. (A per-fragment cotangent frame
+from screen-space derivatives would need no vertex data but costs every shaded pixel
+more, which is what software Mesa pays for.)
 
 Colour spaces: base-colour textures are sRGB (decoded in the shader, as glTF says).
 glTF says ``baseColorFactor`` and vertex colours are linear. The in-memory scene of
@@ -55,12 +63,15 @@ GROUND_Z_M = -0.06
 """Height of the ground plane (just under the floor slabs, which end at -0.05 m)."""
 
 VERTEX_DTYPE = np.dtype([
-    ("pos", "<f4", 3), ("nrm", "<f4", 3), ("uv", "<f4", 2), ("col", "<f4", 4),
+    ("pos", "<f4", 3), ("nrm", "<f4", 3), ("tan", "<f4", 4), ("uv", "<f4", 2), ("col", "<f4", 4),
     ("rm", "<f4", 2), ("emi", "<f4", 3), ("room", "<i4"), ("inst", "<i4"),
 ])
-"""One vertex as uploaded; ``VERTEX_FORMAT`` is the same layout for moderngl."""
-VERTEX_FORMAT = "3f 3f 2f 4f 2f 3f 1i 1i"
-VERTEX_ATTRS = ("in_pos", "in_nrm", "in_uv", "in_col", "in_rm", "in_emi", "in_room", "in_inst")
+"""One vertex as uploaded; ``VERTEX_FORMAT`` is the same layout for moderngl. ``tan``:
+unit tangent (direction of increasing u) and handedness w (bitangent = w * cross(nrm,
+tan)), zero where the batch has no normal map."""
+VERTEX_FORMAT = "3f 3f 4f 2f 4f 2f 3f 1i 1i"
+VERTEX_ATTRS = ("in_pos", "in_nrm", "in_tan", "in_uv", "in_col", "in_rm", "in_emi", "in_room",
+                "in_inst")
 
 
 @dataclass
@@ -72,6 +83,12 @@ class Batch:
     """A PIL image (the material's baseColorTexture) or None."""
     vertices: np.ndarray
     """(n,) VERTEX_DTYPE, three per triangle."""
+    mr_texture: Any | None = None
+    """PIL image of the metallicRoughnessTexture (roughness in G, metallic in B) or None."""
+    normal_texture: Any | None = None
+    """PIL image of the tangent-space normalTexture or None."""
+    normal_scale: float = 1.0
+    """normalTexture.scale: multiplies the map's x and y."""
 
 
 @dataclass
@@ -90,6 +107,10 @@ class SceneMeshes:
     """Room ids by the room index stored in each vertex."""
     fixtures: dict[str, np.ndarray] = field(default_factory=dict)
     """Room id -> (2, 3) bounds of its ceiling light fixture (``room:<id>:light``), if any."""
+
+
+_NO_MAPS = (0, 0, 0, 1.0)
+"""Batch key of geometry without textures."""
 
 
 def node_kind(node: str, meta: dict) -> tuple[str, str | None]:
@@ -164,6 +185,13 @@ class Appearance:
     """(3F, 2) float texture coordinates (origin bottom-left, as trimesh keeps them)."""
     texture: Any | None = None
     """PIL image of the base colour, or None."""
+    mr_texture: Any | None = None
+    """PIL image of glTF's metallicRoughnessTexture (G roughness, B metallic), or None."""
+    normal_texture: Any | None = None
+    """PIL image of the tangent-space normal map, or None."""
+    normal_scale: float = 1.0
+    """glTF normalTexture.scale (read from a ``normalScale`` attribute of the material
+    where a loader keeps it; trimesh drops it, AnyHome's exporter writes none)."""
     roughness: float = DEFAULT_ROUGHNESS
     metallic: float = 0.0
     emissive: tuple[float, float, float] = (0.0, 0.0, 0.0)
@@ -193,10 +221,16 @@ def corner_appearance(mesh: trimesh.Trimesh) -> Appearance:
         vcol = (getattr(visual, "vertex_attributes", None) or {}).get("color")
         if vcol is not None and len(vcol) == len(mesh.vertices):
             color = color * _unit_rgba(vcol, len(mesh.vertices))[faces.reshape(-1)]
-        tex = getattr(mat, "baseColorTexture", None)
         vuv = getattr(visual, "uv", None)
-        if tex is not None and vuv is not None and len(vuv) == len(mesh.vertices):
-            out.texture, out.uv = tex, np.asarray(vuv, dtype=np.float64)[faces.reshape(-1)]
+        if vuv is not None and len(vuv) == len(mesh.vertices):
+            maps = [getattr(mat, name, None) for name in
+                    ("baseColorTexture", "metallicRoughnessTexture", "normalTexture")]
+            if any(m is not None for m in maps):
+                out.texture, out.mr_texture, out.normal_texture = maps
+                out.uv = np.asarray(vuv, dtype=np.float64)[faces.reshape(-1)]
+        scale = getattr(mat, "normalScale", None)
+        if out.normal_texture is not None and scale is not None:
+            out.normal_scale = float(scale)
         if getattr(mat, "roughnessFactor", None) is not None:
             out.roughness = float(mat.roughnessFactor)
         if getattr(mat, "metallicFactor", None) is not None:
@@ -215,6 +249,57 @@ def corner_normals(mesh: trimesh.Trimesh) -> np.ndarray:
     vn = np.asarray(mesh.vertex_normals, dtype=np.float64)[mesh.faces]
     smooth = np.einsum("fcj,fj->fc", vn, fn) > np.cos(np.radians(SMOOTH_ANGLE_DEG))
     return np.where(smooth[..., None], vn, fn[:, None, :]).reshape(-1, 3)
+
+
+def corner_tangents(verts: np.ndarray, faces: np.ndarray, uv: np.ndarray,
+                    normals: np.ndarray) -> np.ndarray:
+    """(3F, 4) per-corner tangents for normal mapping: xyz the unit direction of
+    increasing u (made perpendicular to the corner's normal), w the handedness (+1 or
+    -1: the direction of increasing v is ``w * cross(normal, tangent)``).
+
+    Each triangle's tangent and bitangent come from its edges and UV differences; a
+    vertex shared by several triangles gets the sum of theirs (area weighted), so
+    tangents are smooth where UVs are. Triangles with degenerate UVs get a zero tangent
+    (the shader then leaves their normal unperturbed).
+
+    Parameters
+    ----------
+    verts : (V, 3) float, vertex positions in the frame the normals are in
+    faces : (F, 3) int
+    uv : (3F, 2) float, each corner's texture coordinates
+    normals : (3F, 3) float, unit shading normals of the corners
+    """
+    tri = verts[faces]
+    e1, e2 = tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0]
+    duv = uv.reshape(-1, 3, 2)
+    d1, d2 = duv[:, 1] - duv[:, 0], duv[:, 2] - duv[:, 0]
+    det = d1[:, 0] * d2[:, 1] - d2[:, 0] * d1[:, 1]
+    ok = np.abs(det) > 1e-12
+    sign = np.where(det < 0, -1.0, 1.0)
+    # (e1 d2v - e2 d1v) / det, times |det| (the UV area) as the weight of the sum
+    t = (e1 * d2[:, 1:2] - e2 * d1[:, 1:2]) * (sign * ok)[:, None]
+    b = (e2 * d1[:, 0:1] - e1 * d2[:, 0:1]) * (sign * ok)[:, None]
+    idx = faces.reshape(-1)
+    n_v = len(verts)
+    # AnyHome's planar-UV meshes give every face vertices of its own (nothing to sum)
+    split = n_v == len(idx) and bool((idx == np.arange(n_v)).all())
+    if not split and np.bincount(idx, minlength=n_v).max() > 1:
+        acc_t = np.column_stack([np.bincount(idx, np.repeat(t[:, k], 3), n_v) for k in range(3)])
+        acc_b = np.column_stack([np.bincount(idx, np.repeat(b[:, k], 3), n_v) for k in range(3)])
+        ct, cb = acc_t[idx], acc_b[idx]
+    else:
+        ct, cb = np.repeat(t, 3, axis=0), np.repeat(b, 3, axis=0)
+    ct = ct - normals * np.einsum("ij,ij->i", ct, normals)[:, None]
+    length = np.linalg.norm(ct, axis=1)
+    good = length > 1e-12
+    out = np.zeros((len(idx), 4))
+    out[good, :3] = ct[good] / length[good, None]
+    n, t3 = normals, out[:, :3]
+    handed = ((n[:, 1] * t3[:, 2] - n[:, 2] * t3[:, 1]) * cb[:, 0]
+              + (n[:, 2] * t3[:, 0] - n[:, 0] * t3[:, 2]) * cb[:, 1]
+              + (n[:, 0] * t3[:, 1] - n[:, 1] * t3[:, 0]) * cb[:, 2])  # (n x t) . b
+    out[good, 3] = np.where(handed[good] < 0, -1.0, 1.0)
+    return out
 
 
 def _face_rooms(tri: np.ndarray, normals: np.ndarray, rooms: list[Polygon]) -> np.ndarray:
@@ -261,8 +346,8 @@ def scene_meshes(house: House, scene: trimesh.Scene) -> SceneMeshes:
     polys = [Polygon(r.polygon).buffer(0) for r in house.rooms]
     instances = [f"object:{o.id}" for o in house.objects]
     inst_index = {name: i for i, name in enumerate(instances)}
-    groups: dict[tuple[str, int], list[np.ndarray]] = defaultdict(list)
-    textures: dict[int, Any] = {}
+    groups: dict[tuple[str, tuple], list[np.ndarray]] = defaultdict(list)
+    textures: dict[tuple, tuple] = {_NO_MAPS: (None, None, None, 1.0)}  # key (map ids) -> maps
     fixtures: dict[str, np.ndarray] = {}
     lo, hi = np.full(3, np.inf), np.full(3, -np.inf)
     n_tri = 0
@@ -292,6 +377,8 @@ def scene_meshes(house: House, scene: trimesh.Scene) -> SceneMeshes:
         v = np.zeros(len(tri) * 3, dtype=VERTEX_DTYPE)
         v["pos"] = tri.reshape(-1, 3)
         v["nrm"] = normals
+        if look.normal_texture is not None:
+            v["tan"] = corner_tangents(verts, mesh.faces, look.uv, normals)
         v["uv"] = 0.0 if look.uv is None else look.uv
         v["col"] = look.color
         v["rm"] = (look.roughness, look.metallic)
@@ -304,17 +391,20 @@ def scene_meshes(house: House, scene: trimesh.Scene) -> SceneMeshes:
         if category == "light" and room_id is not None:
             fixtures[room_id] = np.array([verts.min(axis=0), verts.max(axis=0)])
         layer = "glass" if look.blend else "ceiling" if category in CEILING_PARTS else "main"
-        key = id(look.texture) if look.texture is not None else 0
-        if look.texture is not None:
-            textures[key] = look.texture
+        maps = (look.texture, look.mr_texture, look.normal_texture)
+        key = (*(0 if m is None else id(m) for m in maps),
+               look.normal_scale if look.normal_texture is not None else 1.0)
+        textures[key] = (*maps, key[3])
         groups[(layer, key)].append(v)
         lo, hi = np.minimum(lo, verts.min(axis=0)), np.maximum(hi, verts.max(axis=0))
         n_tri += len(tri)
     if n_tri == 0:
         lo, hi = np.zeros(3), np.ones(3)
     bounds = np.array([lo, hi])
-    groups[("main", 0)].append(_ground(bounds, -1))
+    groups[("main", _NO_MAPS)].append(_ground(bounds, -1))
     order = {"main": 0, "ceiling": 1, "glass": 2}  # glass last: it blends over the rest
-    batches = [Batch(layer, textures.get(key), np.concatenate(parts))
-               for (layer, key), parts in sorted(groups.items(), key=lambda kv: order[kv[0][0]])]
+    batches = []
+    for (layer, key), parts in sorted(groups.items(), key=lambda kv: order[kv[0][0]]):
+        base, mr, normal, scale = textures[key]
+        batches.append(Batch(layer, base, np.concatenate(parts), mr, normal, scale))
     return SceneMeshes(batches, instances, bounds, n_tri, room_ids, fixtures)

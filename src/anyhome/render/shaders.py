@@ -1,7 +1,20 @@
 """GLSL sources: the shaded colour pass, the instance/depth pass and the depth-only
 pass (sun shadow map and depth pre-pass). All positions are in the plan frame
 (meters, z up). Every vertex shader computes ``gl_Position`` the same invariant way,
-so a depth pre-pass and the shading pass agree to the bit."""
+so a depth pre-pass and the shading pass agree to the bit.
+
+The colour pass reads glTF's three PBR maps when a batch has them (``u_has_*``):
+base colour (sRGB), metallicRoughness (linear; roughness = factor x G, metallic =
+factor x B) and a tangent-space normal map (x, y scaled by ``u_nrm_scale``) in the frame
+of the vertex tangent, made perpendicular to the interpolated normal per pixel. A
+slope s of the map becomes s * s / (s + ``u_nrm_knee``): structural relief (mortar,
+grout, weave, plank seams) keeps most of its strength while fine low noise (plaster
+stipple) is calmed; mip-averaged normals are shorter, so distant relief is calmed too.
+Each light sees the relief fade back to the surface normal as the light grazes the
+surface (cosine of its incidence under ``u_relief_fade``): the room lights hang just
+under the ceiling, which they would light at a few degrees where a real fixture sends
+its light down, and there an unshadowed map turns a plaster ceiling into noise. The
+depth and instance passes ignore all of them."""
 
 from __future__ import annotations
 
@@ -10,6 +23,7 @@ SHADE_VERT = """
 uniform mat4 u_view_proj;
 in vec3 in_pos;
 in vec3 in_nrm;
+in vec4 in_tan;
 in vec2 in_uv;
 in vec4 in_col;
 in vec2 in_rm;
@@ -19,6 +33,7 @@ out vec3 v_emi;
 out vec3 v_pos;
 invariant gl_Position;
 out vec3 v_nrm;
+out vec4 v_tan;
 out vec2 v_uv;
 out vec4 v_col;
 out vec2 v_rm;
@@ -26,6 +41,7 @@ flat out int v_room;
 void main() {
     v_pos = in_pos;
     v_nrm = in_nrm;
+    v_tan = in_tan;
     v_uv = in_uv;
     v_col = in_col;
     v_rm = in_rm;
@@ -47,6 +63,13 @@ uniform sampler2D u_lights;    // row 0: position xyz + range, row 1: colour rgb
 uniform int u_n_lights;
 uniform sampler2D u_tex;
 uniform bool u_has_tex;
+uniform sampler2D u_mr_tex;    // glTF metallicRoughness: G roughness, B metallic
+uniform bool u_has_mr;
+uniform sampler2D u_nrm_tex;   // tangent-space normal map
+uniform bool u_has_nrm;
+uniform float u_nrm_scale;
+uniform float u_nrm_knee;     // slopes well under this are damped (0: glTF's plain map)
+uniform float u_relief_fade;  // a light's cos(incidence) under which its relief fades (0: never)
 uniform sampler2DShadow u_shadow;
 uniform mat4 u_shadow_mat;
 uniform float u_exposure;
@@ -54,6 +77,7 @@ uniform float u_emissive;
 in vec3 v_emi;
 in vec3 v_pos;
 in vec3 v_nrm;
+in vec4 v_tan;
 in vec2 v_uv;
 in vec4 v_col;
 in vec2 v_rm;
@@ -76,6 +100,10 @@ float sun_visibility(vec3 n) {
     if (any(lessThan(q.xy, vec2(0.0))) || any(greaterThan(q.xy, vec2(1.0)))) return 1.0;
     return texture(u_shadow, vec3(q.xy, q.z - 0.0015));  // 2x2 PCF by the sampler
 }
+vec3 relief_normal(vec3 n, vec3 ng, vec3 l) {  // the map's relief fades out in grazing light
+    if (!u_has_nrm || u_relief_fade <= 0.0) return n;
+    return normalize(mix(ng, n, clamp(dot(ng, l) / u_relief_fade, 0.0, 1.0)));
+}
 vec3 brdf(vec3 n, vec3 v, vec3 l, vec3 diffuse, vec3 f0, float rough) {
     float ndl = max(dot(n, l), 0.0);
     if (ndl <= 0.0) return vec3(0.0);
@@ -87,26 +115,45 @@ vec3 brdf(vec3 n, vec3 v, vec3 l, vec3 diffuse, vec3 f0, float rough) {
 void main() {
     vec3 base = v_col.rgb;
     if (u_has_tex) base *= srgb_to_linear(texture(u_tex, v_uv).rgb);
-    float rough = clamp(v_rm.x, 0.05, 1.0);
-    float metal = clamp(v_rm.y, 0.0, 1.0);
+    vec2 rm = v_rm;
+    if (u_has_mr) rm *= texture(u_mr_tex, v_uv).gb;
+    float rough = clamp(rm.x, 0.05, 1.0);
+    float metal = clamp(rm.y, 0.0, 1.0);
+    vec3 ng = normalize(v_nrm);
+    vec3 v = normalize(u_eye - v_pos);
+    float side = dot(ng, v) < 0.0 ? -1.0 : 1.0;
+    ng *= side;  // two-sided
+    vec3 n = ng;
+    if (u_has_nrm) {
+        vec3 tn = texture(u_nrm_tex, v_uv).xyz * 2.0 - 1.0;
+        vec3 t = v_tan.xyz - ng * dot(ng, v_tan.xyz);
+        float tt = dot(t, t);
+        if (tt > 1e-10) {  // no tangent (degenerate UVs): keep the normal
+            t *= inversesqrt(tt);
+            vec3 b = cross(ng, t) * (v_tan.w * side);  // the map's +y, seen from the front
+            vec2 xy = tn.xy * u_nrm_scale;
+            float slope = length(xy);
+            xy *= slope / max(slope + u_nrm_knee, 1e-6);  // keep grout and weave, calm fine noise
+            n = normalize(t * xy.x + b * xy.y + ng * max(tn.z, 0.0));
+        }
+    }
     vec3 diffuse = base * (1.0 - metal);
     vec3 f0 = mix(vec3(0.04), base, metal) * (1.0 - 0.7 * rough);
-    vec3 n = normalize(v_nrm);
-    vec3 v = normalize(u_eye - v_pos);
-    if (dot(n, v) < 0.0) n = -n;  // two-sided
 
     bool indoor = v_room >= 0;
     float hemi = 0.5 + 0.5 * n.z;
     vec3 ambient = mix(u_ground_rgb, u_sky_rgb, hemi) * (indoor ? u_indoor_ambient : 1.0);
     vec3 color = base * ambient;
-    color += brdf(n, v, u_sun_dir, diffuse, f0, rough) * u_sun_rgb * sun_visibility(n);
+    color += brdf(relief_normal(n, ng, u_sun_dir), v, u_sun_dir, diffuse, f0, rough) * u_sun_rgb
+             * sun_visibility(ng);
     if (indoor && v_room < u_n_lights) {
         vec4 lp = texelFetch(u_lights, ivec2(v_room, 0), 0);
         vec3 lc = texelFetch(u_lights, ivec2(v_room, 1), 0).rgb;
         vec3 d = lp.xyz - v_pos;
         float dist2 = dot(d, d);
         float falloff = 1.0 / (1.0 + dist2 / (lp.w * lp.w));
-        color += brdf(n, v, d * inversesqrt(max(dist2, 1e-6)), diffuse, f0, rough) * lc * falloff;
+        vec3 l = d * inversesqrt(max(dist2, 1e-6));
+        color += brdf(relief_normal(n, ng, l), v, l, diffuse, f0, rough) * lc * falloff;
     }
     color += v_emi * u_emissive;
     f_color = vec4(linear_to_srgb(aces(color * u_exposure)), v_col.a);
