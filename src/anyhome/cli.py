@@ -105,12 +105,10 @@ def cmd_generate(args: argparse.Namespace) -> int:
 
 def _planner(args: argparse.Namespace):
     """The planner object of ``generate``; the LLM one from options, env and config file."""
-    from anyhome.plan import PLANNERS, get_planner
+    from anyhome.plan import get_planner
 
-    if args.planner not in PLANNERS:
-        get_planner(args.planner)  # raises the one-line error
     if args.planner != "llm":
-        return get_planner(args.planner)
+        return get_planner(args.planner)  # an unknown name raises the one-line error
     from anyhome.plan.llm import LLMPlanner, load_config
 
     options = {

@@ -104,7 +104,9 @@ def test_server_killed_mid_run_gives_a_valid_house_and_exit_0(own_server, tmp_pa
     deadline = time.monotonic() + RUN_TIMEOUT_S
     while not list(cache.glob("*/*.json")):  # the first reply is in: kill the server
         assert proc.poll() is None, proc.communicate()
-        assert time.monotonic() < deadline
+        if time.monotonic() > deadline:  # a hang guard, not a speed target
+            proc.kill()
+            pytest.fail(f"no reply from the server within {RUN_TIMEOUT_S} s")
         time.sleep(0.2)
     own_server.proc.send_signal(signal.SIGKILL)
     own_server.proc.wait()

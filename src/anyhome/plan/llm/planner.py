@@ -44,7 +44,7 @@ from anyhome.plan.llm.schemas import (
     json_schema,
 )
 from anyhome.plan.offline import OfflinePlanner, fallback_room, item_spec, offline_look
-from anyhome.plan.spec import MAX_ROOMS, RELATIVE_RULES, GroupSpec, HouseSpec, ItemSpec, RoomSpec
+from anyhome.plan.spec import MAX_ROOMS, RELATIVE_RULES, GroupSpec, HouseSpec, RoomSpec
 
 log = logging.getLogger(__name__)
 
@@ -182,7 +182,7 @@ class LLMPlanner:
         for r in rooms:
             m = prompts.messages("furniture", text=text, building=building, name=r.name, type=r.type.replace("_", " "),
                                  area_m2=f"{r.area_m2:g}", max_groups=MAX_GROUPS)  # fmt: skip
-            jobs.append((f"furniture:{r.id}", "furniture", m, FurnitureReply, _area_check(r.area_m2)))
+            jobs.append((f"furniture:{r.id}", "furniture", m, FurnitureReply, _area_check(r.area_m2), json_schema("furniture")))
         ids = {r.id for r in rooms}
         m = prompts.messages("appearance", text=text, building=building, rooms=room_list, max_palette=MAX_PALETTE)
         jobs.append(("appearance", "appearance", m, AppearanceReply, lambda a: checks.check_appearance(ids, [x.id for x in a.rooms]),
@@ -199,7 +199,7 @@ class LLMPlanner:
         # 3. ornaments per room, once the furniture is known
         jobs = []
         for r in rooms:
-            names = _furniture_names(r)
+            names = _furniture_names(r.groups)
             pieces = sorted({it.name for g in r.groups for it in [g.anchor, *g.members]})
             m = prompts.messages("ornaments", text=text, building=building, name=r.name, type=r.type.replace("_", " "),
                                  furniture=", ".join(pieces) or "none", max_ornaments=MAX_ORNAMENTS)  # fmt: skip
@@ -224,8 +224,8 @@ class LLMPlanner:
         per_job: list[list[str]] = [[] for _ in jobs]
 
         def run(i: int) -> tuple[Any, StageRecord]:
-            label, stage, msgs, model, check, *schema = jobs[i]
-            return self._ask(label, stage, msgs, model, check, seed, per_job[i], *schema)
+            label, stage, msgs, model, check, schema = jobs[i]
+            return self._ask(label, stage, msgs, model, check, seed, per_job[i], schema)
 
         with ThreadPoolExecutor(max_workers=self.config.concurrency) as pool:
             results = list(pool.map(run, range(len(jobs))))
@@ -276,8 +276,9 @@ def _ornament_check(names: set[str]) -> Callable[[OrnamentsReply], list[str]]:
     return lambda reply: checks.check_ornaments(reply, names)
 
 
-def _furniture_names(room: RoomSpec) -> set[str]:
-    return {x.lower() for g in room.groups for it in [g.anchor, *g.members] for x in (it.name, it.category)}
+def _furniture_names(groups: list[GroupSpec]) -> set[str]:
+    """Lower-case names and categories of the groups' items (what an ornament may target)."""
+    return {x.lower() for g in groups for it in [g.anchor, *g.members] for x in (it.name, it.category)}
 
 
 def _connections(program: ProgramReply) -> list[tuple[str, str]]:
@@ -293,10 +294,6 @@ def _connections(program: ProgramReply) -> list[tuple[str, str]]:
     return [*out, (program.entrance, "outside")]
 
 
-def _item(data: dict[str, Any], look: Any, rng: np.random.Generator) -> ItemSpec:
-    return item_spec(data, look, rng)
-
-
 def replace_groups(room: RoomSpec, reply: FurnitureReply, look: Any, rng: np.random.Generator) -> RoomSpec:
     """The room with the model's furniture groups (and its ornaments loosened to match)."""
     groups: list[GroupSpec] = []
@@ -309,17 +306,17 @@ def replace_groups(room: RoomSpec, reply: FurnitureReply, look: Any, rng: np.ran
             target = None
             if m.rule in RELATIVE_RULES and m.target and by_key.get(m.target.lower(), anchor.name) != anchor.name:
                 target = by_key[m.target.lower()]
-            members.append(_item(_item_data(m, target), look, rng))
+            members.append(item_spec(_item_data(m, target), look, rng))
             by_key.setdefault(m.name.lower(), m.name)
             by_key.setdefault(m.category.lower(), m.name)
         base = _slug(g.name)
         used[base] = used.get(base, 0) + 1
         groups.append(GroupSpec(
             name=base if used[base] == 1 else f"{base}_{used[base]}",
-            anchor=_item(_item_data(anchor, None), look, rng), members=members,
+            anchor=item_spec(_item_data(anchor, None), look, rng), members=members,
             arrangement=g.arrangement, repeat=g.repeat, priority=priority,
         ))  # fmt: skip
-    names = {x.lower() for g in groups for it in [g.anchor, *g.members] for x in (it.name, it.category)}
+    names = _furniture_names(groups)
     ornaments = [o if o.target is None or o.target.lower() in names else o.model_copy(update={"target": None}) for o in room.ornaments]
     return room.model_copy(update={"groups": groups, "ornaments": ornaments})
 
@@ -332,7 +329,7 @@ def _item_data(it: Any, target: str | None) -> dict[str, Any]:
 
 
 def replace_ornaments(room: RoomSpec, reply: OrnamentsReply, look: Any, rng: np.random.Generator) -> RoomSpec:
-    ornaments = [_item(_item_data(o, o.target.strip() or None), look, rng) for o in reply.ornaments]
+    ornaments = [item_spec(_item_data(o, o.target.strip() or None), look, rng) for o in reply.ornaments]
     return room.model_copy(update={"ornaments": ornaments})
 
 
