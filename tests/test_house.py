@@ -58,7 +58,7 @@ def test_required_fields_present(tmp_path):
     [
         (lambda d: d.update(format="other.scene"), "not an AnyHome house"),
         (lambda d: d.update(version=2), "version 2 is not supported"),
-        (lambda d: d["rooms"][0].pop("polygon"), "rooms.0.polygon"),
+        (lambda d: d["rooms"][0].pop("polygon"), r"house.json: rooms\[0\]\.polygon: Field required"),
     ],
 )
 def test_refuses_other_formats(tmp_path, mutate, message):

@@ -8,20 +8,62 @@ object's front faces +y. ``position`` is the centre of the object's box bottom f
 from __future__ import annotations
 
 import json
+import math
 import os
+import re
 import tempfile
+from collections.abc import Iterator
+from functools import lru_cache
 from pathlib import Path
 from typing import Any, Literal
 
-from pydantic import BaseModel, ConfigDict, Field, PrivateAttr, ValidationError
+from pydantic import BaseModel, ConfigDict, Field, PrivateAttr, ValidationError, model_validator
+from shapely.geometry import Polygon
 
 from anyhome.errors import HouseFormatError
+from anyhome.sanitize import clean_text, is_safe_id
 
 FORMAT = "anyhome.house"
 VERSION = 1
 HOUSE_FILE = "house.json"
 JSON_DECIMALS = 4
 """Floats in house.json are rounded to 0.1 mm so output is byte-stable across runs."""
+
+# ------------------------------------------------------------------ limits
+# A house.json beyond these is refused at load (one line naming the field), so that no
+# later stage (eval grids, meshes, renders) is asked for an absurd amount of work.
+MAX_FILE_BYTES = 128 * 1024 * 1024
+"""Largest house.json read (128 MiB)."""
+MAX_JSON_DEPTH = 64
+"""Deepest nesting of JSON arrays and objects (the format itself needs 5)."""
+MAX_ROOMS = 2_000
+MAX_OBJECTS = 20_000
+MAX_DOORS = 10_000
+MAX_WINDOWS = 10_000
+MAX_CONNECTIONS = 10_000
+MAX_POLYGON_POINTS = 1_000
+"""Most corners of one room polygon."""
+MAX_ROOM_SIDE_M = 200.0
+"""Largest side of a room's bounding box."""
+MAX_HOUSE_EXTENT_M = 500.0
+"""Largest side of the bounding box of all rooms."""
+MAX_COORD_M = 10_000.0
+"""Every coordinate (polygon corners, opening ends, object positions) lies within this
+distance of the origin on each axis."""
+MAX_HEIGHT_M = 50.0
+"""Largest room height, door or window height and window sill."""
+MAX_OBJECT_SIZE_M = MAX_ROOM_SIDE_M
+"""Largest object extent along any axis."""
+MAX_YAW_RAD = 1_000.0
+"""Largest |yaw| (any angle can be written within a few turns)."""
+MAX_ASSET_KNOB = 1_000
+"""Largest |value| of a numeric asset knob (part counts, ratios, lengths)."""
+SUPPORTS = ("floor", "wall", "ceiling")
+"""``objects[].support`` is one of these or the id of another object."""
+OUTSIDE = "outside"
+"""The pseudo-room on the far side of an entrance door."""
+_COLOR_RE = re.compile(r"#[0-9a-fA-F]{6}")
+_SURROGATE_RE = re.compile("[\ud800-\udfff]")
 
 ROOM_TYPES: dict[str, bool] = {
     # functional type -> habitable (needs a window)
@@ -167,6 +209,13 @@ class House(_Model):
 
     _timings_s: dict[str, float] = PrivateAttr(default_factory=dict)
 
+    @model_validator(mode="after")
+    def _check(self) -> House:
+        problem = next(_problems(self), None)
+        if problem is not None:
+            raise ValueError(problem)
+        return self
+
     @property
     def timings_s(self) -> dict[str, float]:
         """Seconds per stage of the run that made this house (not saved: not reproducible)."""
@@ -196,27 +245,53 @@ class House(_Model):
     # ------------------------------------------------------------------ json
     def to_json(self) -> str:
         data = _round_floats(self.model_dump(mode="json"), JSON_DECIMALS)
-        return json.dumps(data, indent=1, ensure_ascii=False) + "\n"
+        try:
+            text = json.dumps(data, indent=1, ensure_ascii=False, allow_nan=False) + "\n"
+        except ValueError as e:  # a NaN put in after validation
+            raise HouseFormatError(f"house cannot be saved: {e}") from None
+        # a lone surrogate (from a JSON "\\ud800" escape) cannot be written as UTF-8: keep
+        # it as the escape it came from, so the file stays UTF-8 and loads back the same
+        return _SURROGATE_RE.sub(lambda m: f"\\u{ord(m.group()):04x}", text)
 
     @classmethod
-    def from_json(cls, text: str, source: str = "house.json") -> House:
+    def from_json(cls, text: str | bytes, source: str = "house.json") -> House:
+        """Parse and validate a house.json text; any problem is a one-line
+        :class:`HouseFormatError` naming ``source`` and the field."""
+        source = clean_text(str(source))
+        if isinstance(text, (bytes, bytearray)):
+            if len(text) > MAX_FILE_BYTES:
+                raise HouseFormatError(f"{source}: larger than {MAX_FILE_BYTES // 2**20} MiB")
+            try:
+                text = bytes(text).decode("utf-8")
+            except UnicodeDecodeError as e:
+                raise HouseFormatError(
+                    f"{source}: not UTF-8 text (byte 0x{e.object[e.start]:02x} at offset {e.start})"
+                ) from None
+        if len(text) > MAX_FILE_BYTES:
+            raise HouseFormatError(f"{source}: larger than {MAX_FILE_BYTES // 2**20} MiB")
         try:
-            data = json.loads(text)
+            data = json.loads(text, parse_constant=_refuse_constant, parse_float=_finite_float)
         except json.JSONDecodeError as e:
             raise HouseFormatError(f"{source}: not valid JSON ({e.msg}, line {e.lineno})") from None
+        except _BadNumber as e:
+            raise HouseFormatError(f"{source}: not valid JSON ({e})") from None
+        except ValueError as e:  # an integer of thousands of digits
+            raise HouseFormatError(f"{source}: not valid JSON ({clean_text(str(e))[:200]})") from None
+        except RecursionError:
+            raise HouseFormatError(f"{source}: JSON nested too deeply") from None
+        if _depth_exceeds(data, MAX_JSON_DEPTH):
+            raise HouseFormatError(f"{source}: JSON nested deeper than {MAX_JSON_DEPTH} levels")
         if not isinstance(data, dict) or data.get("format") != FORMAT:
             raise HouseFormatError(f"{source}: not an AnyHome house (format must be {FORMAT!r})")
-        if data.get("version") != VERSION:
+        if data.get("version") != VERSION or isinstance(data.get("version"), bool):
             raise HouseFormatError(
-                f"{source}: house format version {data.get('version')!r} is not supported "
+                f"{source}: house format version {_short(data.get('version'))} is not supported "
                 f"(this AnyHome reads version {VERSION})"
             )
         try:
             return cls.model_validate(data)
         except ValidationError as e:
-            first = e.errors()[0]
-            where = ".".join(str(p) for p in first["loc"])
-            raise HouseFormatError(f"{source}: invalid field {where}: {first['msg']}") from None
+            raise HouseFormatError(f"{source}: {_first_error(e)}") from None
 
     def save(self, directory: str | os.PathLike[str]) -> Path:
         """Write ``house.json`` into ``directory`` atomically; return its path."""
@@ -230,11 +305,16 @@ class House(_Model):
 def load(path: str | os.PathLike[str]) -> House:
     """Load a house from a house.json file or a directory holding one."""
     p = Path(path)
-    if p.is_dir():
-        p = p / HOUSE_FILE
-    if not p.is_file():
-        raise HouseFormatError(f"no house found at {p}")
-    return House.from_json(p.read_text(encoding="utf-8"), source=str(p))
+    try:
+        if p.is_dir():
+            p = p / HOUSE_FILE
+        if not p.is_file():
+            raise HouseFormatError(f"no house found at {clean_text(str(p))}")
+        with p.open("rb") as f:
+            data = f.read(MAX_FILE_BYTES + 1)
+    except OSError as e:
+        raise HouseFormatError(f"cannot read {clean_text(str(p))}: {e.strerror or e}") from None
+    return House.from_json(data, source=str(p))
 
 
 def atomic_write_text(path: Path, text: str) -> None:
@@ -264,3 +344,266 @@ def _round_floats(value: Any, ndigits: int) -> Any:
     if isinstance(value, (list, tuple)):
         return [_round_floats(v, ndigits) for v in value]
     return value
+
+
+# ------------------------------------------------------------------ validation
+class _BadNumber(ValueError):
+    pass
+
+
+def _refuse_constant(name: str) -> float:
+    raise _BadNumber(f"{name} is not a JSON number")
+
+
+def _finite_float(text: str) -> float:
+    value = float(text)
+    if not math.isfinite(value):
+        raise _BadNumber(f"number {text[:40]} is out of range")
+    return value
+
+
+def _depth_exceeds(data: Any, limit: int) -> bool:
+    stack = [(data, 1)]
+    while stack:
+        value, depth = stack.pop()
+        if isinstance(value, (dict, list)):
+            if depth > limit:
+                return True
+            items = value.values() if isinstance(value, dict) else value
+            stack.extend((v, depth + 1) for v in items if isinstance(v, (dict, list)))
+    return False
+
+
+def _short(value: Any, n: int = 40) -> str:
+    text = clean_text(repr(value))
+    return text if len(text) <= n else text[: n - 3] + "..."
+
+
+def _path(loc: tuple) -> str:
+    out = ""
+    for part in loc:
+        if isinstance(part, int):
+            out += f"[{part}]"
+        else:
+            out += ("." if out else "") + clean_text(str(part))[:60]
+    return out
+
+
+def _first_error(e: ValidationError) -> str:
+    """One line: the field path and what is wrong with it."""
+    first = e.errors(include_url=False)[0]
+    msg = clean_text(str(first.get("msg", "invalid")))
+    if first.get("type") == "value_error":
+        # our own checks: the message already starts with the field path
+        return msg.removeprefix("Value error, ")
+    where = _path(tuple(first.get("loc", ())))
+    return f"{where}: {msg}" if where else msg
+
+
+def _bad_number(x: Any) -> bool:
+    return not isinstance(x, (int, float)) or isinstance(x, bool) or not math.isfinite(x)
+
+
+def _check_coords(path: str, values) -> str | None:
+    for i, x in enumerate(values):
+        if _bad_number(x):
+            return f"{path}[{i}]: must be a finite number"
+        if abs(x) > MAX_COORD_M:
+            return f"{path}[{i}]: {x:g} is farther than {MAX_COORD_M:g} m from the origin"
+    return None
+
+
+def _check_height(path: str, value: float, allow_zero: bool = False) -> str | None:
+    if _bad_number(value):
+        return f"{path}: must be a finite number"
+    if value < 0 or (value == 0 and not allow_zero):
+        return f"{path}: must be {'>= 0' if allow_zero else '> 0'}"
+    if value > MAX_HEIGHT_M:
+        return f"{path}: {value:g} m is more than the maximum {MAX_HEIGHT_M:g} m"
+    return None
+
+
+def _check_segment(path: str, segment) -> str | None:
+    for j, p in enumerate(segment):
+        if err := _check_coords(f"{path}[{j}]", p):
+            return err
+    (x0, y0), (x1, y1) = segment
+    if math.hypot(x1 - x0, y1 - y0) <= 1e-6:
+        return f"{path}: the two ends are the same point"
+    return None
+
+
+def _non_finite(value: Any, path: str) -> str | None:
+    """The path of a NaN or infinite number anywhere in a JSON-like value."""
+    stack = [(value, path)]
+    while stack:
+        v, p = stack.pop()
+        if isinstance(v, float) and not math.isfinite(v):
+            return p
+        if isinstance(v, dict):
+            stack.extend((x, f"{p}.{clean_text(str(k))[:60]}") for k, x in v.items())
+        elif isinstance(v, (list, tuple)):
+            stack.extend((x, f"{p}[{i}]") for i, x in enumerate(v))
+    return None
+
+
+def _problems(h: House) -> Iterator[str]:
+    """Every reason the house is malformed, as ``field.path: problem`` (lazily)."""
+    for name, items, limit in (("rooms", h.rooms, MAX_ROOMS), ("objects", h.objects, MAX_OBJECTS),
+                               ("doors", h.doors, MAX_DOORS), ("windows", h.windows, MAX_WINDOWS),
+                               ("connections", h.connections, MAX_CONNECTIONS)):
+        if len(items) > limit:
+            yield f"{name}: {len(items)} entries, more than the maximum {limit}"
+    if not h.rooms:
+        yield "rooms: a house needs at least one room"
+    for name, items in (("rooms", h.rooms), ("objects", h.objects), ("doors", h.doors),
+                        ("windows", h.windows)):
+        seen: set[str] = set()
+        for i, item in enumerate(items):
+            if not is_safe_id(item.id):
+                yield (f"{name}[{i}].id: {_short(item.id)} is not a valid id (letters, digits "
+                       f"and _ . : - only, at most 128 characters)")
+            if item.id in seen:
+                yield f"{name}[{i}].id: duplicate id {item.id!r}"
+            seen.add(item.id)
+    rooms = {r.id for r in h.rooms}
+    objects = {o.id for o in h.objects}
+    x0 = y0 = math.inf
+    x1 = y1 = -math.inf
+    for i, r in enumerate(h.rooms):
+        where = f"rooms[{i}]"
+        if err := _check_height(f"{where}.height", r.height):
+            yield err
+        if not 3 <= len(r.polygon) <= MAX_POLYGON_POINTS:
+            yield f"{where}.polygon: needs 3 to {MAX_POLYGON_POINTS} points, has {len(r.polygon)}"
+            continue
+        errs = [e for j, p in enumerate(r.polygon) if (e := _check_coords(f"{where}.polygon[{j}]", p))]
+        if errs:
+            yield errs[0]
+            continue
+        xs = [p[0] for p in r.polygon]
+        ys = [p[1] for p in r.polygon]
+        side = max(max(xs) - min(xs), max(ys) - min(ys))
+        if side > MAX_ROOM_SIDE_M:
+            yield (f"{where}.polygon: the room is {side:g} m across, more than the maximum "
+                   f"{MAX_ROOM_SIDE_M:g} m")
+        poly = Polygon(r.polygon)
+        if not poly.is_valid:
+            yield f"{where}.polygon: not a simple polygon (its edges cross or touch)"
+        if poly.area <= 1e-9:
+            yield f"{where}.polygon: has no area"
+        x0, y0 = min(x0, min(xs)), min(y0, min(ys))
+        x1, y1 = max(x1, max(xs)), max(y1, max(ys))
+    if h.rooms and max(x1 - x0, y1 - y0) > MAX_HOUSE_EXTENT_M:
+        yield (f"rooms: the house is {max(x1 - x0, y1 - y0):g} m across, more than the maximum "
+               f"{MAX_HOUSE_EXTENT_M:g} m")
+    sides = rooms | {OUTSIDE}
+    for i, pair in enumerate(h.connections):
+        for j, rid in enumerate(pair):
+            if rid not in sides:
+                yield f"connections[{i}][{j}]: unknown room {_short(rid)}"
+    for i, d in enumerate(h.doors):
+        where = f"doors[{i}]"
+        for j, rid in enumerate(d.rooms):
+            if rid not in sides:
+                yield f"{where}.rooms[{j}]: unknown room {_short(rid)} (a room id or 'outside')"
+        if d.rooms[0] == d.rooms[1]:
+            yield f"{where}.rooms: a door joins two different rooms"
+        if err := _check_segment(f"{where}.segment", d.segment):
+            yield err
+        if err := _check_height(f"{where}.height", d.height):
+            yield err
+    for i, w in enumerate(h.windows):
+        where = f"windows[{i}]"
+        if w.room not in rooms:
+            yield f"{where}.room: unknown room {_short(w.room)}"
+        if err := _check_segment(f"{where}.segment", w.segment):
+            yield err
+        if err := _check_height(f"{where}.height", w.height):
+            yield err
+        if err := _check_height(f"{where}.sill", w.sill, allow_zero=True):
+            yield err
+    for i, o in enumerate(h.objects):
+        where = f"objects[{i}]"
+        if o.room not in rooms:
+            yield f"{where}.room: unknown room {_short(o.room)}"
+        if err := _check_coords(f"{where}.position", o.position):
+            yield err
+        for j, s in enumerate(o.size):
+            if _bad_number(s):
+                yield f"{where}.size[{j}]: must be a finite number"
+            elif s <= 0:
+                yield f"{where}.size[{j}]: must be > 0"
+            elif s > MAX_OBJECT_SIZE_M:
+                yield f"{where}.size[{j}]: {s:g} m is more than the maximum {MAX_OBJECT_SIZE_M:g} m"
+        if _bad_number(o.yaw) or abs(o.yaw) > MAX_YAW_RAD:
+            yield f"{where}.yaw: must be a finite angle in radians (|yaw| <= {MAX_YAW_RAD:g})"
+        if o.support not in SUPPORTS and o.support not in objects:
+            yield f"{where}.support: {_short(o.support)} is not floor, wall, ceiling or an object id"
+        elif o.support == o.id:
+            yield f"{where}.support: an object cannot stand on itself"
+        if o.anchor is not None and o.anchor not in objects:
+            yield f"{where}.anchor: unknown object {_short(o.anchor)}"
+        if o.asset is not None and (err := _check_asset(f"{where}.asset", o.asset)):
+            yield err
+    for name in ("plan", "provenance"):
+        if (bad := _non_finite(getattr(h, name), name)) is not None:
+            yield f"{bad}: must be a finite number"
+
+
+@lru_cache(maxsize=None)
+def _knob_types(family: str) -> dict[str, type] | None:
+    """The knobs a procedural family's records carry, with their types (None: no such
+    family)."""
+    import numpy as np
+
+    from anyhome.assets.registry import _loaded, typical_size
+
+    fam = _loaded().get(family)
+    if fam is None:
+        return None
+    params = fam.sample(np.random.default_rng(0), typical_size(family), "")
+    return {k: type(v) for k, v in params.knobs}
+
+
+def _check_asset(path: str, asset: dict[str, Any]) -> str | None:
+    """A procedural asset record must rebuild: the family's knobs, of their types, in
+    range. Records of another source or an unknown family are ignored by the mesh
+    builder (it samples an asset from the object id), so only their numbers are checked."""
+    if (bad := _non_finite(asset, path)) is not None:
+        return f"{bad}: must be a finite number"
+    family = asset.get("family")
+    if asset.get("source") != "procedural" or not isinstance(family, str):
+        return None
+    knobs_of = _knob_types(family)
+    if knobs_of is None:
+        return None
+    params = asset.get("params")
+    if not isinstance(params, dict):
+        return f"{path}.params: must be an object"
+    size = params.get("size")
+    if (not isinstance(size, list) or len(size) != 3
+            or any(_bad_number(x) or not 0 < x <= MAX_OBJECT_SIZE_M for x in size)):
+        return f"{path}.params.size: must be 3 numbers > 0 and <= {MAX_OBJECT_SIZE_M:g}"
+    for key in ("primary", "secondary", "accent"):
+        if key in params and not (isinstance(params[key], str) and _COLOR_RE.fullmatch(params[key])):
+            return f"{path}.params.{key}: must be a colour like '#a0714a'"
+    if "style" in params and not isinstance(params["style"], str):
+        return f"{path}.params.style: must be a string"
+    seed = params.get("seed", 0)
+    if not isinstance(seed, int) or isinstance(seed, bool) or not 0 <= seed < 2**63:
+        return f"{path}.params.seed: must be an integer in [0, 2**63)"
+    knobs = params.get("knobs", {})
+    if not isinstance(knobs, dict) or set(knobs) != set(knobs_of):
+        return f"{path}.params.knobs: must hold exactly the knobs of family {family!r}"
+    for key, want in knobs_of.items():
+        v = knobs[key]
+        ok = (isinstance(v, bool) if want is bool else
+              isinstance(v, want) and not isinstance(v, bool) if want is int else
+              isinstance(v, (int, float)) and not isinstance(v, bool) if want is float else
+              isinstance(v, want))
+        if not ok:
+            return f"{path}.params.knobs.{clean_text(key)}: must be of type {want.__name__}"
+        if want in (int, float) and abs(v) > MAX_ASSET_KNOB:
+            return f"{path}.params.knobs.{clean_text(key)}: |value| must be <= {MAX_ASSET_KNOB}"
+    return None

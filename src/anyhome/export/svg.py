@@ -1,6 +1,11 @@
 """Top-down floorplan SVG: rooms, walls, doors, windows, object footprints, scale, north.
 
 The SVG's y axis points down, so plan y is flipped (north is up on the page).
+
+Every text that comes from the house (prompt, names, ids) is cleaned of characters XML
+1.0 forbids and of terminal escapes (:func:`anyhome.sanitize.clean_text`), then escaped:
+element text with :func:`_text_of`, attribute values (quotes included) with
+:func:`_attr`, so a house.json cannot add elements or attributes to the drawing.
 """
 
 from __future__ import annotations
@@ -8,7 +13,7 @@ from __future__ import annotations
 import math
 import os
 from pathlib import Path
-from xml.sax.saxutils import escape
+from xml.sax.saxutils import escape, quoteattr
 
 import numpy as np
 from shapely.geometry import Point, Polygon
@@ -18,6 +23,7 @@ from anyhome.export.output import write_file
 from anyhome.export.walls import WALL_THICKNESS_M, solid_blocks, wall_pieces
 from anyhome.geometry import footprint_corners
 from anyhome.house import House
+from anyhome.sanitize import clean_text
 
 PX_PER_M = 60.0
 """Drawing scale."""
@@ -52,9 +58,19 @@ class _Canvas:
         return " ".join("{:.1f},{:.1f}".format(*self.xy(float(x), float(y))) for x, y in points)
 
 
+def _text_of(s: str) -> str:
+    """Element text: cleaned, with ``& < >`` escaped."""
+    return escape(clean_text(s))
+
+
+def _attr(s: str) -> str:
+    """An attribute value, cleaned, escaped and quoted (``"..."`` included)."""
+    return quoteattr(clean_text(s))
+
+
 def _text(x: float, y: float, s: str, size: float, weight: str = "normal", fill: str = "#222") -> str:
     return (f'<text x="{x:.1f}" y="{y:.1f}" font-size="{size:.1f}" font-weight="{weight}" fill="{fill}" '
-            f'text-anchor="middle" dominant-baseline="middle">{escape(s)}</text>')
+            f'text-anchor="middle" dominant-baseline="middle">{_text_of(s)}</text>')
 
 
 def render_svg(house: House) -> str:
@@ -62,13 +78,13 @@ def render_svg(house: House) -> str:
     c = _Canvas(house)
     out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{c.width:.0f}" height="{c.height:.0f}" '
            f'viewBox="0 0 {c.width:.0f} {c.height:.0f}" font-family="Helvetica, Arial, sans-serif">',
-           f'<title>{escape(house.prompt[:200])}</title>',
+           f'<title>{_text_of(house.prompt[:200])}</title>',
            f'<rect x="0" y="0" width="{c.width:.0f}" height="{c.height:.0f}" fill="white"/>',
            '<g id="rooms">']
     for room in house.rooms:
         fill = ROOM_FILLS.get(room.type, DEFAULT_FILL)
-        out.append(f'<polygon id="room-{escape(room.id)}" class="room" points="{c.pts(room.polygon)}" '
-                   f'fill="{fill}" stroke="none"><title>{escape(room.name)}</title></polygon>')
+        out.append(f'<polygon id={_attr("room-" + room.id)} class="room" points="{c.pts(room.polygon)}" '
+                   f'fill="{fill}" stroke="none"><title>{_text_of(room.name)}</title></polygon>')
     out.append('</g><g id="objects">')
     labels = []
     for obj in sorted(house.objects, key=lambda o: (o.support not in ("floor", "wall"), o.position[2])):
@@ -77,8 +93,8 @@ def render_svg(house: House) -> str:
         style = 'fill="#c9bfae" fill-opacity="0.9"' if on_top else f'fill="{OBJECT_FILL}" fill-opacity="0.85"'
         if obj.category in ("rug", "carpet", "mat", "yoga_mat"):
             style = 'fill="#e0cdb0" fill-opacity="0.5"'
-        out.append(f'<polygon class="object" id="object-{escape(obj.id)}" points="{c.pts(corners)}" {style} '
-                   f'stroke="#7a6f60" stroke-width="1"><title>{escape(obj.name)}</title></polygon>')
+        out.append(f'<polygon class="object" id={_attr("object-" + obj.id)} points="{c.pts(corners)}" {style} '
+                   f'stroke="#7a6f60" stroke-width="1"><title>{_text_of(obj.name)}</title></polygon>')
         front = (corners[2] + corners[3]) / 2
         ctr = corners.mean(axis=0)
         out.append(f'<line x1="{c.xy(*ctr)[0]:.1f}" y1="{c.xy(*ctr)[1]:.1f}" x2="{c.xy(*front)[0]:.1f}" '
@@ -144,7 +160,7 @@ def _windows(house: House, c: _Canvas) -> list[str]:
         a, b = (np.asarray(p, dtype=float) for p in w.segment)
         v = b - a
         n = np.array([-v[1], v[0]]) / max(np.linalg.norm(v), 1e-9) * WALL_THICKNESS_M * 0.3
-        out.append(f'<polygon class="window" id="window-{escape(w.id)}" '
+        out.append(f'<polygon class="window" id={_attr("window-" + w.id)} '
                    f'points="{c.pts([a - n * 1.6, b - n * 1.6, b + n * 1.6, a + n * 1.6])}" fill="white" '
                    f'stroke="{WINDOW_COLOR}" stroke-width="1.2"/>')
         for s in (-1, 1):
@@ -163,7 +179,7 @@ def _doors(house: House, c: _Canvas) -> list[str]:
         if width < 1e-6:
             continue
         (ax, ay), (bx, by) = c.xy(*a), c.xy(*b)
-        out.append(f'<line class="door" id="door-{escape(d.id)}" x1="{ax:.1f}" y1="{ay:.1f}" x2="{bx:.1f}" '
+        out.append(f'<line class="door" id={_attr("door-" + d.id)} x1="{ax:.1f}" y1="{ay:.1f}" x2="{bx:.1f}" '
                    f'y2="{by:.1f}" stroke="{DOOR_COLOR}" stroke-width="2" stroke-dasharray="4,3"/>')
         if d.kind == "open":
             continue
