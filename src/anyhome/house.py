@@ -50,6 +50,9 @@ MAX_HOUSE_EXTENT_M = 500.0
 MAX_COORD_M = 10_000.0
 """Every coordinate (polygon corners, opening ends, object positions) lies within this
 distance of the origin on each axis."""
+MIN_LENGTH_M = 0.001
+"""Smallest object size, room, door and window height and opening width (1 mm: more
+than the 0.1 mm house.json rounds to, so what loads still loads once saved)."""
 MAX_HEIGHT_M = 50.0
 """Largest room height, door or window height and window sill."""
 MAX_OBJECT_SIZE_M = MAX_ROOM_SIDE_M
@@ -249,9 +252,13 @@ class House(_Model):
             text = json.dumps(data, indent=1, ensure_ascii=False, allow_nan=False) + "\n"
         except ValueError as e:  # a NaN put in after validation
             raise HouseFormatError(f"house cannot be saved: {e}") from None
-        # a lone surrogate (from a JSON "\\ud800" escape) cannot be written as UTF-8: keep
-        # it as the escape it came from, so the file stays UTF-8 and loads back the same
-        return _SURROGATE_RE.sub(lambda m: f"\\u{ord(m.group()):04x}", text)
+        # surrogates cannot be written as UTF-8: a pair becomes the character it encodes, a
+        # lone one (from a JSON "\\ud800" escape) the escape it came from, so the file stays
+        # UTF-8 and loads back the same
+        if _SURROGATE_RE.search(text):
+            text = text.encode("utf-16", "surrogatepass").decode("utf-16", "surrogatepass")
+            text = _SURROGATE_RE.sub(lambda m: f"\\u{ord(m.group()):04x}", text)
+        return text
 
     @classmethod
     def from_json(cls, text: str | bytes, source: str = "house.json") -> House:
@@ -416,8 +423,10 @@ def _check_coords(path: str, values) -> str | None:
 def _check_height(path: str, value: float, allow_zero: bool = False) -> str | None:
     if _bad_number(value):
         return f"{path}: must be a finite number"
-    if value < 0 or (value == 0 and not allow_zero):
-        return f"{path}: must be {'>= 0' if allow_zero else '> 0'}"
+    if allow_zero and value < 0:
+        return f"{path}: must be >= 0"
+    if not allow_zero and value < MIN_LENGTH_M:
+        return f"{path}: must be > 0 (at least {MIN_LENGTH_M:g} m)"
     if value > MAX_HEIGHT_M:
         return f"{path}: {value:g} m is more than the maximum {MAX_HEIGHT_M:g} m"
     return None
@@ -428,8 +437,8 @@ def _check_segment(path: str, segment) -> str | None:
         if err := _check_coords(f"{path}[{j}]", p):
             return err
     (x0, y0), (x1, y1) = segment
-    if math.hypot(x1 - x0, y1 - y0) <= 1e-6:
-        return f"{path}: the two ends are the same point"
+    if math.hypot(x1 - x0, y1 - y0) < MIN_LENGTH_M:
+        return f"{path}: the two ends are the same point (less than {MIN_LENGTH_M:g} m apart)"
     return None
 
 
@@ -487,11 +496,12 @@ def _problems(h: House) -> Iterator[str]:
         if side > MAX_ROOM_SIDE_M:
             yield (f"{where}.polygon: the room is {side:g} m across, more than the maximum "
                    f"{MAX_ROOM_SIDE_M:g} m")
-        poly = Polygon(r.polygon)
-        if not poly.is_valid:
-            yield f"{where}.polygon: not a simple polygon (its edges cross or touch)"
-        if poly.area <= 1e-9:
-            yield f"{where}.polygon: has no area"
+        # checked as given and as saved (rounded), so a house that loads loads once saved
+        for poly in (Polygon(r.polygon), Polygon(_round_floats(r.polygon, JSON_DECIMALS))):
+            if not poly.is_valid:
+                yield f"{where}.polygon: not a simple polygon (its edges cross or touch)"
+            if poly.area < MIN_LENGTH_M**2:
+                yield f"{where}.polygon: has no area"
         x0, y0 = min(x0, min(xs)), min(y0, min(ys))
         x1, y1 = max(x1, max(xs)), max(y1, max(ys))
     if h.rooms and max(x1 - x0, y1 - y0) > MAX_HOUSE_EXTENT_M:
@@ -532,8 +542,8 @@ def _problems(h: House) -> Iterator[str]:
         for j, s in enumerate(o.size):
             if _bad_number(s):
                 yield f"{where}.size[{j}]: must be a finite number"
-            elif s <= 0:
-                yield f"{where}.size[{j}]: must be > 0"
+            elif s < MIN_LENGTH_M:
+                yield f"{where}.size[{j}]: must be > 0 (at least {MIN_LENGTH_M:g} m)"
             elif s > MAX_OBJECT_SIZE_M:
                 yield f"{where}.size[{j}]: {s:g} m is more than the maximum {MAX_OBJECT_SIZE_M:g} m"
         if _bad_number(o.yaw) or abs(o.yaw) > MAX_YAW_RAD:
@@ -572,6 +582,9 @@ def _check_asset(path: str, asset: dict[str, Any]) -> str | None:
     builder (it samples an asset from the object id), so only their numbers are checked."""
     if (bad := _non_finite(asset, path)) is not None:
         return f"{bad}: must be a finite number"
+    for key in ("source", "family"):
+        if key in asset and not isinstance(asset[key], str):
+            return f"{path}.{key}: must be a string"
     family = asset.get("family")
     if asset.get("source") != "procedural" or not isinstance(family, str):
         return None
@@ -583,8 +596,9 @@ def _check_asset(path: str, asset: dict[str, Any]) -> str | None:
         return f"{path}.params: must be an object"
     size = params.get("size")
     if (not isinstance(size, list) or len(size) != 3
-            or any(_bad_number(x) or not 0 < x <= MAX_OBJECT_SIZE_M for x in size)):
-        return f"{path}.params.size: must be 3 numbers > 0 and <= {MAX_OBJECT_SIZE_M:g}"
+            or any(_bad_number(x) or not MIN_LENGTH_M <= x <= MAX_OBJECT_SIZE_M for x in size)):
+        return (f"{path}.params.size: must be 3 numbers from {MIN_LENGTH_M:g} to "
+                f"{MAX_OBJECT_SIZE_M:g}")
     for key in ("primary", "secondary", "accent"):
         if key in params and not (isinstance(params[key], str) and _COLOR_RE.fullmatch(params[key])):
             return f"{path}.params.{key}: must be a colour like '#a0714a'"

@@ -38,6 +38,7 @@ from anyhome.materials import (
 )
 from anyhome.materials.gltf import embed_textures
 from anyhome.materials.uv import face_normals, textured_mesh
+from anyhome.sanitize import clean_text
 
 FLOOR_THICKNESS_M = 0.05
 """Floor slabs run from z = -thickness to z = 0; ceilings from the room height up."""
@@ -228,5 +229,8 @@ def write_glb(house: House, path: str | os.PathLike[str], texture_px: int | None
         scene, specs = _build(house, texture_px, textures=False)
         data = embed_textures(scene.export(file_type="glb"), specs)
     except Exception as e:  # trimesh raises many kinds
-        raise ExportError(f"could not build the GLB for {path.name}: {e}") from e
+        # one line, and never a bare "'x'" (the str of a KeyError)
+        detail = clean_text(str(e)) if str(e) and not isinstance(e, LookupError) else ""
+        detail = detail or f"{type(e).__name__} {clean_text(str(e))}".strip()
+        raise ExportError(f"could not build the GLB for {clean_text(path.name)}: {detail}") from e
     return write_file(path, data)
