@@ -227,3 +227,25 @@ def test_limits_are_documented():
     for name in dir(house_module):
         if name.startswith(("MAX_", "MIN_")):
             assert f"`{name}`" in doc, name
+
+
+@pytest.mark.parametrize("knob, value, message", [
+    ("slats", 0, r"knobs\.slats: 0 is out of the family's range"),
+    ("slats", 10**6, r"knobs\.slats: 1000000 is out of the family's range"),
+    ("slats", 2.5, r"knobs\.slats: must be of type int"),
+])
+def test_refuses_asset_knobs_the_family_cannot_build(knob, value, message):
+    """A zero or negative part count divides by zero in the mesh builders; a huge one
+    hangs them. The family's own sampler sets the range (see docs/house_format.md)."""
+    import numpy as np
+
+    from anyhome.assets.registry import get, typical_size
+
+    params = get("crib").sample(np.random.default_rng(0), typical_size("crib"), "").to_record()
+    data = json.loads(small_house().to_json())
+    data["objects"][0]["asset"] = {"source": "procedural", "family": "crib",
+                                   "params": {**params, "knobs": {**params["knobs"], knob: value}}}
+    with pytest.raises(HouseFormatError, match=message):
+        House.from_json(json.dumps(data))
+    data["objects"][0]["asset"]["params"]["knobs"] = params["knobs"]
+    House.from_json(json.dumps(data))  # the sampled record itself loads

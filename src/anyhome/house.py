@@ -562,9 +562,13 @@ def _problems(h: House) -> Iterator[str]:
 
 
 @lru_cache(maxsize=None)
-def _knob_types(family: str) -> dict[str, type] | None:
-    """The knobs a procedural family's records carry, with their types (None: no such
-    family)."""
+def _knob_schema(family: str) -> dict[str, tuple[type, float, float]] | None:
+    """The knobs a procedural family's records carry: name -> (type, lowest, highest
+    allowed). Learnt from the family's own sampler (several seeds, a quarter to four times
+    its typical size): a count it always makes >= 1 must be at least half its smallest, a
+    positive number at least a quarter of its smallest, a number it never makes negative
+    >= 0, and no number may exceed four times the largest it makes (at least 16 for
+    counts, 4 for other numbers). None: no such family."""
     import numpy as np
 
     from anyhome.assets.registry import _loaded, typical_size
@@ -572,8 +576,28 @@ def _knob_types(family: str) -> dict[str, type] | None:
     fam = _loaded().get(family)
     if fam is None:
         return None
-    params = fam.sample(np.random.default_rng(0), typical_size(family), "")
-    return {k: type(v) for k, v in params.knobs}
+    seen: dict[str, list] = {}
+    base = np.asarray(typical_size(family), dtype=float)
+    for scale in (0.25, 1.0, 4.0):
+        for seed in range(3):
+            params = fam.sample(np.random.default_rng(seed), tuple(base * scale), "")
+            for k, v in params.knobs:
+                seen.setdefault(k, []).append(v)
+    schema = {}
+    for k, values in seen.items():
+        kind = type(values[0])
+        if kind in (int, float):
+            lo_seen, hi_seen = min(values), max(abs(v) for v in values)
+            lo = 0 if lo_seen >= 0 else -math.inf
+            if kind is int and lo_seen >= 1:
+                lo = max(1, math.ceil(lo_seen / 2))
+            elif kind is float and lo_seen > 0:
+                lo = max(lo_seen / 4, 10.0**-JSON_DECIMALS)  # stays > 0 once rounded
+            hi = min(MAX_ASSET_KNOB, max(4 * hi_seen, 16 if kind is int else 4))
+            schema[k] = (kind, max(lo, -hi), hi)
+        else:
+            schema[k] = (kind, -math.inf, math.inf)
+    return schema
 
 
 def _check_asset(path: str, asset: dict[str, Any]) -> str | None:
@@ -588,8 +612,8 @@ def _check_asset(path: str, asset: dict[str, Any]) -> str | None:
     family = asset.get("family")
     if asset.get("source") != "procedural" or not isinstance(family, str):
         return None
-    knobs_of = _knob_types(family)
-    if knobs_of is None:
+    schema = _knob_schema(family)
+    if schema is None:
         return None
     params = asset.get("params")
     if not isinstance(params, dict):
@@ -608,16 +632,17 @@ def _check_asset(path: str, asset: dict[str, Any]) -> str | None:
     if not isinstance(seed, int) or isinstance(seed, bool) or not 0 <= seed < 2**63:
         return f"{path}.params.seed: must be an integer in [0, 2**63)"
     knobs = params.get("knobs", {})
-    if not isinstance(knobs, dict) or set(knobs) != set(knobs_of):
+    if not isinstance(knobs, dict) or set(knobs) != set(schema):
         return f"{path}.params.knobs: must hold exactly the knobs of family {family!r}"
-    for key, want in knobs_of.items():
+    for key, (want, lo, hi) in schema.items():
         v = knobs[key]
+        where = f"{path}.params.knobs.{clean_text(key)}"
         ok = (isinstance(v, bool) if want is bool else
               isinstance(v, want) and not isinstance(v, bool) if want is int else
               isinstance(v, (int, float)) and not isinstance(v, bool) if want is float else
               isinstance(v, want))
         if not ok:
-            return f"{path}.params.knobs.{clean_text(key)}: must be of type {want.__name__}"
-        if want in (int, float) and abs(v) > MAX_ASSET_KNOB:
-            return f"{path}.params.knobs.{clean_text(key)}: |value| must be <= {MAX_ASSET_KNOB}"
+            return f"{where}: must be of type {want.__name__}"
+        if want in (int, float) and not lo <= v <= hi:
+            return f"{where}: {v!r} is out of the family's range [{lo:g}, {hi:g}]"
     return None

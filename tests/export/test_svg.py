@@ -113,3 +113,4 @@ def test_hostile_house_json_round_trip_exports_clean_svg(small_house, tmp_path) 
     root = ET.parse(path).getroot()
     for el in root.iter():
         assert set(el.attrib) <= SVG_ATTRIBUTES
+

@@ -215,7 +215,16 @@ def build_scene(house: House, texture_px: int | None = None) -> trimesh.Scene:
     ``object:<id>:<role>`` (role primary, secondary, accent, glass..., a ``-2`` suffix
     for repeats), in the object's local frame.
     """
-    return _build(house, texture_px, textures=True)[0]
+    try:
+        return _build(house, texture_px, textures=True)[0]
+    except Exception as e:  # trimesh and the asset builders raise many kinds
+        raise ExportError(f"could not build the 3D scene: {_one_line(e)}") from e
+
+
+def _one_line(e: Exception) -> str:
+    """An exception as one clean line, never a bare "'x'" (the str of a KeyError)."""
+    detail = clean_text(str(e)) if str(e) and not isinstance(e, LookupError) else ""
+    return detail or f"{type(e).__name__} {clean_text(str(e))}".strip()
 
 
 def write_glb(house: House, path: str | os.PathLike[str], texture_px: int | None = None) -> Path:
@@ -229,8 +238,5 @@ def write_glb(house: House, path: str | os.PathLike[str], texture_px: int | None
         scene, specs = _build(house, texture_px, textures=False)
         data = embed_textures(scene.export(file_type="glb"), specs)
     except Exception as e:  # trimesh raises many kinds
-        # one line, and never a bare "'x'" (the str of a KeyError)
-        detail = clean_text(str(e)) if str(e) and not isinstance(e, LookupError) else ""
-        detail = detail or f"{type(e).__name__} {clean_text(str(e))}".strip()
-        raise ExportError(f"could not build the GLB for {clean_text(path.name)}: {detail}") from e
+        raise ExportError(f"could not build the GLB for {clean_text(path.name)}: {_one_line(e)}") from e
     return write_file(path, data)

@@ -119,8 +119,12 @@ def _items(rs: RoomSpec) -> list[ItemSpec]:
     return out + list(rs.ornaments)
 
 
+SLUG_MAX_CHARS = 40
+"""Longest name part of an object id (ids are at most 128 characters, see anyhome.sanitize)."""
+
+
 def slugify(text: str) -> str:
-    return re.sub(r"[^a-z0-9]+", "_", text.lower()).strip("_") or "object"
+    return re.sub(r"[^a-z0-9]+", "_", text.lower())[:SLUG_MAX_CHARS].strip("_") or "object"
 
 
 @dataclass
