@@ -206,10 +206,10 @@ def cmd_export(args: argparse.Namespace) -> int:
     src = Path(args.path)
     out = args.out if args.out is not None else (src if src.is_dir() else src.parent)
     formats = [f.strip().lower() for f in args.format.split(",")]
-    check_out(out, replace=False)  # before loading: a bad --out is one line, at no cost
+    real = check_out(out, replace=False)  # before loading: a bad --out is one line, at no cost
     house = load(args.path)
-    written = write_exports(house, out, formats)
-    print("Files: " + "  ".join(_shown(p) for p in written))
+    written = write_exports(house, real, formats)
+    print("Files: " + "  ".join(_shown(Path(out) / p.relative_to(real)) for p in written))
     return 0
 
 

@@ -514,9 +514,12 @@ class Staging:
             raise ExportError(f"could not replace {self.dest}: {_reason(e)}") from None
         self.committed = True
 
-    def __exit__(self, *exc: object) -> None:
+    def __exit__(self, kind: object, error: BaseException | None, tb: object) -> None:
         if not self.committed:
             shutil.rmtree(self.path, ignore_errors=True)
+        if isinstance(error, AnyHomeError) and str(self.path) in str(error):
+            # name the file as the user will know it, not its temporary folder
+            raise type(error)(str(error).replace(str(self.path), str(self.dest))) from None
 
 
 def link_or_copy(src: Path, dst: Path) -> None:
