@@ -174,7 +174,7 @@ def cmd_eval(args: argparse.Namespace) -> int:
     from anyhome.evaluate import evaluate_house, expectation_for_prompt, load_expectations
     from anyhome.house import load
 
-    house = load(args.path)
+    house = load(_house_folder(args.path))
     expect = None
     if args.expect:
         if args.id:
@@ -197,6 +197,16 @@ def cmd_eval(args: argparse.Namespace) -> int:
     return 0
 
 
+def _house_folder(path: str) -> str:
+    """``path`` (a house folder or house.json), after putting back a house folder that a
+    run killed in the middle of its swap left aside (see anyhome.outdir.prepare)."""
+    from anyhome.outdir import prepare
+
+    p = Path(path)
+    prepare(p if p.suffix != ".json" else p.parent)
+    return path
+
+
 # -------------------------------------------------------------------- export
 def cmd_export(args: argparse.Namespace) -> int:
     from anyhome.house import load
@@ -207,7 +217,7 @@ def cmd_export(args: argparse.Namespace) -> int:
     out = args.out if args.out is not None else (src if src.is_dir() else src.parent)
     formats = [f.strip().lower() for f in args.format.split(",")]
     real = check_out(out, replace=False)  # before loading: a bad --out is one line, at no cost
-    house = load(args.path)
+    house = load(_house_folder(args.path))
     written = write_exports(house, real, formats)
     print("Files: " + "  ".join(_shown(Path(out) / p.relative_to(real)) for p in written))
     return 0
@@ -249,7 +259,7 @@ def cmd_render(args: argparse.Namespace) -> int:
     else:  # the house's own folder, re-rendered: its files and the new images
         out = house_dir
         real = check_out(out, what="the house folder")
-    house = load(args.path)
+    house = load(_house_folder(args.path))
     files = write_renders(house_dir, real, lambda folder: _render(house, folder, args))
     print("Files: " + "  ".join(_shown(Path(out) / f.relative_to(real)) for f in files))
     return 0

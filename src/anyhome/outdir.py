@@ -288,7 +288,8 @@ def check_out(out: str | os.PathLike[str], what: str = "--out", replace: bool = 
 
     Cheap checks only: the name, the parent (a folder, writable), a symlink loop, and,
     with ``replace`` (the folder will be swapped), that an existing folder is ours. Every
-    problem raises ExportError in one line; nothing is created or changed.
+    problem raises ExportError in one line. Nothing is created or changed, except what
+    :func:`prepare` repairs first (what killed runs left next to the folder).
     """
     s = os.fspath(out)
     if isinstance(s, bytes):
@@ -317,6 +318,7 @@ def check_out(out: str | os.PathLike[str], what: str = "--out", replace: bool = 
             raise ExportError(f"{what} {s!r}: a loop of symbolic links") from None
         raise ExportError(f"{what} {s!r}: {_reason(e)}") from None
     real = Path(os.path.realpath(s))
+    prepare(real)
     if replace and real == Path(real.anchor):
         raise ExportError(f"{what} {s!r} is the root folder, which AnyHome does not replace")
     if real.exists():
@@ -404,6 +406,18 @@ def _locked(parent: Path) -> Iterator[None]:
         os.close(fd)
 
 
+def prepare(folder: str | os.PathLike[str]) -> None:
+    """:func:`recover` next to ``folder`` (symlinks followed), under the parent's lock;
+    call it before reading or writing a house folder. Never raises."""
+    real = Path(os.path.realpath(folder))
+    if real.parent != real and real.parent.is_dir():
+        try:
+            with _locked(real.parent):
+                recover(real)
+        except OSError:
+            pass
+
+
 def recover(dest: Path) -> None:
     """Undo what killed runs left next to ``dest``: put back a folder moved aside by an
     interrupted two-rename swap, and remove temporary folders of finished processes."""
@@ -421,7 +435,10 @@ def recover(dest: Path) -> None:
         return
     for m, path in stale:  # first put our own folder back if a swap left it aside
         if m["kind"] == "old" and m["hash"] == _name_hash(dest.name) and not os.path.lexists(dest):
-            os.rename(path, dest)
+            try:
+                os.rename(path, dest)
+            except OSError:
+                pass
     names = set(os.listdir(parent))
     hashes = {_name_hash(n) for n in names}
     for m, path in stale:

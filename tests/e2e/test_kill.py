@@ -119,7 +119,8 @@ def test_kill_inside_the_swap_leaves_a_whole_house(plain, tmp_path, swap, point)
 
 def test_kill_between_the_two_renames_is_recovered(plain, tmp_path):
     """The fallback swap (no renameat2): a kill between its renames leaves the old folder
-    aside; the next run into the same parent puts it back before anything else."""
+    aside; the next command on that folder (eval, render, export, generate) puts it back
+    before anything else."""
     base, old, new, _ = plain
     d = tmp_path / "h"
     shutil.copytree(base / "old", d)
@@ -127,7 +128,13 @@ def test_kill_between_the_two_renames_is_recovered(plain, tmp_path):
     assert cli("generate", NEW, "--out", str(d), *PLAIN, env={**env, KILL_ENV: "moved-aside"},
                check=False).returncode == -signal.SIGKILL
     assert not d.exists() and len(os.listdir(tmp_path)) == 2  # old aside, new staged
-    # the next run recovers first; killed right after, it leaves the old house in place
+    # the next command that reads or writes the folder puts it back first
+    cli("eval", str(d / "house.json"))
+    assert tree(d) == old
+    assert_clean(tmp_path, "h")
+    assert cli("generate", NEW, "--out", str(d), *PLAIN, env={**env, KILL_ENV: "moved-aside"},
+               check=False).returncode == -signal.SIGKILL
+    # and a generate recovers it before its own checks; killed right after, the old house stays
     assert cli("generate", NEW, "--out", str(d), *PLAIN, env={**env, KILL_ENV: "staged"},
                check=False).returncode == -signal.SIGKILL
     assert tree(d) == old
