@@ -272,3 +272,14 @@ def test_stale_atomic_write_parts_are_not_foreign(tmp_path):
     assert foreign_entry(h) is None
     (h / f".house.glb.ah-{os.getpid()}-{outdir._OWN_START}-abcdef.part").write_bytes(b"live")
     assert foreign_entry(h) is not None
+
+
+def test_an_empty_folder_anyhome_made_stays_ours(tmp_path):
+    h = tmp_path / "h"
+    (h / "views").mkdir(parents=True)
+    (h / "house.json").write_text(HOUSE_JSON)
+    outdir.write_manifest(h)
+    assert json.loads((h / MANIFEST_FILE).read_text())["dirs"] == ["views"]
+    assert foreign_entry(h) is None
+    (h / "photos").mkdir()
+    assert foreign_entry(h) == "photos/"

@@ -169,8 +169,9 @@ def _reason(e: OSError) -> str:
 
 # ------------------------------------------------------------------ manifest
 def read_manifest(folder: Path) -> set[str] | None:
-    """The relative paths the manifest of ``folder`` lists; None without a manifest.
-    An unreadable or malformed manifest raises ExportError (the folder is not ours)."""
+    """The relative paths the manifest of ``folder`` lists (folders end in ``/``); None
+    without a manifest. An unreadable or malformed manifest raises ExportError (the
+    folder is not ours)."""
     path = folder / MANIFEST_FILE
     try:
         raw = path.read_bytes()
@@ -180,31 +181,38 @@ def read_manifest(folder: Path) -> set[str] | None:
         raise ExportError(f"could not read {path}: {_reason(e)}") from None
     try:
         data = json.loads(raw.decode("utf-8"))
-        files = data["files"] if isinstance(data, dict) and data.get("format") == MANIFEST_FORMAT else None
+        ok = isinstance(data, dict) and data.get("format") == MANIFEST_FORMAT
+        files, dirs = (data["files"], data.get("dirs", [])) if ok else (None, None)
     except (UnicodeDecodeError, ValueError, KeyError, RecursionError):
-        files = None
-    if not isinstance(files, list) or not all(isinstance(f, str) for f in files):
+        files = dirs = None
+    if not all(isinstance(x, list) and all(isinstance(f, str) for f in x) for x in (files, dirs)):
         raise ExportError(f"{path} is not an AnyHome manifest; choose another --out")
-    return set(files)
+    return set(files) | {d.rstrip("/") + "/" for d in dirs}
 
 
-def walk_files(folder: Path, rel: str = "") -> Iterator[str]:
-    """Relative paths of the regular files under ``folder`` (sorted, symlinks skipped)."""
+def walk_files(folder: Path, rel: str = "", dirs: bool = False) -> Iterator[str]:
+    """Relative paths of the regular files under ``folder`` (sorted, symlinks skipped);
+    with ``dirs`` also its folders, ending in ``/``."""
     with os.scandir(folder / rel if rel else folder) as it:
         entries = sorted(it, key=lambda e: e.name)
     for e in entries:
         r = f"{rel}{e.name}"
         if e.is_dir(follow_symlinks=False):
-            yield from walk_files(folder, r + "/")
+            if dirs:
+                yield r + "/"
+            yield from walk_files(folder, r + "/", dirs)
         elif e.is_file(follow_symlinks=False):
             yield r
 
 
 def write_manifest(folder: Path, extra: set[str] | None = None) -> Path:
-    """Write the manifest of ``folder``: every file under it (and ``extra``)."""
-    files = {f for f in walk_files(folder) if f != MANIFEST_FILE and not is_stale_temp(f.rsplit("/", 1)[-1])}
-    files |= extra or set()
-    data = {"format": MANIFEST_FORMAT, "version": 1, "files": sorted(files)}
+    """Write the manifest of ``folder``: every file and folder under it (and ``extra``)."""
+    entries = {f for f in walk_files(folder, dirs=True)
+               if f != MANIFEST_FILE and not is_stale_temp(f.rstrip("/").rsplit("/", 1)[-1])}
+    entries |= extra or set()
+    data = {"format": MANIFEST_FORMAT, "version": 1,
+            "files": sorted(f for f in entries if not f.endswith("/")),
+            "dirs": sorted(f.rstrip("/") for f in entries if f.endswith("/"))}
     return write_file(folder / MANIFEST_FILE, (json.dumps(data, indent=1) + "\n").encode("utf-8"))
 
 
@@ -216,6 +224,7 @@ def foreign_entry(folder: Path) -> str | None:
     if listed is None:
         return _legacy_foreign(folder)
     dirs = {p.rsplit("/", i)[0] for p in listed for i in range(1, p.count("/") + 1)}
+    dirs |= {p.rstrip("/") for p in listed if p.endswith("/")}
     return _first_foreign(folder, "", lambda rel, is_dir: rel in (dirs if is_dir else listed))
 
 
