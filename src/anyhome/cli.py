@@ -15,6 +15,7 @@ from shapely.geometry import Polygon
 
 from anyhome import __version__
 from anyhome.errors import AnyHomeError
+from anyhome.sanitize import clean_text, redact_url
 
 STAGE_LABELS = {
     "plan": "planning rooms and furniture",
@@ -23,10 +24,26 @@ STAGE_LABELS = {
     "refine": "refining the layout",
     "assets": "choosing assets",
 }
+STEP_LABELS = {"write": "[out] writing files", "render": "[render] bird's-eye and room views"}
+"""Steps after the stages (write_outputs' progress), printed without a number."""
+
+_open_line = False
+"""True while a progress line waits for its time ("[2/5] solving the floorplan ...")."""
+
+
+def _shown(value: object) -> str:
+    """``value`` safe to print: no escape sequences or control characters, and no lone
+    surrogates (a path or text from invalid UTF-8 bytes)."""
+    return clean_text(str(value))
 
 
 def _err(msg: str) -> None:
-    print(msg, file=sys.stderr)
+    """Print ``msg`` on stderr on its own line (ending a progress line left open)."""
+    global _open_line
+    if _open_line:
+        print(" failed", file=sys.stderr, flush=True)
+        _open_line = False
+    print(_shown(msg), file=sys.stderr, flush=True)
 
 
 class _StageProgress:
@@ -35,31 +52,34 @@ class _StageProgress:
     def __init__(self, enabled: bool) -> None:
         self.enabled = enabled
         self.order = list(STAGE_LABELS)
-        self.open_line = False
-
-    def close(self) -> None:
-        """End a progress line left open by a stage that failed."""
-        if self.open_line:
-            print(" failed", file=sys.stderr, flush=True)
-            self.open_line = False
 
     def __call__(self, stage: str, event: str, seconds: float) -> None:
+        global _open_line
         if not self.enabled:
             return
-        k = self.order.index(stage) + 1 if stage in self.order else 0
-        label = STAGE_LABELS.get(stage, stage)
+        if stage in STEP_LABELS:
+            label = STEP_LABELS[stage]
+        else:
+            k = self.order.index(stage) + 1 if stage in self.order else 0
+            label = f"[{k}/{len(self.order)}] {STAGE_LABELS.get(stage, stage)}"
         if event == "start":
-            print(f"[{k}/{len(self.order)}] {label} ...", end="", file=sys.stderr, flush=True)
-            self.open_line = True
+            print(f"{label} ...", end="", file=sys.stderr, flush=True)
+            _open_line = True
         else:
             print(f" {seconds:.2f} s", file=sys.stderr, flush=True)
-            self.open_line = False
+            _open_line = False
 
 
 # ------------------------------------------------------------------ generate
 def cmd_generate(args: argparse.Namespace) -> int:
-    from anyhome.pipeline import generate, write_outputs
+    from anyhome.outdir import check_out
+    from anyhome.pipeline import check_text, generate, write_outputs
 
+    # cheap checks first: a bad text, --out or render size costs no generation
+    check_text(args.text)
+    out = check_out(args.out)
+    if args.render:
+        _check_render_options(args)
     if args.embedder:
         from anyhome.plan.embed import ENV_BACKEND, get_embedder
 
@@ -68,30 +88,16 @@ def cmd_generate(args: argparse.Namespace) -> int:
     planner = _planner(args)
     t0 = time.perf_counter()
     progress = _StageProgress(not args.quiet)
-    try:
-        house = generate(args.text, seed=args.seed, planner=planner, progress=progress)
-    finally:
-        progress.close()
+    house = generate(args.text, seed=args.seed, planner=planner, progress=progress)
     timings = dict(house.timings_s)
-    out = Path(args.out)
-    if not args.quiet:
-        print("[out] writing files ...", end="", file=sys.stderr, flush=True)
-    t1 = time.perf_counter()
-    files = write_outputs(house, out, glb=not args.no_glb, svg=not args.no_svg, timings=timings)
-    if not args.quiet:
-        print(f" {time.perf_counter() - t1:.2f} s", file=sys.stderr)
-    if args.render:
-        if not args.quiet:
-            print("[render] bird's-eye and room views ...", end="", file=sys.stderr, flush=True)
-        t2 = time.perf_counter()
-        files += _render(house, out, args)
-        timings["render"] = time.perf_counter() - t2
-        if not args.quiet:
-            print(f" {timings['render']:.2f} s", file=sys.stderr)
+    extra = (lambda folder: _render(house, folder, args)) if args.render else None
+    files = write_outputs(house, out, glb=not args.no_glb, svg=not args.no_svg, timings=timings,
+                          extra=extra, progress=progress)
+    files = [Path(args.out) / f.relative_to(out) for f in files]  # as the user named the folder
     total = time.perf_counter() - t0
     if args.json:
         print(json.dumps({
-            "out": str(out), "files": [str(f) for f in files], "rooms": len(house.rooms),
+            "out": str(args.out), "files": [str(f) for f in files], "rooms": len(house.rooms),
             "objects": len(house.objects), "dropped": len(house.dropped),
             "warnings": house.warnings, "timings_s": timings, "total_s": total,
             **({"llm": _llm_usage(planner, house)} if args.planner == "llm" else {}),
@@ -135,8 +141,9 @@ def _llm_usage(planner, house) -> dict:
 
 def _print_llm(u: dict) -> None:
     sources = Counter(u["stages"].values())
-    fell = [k for k, v in u["stages"].items() if v == "offline"]
-    print(f"LLM: {u['model'] or '(model unknown)'} at {u['base_url']}: {u['calls']} calls, {u['cache_hits']} from the cache, "
+    fell = [_shown(k) for k, v in u["stages"].items() if v == "offline"]
+    model, url = _shown(u["model"] or "(model unknown)"), _shown(redact_url(str(u["base_url"])))
+    print(f"LLM: {model} at {url}: {u['calls']} calls, {u['cache_hits']} from the cache, "
           f"{u['prompt_tokens']} + {u['completion_tokens']} tokens, {u['call_latency_s']:.1f} s in calls")
     print(f"  stages: {sources['llm']} from the LLM, {sources['llm_repaired']} repaired, {sources['offline']} from the offline planner"
           + (f" ({', '.join(fell[:6])}{', ...' if len(fell) > 6 else ''})" if fell else ""))
@@ -145,21 +152,21 @@ def _print_llm(u: dict) -> None:
 def _print_summary(house, files, timings: dict[str, float], total: float) -> None:
     per_room = Counter(o.room for o in house.objects)
     print(f"House: {len(house.rooms)} rooms, {len(house.doors)} doors, "
-          f"{len(house.windows)} windows, {len(house.objects)} objects  (style: {house.style})")
+          f"{len(house.windows)} windows, {len(house.objects)} objects  (style: {_shown(house.style)})")
     for room in house.rooms:
         area = Polygon(room.polygon).area
-        print(f"  {room.id:<14} {room.name:<22} {area:6.1f} m2  {per_room[room.id]:3d} objects")
+        print(f"  {_shown(room.id):<14} {_shown(room.name):<22} {area:6.1f} m2  {per_room[room.id]:3d} objects")
     if house.dropped:
         print(f"Dropped {len(house.dropped)} item(s) that did not fit:")
         for d in house.dropped[:10]:
-            print(f"  {d.room}: {d.name} ({d.reason})")
+            print(f"  {_shown(d.room)}: {_shown(d.name)} ({_shown(d.reason)})")
         if len(house.dropped) > 10:
             print(f"  ... and {len(house.dropped) - 10} more (see house.json 'dropped')")
     for w in house.warnings:
-        print(f"Warning: {w}")
+        print(f"Warning: {_shown(w)}")
     times = "  ".join(f"{k} {v:.2f}s" for k, v in timings.items())
     print(f"Time: {total:.2f} s  ({times})")
-    print("Files: " + "  ".join(str(f) for f in files))
+    print("Files: " + "  ".join(_shown(f) for f in files))
 
 
 # ---------------------------------------------------------------------- eval
@@ -167,7 +174,7 @@ def cmd_eval(args: argparse.Namespace) -> int:
     from anyhome.evaluate import evaluate_house, expectation_for_prompt, load_expectations
     from anyhome.house import load
 
-    house = load(args.path)
+    house = load(_house_folder(args.path))
     expect = None
     if args.expect:
         if args.id:
@@ -184,31 +191,35 @@ def cmd_eval(args: argparse.Namespace) -> int:
         print(json.dumps(report.to_dict(), indent=1))
     else:
         for line in report.summary_lines():
-            print(line)
+            print(_shown(line))
     if args.strict and not report.ok:
         return 1
     return 0
 
 
+def _house_folder(path: str) -> str:
+    """``path`` (a house folder or house.json), after putting back a house folder that a
+    run killed in the middle of its swap left aside (see anyhome.outdir.prepare)."""
+    from anyhome.outdir import prepare
+
+    p = Path(path)
+    prepare(p if p.suffix != ".json" else p.parent)
+    return path
+
+
 # -------------------------------------------------------------------- export
 def cmd_export(args: argparse.Namespace) -> int:
-    from anyhome.export import write_glb, write_svg
     from anyhome.house import load
+    from anyhome.outdir import check_out
+    from anyhome.pipeline import write_exports
 
-    house = load(args.path)
     src = Path(args.path)
-    out = Path(args.out) if args.out else (src if src.is_dir() else src.parent)
-    out.mkdir(parents=True, exist_ok=True)
-    written = []
-    for fmt in args.format.split(","):
-        fmt = fmt.strip().lower()
-        if fmt == "glb":
-            written.append(write_glb(house, out / "house.glb"))
-        elif fmt == "svg":
-            written.append(write_svg(house, out / "floorplan.svg"))
-        else:
-            raise AnyHomeError(f"unknown export format {fmt!r} (available: glb, svg)")
-    print("Files: " + "  ".join(str(p) for p in written))
+    out = args.out if args.out is not None else (src if src.is_dir() else src.parent)
+    formats = [f.strip().lower() for f in args.format.split(",")]
+    real = check_out(out, replace=False)  # before loading: a bad --out is one line, at no cost
+    house = load(_house_folder(args.path))
+    written = write_exports(house, real, formats)
+    print("Files: " + "  ".join(_shown(Path(out) / p.relative_to(real)) for p in written))
     return 0
 
 
@@ -236,13 +247,31 @@ def cmd_assets(args: argparse.Namespace) -> int:
 # -------------------------------------------------------------------- render
 def cmd_render(args: argparse.Namespace) -> int:
     from anyhome.house import load
+    from anyhome.outdir import check_out
+    from anyhome.pipeline import write_renders
 
-    house = load(args.path)
+    _check_render_options(args)
     src = Path(args.path)
-    out = Path(args.out) if args.out else (src if src.is_dir() else src.parent)
-    files = _render(house, out, args)
-    print("Files: " + "  ".join(str(f) for f in files))
+    house_dir = src if src.is_dir() else src.parent
+    if args.out is not None:
+        out = args.out
+        real = check_out(out)
+    else:  # the house's own folder, re-rendered: its files and the new images
+        out = house_dir
+        real = check_out(out, what="the house folder")
+    house = load(_house_folder(args.path))
+    files = write_renders(house_dir, real, lambda folder: _render(house, folder, args))
+    print("Files: " + "  ".join(_shown(Path(out) / f.relative_to(real)) for f in files))
     return 0
+
+
+def _check_render_options(args: argparse.Namespace) -> None:
+    """Image sizes in range and a renderer installed, checked before any work."""
+    from anyhome.render.api import check_image_sizes
+    from anyhome.render.gl import import_moderngl
+
+    check_image_sizes(args.size, args.view_size, names=("--size", "--view-size"))
+    import_moderngl()
 
 
 def _render(house, out: Path, args: argparse.Namespace) -> list[Path]:
@@ -254,8 +283,8 @@ def _render(house, out: Path, args: argparse.Namespace) -> list[Path]:
 
 
 def _render_options(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--size", type=int, default=1024, help="bird's-eye image size in pixels (default 1024)")
-    parser.add_argument("--view-size", type=int, default=512, help="per-room view size in pixels (default 512)")
+    parser.add_argument("--size", type=int, default=1024, help="bird's-eye image size in pixels, 1 to 4096 (default 1024)")
+    parser.add_argument("--view-size", type=int, default=512, help="per-room view size in pixels, 1 to 4096 (default 512)")
     parser.add_argument("--no-views", action="store_true", help="only the bird's-eye view")
     parser.add_argument("--depth", action="store_true", help="also write depth and object-id maps")
 

@@ -9,8 +9,6 @@ from __future__ import annotations
 
 import logging
 import os
-import shutil
-import tempfile
 import time
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
@@ -19,7 +17,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from anyhome.errors import AnyHomeError, ExportError
+from anyhome.errors import AnyHomeError, ExportError, PlanError
 from anyhome.house import HOUSE_FILE, House
 
 if TYPE_CHECKING:
@@ -30,7 +28,7 @@ log = logging.getLogger(__name__)
 STAGES: tuple[str, ...] = ("plan", "floorplan", "layout", "refine", "assets")
 """The generation stages in order (exports are timed separately by write_outputs)."""
 OUTPUTS: tuple[str, ...] = ("house.json", "house.glb", "floorplan.svg")
-"""Files ``write_outputs`` writes by default."""
+"""Files ``write_outputs`` writes by default (plus the manifest, see anyhome.outdir)."""
 
 Progress = Callable[[str, str, float], None]
 """progress(stage, event, seconds): event is "start" or "done" (seconds then set)."""
@@ -47,6 +45,19 @@ def _stage(name: str, timings: dict[str, float], progress: Progress) -> Iterator
     yield
     timings[name] = time.perf_counter() - t0
     progress(name, "done", timings[name])
+
+
+def check_text(text: object) -> None:
+    """Raise PlanError unless ``text`` is a string that is valid Unicode (a command line
+    with invalid UTF-8 bytes arrives as a string with lone surrogates)."""
+    if not isinstance(text, str):
+        raise PlanError(f"the text must be a string, got {type(text).__name__}")
+    try:
+        text.encode("utf-8")
+    except UnicodeEncodeError as e:
+        ch = ord(text[e.start])
+        what = f"byte 0x{ch - 0xDC00:02x}" if 0xDC80 <= ch <= 0xDCFF else f"U+{ch:04X}"
+        raise PlanError(f"the text is not valid UTF-8 ({what} at character {e.start + 1})") from None
 
 
 def generate(
@@ -76,6 +87,7 @@ def generate(
     from anyhome.refine import refine_objects
 
     progress = progress or _quiet
+    check_text(text)
     if not isinstance(seed, (int, np.integer)) or seed < 0:
         raise AnyHomeError(f"seed must be a non-negative integer, got {seed!r}")
     rngs = dict(
@@ -121,53 +133,105 @@ def write_outputs(
     glb: bool = True,
     svg: bool = True,
     timings: dict[str, float] | None = None,
+    extra: Callable[[Path], list[Path]] | None = None,
+    progress: Progress | None = None,
 ) -> list[Path]:
     """Write house.json (+ house.glb, floorplan.svg) into ``out_dir``, all or nothing.
 
-    Files are written into a temporary sibling folder first; only when every file is
-    written does it replace ``out_dir``. A failure leaves an existing ``out_dir``
-    untouched. A non-empty ``out_dir`` that holds no house.json is refused, so a typo
-    never overwrites a user's folder.
+    Files are written into a temporary sibling folder first, with ``extra(folder)`` (for
+    example the renders) and a manifest of what was written; only then does that folder
+    replace ``out_dir`` (see :mod:`anyhome.outdir`). A failure or a kill leaves an
+    existing ``out_dir`` untouched. A folder holding anything AnyHome did not write is
+    refused with an ExportError, before anything is written.
+
+    ``progress`` gets the stages ``"write"`` and, with ``extra``, ``"render"``. Returns
+    the paths of the written files inside ``out_dir``.
     """
     from anyhome.export import write_glb, write_svg
+    from anyhome.outdir import Staging, write_file
 
-    out = Path(out_dir)
-    if out.exists() and not out.is_dir():
-        raise ExportError(f"{out} exists and is not a folder")
-    if out.is_dir() and any(out.iterdir()) and not (out / HOUSE_FILE).exists():
-        raise ExportError(f"{out} is a non-empty folder without a house.json; choose another --out")
-    out.parent.mkdir(parents=True, exist_ok=True)
-    tmp = Path(tempfile.mkdtemp(prefix=f".{out.name}.", suffix=".tmp", dir=out.parent))
+    progress = progress or _quiet
     timings = timings if timings is not None else {}
-    try:
-        t0 = time.perf_counter()
-        house.save(tmp)
-        timings["write_json"] = time.perf_counter() - t0
+    with Staging(out_dir) as stage:
+        tmp = stage.path
+        progress("write", "start", 0.0)
+        t_write = time.perf_counter()
+        written = [write_file(tmp / HOUSE_FILE, house.to_json().encode("utf-8"))]
+        timings["write_json"] = time.perf_counter() - t_write
         if glb:
             t0 = time.perf_counter()
-            write_glb(house, tmp / "house.glb")
+            written.append(write_glb(house, tmp / "house.glb"))
             timings["write_glb"] = time.perf_counter() - t0
         if svg:
             t0 = time.perf_counter()
-            write_svg(house, tmp / "floorplan.svg")
+            written.append(write_svg(house, tmp / "floorplan.svg"))
             timings["write_svg"] = time.perf_counter() - t0
-        if out.exists():
-            _replace_dir(tmp, out)
-        else:
-            os.replace(tmp, out)
-    except BaseException:
-        shutil.rmtree(tmp, ignore_errors=True)
-        raise
-    return sorted(p for p in out.iterdir() if p.is_file())
+        progress("write", "done", time.perf_counter() - t_write)
+        if extra is not None:
+            progress("render", "start", 0.0)
+            t0 = time.perf_counter()
+            written += extra(tmp)
+            timings["render"] = time.perf_counter() - t0
+            progress("render", "done", timings["render"])
+        stage.commit()
+    return [stage.dest / Path(p).relative_to(tmp) for p in written]
 
 
-def _replace_dir(new: Path, old: Path) -> None:
-    """Swap ``new`` into ``old``'s place with a rename, then delete the old content."""
-    backup = old.with_name(f".{old.name}.old-{os.getpid()}")
-    os.replace(old, backup)
-    try:
-        os.replace(new, old)
-    except BaseException:
-        os.replace(backup, old)
-        raise
-    shutil.rmtree(backup, ignore_errors=True)
+def write_renders(
+    house_dir: str | os.PathLike[str] | None,
+    out_dir: str | os.PathLike[str],
+    render: Callable[[Path], list[Path]],
+) -> list[Path]:
+    """Render into ``out_dir``, all or nothing: ``render(folder)`` writes the images into
+    a temporary folder that then replaces ``out_dir`` (same rules as write_outputs).
+
+    When ``out_dir`` is the house's own folder ``house_dir``, the new folder also holds
+    the house's own files (hard links: house.json, house.glb, floorplan.svg) and none of
+    the old renders, so no image of a room that no longer exists stays behind.
+    """
+    from anyhome import outdir
+
+    with outdir.Staging(out_dir) as stage:
+        if house_dir is not None and os.path.realpath(house_dir) == str(stage.dest) and stage.dest.is_dir():
+            for rel in outdir.walk_files(stage.dest):
+                name = Path(rel).name
+                if rel == outdir.MANIFEST_FILE or outdir.is_render_output(rel) or outdir.is_stale_temp(name):
+                    continue
+                try:
+                    outdir.link_or_copy(stage.dest / rel, stage.path / rel)
+                except OSError as e:
+                    raise ExportError(f"could not copy {stage.dest / rel}: {e.strerror}") from None
+        files = render(stage.path)
+        stage.commit()
+    return [stage.dest / Path(p).relative_to(stage.path) for p in files]
+
+
+def write_exports(house: House, out_dir: str | os.PathLike[str], formats: list[str]) -> list[Path]:
+    """Write house.glb and/or floorplan.svg (``formats``: "glb", "svg") into ``out_dir``.
+
+    The files are written one by one, atomically, into the folder (it is not replaced).
+    A folder AnyHome wrote (or a new or empty one) gets them listed in its manifest,
+    first, so a kill never leaves a file the manifest does not know. In any other
+    folder an existing house.glb or floorplan.svg is never overwritten: ExportError.
+    """
+    from anyhome.export import write_glb, write_svg
+    from anyhome.outdir import check_out, is_ours, write_manifest
+
+    writers = {"glb": ("house.glb", write_glb), "svg": ("floorplan.svg", write_svg)}
+    for fmt in formats:
+        if fmt not in writers:
+            raise AnyHomeError(f"unknown export format {fmt!r} (available: glb, svg)")
+    out = check_out(out_dir, replace=False)
+    names = [writers[f][0] for f in dict.fromkeys(formats)]
+    if is_ours(out):
+        try:
+            out.mkdir(parents=True, exist_ok=True)
+        except OSError as e:
+            raise ExportError(f"could not create {out}: {e.strerror}") from None
+        write_manifest(out, extra=set(names))
+    else:
+        for name in names:
+            if os.path.lexists(out / name):
+                raise ExportError(f"{out} is not a folder AnyHome wrote and already holds {name}; "
+                                  "choose another --out (nothing was changed)")
+    return [writers[f][1](house, out / writers[f][0]) for f in dict.fromkeys(formats)]

@@ -10,6 +10,7 @@ import time
 from pathlib import Path
 from typing import Any
 
+import numpy as np
 import trimesh
 
 from anyhome.errors import RenderError
@@ -29,6 +30,31 @@ VIEWS_DIR = "views"
 """Folder of the per-room views."""
 META_FILE = "render.json"
 """Cameras and instance legend of the written images."""
+MAX_IMAGE_PX = 4096
+"""Largest side of an image, in pixels."""
+MAX_SUPERSAMPLE = 4
+"""Largest anti-aliasing factor per axis."""
+MAX_TARGET_PX = 8192
+"""Largest side of the supersampled frame (image side x supersample), in pixels."""
+
+
+def check_image_sizes(
+    size_px: object,
+    view_size_px: object,
+    supersample: object = SUPERSAMPLE,
+    names: tuple[str, str] = ("size_px", "view_size_px"),
+) -> None:
+    """Raise RenderError, before any work, unless the image sizes are integers from 1 to
+    :data:`MAX_IMAGE_PX`, the supersample factor one from 1 to :data:`MAX_SUPERSAMPLE`,
+    and every supersampled frame fits in :data:`MAX_TARGET_PX`. ``names`` are the names
+    used in the message (the CLI passes its flags)."""
+    for name, value in ((names[0], size_px), (names[1], view_size_px), ("supersample", supersample)):
+        top = MAX_SUPERSAMPLE if name == "supersample" else MAX_IMAGE_PX
+        if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or not 1 <= value <= top:
+            raise RenderError(f"{name} must be an integer from 1 to {top}, got {value!r}")
+    for name, value in ((names[0], size_px), (names[1], view_size_px)):
+        if value * supersample > MAX_TARGET_PX:
+            raise RenderError(f"{name} {value} x supersample {supersample} is more than {MAX_TARGET_PX} px")
 
 
 def _stem(room_id: str) -> str:
@@ -69,9 +95,11 @@ def render_house(
     Parameters
     ----------
     house : the house to render
-    out_dir : folder to write into (created)
-    size_px : side of the square bird's-eye image
-    view_size_px : side of the square per-room views
+    out_dir : folder to write into (created); files already there are overwritten, not
+        removed (``anyhome render`` renders into a new folder and swaps it in, see
+        ``anyhome.pipeline.write_renders``)
+    size_px : side of the square bird's-eye image (1 to MAX_IMAGE_PX)
+    view_size_px : side of the square per-room views (1 to MAX_IMAGE_PX)
     views : render the per-room views
     depth, ids : also write depth and instance maps
     scene : the house's trimesh Scene; built with ``anyhome.export.glb.build_scene`` if None
@@ -85,11 +113,10 @@ def render_house(
     Raises
     ------
     RenderError
-        if moderngl or a headless OpenGL context is missing, or a file cannot be written.
+        if a size is out of range (before any work), moderngl or a headless OpenGL
+        context is missing, or a file cannot be written.
     """
-    for name, value in (("size_px", size_px), ("view_size_px", view_size_px)):
-        if not isinstance(value, int) or value < 1:
-            raise RenderError(f"{name} must be a positive integer, got {value!r}")
+    check_image_sizes(size_px, view_size_px, supersample)
     import_moderngl()  # fail fast, before building the scene
     t_start = time.perf_counter()
     timings: dict[str, float] = {}
