@@ -225,12 +225,12 @@ def parse_number(word: str) -> int | None:
 
 
 def format_count(n: int) -> str:
-    """A count for a warning: ``1,200``, or ``1e9`` from a million up."""
+    """A count for a warning: ``1200``, or ``1e9`` from a million up."""
     if abs(n) >= 10**6:
         digits = str(abs(n))
         lead = digits[0] + ("." + digits[1:3].rstrip("0") if digits[1:3].strip("0") else "")
         return ("-" if n < 0 else "") + f"{lead}e{len(digits) - 1}"
-    return f"{n:,}"
+    return str(n)
 
 
 _NUM_EXPR = re.compile(
