@@ -267,6 +267,89 @@ def apply_mention(m: Mention, groups: list[Group], ornaments: list[Item], unused
     _fit_table(g)
 
 
+def remove_mention(m: Mention, groups: list[Group], ornaments: list[Item]) -> bool:
+    """Take out of a room what the text rules out ("no tv", "without a rug"): groups
+    whose anchor it names, members and ornaments it names. True if anything went."""
+    proto = _proto(m.key) if m.key else {}
+    category = proto.get("category", _slug(m.key or m.name.split()[-1]))
+    head = (m.key or m.name).split()[-1]
+    level = 1 if " " not in (m.key or m.name) else 2  # "no lamp": any lamp; "no floor lamp": that one
+
+    def named(it: Item) -> bool:
+        return _matches(it, category, head) >= level
+
+    before = (len(groups), sum(len(g["members"]) for g in groups), len(ornaments))
+    groups[:] = [g for g in groups if not named(g["anchor"])]
+    for g in groups:
+        g["members"] = [it for it in g["members"] if not named(it)]
+    ornaments[:] = [o for o in ornaments if not named(o)]
+    return before != (len(groups), sum(len(g["members"]) for g in groups), len(ornaments))
+
+
+def object_count(groups: list[Group], ornaments: list[Item]) -> int:
+    """Objects a room's plan places: every copy of every group item and ornament."""
+    return sum(g["repeat"] * (g["anchor"]["count"] + sum(it["count"] for it in g["members"])) for g in groups) + sum(
+        o["count"] for o in ornaments
+    )
+
+
+def cap_objects(rooms: list[tuple[list[Group], list[Item]]], budget: int) -> dict[tuple[int, str], tuple[int, int]]:
+    """Plan fewer copies until ``rooms`` (groups and ornaments of one or more rooms)
+    hold at most ``budget`` objects: the most repeated item loses a copy first, so that
+    items asked in equal numbers stay equal; if every item is down to one copy, groups
+    the text did not ask for and then ornaments go. Returns, per (room index, item name),
+    the copies (before, after) of what was cut."""
+    total = sum(object_count(g, o) for g, o in rooms)
+    if total <= budget:
+        return {}
+    before: dict[tuple[int, str], int] = {}
+    for i, (groups, ornaments) in enumerate(rooms):
+        for g in groups:
+            for it in [g["anchor"], *g["members"]]:
+                before.setdefault((i, it["name"]), 0)
+                before[(i, it["name"])] += g["repeat"] * it["count"]
+        for o in ornaments:
+            before[(i, o["name"])] = before.get((i, o["name"]), 0) + o["count"]
+    while total > budget:
+        # (copies of one kind of object, objects one copy less removes, how to remove it)
+        best: tuple[int, int, Any] | None = None
+        for groups, ornaments in rooms:
+            for g in groups:
+                per_copy = g["anchor"]["count"] + sum(it["count"] for it in g["members"])
+                cands = [(g["repeat"] * g["anchor"]["count"], per_copy, ("repeat", g))] if g["repeat"] > 1 else []
+                cands += [(g["repeat"] * it["count"], g["repeat"], ("count", it)) for it in [g["anchor"], *g["members"]] if it["count"] > 1]
+                for c in cands:
+                    if best is None or c[:2] > best[:2]:
+                        best = c
+            for o in ornaments:
+                if o["count"] > 1 and (best is None or (o["count"], 1) > best[:2]):
+                    best = (o["count"], 1, ("count", o))
+        if best is None:
+            break
+        kind, obj = best[2]
+        if kind == "repeat":
+            obj["repeat"] -= 1
+        else:
+            obj["count"] -= 1
+        total -= best[1]
+    for groups, ornaments in rooms:  # every item is down to one copy: drop what was not asked for
+        for g in sorted((g for g in groups if not g["required"]), key=lambda g: -g["priority"]):
+            if total <= budget:
+                break
+            groups.remove(g)
+            total -= object_count([g], [])
+        while ornaments and total > budget:
+            total -= ornaments.pop()["count"]
+    after: dict[tuple[int, str], int] = {}
+    for i, (groups, ornaments) in enumerate(rooms):
+        for g in groups:
+            for it in [g["anchor"], *g["members"]]:
+                after[(i, it["name"])] = after.get((i, it["name"]), 0) + g["repeat"] * it["count"]
+        for o in ornaments:
+            after[(i, o["name"])] = after.get((i, o["name"]), 0) + o["count"]
+    return {k: (n, after.get(k, 0)) for k, n in before.items() if after.get(k, 0) < n}
+
+
 def u_anchor(d: dict[str, Any]) -> Item:
     a = d.get("anchor", {})
     proto = _proto(a.get("use"))

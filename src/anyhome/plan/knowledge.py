@@ -24,9 +24,10 @@ KNOWLEDGE_FILES = ("programs", "rooms", "objects", "furniture", "styles", "conce
 
 
 def normalize(text: str) -> str:
-    """Lower-case, unify quotes and hyphens to spaces, collapse whitespace."""
+    """Lower-case, unify quotes and hyphens to spaces (a minus sign before a figure,
+    "-3", stays), collapse whitespace."""
     t = text.lower().replace("\u2019", "'").replace("\u2018", "'")
-    t = re.sub(r"[-\u2010-\u2015_/]+", " ", t)
+    t = re.sub(r"(?!(?<!\S)-\d)[-\u2010-\u2015_/]+", " ", t)
     return re.sub(r"\s+", " ", t).strip()
 
 

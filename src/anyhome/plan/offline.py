@@ -21,7 +21,7 @@ from anyhome.house import is_habitable
 from anyhome.plan import furnish as fu
 from anyhome.plan.appearance import Look, choose_look, item_material
 from anyhome.plan.knowledge import load
-from anyhome.plan.parse import Mention, Parsed, parse
+from anyhome.plan.parse import Mention, Parsed, parse, plural
 from anyhome.plan.program import Slot, choose_program, connect, plan_rooms, sample_areas
 from anyhome.plan.spec import GroupSpec, HouseSpec, ItemSpec, RoomSpec
 
@@ -36,8 +36,24 @@ ROWS_USE_FACTOR = 1.8
 ROW_AISLE_M = 0.5
 """Aisle kept on two sides of each copy of a group set out in rows (as the layout does)."""
 
-MAX_ROOM_AREA_M2 = 200.0
-"""Largest area the furniture may push a room to."""
+MAX_ROOM_AREA_M2 = 300.0
+"""Largest area the furniture may push a room to: a 120-seat lecture hall needs about
+250 m2; the busiest benchmark rooms (forty call-centre desks in rows, an 80-seat
+theatre) about 240."""
+
+MAX_HOUSE_AREA_M2 = 800.0
+"""Largest total area the furniture may push a house to: twice the largest benchmark
+house (a fire station, about 410 m2); beyond it the rooms that grew shrink back
+in proportion."""
+
+MAX_ROOM_OBJECTS = 160
+"""Most objects one room's plan places: a 120-seat hall with its stage, screen and
+lectern fits; the busiest benchmark room (a trattoria) plans about 105. Layout time grows
+with the objects a room must try to place, so this keeps a room within a second or two."""
+
+MAX_HOUSE_OBJECTS = 400
+"""Most objects a whole plan places: about twice the busiest benchmark house (a law firm,
+about 180), so that generation stays within seconds."""
 
 KEEP_DEFAULT_SURFACES = frozenset({"bathroom", "laundry", "changing_room", "balcony", "garage"})
 """Room types whose floor and walls keep their own materials unless the text names them."""
@@ -69,7 +85,7 @@ class OfflinePlanner:
         prog = load("programs")["programs"].get(program or "", {})
         connections = connect(slots, prog.get("entrance", []))
         building = prog.get("building") or (slots[0].type.replace("_", " ") if program is None else "home")
-        rooms = _furnish(parsed, slots, main_key, prog, rng)
+        rooms = _furnish(parsed, slots, main_key, prog, rng, warnings)
         look = choose_look(parsed, implied, building, rng)
         building = parsed.building_word or building
         specs = [_room_spec(s, g, o, look, rng) for s, (g, o) in zip(slots, rooms)]
@@ -90,7 +106,7 @@ def _mostly_latin(text: str) -> bool:
     return not letters or sum(c.isascii() for c in letters) >= len(letters) / 2
 
 
-def _furnish(parsed: Parsed, slots: list[Slot], main_key: str | None, prog: dict[str, Any], rng: np.random.Generator) -> list[tuple[list[fu.Group], list[fu.Item]]]:
+def _furnish(parsed: Parsed, slots: list[Slot], main_key: str | None, prog: dict[str, Any], rng: np.random.Generator, warnings: list[str]) -> list[tuple[list[fu.Group], list[fu.Item]]]:
     built = []
     for s in slots:
         groups, ornaments, unused = fu.furnish_room(s.furnish, s.type, s.area, rng, beds=s.beds)
@@ -99,18 +115,70 @@ def _furnish(parsed: Parsed, slots: list[Slot], main_key: str | None, prog: dict
             groups.append(fu.build_group(d, s.area, rng))
         built.append((groups, ornaments, unused))
     for m in parsed.objects:
+        if m.negated:
+            continue
         targets = [_room_for(m, slots, main_key)]
         if m.each and m.room is not None:  # "three bedrooms, each with a desk"
             targets = [i for i, s in enumerate(slots) if s.mention == m.room] or targets
         for i in targets:
             groups, ornaments, unused = built[i]
             fu.apply_mention(m, groups, ornaments, unused, slots[i].area, rng)
+    for m in parsed.objects:  # "a bedroom without a tv", "no rug": after what the text adds
+        if not m.negated:
+            continue
+        targets = [i for i, s in enumerate(slots) if m.room is not None and s.mention == m.room] or range(len(slots))
+        for i in targets:
+            groups, ornaments, _ = built[i]
+            fu.remove_mention(m, groups, ornaments)
     out = []
     for s, (groups, ornaments, _) in zip(slots, built):
-        ornaments = fu.finalize_ornaments(groups, ornaments)
-        _grow_area(s, groups)
-        out.append((groups, ornaments))
+        out.append((groups, fu.finalize_ornaments(groups, ornaments)))
+    _cap_objects(slots, out, warnings)
+    for s, (groups, _) in zip(slots, out):
+        _grow_area(s, groups, warnings)
+    _cap_house_area(slots, warnings)
     return out
+
+
+def _cap_objects(slots: list[Slot], rooms: list[tuple[list[fu.Group], list[fu.Item]]], warnings: list[str]) -> None:
+    """Bound the objects per room (:data:`MAX_ROOM_OBJECTS`) and per house
+    (:data:`MAX_HOUSE_OBJECTS`); each cap that bites adds one warning saying what was
+    asked and what is planned."""
+    over = []
+    for i, (s, (groups, ornaments)) in enumerate(zip(slots, rooms)):
+        asked = fu.object_count(groups, ornaments)
+        cut = fu.cap_objects([(groups, ornaments)], MAX_ROOM_OBJECTS)
+        if cut:
+            over.append((s.name, asked, {name: v for (_, name), v in cut.items()}))
+    if over:
+        names = ", ".join(f"{name} {_fmt(n)}" for name, n, _ in over[:3]) + (f" and {len(over) - 3} more" if len(over) > 3 else "")
+        what = _cuts(over[0][2])
+        warnings.append(
+            f"asked for more objects than a room holds ({names}); planned at most {MAX_ROOM_OBJECTS} per room"
+            + (f" ({over[0][0]}: {what})" if what else "")
+        )
+    asked = sum(fu.object_count(g, o) for g, o in rooms)
+    cut = fu.cap_objects(rooms, MAX_HOUSE_OBJECTS)
+    if cut:
+        merged: dict[str, tuple[int, int]] = {}
+        for (_, name), (a, b) in cut.items():
+            x = merged.get(name, (0, 0))
+            merged[name] = (x[0] + a, x[1] + b)
+        planned = sum(fu.object_count(g, o) for g, o in rooms)
+        warnings.append(
+            f"the rooms asked for {_fmt(asked)} objects in all; a house holds at most {MAX_HOUSE_OBJECTS}, planned {planned}"
+            + (f" ({_cuts(merged)})" if merged else "")
+        )
+
+
+def _fmt(n: int) -> str:
+    return str(n)
+
+
+def _cuts(cut: dict[str, tuple[int, int]], most: int = 4) -> str:
+    """"120 desks -> 37, 120 lamps -> 37": the biggest cuts first."""
+    items = sorted(cut.items(), key=lambda kv: kv[1][1] - kv[1][0])[:most]
+    return ", ".join(f"{a} {plural(name)} -> {b}" for name, (a, b) in items)
 
 
 def _room_for(m: Mention, slots: list[Slot], main_key: str | None) -> int:
@@ -129,7 +197,24 @@ def _room_for(m: Mention, slots: list[Slot], main_key: str | None) -> int:
     return next((i for i, s in enumerate(slots) if is_habitable(s.type)), 0)
 
 
-def _grow_area(s: Slot, groups: list[fu.Group]) -> None:
+def _cap_house_area(slots: list[Slot], warnings: list[str]) -> None:
+    """Rooms grown for their furniture shrink back in proportion when the house passes
+    :data:`MAX_HOUSE_AREA_M2` (never below the area they were drawn with)."""
+    total = sum(s.area for s in slots)
+    grown = [(s, s.area - s.drawn_area) for s in slots if s.area > s.drawn_area]
+    extra = sum(g for _, g in grown)
+    if total <= MAX_HOUSE_AREA_M2 or extra <= 0:
+        return
+    keep = max(0.0, (MAX_HOUSE_AREA_M2 - (total - extra)) / extra)
+    for s, g in grown:
+        s.area = round(s.drawn_area + g * keep, 2)
+    warnings.append(
+        f"the furniture asked for needs {total:.0f} m2 of rooms; a house is at most {MAX_HOUSE_AREA_M2:.0f} m2, "
+        f"planned {sum(s.area for s in slots):.0f} m2 (some objects may not fit)"
+    )
+
+
+def _grow_area(s: Slot, groups: list[fu.Group], warnings: list[str] | None = None) -> None:
     need = 1.0
     for g in groups:
         if g.get("arrangement") == "rows":  # a grid of cells with aisles between them
@@ -140,6 +225,12 @@ def _grow_area(s: Slot, groups: list[fu.Group]) -> None:
                 continue
             w, d, _ = it["size_m"]
             need += w * d * it["count"] * g["repeat"] * FLOOR_USE_FACTOR
+    s.drawn_area = s.area
+    if need > MAX_ROOM_AREA_M2 and warnings is not None:
+        warnings.append(
+            f"the {s.name} needs about {need:.0f} m2 for what was asked; a room is at most "
+            f"{MAX_ROOM_AREA_M2:.0f} m2, planned {max(s.area, MAX_ROOM_AREA_M2):.0f} m2 (some objects may not fit)"
+        )
     s.area = round(max(s.area, min(need, MAX_ROOM_AREA_M2)), 2)
 
 

@@ -8,12 +8,14 @@ planner (:mod:`anyhome.plan.offline`) turns the result into a ``HouseSpec``.
 
 from __future__ import annotations
 
+import math
 import re
 from dataclasses import dataclass, field
 
 from anyhome.plan import openvocab as ov
 from anyhome.plan.knowledge import load, normalize, vocabulary
 from anyhome.plan.spec import MAX_COUNT
+from anyhome.sanitize import clean_text
 
 MAX_PARSE_CHARS = 4000
 """Only this many characters of the text are parsed; the rest is ignored with a warning."""
@@ -25,14 +27,22 @@ NUMBER_WORDS: dict[str, int] = {
     "fourteen": 14, "fifteen": 15, "sixteen": 16, "seventeen": 17, "eighteen": 18,
     "nineteen": 19, "twenty": 20, "thirty": 30, "forty": 40, "fifty": 50, "sixty": 60,
     "seventy": 70, "eighty": 80, "ninety": 90, "hundred": 100,
-    "thousand": 1000,
+    "thousand": 1000, "million": 10**6, "billion": 10**9, "trillion": 10**12,
 }  # fmt: skip
 """Count words; "a"/"an" count as one."""
+
+MAX_EXPONENT = 99
+"""Largest power of ten a number in the text is read as ("10^999" is read as 1e99): the
+count is capped long before, this only bounds the arithmetic."""
 
 MANY_WORDS = frozenset({"several", "many", "some", "few", "multiple", "lots", "plenty", "numerous"})
 """Words meaning "more than one, number unsaid"."""
 
-FULL_WORDS = ("full of", "filled with", "lined with", "packed with", "lots of", "rows of", "row of", "wall of", "walls of", "shelves of", "racks of")
+FULL_WORDS = (
+    "full of", "filled with", "lined with", "packed with", "lots of", "rows of", "row of", "wall of", "walls of",
+    "shelves of", "racks of", "dozens of", "scores of", "hundreds of", "thousands of", "millions of", "billions of",
+    "tons of", "loads of",
+)  # fmt: skip
 """Phrases asking for the generous end of a plural's range."""
 
 SIZE_WORDS: dict[str, float] = {
@@ -53,7 +63,7 @@ EACH_OPENER = re.compile(r"^\s*(?:,\s*)?(?:each|every one|all)(?: of them)?\s*(?
 """Text right after a plural room mention that gives every one of those rooms what follows."""
 
 CONTEXT_OPENERS = re.compile(
-    r"^\s*(?:,\s*)?(?:(?:each|every one|all)(?: of them)?\s*(?:,\s*)?)?(?:with|full of|filled with|lined with|packed with|featuring|containing|"
+    r"^\s*(?:,\s*)?(?:(?:each|every one|all)(?: of them)?\s*(?:,\s*)?)?(?:with|without|full of|filled with|lined with|packed with|featuring|containing|"
     r"that has|which has|having|where|equipped with|furnished with)\b"
 )
 """Text right after a room mention that makes the following objects belong to it."""
@@ -111,6 +121,28 @@ _UNKNOWN_ROOM = re.compile(
 )
 
 
+NEGATIONS = re.compile(
+    r"\b(?:without|no|nor|neither|not (?:a|an|any|one|a single)|(?:do|does|did|will|would|should)(?:n't| not) "
+    r"(?:have|need|want|include|contain|get)(?: (?:a|an|any))?|free of|lacking(?: (?:a|an|any))?)$"
+)
+"""Words that rule out the room or object right after them ("a house without a kitchen",
+"but no garage", "a bedroom with no tv", "doesn't need a dining room")."""
+
+NEGATION_BLOCKERS = frozenset("more less fewer longer than matter doubt bigger larger smaller other extra need".split())
+"""Words after "no" that make it no negation of what follows ("no more than two
+bedrooms", "no bigger than", "no need for"... the last one is a negation but of
+"need", so it is left to the mention's own words)."""
+
+NEGATION_FILLERS = frozenset("a an any the single one separate real proper".split())
+"""Words that may stand between a negation and what it rules out."""
+
+LIST_JOINERS = frozenset({",", "or", "nor", "and"})
+"""Words that continue a negated list ("no tv, rug or lamp")."""
+
+ROOMS_TOTAL = re.compile(r"\b(\w+) rooms?\b")
+"""A bare room count: "a hotel with 40 rooms"."""
+
+
 @dataclass
 class Mention:
     """A room or object named in the text."""
@@ -130,6 +162,8 @@ class Mention:
     concept: str | None = None  # rooms: furnishing set found by the embedding matcher
     open_vocab: bool = False  # found by anyhome.plan.openvocab, not by a knowledge phrase
     each: bool = False  # objects: "rooms, each with ..." -> one set in every such room
+    negated: bool = False  # "without a kitchen", "no rug", "0 kitchens": the text rules it out
+    asked: int | None = None  # the count as the text wrote it, before any cap
     host: Mention | None = None  # objects: the room word right before it ("a courtyard fountain")
 
 
@@ -162,6 +196,7 @@ class Parsed:
     bathrooms: int | None = None
     people: int | None = None
     one_room: bool = False  # "a one-room house"
+    total_rooms: int | None = None  # "a hotel with 40 rooms": rooms asked for in all
     proper_words: frozenset[str] = frozenset()  # words written capitalised mid-sentence, lower-cased
     warnings: list[str] = field(default_factory=list)
 
@@ -169,15 +204,135 @@ class Parsed:
     def recognized(self) -> bool:
         return bool(
             self.building is not None or self.rooms or self.objects or self.styles
-            or self.bedrooms or self.people
+            or self.bedrooms or self.people or self.total_rooms
         )  # fmt: skip
 
 
+_SCI_TOKEN = re.compile(r"(\d{1,3})e(\d{1,3})")
+_NEG_TOKEN = re.compile(r"neg(\d{1,30})")
+
+
 def parse_number(word: str) -> int | None:
-    """``"12"`` -> 12, ``"twelve"`` -> 12, ``"a"`` -> 1; None for other words."""
+    """``"12"`` -> 12, ``"twelve"`` -> 12, ``"a"`` -> 1, ``"1e9"`` -> 10**9, the
+    parser's own ``"neg3"`` (what ``"-3"`` in the text becomes) -> -3; None for other words."""
     if word.isdigit():
-        return int(word[:9])
+        return int(word) if len(word) <= 30 else 10**MAX_EXPONENT
+    if (mt := _SCI_TOKEN.fullmatch(word)) is not None:
+        return int(mt.group(1)) * 10 ** min(int(mt.group(2)), MAX_EXPONENT)
+    if (mt := _NEG_TOKEN.fullmatch(word)) is not None:
+        return -int(mt.group(1))
     return NUMBER_WORDS.get(word)
+
+
+def format_count(n: int) -> str:
+    """A count for a warning: ``1200``, or ``1e9`` from a million up."""
+    if abs(n) >= 10**6:
+        digits = str(abs(n))
+        lead = digits[0] + ("." + digits[1:3].rstrip("0") if digits[1:3].strip("0") else "")
+        return ("-" if n < 0 else "") + f"{lead}e{len(digits) - 1}"
+    return str(n)
+
+
+_NUM_EXPR = re.compile(
+    r"(?<![\w.,])(?P<neg>[-\u2212] ?)?(?P<int>\d{1,3}(?:,\d{3})+(?![\d,])|\d+)(?P<frac>\.\d+)?"
+    r"(?:(?: ?(?:\^|\*\*) ?(?P<exp>[-\u2212]?\d+))|(?:e\+?(?P<sci>\d+)))?(?![\w.]\w)"
+)
+"""A number written in figures: ``12``, ``-3``, ``1,000,000``, ``2.5``, ``1e9``, ``1.5e+6``,
+``10^9``, ``10**9``."""
+
+_WORD_UNITS = {w: n for w, n in NUMBER_WORDS.items() if w in (
+    "zero one two three four five six seven eight nine ten eleven twelve thirteen fourteen fifteen "
+    "sixteen seventeen eighteen nineteen").split()}  # fmt: skip
+_WORD_TENS = {w: n for w, n in NUMBER_WORDS.items() if w in "twenty thirty forty fifty sixty seventy eighty ninety".split()}
+_WORD_SCALES = {"hundred": 100, "dozen": 12, "thousand": 10**3, "million": 10**6, "billion": 10**9, "trillion": 10**12}
+_WORD_RUN = re.compile(r"\b(?:(?:a|an|and|\d+|" + "|".join([*_WORD_UNITS, *_WORD_TENS, *_WORD_SCALES]) + r") ?)+\b")
+
+
+def _words_value(words: list[str]) -> tuple[int, int]:
+    """Value of the longest number phrase at the start of ``words`` ("two hundred and
+    fifty", "a million", "3 dozen") and how many words it takes; (0, 0) if none."""
+    total = cur = used = 0
+    last = ""  # "", "a", "small" (a unit, teen or figure), "tens", "hundred", "scale", "and"
+    for i, w in enumerate(words):
+        if w in ("a", "an") and last == "":
+            kind = "a"
+        elif w.isdigit() and last in ("", "and", "scale") and len(w) <= 15:
+            kind = "small"
+        elif w in _WORD_UNITS and last in ("", "tens", "hundred", "scale", "and"):
+            kind = "small"
+        elif w in _WORD_TENS and last in ("", "hundred", "scale", "and"):
+            kind = "tens"
+        elif w in _WORD_SCALES and last in ("a", "small", "tens"):
+            kind = "hundred" if _WORD_SCALES[w] < 1000 else "scale"
+        elif w == "and" and last in ("hundred", "scale") and i + 1 < len(words) and (words[i + 1] in _WORD_UNITS or words[i + 1] in _WORD_TENS):
+            kind = "and"
+        else:
+            break
+        if kind == "a":
+            cur = 1
+        elif kind in ("small", "tens"):
+            cur += int(w) if w.isdigit() else NUMBER_WORDS[w]
+        elif kind == "hundred":
+            cur *= _WORD_SCALES[w]
+        elif kind == "scale":
+            total, cur = total + cur * _WORD_SCALES[w], 0
+        last = kind
+        if kind not in ("a", "and"):
+            used = i + 1
+    if last == "a" and used == 0:
+        return 0, 0
+    return total + cur, used
+
+
+def _canonical(n: int) -> str:
+    """A count as one token ``parse_number`` reads back: ``12``, ``1e9``, ``neg3``."""
+    if n < 0:
+        return f"neg{min(-n, 10**30)}"
+    if n >= 10**12:
+        return f"{str(n)[0]}e{min(len(str(n)) - 1, MAX_EXPONENT)}"
+    return str(n)
+
+
+def _figures_value(mt: re.Match[str]) -> int:
+    """The count a :data:`_NUM_EXPR` match stands for, at most ``10**MAX_EXPONENT``."""
+    digits = mt.group("int").replace(",", "").lstrip("0") or "0"
+    mantissa = float(f"{digits[:15]}{mt.group('frac') or ''}") if len(digits) <= 15 else float(f"{digits[0]}.{digits[1:15]}")
+    log10 = (len(digits) - 1 if len(digits) > 15 else 0) + (math.log10(mantissa) if mantissa > 0 else -math.inf)
+    if mt.group("exp") is not None:
+        log10 *= int(mt.group("exp").replace("\u2212", "-")[:6])
+    elif mt.group("sci") is not None:
+        log10 += int(mt.group("sci")[:6])
+    if mantissa == 0 or log10 < -MAX_EXPONENT:
+        n = 0 if mantissa == 0 else 1
+    elif log10 >= MAX_EXPONENT:
+        n = 10**MAX_EXPONENT
+    else:
+        n = math.ceil(10.0**log10 - 1e-9) if log10 < 15 else int(10.0**log10)  # "2.5 baths": a half bath is a room
+    return -n if mt.group("neg") else n
+
+
+def rewrite_numbers(text: str) -> str:
+    """``text`` (normalised) with every count written as one token: figures with
+    separators, decimals, powers and exponents ("1,000", "10^9", "1e9", "-3") and number
+    phrases ("two hundred and fifty", "a million", "3 dozen") become ``parse_number``'s
+    forms. Single words ("a", "twelve", "no") are left as they are."""
+    text = _NUM_EXPR.sub(lambda mt: _canonical(_figures_value(mt)), text)
+    out, pos = [], 0
+    for mt in _WORD_RUN.finditer(text):
+        words = mt.group().split()
+        start = mt.start()
+        while words:
+            value, used = _words_value(words)
+            phrase = " ".join(words[:used])
+            if used >= 2:
+                out.append(text[pos:start])
+                out.append(_canonical(value))
+                pos = start + len(phrase)
+            step = max(used, 1)
+            start += len(" ".join(words[:step])) + 1
+            words = words[step:]
+    out.append(text[pos:])
+    return "".join(out)
 
 
 def _tokens(text: str) -> list[tuple[str, int, int]]:
@@ -190,7 +345,7 @@ def _look_back(m: Mention, text: str, tokens: list[tuple[str, int, int]], taken:
     words: list[str] = []
     first = m.start  # where the phrase with its adjectives starts
     for tok, s, e in reversed(before[-4:]):
-        if any(a <= s < b for a, b in taken):
+        if any(a <= s < b for a, b in taken) or tok == "no":  # "no": see _apply_negation
             break
         n = parse_number(tok)
         if n is not None:
@@ -272,6 +427,69 @@ def _opening_building(text: str, known_start: int, taken: list[tuple[int, int]])
         return None
     mb = ov.map_building(head)
     return (mb.key, (s, fnp[2]), head) if mb is not None else None
+
+
+def _filler(tok: str) -> bool:
+    """A word that may stand between a negation or a list joiner and the next mention:
+    an article or an adjective, never a count, a break word or a blocker."""
+    if tok in NEGATION_FILLERS or tok in SIZE_WORDS:
+        return True
+    return (
+        tok.isalpha() and tok not in STOP_WORDS and tok not in ov.PHRASE_BREAKS and tok not in NEGATION_BLOCKERS
+        and parse_number(tok) is None and tok not in MANY_WORDS and not NEGATIONS.search(tok)
+    )  # fmt: skip
+
+
+def _apply_negation(text: str, mentions: list[Mention]) -> None:
+    """Mark what the text rules out: a mention right after a negation word (with only
+    articles and adjectives between) and the list it heads ("no tv, rug or lamp";
+    "without a kitchen and bathroom"; but "no garage, a big kitchen" rules out the
+    garage only). A zero count ("0 kitchens", "zero chairs") rules out too."""
+    ordered = sorted(mentions, key=lambda m: m.start)
+    k = 0
+    while k < len(ordered):
+        m = ordered[k]
+        if m.count == 0:
+            m.negated = True
+        prev_end = ordered[k - 1].end if k else 0
+        head = _tokens(text[prev_end : m.start])
+        negated = False
+        for _ in range(4):  # the negation, then up to three articles or adjectives
+            if not head:
+                break
+            if NEGATIONS.search(text[prev_end : prev_end + head[-1][2]]):
+                negated = True
+                break
+            if not _filler(head[-1][0]):
+                break
+            head.pop()
+        if not negated:
+            k += 1
+            continue
+        chain = [m]
+        joiners: list[set[str]] = []
+        j = k + 1
+        while j < len(ordered):
+            between = _tokens(text[chain[-1].end : ordered[j].start])
+            words = {t for t, _, _ in between}
+            if not between or len(between) > 5 or not words & LIST_JOINERS:
+                break
+            if not all(t in LIST_JOINERS or _filler(t) for t in words):
+                break
+            chain.append(ordered[j])
+            joiners.append(words)
+            j += 1
+        last_or = max((i for i, w in enumerate(joiners) if w & {"or", "nor"}), default=-1)
+        if last_or >= 0:  # "no tv, a rug or a lamp": the whole list up to the last "or"
+            chain = chain[: last_or + 2]
+        else:  # "without a kitchen and bathroom", but "no garage and a pool" keeps the pool
+            n = 1
+            while n < len(chain) and not joiners[n - 1] & {"a", "an", "the"}:
+                n += 1
+            chain = chain[:n]
+        for x in chain:
+            x.count, x.negated, x.plural, x.many = 0, True, False, False
+        k += len(chain)
 
 
 def _building_modifiers(text: str, start: int, p: Parsed, keep_unmapped: bool = True, taken: list[tuple[int, int]] = ()) -> None:
@@ -614,6 +832,53 @@ def _room_compounds(text: str, tokens: list[tuple[str, int, int]], mentions: lis
     mentions.sort(key=lambda m: m.start)
 
 
+def plural(name: str) -> str:
+    """English plural of a name, for warnings ("chair" -> "chairs", "library" -> "libraries")."""
+    if name.endswith(("s", "x", "ch", "sh")):
+        return name + "es"
+    if len(name) > 1 and name.endswith("y") and name[-2] not in "aeiou":
+        return name[:-1] + "ies"
+    return name + "s"
+
+
+def _check_counts(p: Parsed, mentions: list[Mention]) -> None:
+    """Keep each count as asked (``asked``) and make it one the planner can use: a
+    negative count is read as no count, an object count above :data:`MAX_COUNT` is
+    capped; both with a warning. Room counts are capped by the planner, which knows how
+    many rooms a house holds."""
+    for m in mentions:
+        if m.count is None:
+            continue
+        m.asked = m.count
+        if m.count < 0:
+            p.warnings.append(
+                f"asked for {format_count(m.count)} {plural(m.name)}; a count cannot be negative, "
+                f"planned {'them' if m.plural else 'it'} as if no number was given"
+            )
+            m.count = None
+        elif m.count > MAX_COUNT:
+            if m.kind == "object":
+                p.warnings.append(f"asked for {format_count(m.count)} {plural(m.name)}; planned at most {MAX_COUNT}")
+            m.count = MAX_COUNT
+
+
+def _total_rooms(text: str, p: Parsed, mentions: list[Mention]) -> None:
+    """A bare room count ("a hotel with 40 rooms") outside any room mention."""
+    spans = [(m.start, m.end) for m in mentions]
+    for mt in ROOMS_TOTAL.finditer(text):
+        n = parse_number(mt.group(1))
+        word_start = mt.end(1) + 1
+        if n is None or mt.group(1) in ("a", "an", "no") or any(a < mt.end() and word_start < b for a, b in spans):
+            continue
+        if n <= 0:
+            p.warnings.append(f"asked for {format_count(n)} rooms; planned the rooms the text names")
+            continue
+        p.total_rooms = max(p.total_rooms or 0, n)
+
+
+_NO_COMPOUND = re.compile(r"\b([Nn]o)[-\u2010\u2011](?=[^\W\d_])")
+"""A hyphenated "no-" adjective ("no-frills") is one word, not a negation."""
+
 _CAPITALISED = re.compile(r"\b[A-Z][a-z]+\b")
 
 
@@ -629,12 +894,14 @@ def _proper_words(text: str) -> frozenset[str]:
 
 def parse(text: str) -> Parsed:
     """Parse ``text`` into a :class:`Parsed`; never raises on odd input."""
+    text = _NO_COMPOUND.sub(r"\1", clean_text(text))  # escape sequences never reach a name
     norm = normalize(text)
     p = Parsed(text=norm, proper_words=_proper_words(text))
     if len(norm) > MAX_PARSE_CHARS:
         p.warnings.append(f"text is {len(norm)} characters long; only the first {MAX_PARSE_CHARS} were read")
         norm = norm[:MAX_PARSE_CHARS]
-        p.text = norm
+    norm = rewrite_numbers(norm)
+    p.text = norm
     taken: list[tuple[int, int]] = []
     _apply_codes(norm, p, taken)
     span = _parse_building(norm, p, taken)
@@ -655,10 +922,9 @@ def parse(text: str) -> Parsed:
         if m.words:
             m.name = " ".join(m.words + [m.name])
     mentions = _open_vocabulary(norm, p, taken, mentions, tokens)
-    for m in mentions:
-        if m.count is not None and m.count > MAX_COUNT:
-            p.warnings.append(f"asked for {m.count} of {m.name!r}; planned at most {MAX_COUNT}")
-            m.count = MAX_COUNT
+    _apply_negation(norm, mentions)
+    _check_counts(p, mentions)
+    _total_rooms(norm, p, mentions)
     if _ONE_ROOM.search(norm):
         p.one_room = True
     _assign_rooms(norm, mentions)

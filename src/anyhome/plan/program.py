@@ -16,7 +16,7 @@ import numpy as np
 from anyhome.house import ROOM_TYPES
 from anyhome.plan.concepts import furnish_type
 from anyhome.plan.knowledge import load
-from anyhome.plan.parse import Mention, Parsed
+from anyhome.plan.parse import Mention, Parsed, format_count, plural
 from anyhome.plan.spec import MAX_COUNT, MAX_ROOMS
 
 HUB_MAX_DEGREE = 6
@@ -51,6 +51,7 @@ class Slot:
     beds: int | None = None  # beds to plan (family sizes)
     id: str = ""
     area: float = 0.0
+    drawn_area: float = 0.0  # the area drawn from the room's range, before furniture grew it
     optional: bool = False
     extra_groups: list[str] = field(default_factory=list)
 
@@ -100,8 +101,8 @@ def choose_program(parsed: Parsed) -> tuple[str | None, list[str]]:
     if parsed.building is not None:
         b = load("programs")["buildings"][parsed.building]
         return b["program"], list(b.get("styles", []))
-    if parsed.rooms:
-        types = {_slot_from_mention(m, i).type for i, m in enumerate(parsed.rooms)}
+    if any(not m.negated for m in parsed.rooms):
+        types = {_slot_from_mention(m, i).type for i, m in enumerate(parsed.rooms) if not m.negated}
         if parsed.bedrooms or parsed.people or (len(types) >= 3 and types & HOME_TYPES):
             return DEFAULT_PROGRAM, []
         return None, []
@@ -129,11 +130,23 @@ def plan_rooms(parsed: Parsed, program: str | None, rng: np.random.Generator, wa
     _apply_fixed(slots, fixed, prog, totals)
     _apply_people(parsed, slots, fixed)
     _add_hallway(slots, prog)
-    _cap(slots, warnings, fixed)
-    if prog is not None and not slots:
-        slots.append(_slot_from_entry(prog["rooms"][0]))
+    if parsed.rooms and all(m.negated for m in parsed.rooms) and parsed.building is None and prog is not None:
+        warnings.append(
+            f"the text only rules out rooms ({', '.join(m.name for m in parsed.rooms)}); planned a {prog.get('building', 'home')} without them"
+        )
+    asked = _asked_per_type(parsed, fixed)
+    total = _fill_total(parsed, slots, prog, fixed, asked)
+    _drop_negated(parsed, slots)
+    _cap(slots, warnings, fixed, asked, total)
     if not slots:
-        slots.append(_slot_from_entry({"type": "living_room", "name": "living room"}))
+        ruled_out = [m.name for m in parsed.rooms if m.negated]
+        keep = next((e for e in (prog or {}).get("rooms", []) if not _ruled_out(parsed, _slot_from_entry(e))), None)
+        s = _slot_from_entry(keep or {"type": "living_room", "name": "living room"})
+        slots.append(s)
+        if ruled_out:
+            warnings.append(
+                f"the text rules out {', '.join(ruled_out)} and names no other room; planned a {s.name}"
+            )
     _name_main_room(parsed, slots, prog)
     _name_and_number(slots)
     return slots, (prog or {}).get("main")
@@ -227,7 +240,7 @@ def _apply_fixed(slots: list[Slot], fixed: dict[str, int], prog: dict | None, to
             slots.remove(victim)
             of_type.remove(victim)
         entry = next((e for e in (prog or {}).get("rooms", []) if e["type"] == t), None)
-        while len(of_type) < n:
+        while len(of_type) < min(n, MAX_ROOMS):
             s = _slot_from_entry(entry or {"type": t, "name": t.replace("_", " ")})
             slots.append(s)
             of_type.append(s)
@@ -259,23 +272,104 @@ def _apply_people(parsed: Parsed, slots: list[Slot], fixed: dict[str, int]) -> N
         slots.append(_slot_from_entry({"type": "bathroom", "name": "bathroom"}))
 
 
-def _cap(slots: list[Slot], warnings: list[str], fixed: dict[str, int] | None = None) -> None:
+def _asked_per_type(parsed: Parsed, fixed: dict[str, int]) -> dict[str, int]:
+    """Rooms of each type the text asked for, as written (before any cap)."""
+    asked: dict[str, int] = {}
+    for i, m in enumerate(parsed.rooms):
+        if m.negated:
+            continue
+        if m.asked is not None and m.asked > 0:  # repeated mentions of one room are one room
+            t = _slot_from_mention(m, i).type
+            asked[t] = max(asked.get(t, 0), m.asked)
+    for t, n in fixed.items():
+        asked[t] = max(asked.get(t, 0), n)
+    return asked
+
+
+def _fill_total(parsed: Parsed, slots: list[Slot], prog: dict | None, fixed: dict[str, int], asked: dict[str, int]) -> int:
+    """"A hotel with 40 rooms": add copies of the program's most repeated room (guest
+    rooms, bedrooms) until the house has the rooms asked for, or the most it can hold.
+    Returns the number of rooms the text asked for in all."""
+    want = parsed.total_rooms or 0
+    if want <= len(slots) or prog is None:
+        return max(want, len(slots))
+    unit = max(
+        (e for e in prog["rooms"] if isinstance(e.get("count"), list)),
+        key=lambda e: e["count"][1], default=None,
+    )  # fmt: skip
+    if unit is None or _ruled_out(parsed, _slot_from_entry(unit)):
+        return want
+    added = 0
+    while len(slots) < min(want, MAX_ROOMS):
+        slots.append(_slot_from_entry(unit))
+        added += 1
+    t = _slot_from_entry(unit).type
+    n = sum(s.type == t for s in slots)
+    fixed[t] = max(fixed.get(t, 0), n)
+    asked[t] = max(asked.get(t, 0), n)
+    return want
+
+
+def _ruled_out(parsed: Parsed, s: Slot) -> bool:
+    """Whether the text rules out a room like ``s`` ("without a kitchen", "no garage",
+    "0 bathrooms"): a plain room word rules out its whole type; a named room ("no wine
+    cellar", "no guest bedroom") rules out rooms of that name or furnishing."""
+    names = load("rooms")["names"]
+    for i, m in enumerate(parsed.rooms):
+        if not m.negated:
+            continue
+        info = names.get(m.key) or {}
+        proto = _slot_from_mention(m, i)
+        if info.get("generic") and not m.words and s.type == info["type"]:
+            return True
+        if s.name in (m.name, m.key) or s.key == m.key or (proto.furnish == s.furnish and proto.furnish not in ("other", s.type)):
+            return True
+        if proto.type == s.type != "other" and s.name == s.type.replace("_", " ") and proto.name == s.name:
+            return True
+    return False
+
+
+def _drop_negated(parsed: Parsed, slots: list[Slot]) -> None:
+    """Remove every room the text rules out; the user's word wins over the program (a
+    house with no bathroom is still a valid house)."""
+    for s in [s for s in slots if _ruled_out(parsed, s)]:
+        slots.remove(s)
+
+
+def _cap(slots: list[Slot], warnings: list[str], fixed: dict[str, int] | None = None, asked: dict[str, int] | None = None, total: int = 0) -> None:
     """Bound rooms per type (the rooms the text names may pass a type's usual maximum)
-    and rooms per plan; what the text did not ask for goes first."""
+    and rooms per plan; what the text did not ask for goes first. Each cap that bites
+    says what was asked and what is planned."""
     fixed = fixed or {}
+    asked = asked or {}
     by_type: dict[str, list[Slot]] = {}
     for s in slots:
         by_type.setdefault(s.type, []).append(s)
     for t, group in by_type.items():
-        asked = max(fixed.get(t, 0), sum(s.mention is not None for s in group))
-        cap = max(int(_type_info(t).get("max", 6)), min(asked, MAX_ROOMS))
+        want = max(asked.get(t, 0), fixed.get(t, 0), sum(s.mention is not None for s in group))
+        cap = max(int(_type_info(t).get("max", 6)), min(want, MAX_ROOMS))
         if len(group) > cap:
-            warnings.append(f"asked for {len(group)} rooms of type {t}; planned {cap}, the most one house holds")
             for s in sorted(group, key=lambda s: s.mention is not None)[: len(group) - cap]:
                 slots.remove(s)
-    if len(slots) <= MAX_ROOMS:
-        return
-    asked = len(slots)
+    asked_all = max(total, len(slots))
+    if len(slots) > MAX_ROOMS:
+        _trim(slots, fixed)
+    for t, want in asked.items():
+        planned = sum(s.type == t for s in slots)
+        if want > planned:
+            room = t.replace("_", " ")
+            why = (
+                f"a house has at most {MAX_ROOMS} rooms" if want > MAX_ROOMS or asked_all > MAX_ROOMS
+                else f"a house holds at most {max(int(_type_info(t).get('max', 6)), planned)} of them"
+            )  # fmt: skip
+            warnings.append(f"asked for {format_count(want)} {plural(room)}; {why}, planned {planned}")
+    if asked_all > MAX_ROOMS and not any(f"at most {MAX_ROOMS} rooms" in w for w in warnings):
+        warnings.append(f"asked for {format_count(asked_all)} rooms; a house has at most {MAX_ROOMS} rooms, planned {len(slots)}")
+
+
+def _trim(slots: list[Slot], fixed: dict[str, int]) -> None:
+    """Remove rooms until the plan holds :data:`MAX_ROOMS`: optional rooms first, then
+    rooms the text did not ask for, then rooms of the most repeated type."""
     for s in [s for s in reversed(slots) if s.optional and s.type != "hallway"]:
         if len(slots) <= MAX_ROOMS:
             break
@@ -292,7 +386,6 @@ def _cap(slots: list[Slot], warnings: list[str], fixed: dict[str, int] | None = 
                 counts[s.type] = counts.get(s.type, 0) + 1
         t = max(counts, key=lambda k: counts[k])
         slots.remove(next(s for s in reversed(slots) if s.type == t))
-    warnings.append(f"the text asks for {asked} rooms; planned {MAX_ROOMS}, the most one plan holds")
 
 
 def _add_hallway(slots: list[Slot], prog: dict | None) -> None:

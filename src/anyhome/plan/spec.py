@@ -48,9 +48,12 @@ depth front-to-back (local y, front faces +y), height along z.
 
 from __future__ import annotations
 
-from typing import Any, Literal
+import re
+from typing import Annotated, Any, Literal
 
-from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
+from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, field_validator, model_validator
+
+from anyhome.sanitize import clean_text, is_safe_id
 
 Rule = Literal[
     "place_corner",
@@ -78,6 +81,46 @@ MAX_ROOMS = 12
 """Most rooms one plan may hold (the floorplan solver's supported range is 1..12)."""
 
 
+MAX_TEXT_CHARS = 2000
+"""Longest name, description or warning a plan keeps (the prompt keeps its own length)."""
+
+
+def _clean(v: Any) -> Any:
+    """A string from outside (the user's text, an LLM reply) without control characters
+    or terminal escape sequences, on one line, trimmed; anything else is left for the
+    type check."""
+    return clean_text(v).strip()[:MAX_TEXT_CHARS] if isinstance(v, str) else v
+
+
+def _clean_deep(v: Any) -> Any:
+    """:func:`_clean` on every string inside lists and dicts (keys too)."""
+    if isinstance(v, str):
+        return clean_text(v, newlines=True)
+    if isinstance(v, dict):
+        return {_clean_deep(k): _clean_deep(x) for k, x in v.items()}
+    if isinstance(v, (list, tuple)):
+        return type(v)(_clean_deep(x) for x in v)
+    return v
+
+
+def _safe_id(v: Any) -> Any:
+    """A room id in the safe alphabet of house.json (:data:`anyhome.sanitize.ID_PATTERN`):
+    other characters become ``_``, so the same id always maps the same way (the
+    connections keep pointing at their rooms)."""
+    if not isinstance(v, str) or is_safe_id(v):
+        return v
+    out = re.sub(r"[^A-Za-z0-9_.:-]+", "_", clean_text(v))[:128]
+    if out and not re.match(r"[A-Za-z0-9_]", out):
+        out = "_" + out[:127]
+    return out
+
+
+CleanStr = Annotated[str, BeforeValidator(_clean)]
+"""A string cleaned of control characters and escape sequences before validation."""
+
+RoomId = Annotated[str, BeforeValidator(_safe_id)]
+
+
 class _Model(BaseModel):
     model_config = ConfigDict(extra="forbid", validate_assignment=True)
 
@@ -85,15 +128,15 @@ class _Model(BaseModel):
 class ItemSpec(_Model):
     """One kind of object to place, possibly several copies of it."""
 
-    name: str = Field(min_length=1, description="open-vocabulary name, e.g. 'canopy bed'")
-    category: str = Field(min_length=1, description="asset family, e.g. 'bed'")
-    description: str = ""
+    name: CleanStr = Field(min_length=1, description="open-vocabulary name, e.g. 'canopy bed'")
+    category: CleanStr = Field(min_length=1, description="asset family, e.g. 'bed'")
+    description: CleanStr = ""
     size_m: tuple[float, float, float] = Field(description="(width, depth, height) in meters")
     rule: Rule
-    target: str | None = None
-    params: dict[str, Any] = Field(default_factory=dict)
+    target: CleanStr | None = None
+    params: Annotated[dict[str, Any], BeforeValidator(_clean_deep)] = Field(default_factory=dict)
     count: int = Field(default=1, ge=1, le=MAX_COUNT)
-    material: str = ""
+    material: CleanStr = ""
 
     @field_validator("size_m")
     @classmethod
@@ -106,7 +149,7 @@ class ItemSpec(_Model):
 class GroupSpec(_Model):
     """A semantic asset group: an anchor and the members placed relative to it."""
 
-    name: str = Field(min_length=1)
+    name: CleanStr = Field(min_length=1)
     anchor: ItemSpec
     members: list[ItemSpec] = Field(default_factory=list)
     arrangement: Arrangement = "free"
@@ -118,13 +161,13 @@ class GroupSpec(_Model):
 class RoomSpec(_Model):
     """One planned room."""
 
-    id: str = Field(min_length=1)
-    name: str = Field(min_length=1)
-    type: str = Field(min_length=1, description="functional type, see anyhome.house.ROOM_TYPES")
+    id: RoomId = Field(min_length=1)
+    name: CleanStr = Field(min_length=1)
+    type: CleanStr = Field(min_length=1, description="functional type, see anyhome.house.ROOM_TYPES")
     area_m2: float = Field(gt=0.5, le=400.0)
     height_m: float = Field(default=2.7, ge=2.0, le=12.0)
-    style: str = ""
-    materials: dict[str, str] = Field(default_factory=dict)
+    style: CleanStr = ""
+    materials: dict[CleanStr, CleanStr] = Field(default_factory=dict)
     groups: list[GroupSpec] = Field(default_factory=list)
     ornaments: list[ItemSpec] = Field(default_factory=list)
 
@@ -138,17 +181,17 @@ class RoomSpec(_Model):
 class HouseSpec(_Model):
     """The whole plan: rooms, bubble diagram, appearance."""
 
-    prompt: str
-    building: str = Field(default="home", description="kind of building: home, office, cafe...")
-    style: str = ""
-    palette: list[str] = Field(default_factory=list)
+    prompt: Annotated[str, BeforeValidator(lambda v: clean_text(v, newlines=True) if isinstance(v, str) else v)]
+    building: CleanStr = Field(default="home", description="kind of building: home, office, cafe...")
+    style: CleanStr = ""
+    palette: list[CleanStr] = Field(default_factory=list)
     rooms: list[RoomSpec] = Field(min_length=1, max_length=MAX_ROOMS)
-    connections: list[tuple[str, str]] = Field(
+    connections: list[tuple[RoomId, RoomId]] = Field(
         default_factory=list,
         description="bubble-diagram edges; (room_id, 'outside') marks the entrance room",
     )
-    warnings: list[str] = Field(default_factory=list)
-    provenance: dict[str, Any] | None = Field(
+    warnings: list[CleanStr] = Field(default_factory=list)
+    provenance: Annotated[dict[str, Any] | None, BeforeValidator(_clean_deep)] = Field(
         default=None, description="where each stage came from (the LLM planner: stages, tokens, latency)"
     )
 
