@@ -256,3 +256,15 @@ def test_crowded_prompt_generates_with_warnings(tmp_path, text):
     house = json.loads((out / "house.json").read_text())
     assert len(house["objects"]) <= MAX_HOUSE_OBJECTS
     assert any("per room" in w for w in house["warnings"])
+
+
+def test_very_long_names_give_ids_that_load():
+    """A 300-letter room name and a 200-letter item name: every id stays in house.json's
+    alphabet and length, so the house saves and loads (it crashed before the cap)."""
+    import anyhome
+    from anyhome.house import House
+
+    text = "a " + "super" * 60 + "duper room with a " + "mega" * 50 + "lamp, and a bedroom"
+    house = anyhome.generate(text, seed=0)
+    assert all(len(o.id) <= 128 for o in house.objects)
+    assert House.from_json(house.to_json()).rooms[0].id == house.rooms[0].id

@@ -398,7 +398,7 @@ def _add_hallway(slots: list[Slot], prog: dict | None) -> None:
 
 def _slug(text: str) -> str:
     ascii_text = unicodedata.normalize("NFKD", text).encode("ascii", "ignore").decode()
-    return re.sub(r"[^a-z0-9]+", "_", ascii_text.lower()).strip("_") or "room"
+    return re.sub(r"[^a-z0-9]+", "_", ascii_text.lower())[:48].strip("_") or "room"
 
 
 def _name_and_number(slots: list[Slot]) -> None:

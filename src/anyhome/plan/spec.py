@@ -103,15 +103,20 @@ def _clean_deep(v: Any) -> Any:
     return v
 
 
+MAX_ROOM_ID_CHARS = 64
+"""Room ids are cut to this length, so an object id (``<room>-<item>-<k>``, the item part
+at most 40 characters) stays within the 128 of house.json's id alphabet."""
+
+
 def _safe_id(v: Any) -> Any:
     """A room id in the safe alphabet of house.json (:data:`anyhome.sanitize.ID_PATTERN`):
     other characters become ``_``, so the same id always maps the same way (the
     connections keep pointing at their rooms)."""
-    if not isinstance(v, str) or is_safe_id(v):
+    if not isinstance(v, str) or (is_safe_id(v) and len(v) <= MAX_ROOM_ID_CHARS):
         return v
-    out = re.sub(r"[^A-Za-z0-9_.:-]+", "_", clean_text(v))[:128]
+    out = re.sub(r"[^A-Za-z0-9_.:-]+", "_", clean_text(v))[:MAX_ROOM_ID_CHARS]
     if out and not re.match(r"[A-Za-z0-9_]", out):
-        out = "_" + out[:127]
+        out = "_" + out[: MAX_ROOM_ID_CHARS - 1]
     return out
 
 
