@@ -33,6 +33,9 @@ MAX_NAV_CELLS = 4_000_000
 """Most cells the navigation raster may hold (about 30 bytes each at the peak, so the
 check never needs more than ~120 MB): a 100 m x 100 m house at 5 cm. A larger house is
 rasterized at the smallest coarser step that fits, up to ``MAX_NAV_CELL_M``."""
+MAX_NAV_WORK_CELLS = 10 * MAX_NAV_CELLS
+"""Most cells the rasterized rooms and obstacles may cover together (their windows
+overlap when geometry is stacked): bounds the time of the check."""
 MAX_NAV_CELL_M = AGENT_RADIUS_M / 2
 """Coarsest raster step the navigability check accepts; a house that would need a
 coarser one (e.g. a 1 km room) is not checked (``NavResult.checked`` is False)."""
@@ -216,6 +219,12 @@ def navigability(
             f"of at most {MAX_NAV_CELLS:,} cells would need {step:.2f} m cells, coarser than "
             f"the {MAX_NAV_CELL_M} m limit"))
     cell_m = step
+    obstacles = list(obstacles)
+    work = _window_cells([*polys.values(), *obstacles], cell_m)
+    if work > MAX_NAV_WORK_CELLS:
+        return NavResult((), (), 0, 0, cell_m=cell_m, skipped=(
+            f"rooms and obstacles cover {work:,.0f} raster cells in all (at most "
+            f"{MAX_NAV_WORK_CELLS:,}): too much overlapping geometry"))
     pad = 2 * cell_m
     xs = np.arange(minx - pad, maxx + pad, cell_m) + cell_m / 2
     ys = np.arange(miny - pad, maxy + pad, cell_m) + cell_m / 2
@@ -266,6 +275,16 @@ def navigability(
     )
     return NavResult(unreachable_rooms, unreachable_doors, int(walkable.sum()), int(reach.sum()),
                      cell_m=cell_m)
+
+
+def _window_cells(geoms: Sequence, cell_m: float) -> float:
+    """Cells the raster windows of ``geoms`` hold together (from their bounds)."""
+    if not geoms:
+        return 0.0
+    b = shapely.bounds(np.array(geoms, dtype=object))
+    w = np.nan_to_num((b[:, 2] - b[:, 0]) / cell_m + 1, nan=0.0)
+    h = np.nan_to_num((b[:, 3] - b[:, 1]) / cell_m + 1, nan=0.0)
+    return float(np.sum(w * h))
 
 
 def _raster_window(geom, gx: np.ndarray, gy: np.ndarray, xs: np.ndarray, ys: np.ndarray):

@@ -22,7 +22,7 @@ import shapely
 from shapely.geometry import LineString, Polygon
 
 from anyhome import geometry
-from anyhome.evaluate.polygons import is_usable, room_polygon
+from anyhome.evaluate.polygons import is_usable, overlapping_pairs, room_polygon
 from anyhome.evaluate.report import Violation
 from anyhome.house import House, is_habitable
 
@@ -30,6 +30,8 @@ TOL = geometry.TOLERANCE_M
 OUTSIDE = "outside"
 ROOM_OVERLAP_M2 = 1e-4
 """Intersection area above which two rooms overlap."""
+MAX_ROOM_OVERLAPS = 1000
+"""Rule 5 stops after reporting this many overlapping room pairs."""
 SHARED_WALL_MIN_M = 2 * TOL
 """A segment shares more than this length with another room's boundary -> not exterior."""
 
@@ -101,16 +103,19 @@ def _check_overlaps(house: House, polys: dict[str, Polygon]) -> list[Violation]:
     if len(rooms) < 2:
         return []
     geoms = np.array([polys[r.id] for r in rooms], dtype=object)
-    left, right = shapely.STRtree(geoms).query(geoms, predicate="intersects")
-    keep = left < right
-    left, right = left[keep], right[keep]
-    area = shapely.area(shapely.intersection(geoms[left], geoms[right]))
     out = []
-    for i, j, a in sorted(zip(left.tolist(), right.tolist(), area.tolist())):
-        if a > ROOM_OVERLAP_M2:
-            out.append(Violation(5, "room_overlap",
-                                 f"rooms {rooms[i].id} and {rooms[j].id} overlap by {a:.2f} m2",
-                                 (rooms[i].id, rooms[j].id)))
+    for _, left, right in overlapping_pairs(geoms):
+        area = shapely.area(shapely.intersection(geoms[left], geoms[right]))
+        for i, j, a in zip(left.tolist(), right.tolist(), area.tolist()):
+            if a > ROOM_OVERLAP_M2:
+                out.append(Violation(5, "room_overlap",
+                                     f"rooms {rooms[i].id} and {rooms[j].id} overlap by "
+                                     f"{a:.2f} m2", (rooms[i].id, rooms[j].id)))
+        if len(out) >= MAX_ROOM_OVERLAPS:
+            out.append(Violation("limits", "overlaps_capped",
+                                 f"rule 5 stopped after {len(out)} overlapping room pairs; "
+                                 "more may overlap", ()))
+            break
     return out
 
 

@@ -35,7 +35,7 @@ import shapely
 from shapely.geometry import LineString, Polygon
 
 from anyhome import geometry
-from anyhome.evaluate.polygons import is_usable, room_polygon
+from anyhome.evaluate.polygons import is_usable, overlapping_pairs, room_polygon
 from anyhome.evaluate.report import Violation
 from anyhome.house import House, HouseObject, Room
 
@@ -48,9 +48,6 @@ MAX_COLLISIONS = 1000
 """Rule 2 stops after reporting this many colliding pairs."""
 MAX_CANDIDATE_PAIRS = 5_000_000
 """Rule 2 stops after examining this many pairs of overlapping footprint boxes."""
-CHUNK_PAIRS = 1_000_000
-"""Objects are queried in chunks of about ``CHUNK_PAIRS / n`` so that one chunk's
-candidate arrays stay small (``n`` objects each overlapping all others)."""
 EXACT_BATCH = 2048
 """Candidate pairs given to the exact (shapely) test at once."""
 
@@ -162,25 +159,16 @@ def colliding_pairs(index: ObjectIndex, max_pairs: int = MAX_COLLISIONS,
     if n < 2:
         return []
     fps = index.fp_array
-    tree = shapely.STRtree(fps)
     z0 = np.array([o.position[2] for o in index.objects], dtype=float)
     z1 = z0 + np.array([o.size[2] for o in index.objects], dtype=float)
     shrunk = shapely.buffer(fps, -TOL / 2, join_style="mitre")
-    chunk = max(1, CHUNK_PAIRS // n)
     pairs: list[tuple[int, int]] = []
     examined = 0
-    for start in range(0, n, chunk):
-        stop = min(n, start + chunk)
-        src, dst = tree.query(fps[start:stop])  # footprint boxes that overlap
-        examined += len(src)
-        left = src + start
-        keep = left < dst
-        left, right = left[keep], dst[keep]
+    for stop, left, right in overlapping_pairs(fps):
+        examined += len(left)
         overlap_z = np.minimum(z1[left], z1[right]) - np.maximum(z0[left], z0[right])
         keep = overlap_z > TOL
         left, right = left[keep], right[keep]
-        order = np.lexsort((right, left))
-        left, right = left[order], right[order]
         for b in range(0, len(left), EXACT_BATCH):  # exact tests, stopping at max_pairs
             bl, br = left[b:b + EXACT_BATCH], right[b:b + EXACT_BATCH]
             area = shapely.area(shapely.intersection(shrunk[bl], shrunk[br]))
