@@ -35,7 +35,7 @@ import shapely
 from shapely.geometry import LineString, Polygon
 
 from anyhome import geometry
-from anyhome.evaluate.polygons import is_usable, overlapping_pairs, room_polygon
+from anyhome.evaluate.polygons import CHUNK_PAIRS, is_usable, overlapping_pairs, room_polygon
 from anyhome.evaluate.report import Violation
 from anyhome.house import House, HouseObject, Room
 
@@ -145,7 +145,8 @@ def check_in_bounds(index: ObjectIndex) -> list[Violation]:
 
 # ------------------------------------------------------------------- rule 2
 def colliding_pairs(index: ObjectIndex, max_pairs: int = MAX_COLLISIONS,
-                    max_candidates: int = MAX_CANDIDATE_PAIRS) -> list[tuple[int, int]]:
+                    max_candidates: int = MAX_CANDIDATE_PAIRS,
+                    chunk_pairs: int = CHUNK_PAIRS) -> list[tuple[int, int]]:
     """Index pairs ``(i, j)``, ``i < j``, of objects whose boxes collide (rule 2).
 
     The same test as :func:`geometry.boxes_collide` on arrays: footprint boxes that
@@ -164,7 +165,7 @@ def colliding_pairs(index: ObjectIndex, max_pairs: int = MAX_COLLISIONS,
     shrunk = shapely.buffer(fps, -TOL / 2, join_style="mitre")
     pairs: list[tuple[int, int]] = []
     examined = 0
-    for stop, left, right in overlapping_pairs(fps):
+    for stop, left, right in overlapping_pairs(fps, chunk_pairs):
         examined += len(left)
         overlap_z = np.minimum(z1[left], z1[right]) - np.maximum(z0[left], z0[right])
         keep = overlap_z > TOL
