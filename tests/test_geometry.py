@@ -72,3 +72,62 @@ def test_rugs_and_stacked_things_do_not_block():
     assert not g.blocks_navigation("rug", 0.01, "floor")
     assert not g.blocks_navigation("lamp", 0.5, "nightstand-1")
     assert g.blocks_navigation("sofa", 0.8, "floor")
+
+
+# ------------------------------------------------------- bounded navigation raster
+def reference_navigability(rooms, doors, obstacles, cell_m=g.NAV_CELL_M):
+    """The raster of the first version of :func:`g.navigability`: full-grid masks from
+    full coordinate arrays (kept here to check the windowed one gives the same cells)."""
+    import shapely
+    from shapely.geometry import LineString
+
+    polys = {rid: Polygon(p) for rid, p in rooms}
+    minx, miny, maxx, maxy = shapely.bounds(shapely.union_all(list(polys.values())))
+    pad = 2 * cell_m
+    xs = np.arange(minx - pad, maxx + pad, cell_m) + cell_m / 2
+    ys = np.arange(miny - pad, maxy + pad, cell_m) + cell_m / 2
+    gx, gy = np.meshgrid(xs, ys)
+    free = np.zeros(gx.shape, dtype=bool)
+    for p in polys.values():
+        free |= shapely.contains_xy(p.buffer(-g.WALL_INSET_CELLS * cell_m, join_style="mitre"),
+                                    gx, gy)
+    for _, _, seg in doors:
+        free |= shapely.contains_xy(LineString(seg).buffer(cell_m * 0.75, cap_style="flat"),
+                                    gx, gy)
+    for ob in obstacles:
+        free &= ~shapely.contains_xy(ob, gx, gy)
+    from scipy import ndimage
+
+    return int((ndimage.distance_transform_edt(free) * cell_m > g.AGENT_RADIUS_M).sum())
+
+
+@settings(max_examples=25, deadline=None)
+@given(st.lists(st.tuples(st.floats(0.2, 7.8), st.floats(0.2, 3.8), st.floats(0.1, 1.5),
+                          st.floats(0.1, 1.5), st.floats(0, 6.3)), max_size=8))
+def test_windowed_raster_equals_the_full_grid_one(boxes):
+    rooms, doors = two_rooms()
+    obstacles = [g.footprint_polygon((x, y, 0), (w, d, 1), yaw) for x, y, w, d, yaw in boxes]
+    res = g.navigability(rooms, doors, obstacles)
+    assert res.checked and res.cell_m == g.NAV_CELL_M
+    assert res.free_cells == reference_navigability(rooms, doors, obstacles)
+
+
+def test_huge_house_is_coarsened_or_refused_within_the_cell_bound():
+    assert g.nav_cell_size(10, 10) == g.NAV_CELL_M
+    step = g.nav_cell_size(150, 150)
+    assert g.NAV_CELL_M < step <= g.MAX_NAV_CELL_M
+    assert (150 / step + 5) ** 2 <= g.MAX_NAV_CELLS
+    big = [("a", [(0, 0), (150, 0), (150, 150), (0, 150)])]
+    res = g.navigability(big, [("d0", ("a", "outside"), ((1, 0), (2, 0)))], [])
+    assert res.ok and res.cell_m == step and res.free_cells > 0
+    km = [("a", [(0, 0), (1000, 0), (1000, 1000), (0, 1000)])]
+    res = g.navigability(km, [("d0", ("a", "outside"), ((1, 0), (2, 0)))], [])
+    assert not res.checked and not res.ok and "1000 m x 1000 m" in res.skipped
+    assert g.nav_cell_size(float("inf"), 1.0) == float("inf")
+
+
+def test_stacked_geometry_beyond_the_work_bound_is_refused():
+    rooms, doors = two_rooms()
+    n = int(g.MAX_NAV_WORK_CELLS / (4 / g.NAV_CELL_M + 1) ** 2) + 10
+    res = g.navigability(rooms, doors, [Polygon([(0, 0), (4, 0), (4, 4), (0, 4)])] * n)
+    assert not res.checked and "overlapping geometry" in res.skipped

@@ -29,6 +29,16 @@ WALL_INSET_CELLS = 0.75
 """Room interiors are shrunk by this many cells so a shared wall is at least one cell thick."""
 NAV_IGNORE_CATEGORIES = frozenset({"rug", "carpet", "mat", "yoga_mat", "play_mat"})
 """Flat floor coverings that an agent walks over."""
+MAX_NAV_CELLS = 4_000_000
+"""Most cells the navigation raster may hold (about 30 bytes each at the peak, so the
+check never needs more than ~120 MB): a 100 m x 100 m house at 5 cm. A larger house is
+rasterized at the smallest coarser step that fits, up to ``MAX_NAV_CELL_M``."""
+MAX_NAV_WORK_CELLS = 10 * MAX_NAV_CELLS
+"""Most cells the rasterized rooms and obstacles may cover together (their windows
+overlap when geometry is stacked): bounds the time of the check."""
+MAX_NAV_CELL_M = AGENT_RADIUS_M / 2
+"""Coarsest raster step the navigability check accepts; a house that would need a
+coarser one (e.g. a 1 km room) is not checked (``NavResult.checked`` is False)."""
 
 
 # --------------------------------------------------------------------- boxes
@@ -134,10 +144,37 @@ class NavResult:
     unreachable_doors: tuple[str, ...]
     free_cells: int
     reachable_cells: int
+    cell_m: float = NAV_CELL_M
+    """The raster step used (coarser than ``NAV_CELL_M`` only for a very large house)."""
+    skipped: str = ""
+    """Why the check did not run (empty when it ran)."""
+
+    @property
+    def checked(self) -> bool:
+        return not self.skipped
 
     @property
     def ok(self) -> bool:
-        return not self.unreachable_rooms and not self.unreachable_doors
+        return self.checked and not self.unreachable_rooms and not self.unreachable_doors
+
+
+def nav_cell_size(width_m: float, height_m: float, cell_m: float = NAV_CELL_M,
+                  max_cells: int = MAX_NAV_CELLS) -> float:
+    """The raster step for a ``width_m x height_m`` extent: ``cell_m`` when the raster
+    (with its padding) holds at most ``max_cells`` cells, else the smallest step that fits
+    (may exceed ``MAX_NAV_CELL_M``: the caller refuses then); ``inf`` for a non-finite extent."""
+    if not (np.isfinite(width_m) and np.isfinite(height_m)):
+        return float("inf")
+
+    def cells(step: float) -> float:
+        return (np.ceil(width_m / step) + 5) * (np.ceil(height_m / step) + 5)
+
+    if cells(cell_m) <= max_cells:
+        return cell_m
+    step = max(cell_m, float(np.sqrt(width_m * height_m / max_cells)))
+    while cells(step) > max_cells:
+        step *= 1.05
+    return step
 
 
 def blocks_navigation(category: str, height_m: float, support: str) -> bool:
@@ -175,57 +212,102 @@ def navigability(
     if not polys:
         return NavResult((), (), 0, 0)
     minx, miny, maxx, maxy = shapely.bounds(shapely.union_all(list(polys.values())))
+    step = nav_cell_size(maxx - minx, maxy - miny, cell_m)
+    if step > max(cell_m, MAX_NAV_CELL_M):
+        return NavResult((), (), 0, 0, cell_m=step, skipped=(
+            f"the house spans {maxx - minx:.0f} m x {maxy - miny:.0f} m: a navigation raster "
+            f"of at most {MAX_NAV_CELLS:,} cells would need {step:.2f} m cells, coarser than "
+            f"the {MAX_NAV_CELL_M} m limit"))
+    cell_m = step
+    obstacles = list(obstacles)
+    work = _window_cells([*polys.values(), *obstacles], cell_m)
+    if work > MAX_NAV_WORK_CELLS:
+        return NavResult((), (), 0, 0, cell_m=cell_m, skipped=(
+            f"rooms and obstacles cover {work:,.0f} raster cells in all (at most "
+            f"{MAX_NAV_WORK_CELLS:,}): too much overlapping geometry"))
     pad = 2 * cell_m
     xs = np.arange(minx - pad, maxx + pad, cell_m) + cell_m / 2
     ys = np.arange(miny - pad, maxy + pad, cell_m) + cell_m / 2
-    gx, gy = np.meshgrid(xs, ys)  # shape (ny, nx)
-    free = np.zeros(gx.shape, dtype=bool)
-    room_of = np.full(gx.shape, -1, dtype=np.int32)
+    shape = (len(ys), len(xs))
+    gx, gy = xs[np.newaxis, :], ys[:, np.newaxis]  # broadcast: no full coordinate arrays
+    free = np.zeros(shape, dtype=bool)
+    room_of = np.full(shape, -1, dtype=np.int32)
     room_ids = list(polys)
     half = cell_m / 2
     for k, rid in enumerate(room_ids):
         inner = polys[rid].buffer(-WALL_INSET_CELLS * cell_m, join_style="mitre")
         if inner.is_empty:
             continue
-        mask = _raster(inner, gx, gy, xs, ys)
-        free |= mask
-        room_of[mask] = k
+        win = _raster_window(inner, gx, gy, xs, ys)
+        if win is not None:
+            where, mask = win
+            free[where] |= mask
+            room_of[where][mask] = k
     for _, _, seg in doors:
         zone = LineString(seg).buffer(half * 1.5, cap_style="flat")
-        free |= _raster(zone, gx, gy, xs, ys)
+        win = _raster_window(zone, gx, gy, xs, ys)
+        if win is not None:
+            free[win[0]] |= win[1]
     for ob in obstacles:
-        free &= ~_raster(ob, gx, gy, xs, ys)
-    dist = ndimage.distance_transform_edt(free) * cell_m
-    walkable = dist > agent_radius_m
+        win = _raster_window(ob, gx, gy, xs, ys)
+        if win is not None:
+            free[win[0]] &= ~win[1]
+    dist = ndimage.distance_transform_edt(free)
+    walkable = dist * cell_m > agent_radius_m
+    del dist
     labels, _ = ndimage.label(walkable)
     near = agent_radius_m + 2 * cell_m
     entrance_labels: set[int] = set()
     door_labels: dict[str, set[int]] = {}
     for did, sides, seg in doors:
         zone = LineString(seg).buffer(near)
-        lab = set(np.unique(labels[_raster(zone, gx, gy, xs, ys) & walkable]).tolist()) - {0}
+        win = _raster_window(zone, gx, gy, xs, ys)
+        lab = set() if win is None else (
+            set(np.unique(labels[win[0]][win[1] & walkable[win[0]]]).tolist()) - {0})
         door_labels[did] = lab
         if "outside" in sides:
             entrance_labels |= lab
     reach = np.isin(labels, list(entrance_labels)) if entrance_labels else np.zeros_like(walkable)
-    unreachable_rooms = tuple(
-        rid for k, rid in enumerate(room_ids) if not np.any(reach & (room_of == k))
-    )
+    reached = set(np.unique(room_of[reach]).tolist())
+    unreachable_rooms = tuple(rid for k, rid in enumerate(room_ids) if k not in reached)
     unreachable_doors = tuple(
         did for did, lab in door_labels.items() if not (lab & entrance_labels)
     )
-    return NavResult(unreachable_rooms, unreachable_doors, int(walkable.sum()), int(reach.sum()))
+    return NavResult(unreachable_rooms, unreachable_doors, int(walkable.sum()), int(reach.sum()),
+                     cell_m=cell_m)
 
 
-def _raster(geom, gx: np.ndarray, gy: np.ndarray, xs: np.ndarray, ys: np.ndarray) -> np.ndarray:
-    """Boolean mask of raster cells whose centre lies inside ``geom`` (bbox-windowed)."""
-    mask = np.zeros(gx.shape, dtype=bool)
+def _window_cells(geoms: Sequence, cell_m: float) -> float:
+    """Cells the raster windows of ``geoms`` hold together (from their bounds)."""
+    if not geoms:
+        return 0.0
+    b = shapely.bounds(np.array(geoms, dtype=object))
+    w = np.nan_to_num((b[:, 2] - b[:, 0]) / cell_m + 1, nan=0.0)
+    h = np.nan_to_num((b[:, 3] - b[:, 1]) / cell_m + 1, nan=0.0)
+    return float(np.sum(w * h))
+
+
+def _raster_window(geom, gx: np.ndarray, gy: np.ndarray, xs: np.ndarray, ys: np.ndarray):
+    """``(window, mask)``: the raster window of ``geom``'s bounds (a pair of slices) and the
+    cells in it whose centre lies inside ``geom``; ``None`` when the window is empty.
+
+    ``gx`` is the ``(1, nx)`` row of cell-centre x and ``gy`` the ``(ny, 1)`` column of y.
+    """
     if geom.is_empty:
-        return mask
+        return None
     x0, y0, x1, y1 = geom.bounds
     i0, i1 = np.searchsorted(ys, [y0, y1])
     j0, j1 = np.searchsorted(xs, [x0, x1])
     if i0 >= i1 or j0 >= j1:
-        return mask
-    mask[i0:i1, j0:j1] = shapely.contains_xy(geom, gx[i0:i1, j0:j1], gy[i0:i1, j0:j1])
+        return None
+    where = (slice(i0, i1), slice(j0, j1))
+    return where, shapely.contains_xy(geom, gx[:, j0:j1], gy[i0:i1, :])
+
+
+def _raster(geom, gx: np.ndarray, gy: np.ndarray, xs: np.ndarray, ys: np.ndarray) -> np.ndarray:
+    """Boolean mask of raster cells whose centre lies inside ``geom`` (bbox-windowed)."""
+    mask = np.zeros((len(ys), len(xs)), dtype=bool)
+    win = _raster_window(geom, gx, gy, xs, ys)
+    if win is not None:
+        mask[win[0]] = win[1]
     return mask

@@ -23,7 +23,8 @@ def grid_house(n_objects: int, cols: int = 4, rows: int = 3) -> House:
             rid = f"r{r}{c}"
             rooms.append(Room(id=rid, name=f"room {rid}", type="office",
                               polygon=[(x, y), (x + ROOM_M, y), (x + ROOM_M, y + ROOM_M),
-                                       (x, y + ROOM_M)]))
+                                       (x, y + ROOM_M)],
+                              materials={"floor": "carpet", "walls": "white paint"}))
             if c > 0:
                 doors.append(Door(id=f"dx{r}{c}", rooms=(f"r{r}{c - 1}", rid),
                                   segment=((x, y + 2), (x, y + 3))))

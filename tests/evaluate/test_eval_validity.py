@@ -180,7 +180,8 @@ def test_unreachable_room_without_door(house):
 def add_storeroom(house):
     """A storeroom east of the bedroom, reached only through it (bedroom window moved north)."""
     house.rooms.append(Room(id="C", name="storeroom", type="storage",
-                            polygon=[(10, 0), (12, 0), (12, 4), (10, 4)]))
+                            polygon=[(10, 0), (12, 0), (12, 4), (10, 4)],
+                            materials={"floor": "concrete", "walls": "white paint"}))
     house.doors.append(Door(id="d_bc", rooms=("B", "C"), segment=((10, 2.5), (10, 3.3))))
     house.connections.append(("B", "C"))
     house.windows[1] = Window(id="w_b", room="B", segment=((8, 4), (9, 4)))

@@ -18,10 +18,11 @@ from collections import deque
 from collections.abc import Sequence
 
 import numpy as np
+import shapely
 from shapely.geometry import LineString, Polygon
 
 from anyhome import geometry
-from anyhome.evaluate.polygons import is_usable, room_polygon
+from anyhome.evaluate.polygons import is_usable, overlapping_pairs, room_polygon
 from anyhome.evaluate.report import Violation
 from anyhome.house import House, is_habitable
 
@@ -29,6 +30,8 @@ TOL = geometry.TOLERANCE_M
 OUTSIDE = "outside"
 ROOM_OVERLAP_M2 = 1e-4
 """Intersection area above which two rooms overlap."""
+MAX_ROOM_OVERLAPS = 1000
+"""Rule 5 stops after reporting this many overlapping room pairs."""
 SHARED_WALL_MIN_M = 2 * TOL
 """A segment shares more than this length with another room's boundary -> not exterior."""
 
@@ -51,18 +54,33 @@ def connections_realized(house: House) -> float:
     return sum(frozenset(c) in pairs for c in house.connections) / len(house.connections)
 
 
-def on_exterior(polys: dict[str, Polygon], room_id: str, segment: Sequence[Sequence[float]]) -> bool:
+def on_exterior(polys: dict[str, Polygon], room_id: str, segment: Sequence[Sequence[float]],
+                bands: _Bands | None = None) -> bool:
     """The segment lies on ``room_id``'s boundary and runs along no other room's wall."""
     if not geometry.on_boundary(polys[room_id], segment):
         return False
     line = LineString(segment)
-    for rid, poly in polys.items():
+    bands = bands if bands is not None else _Bands(polys)
+    for rid, band in bands.near(line):
         if rid == room_id:
             continue
-        band = poly.exterior.buffer(TOL, join_style="mitre")
         if line.intersects(band) and line.intersection(band).length > SHARED_WALL_MIN_M:
             return False
     return True
+
+
+class _Bands:
+    """The 1 cm bands around every room's boundary, with an STRtree to find the near ones."""
+
+    def __init__(self, polys: dict[str, Polygon]) -> None:
+        self.ids = [rid for rid, p in polys.items() if not p.is_empty]
+        self.bands = np.array([polys[rid].exterior.buffer(TOL, join_style="mitre")
+                               for rid in self.ids], dtype=object)
+        self.tree = shapely.STRtree(self.bands)
+
+    def near(self, line: LineString) -> list[tuple[str, Polygon]]:
+        ks = np.sort(self.tree.query(line))
+        return [(self.ids[k], self.bands[k]) for k in ks.tolist()]
 
 
 def _check_polygons(house: House, polys: dict[str, Polygon]) -> list[Violation]:
@@ -79,22 +97,30 @@ def _check_polygons(house: House, polys: dict[str, Polygon]) -> list[Violation]:
 
 
 def _check_overlaps(house: House, polys: dict[str, Polygon]) -> list[Violation]:
+    """Pairs of usable rooms whose intersection area exceeds ``ROOM_OVERLAP_M2``
+    (candidates from an STRtree of the room outlines), in house order."""
+    rooms = [r for r in house.rooms if is_usable(polys[r.id])]
+    if len(rooms) < 2:
+        return []
+    geoms = np.array([polys[r.id] for r in rooms], dtype=object)
     out = []
-    rooms = house.rooms
-    for i, a in enumerate(rooms):
-        for b in rooms[i + 1:]:
-            pa, pb = polys[a.id], polys[b.id]
-            if not is_usable(pa) or not is_usable(pb):
-                continue
-            area = pa.intersection(pb).area
-            if area > ROOM_OVERLAP_M2:
+    for _, left, right in overlapping_pairs(geoms):
+        area = shapely.area(shapely.intersection(geoms[left], geoms[right]))
+        for i, j, a in zip(left.tolist(), right.tolist(), area.tolist()):
+            if a > ROOM_OVERLAP_M2:
                 out.append(Violation(5, "room_overlap",
-                                     f"rooms {a.id} and {b.id} overlap by {area:.2f} m2",
-                                     (a.id, b.id)))
+                                     f"rooms {rooms[i].id} and {rooms[j].id} overlap by "
+                                     f"{a:.2f} m2", (rooms[i].id, rooms[j].id)))
+        if len(out) >= MAX_ROOM_OVERLAPS:
+            out.append(Violation("limits", "overlaps_capped",
+                                 f"rule 5 stopped after {len(out)} overlapping room pairs; "
+                                 "more may overlap", ()))
+            break
     return out
 
 
 def _check_doors(house: House, polys: dict[str, Polygon]) -> list[Violation]:
+    bands = _Bands(polys)
     out = []
     entrances = 0
     for door in house.doors:
@@ -107,7 +133,7 @@ def _check_doors(house: House, polys: dict[str, Polygon]) -> list[Violation]:
         if OUTSIDE in (a, b):
             entrances += 1
             room = b if a == OUTSIDE else a
-            ok = not _degenerate(door.segment) and on_exterior(polys, room, door.segment)
+            ok = not _degenerate(door.segment) and on_exterior(polys, room, door.segment, bands)
         else:
             ok = (not _degenerate(door.segment)
                   and geometry.on_boundary(polys[a], door.segment)
@@ -160,6 +186,7 @@ def _check_connections(house: House) -> list[Violation]:
 # --------------------------------------------------------------- windows
 def check_windows(house: House) -> list[Violation]:
     polys = {r.id: room_polygon(r.polygon) for r in house.rooms}
+    bands = _Bands(polys)
     out = []
     lit: set[str] = set()
     for win in house.windows:
@@ -167,7 +194,7 @@ def check_windows(house: House) -> list[Violation]:
             out.append(Violation("windows", "bad_window_room",
                                  f"window {win.id} lights unknown room {win.room!r}", (win.id,)))
             continue
-        if _degenerate(win.segment) or not on_exterior(polys, win.room, win.segment):
+        if _degenerate(win.segment) or not on_exterior(polys, win.room, win.segment, bands):
             out.append(Violation("windows", "window_off_boundary",
                                  f"window {win.id} is not on an exterior wall of room {win.room}",
                                  (win.id, win.room)))

@@ -3,7 +3,12 @@
 Rules 1-4 live in :mod:`anyhome.evaluate.objects`, rule 5 and the project rule
 "windows" in :mod:`anyhome.evaluate.floorplan`, rule 6 in
 :mod:`anyhome.evaluate.navigation`. The project rule "ids" flags duplicate ids (every
-reference in house.json is by id).
+reference in house.json is by id) and, with "values" and "heights", the checks of
+:mod:`anyhome.evaluate.values`, which also screens out the elements with non-finite or
+non-positive numbers before the geometric rules run. The project rule "limits" says
+where a check stopped at its bound (``objects.MAX_COLLISIONS``,
+``objects.MAX_CANDIDATE_PAIRS``) or where more than ``MAX_PER_CODE`` violations of one
+kind were found (the first ``MAX_PER_CODE`` are listed, the metrics count them all).
 """
 
 from __future__ import annotations
@@ -11,12 +16,15 @@ from __future__ import annotations
 from collections import Counter
 from dataclasses import dataclass
 
-from anyhome.evaluate import floorplan, navigation, objects
+from anyhome.evaluate import floorplan, navigation, objects, values
 from anyhome.evaluate.report import Violation
 from anyhome.house import House, is_habitable
 
-RULES: tuple[int | str, ...] = (1, 2, 3, 4, 5, 6, "windows", "ids")
+RULES: tuple[int | str, ...] = (1, 2, 3, 4, 5, 6, "windows", "ids", "values", "heights",
+                                "limits")
 """Every rule a violation can name, in report order."""
+MAX_PER_CODE = 1000
+"""Violations of one code listed in the report; the rest are counted in one line."""
 
 
 @dataclass(frozen=True)
@@ -27,12 +35,15 @@ class ValidityResult:
 
 def check_validity(house: House) -> ValidityResult:
     """Run every validity rule on ``house``; violations sorted by rule, in house order."""
+    screened = values.screen(house)
+    full, house = house, screened.house
     index = objects.ObjectIndex.build(house)
     rule1 = objects.check_in_bounds(index)
     rule2 = objects.check_collisions(index)
-    nav = navigation.run_navigability(house)
+    nav = navigation.run_navigability(house, index.footprints)
     violations = (
-        _check_ids(house)
+        _check_ids(full)
+        + screened.violations
         + rule1
         + rule2
         + objects.check_grounded(index, house)
@@ -40,23 +51,27 @@ def check_validity(house: House) -> ValidityResult:
         + floorplan.check_floorplan(house)
         + floorplan.check_windows(house)
         + navigation.check_navigable(nav)
+        + index.notes
     )
     order = {rule: k for k, rule in enumerate(RULES)}
     violations.sort(key=lambda v: order.get(v.rule, len(order)))
+    n_violations = len(violations)
+    per_rule = Counter(v.rule for v in violations)
+    violations = _cap_per_code(violations)
 
     object_ids = set(index.by_id)
     oob = {v.ids[0] for v in rule1 if v.ids} | {i for v in rule2 for i in v.ids}
     oob &= object_ids
-    per_rule = Counter(v.rule for v in violations)
-    n_obj = len(house.objects)
-    habitable = [r.id for r in house.rooms if is_habitable(r.type)]
-    in_habitable = sum(o.room in set(habitable) for o in house.objects)
+    n_obj = len(full.objects)
+    habitable = [r.id for r in full.rooms if is_habitable(r.type)]
+    habitable_ids = set(habitable)
+    in_habitable = sum(o.room in habitable_ids for o in full.objects)
     metrics: dict[str, float | int] = {
-        "n_rooms": len(house.rooms),
+        "n_rooms": len(full.rooms),
         "n_objects": n_obj,
-        "n_doors": len(house.doors),
-        "n_windows": len(house.windows),
-        "n_violations": len(violations),
+        "n_doors": len(full.doors),
+        "n_windows": len(full.windows),
+        "n_violations": n_violations,
         **{f"violations_rule_{rule}": per_rule.get(rule, 0) for rule in RULES},
         "n_oob_objects": len(oob),
         "oob_rate": len(oob) / n_obj if n_obj else 0.0,
@@ -65,9 +80,31 @@ def check_validity(house: House) -> ValidityResult:
         "nav_reachable_fraction": _fraction(nav.reachable_cells, nav.free_cells),
         "nav_rooms_reachable_fraction": _fraction(
             len(house.rooms) - len(nav.unreachable_rooms), len(house.rooms)),
+        "nav_cell_m": nav.cell_m,
+        "complete": not index.notes and nav.checked,
         "objects_per_habitable_room": in_habitable / len(habitable) if habitable else 0.0,
     }
     return ValidityResult(violations, metrics)
+
+
+def _cap_per_code(violations: list[Violation]) -> list[Violation]:
+    """The first ``MAX_PER_CODE`` violations of each code, and a ``limits`` line per code
+    saying how many more there are."""
+    seen: Counter[str] = Counter(v.code for v in violations)
+    if max(seen.values(), default=0) <= MAX_PER_CODE:
+        return violations
+    kept: Counter[str] = Counter()
+    out = []
+    for v in violations:
+        kept[v.code] += 1
+        if kept[v.code] <= MAX_PER_CODE:
+            out.append(v)
+    for code, n in sorted(seen.items()):
+        if n > MAX_PER_CODE:
+            out.append(Violation("limits", "more_violations",
+                                 f"{n - MAX_PER_CODE} more {code} violations not listed "
+                                 f"({n} in all)", ()))
+    return out
 
 
 def _fraction(part: int, whole: int) -> float:
