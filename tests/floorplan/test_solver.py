@@ -142,3 +142,17 @@ def test_large_home_lays_out() -> None:
     spec = large_home()
     for seed in (0, 1, 2):
         check_floorplan(spec, solve_floorplan(spec, np.random.default_rng(seed)))
+
+
+def test_openings_fit_under_low_ceilings() -> None:
+    """Rooms at the plan's lowest height (2.0 m): doors and window tops stay under the
+    ceiling (doors were always 2.1 m, which eval reports as taller than the room)."""
+    spec = family_home()
+    for r in spec.rooms:
+        r.height_m = 2.0
+    fp = solve_floorplan(spec, np.random.default_rng(0))
+    assert fp.doors and fp.windows
+    assert all(d.height <= 1.9 + 1e-9 for d in fp.doors)
+    assert all(w.sill + w.height <= 1.9 + 1e-9 for w in fp.windows)
+    default = solve_floorplan(family_home(), np.random.default_rng(0))
+    assert {d.height for d in default.doors} == {2.1}

@@ -295,6 +295,12 @@ def _place_windows(prog, runs, doors, cell_m) -> list[PlacedWindow] | str:
     return windows
 
 
+DOOR_HEIGHT_M = 2.1
+"""Height of a door opening, where the rooms' ceilings allow it."""
+OPENING_HEADROOM_M = 0.1
+"""Wall kept between the top of a door or window and the ceiling."""
+
+
 def _to_floorplan(spec: HouseSpec, prog: Program, lay: Layout) -> Floorplan:
     rooms = [
         Room(
@@ -303,12 +309,18 @@ def _to_floorplan(spec: HouseSpec, prog: Program, lay: Layout) -> Floorplan:
         )
         for k, r in enumerate(spec.rooms)
     ]
+    heights = {r.id: r.height for r in rooms}
     doors = []
     for i, d in enumerate(lay.doors):
         sides = spec.connections[i] if i < len(spec.connections) else tuple(map(prog.label, d.rooms))
-        doors.append(Door(id=f"door-{i}", rooms=tuple(sides), segment=d.opening.segment(), kind=d.kind))
-    windows = [
-        Window(id=f"win-{i}", room=prog.ids[w.room], segment=w.opening.segment(), height=w.height_m, sill=w.sill_m)
-        for i, w in enumerate(lay.windows)
-    ]
+        # a door fits under the lower ceiling of the rooms it joins
+        ceiling_m = min(heights.get(s, DOOR_HEIGHT_M + OPENING_HEADROOM_M) for s in sides)
+        doors.append(Door(id=f"door-{i}", rooms=tuple(sides), segment=d.opening.segment(), kind=d.kind,
+                          height=min(DOOR_HEIGHT_M, ceiling_m - OPENING_HEADROOM_M)))
+    windows = []
+    for i, w in enumerate(lay.windows):
+        room_id = prog.ids[w.room]
+        # a window's top stays under its room's ceiling
+        height_m = min(w.height_m, heights[room_id] - OPENING_HEADROOM_M - w.sill_m)
+        windows.append(Window(id=f"win-{i}", room=room_id, segment=w.opening.segment(), height=height_m, sill=w.sill_m))
     return Floorplan(rooms=rooms, doors=doors, windows=windows, connections=list(spec.connections))
