@@ -421,7 +421,7 @@ class LLMClient:
                 )  # fmt: skip
                 body = raw.content
             except _TooLarge:
-                raise ReplyRejected(f"the LLM server at {self.url} sent an answer larger than {MAX_BODY_BYTES // 1024} KiB; it was not read") from None
+                raise ReplyRejected(f"the LLM server at {self.url} sent an answer larger than {MAX_BODY_BYTES // 1024} KiB; reading stopped there") from None
             except (self._openai.APIConnectionError, self._openai.AuthenticationError) as e:  # timeouts included
                 self._mark_down(e)
                 raise Unavailable(self.down) from None
