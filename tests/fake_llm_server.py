@@ -191,7 +191,8 @@ def _handler(server: FakeLLM) -> type[BaseHTTPRequestHandler]:
 
         def _record(self, data: Any) -> None:
             with server.lock:
-                server.requests.append({"path": self.path, "headers": dict(self.headers), "json": data})
+                server.requests.append({"path": self.path, "headers": {k.lower(): v for k, v in self.headers.items()},
+                                        "authorization": self.headers.get_all("Authorization") or [], "json": data})  # fmt: skip
 
         def do_GET(self) -> None:  # noqa: N802
             self._record(None)

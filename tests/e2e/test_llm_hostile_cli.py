@@ -54,7 +54,8 @@ def test_no_secret_and_no_control_character_in_any_output(fake_llm, tmp_path: Pa
     fake_llm.script["ornaments"] = Answer(body=b"<html>\x1b]0;pwned\x07</html>", content_type="text/html")
     url = fake_llm.base_url.replace("http://", f"http://user:{PASSWORD}@")
     out = tmp_path / "house"
-    proc = run(["generate", CAT, "--planner", "llm", "--llm-base-url", url, "--out", str(out), "--llm-timeout", "10"], tmp_path)
+    # -v: the debug and HTTP logs of the libraries below go to stderr too, and are scanned
+    proc = run(["-v", "generate", CAT, "--planner", "llm", "--llm-base-url", url, "--out", str(out), "--llm-timeout", "10"], tmp_path)
     assert proc.returncode == 0, proc.stderr
     assert fake_llm.chat_requests("furniture") and fake_llm.chat_requests("ornaments")  # the server was asked
 
@@ -78,8 +79,9 @@ def test_no_secret_and_no_control_character_in_any_output(fake_llm, tmp_path: Pa
         assert not controls(text), (p, controls(text))
     assert sum(p.stat().st_size for p in files if p.is_relative_to(tmp_path / "cache")) < 256 * 1024
     assert (out / "house.json").stat().st_size < 1024 * 1024
+    assert "HTTP Request: POST" in proc.stderr  # the library logs were on
     for stream in (proc.stdout, proc.stderr):
-        assert KEY not in stream and PASSWORD not in stream
+        assert KEY not in stream and PASSWORD not in stream and "dXNlcjpTRUNSRVRQVw" not in stream
         assert not controls(stream), controls(stream)
 
     check = run(["eval", str(out), "--strict"], tmp_path)

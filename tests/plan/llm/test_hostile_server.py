@@ -257,7 +257,8 @@ def test_credentials_in_the_base_url_are_used_but_never_recorded(fake_llm, tmp_p
     fake_llm.script["appearance"] = Answer.chat(None)  # a warning that names the server
     spec, planner = plan(fake_llm, tmp_path, base_url=url)
     sent = fake_llm.requests[0]["headers"]
-    assert sent["Authorization"] == "Basic " + base64.b64encode(b"user:SECRETPW").decode()  # used for the request
+    assert len(fake_llm.requests[0]["authorization"]) == 1
+    assert sent["authorization"] == "Basic " + base64.b64encode(b"user:SECRETPW").decode()  # used for the request
     assert spec.provenance["llm"]["base_url"] == fake_llm.base_url
     assert any(fake_llm.base_url in w for w in spec.warnings)
     assert "SECRETPW" not in json.dumps(spec.model_dump(mode="json"))

@@ -169,6 +169,20 @@ def _proxy_for(base_url: str) -> str | None:
     return proxy
 
 
+def _split_credentials(base_url: str) -> tuple[str, dict[str, str]]:
+    """The base URL without ``user:password@`` and the header that sends them (HTTP basic
+    auth, as httpx would send them from the URL). The libraries below then never see the
+    credentials in a URL, so none of their logs or errors can show them."""
+    import base64
+    from urllib.parse import unquote, urlsplit
+
+    parts = urlsplit(base_url)
+    if parts.username is None and parts.password is None:
+        return base_url, {}
+    pair = f"{unquote(parts.username or '')}:{unquote(parts.password or '')}".encode()
+    return redact_url(base_url), {"Authorization": "Basic " + base64.b64encode(pair).decode("ascii")}
+
+
 def _count(value: Any) -> int:
     """A token count a server claims, or 0 when it is not a plausible whole number."""
     if isinstance(value, bool) or not isinstance(value, (int, float)):
@@ -325,8 +339,9 @@ class LLMClient:
             transport=_guarded_transport(httpx, config.timeout_s, MAX_BODY_BYTES, _proxy_for(config.base_url)),
             timeout=config.timeout_s, trust_env=False, follow_redirects=False,
         )  # fmt: skip
+        request_url, auth = _split_credentials(config.base_url)
         self._client = openai.OpenAI(
-            base_url=config.base_url, api_key=config.api_key or NO_KEY,
+            base_url=request_url, api_key=config.api_key or NO_KEY, default_headers=auth or None,
             timeout=config.timeout_s, max_retries=0, http_client=http_client,
         )  # fmt: skip
         note = self.cache.server_note(self.url)
