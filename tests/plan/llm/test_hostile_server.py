@@ -130,10 +130,11 @@ def test_an_html_models_answer_plans_the_whole_house_offline(fake_llm, tmp_path:
         ({"data": "x"}, "holds no model list"),
         ({"data": [{"id": 5}, {"id": "\x1b]0;pwned\x07"}]}, "lists no usable model"),
         ({"data": []}, "lists no usable model"),
+        (Answer(filler=(b'{"data": [{"id": "', b'"}]}', 50_000_000)), "/models answer larger than 1024 KiB"),
     ],
 )
 def test_odd_models_lists(fake_llm, tmp_path: Path, models: Any, why: str) -> None:  # noqa: F811
-    fake_llm.models = Answer.json(models)
+    fake_llm.models = models if isinstance(models, Answer) else Answer.json(models)
     spec, _ = plan(fake_llm, tmp_path)
     assert set(sources(spec).values()) == {"offline"} and any(why in w for w in spec.warnings)
     assert_clean(spec)
