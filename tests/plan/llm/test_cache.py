@@ -1,7 +1,7 @@
 import json
 from pathlib import Path
 
-from anyhome.plan.llm.cache import ReplyCache, request_key
+from anyhome.plan.llm.cache import MAX_ENTRY_BYTES, ReplyCache, request_key
 
 MSGS = [{"role": "user", "content": "hi"}]
 
@@ -47,3 +47,23 @@ def test_server_notes_merge_and_persist(tmp_path: Path) -> None:
     c.remember_server("http://a/v1", model="smol")
     assert ReplyCache(tmp_path).server_note("http://a/v1") == {"mode": "json_object_schema", "model": "smol"}
     assert c.server_note("http://other/v1") == {}
+
+
+def test_credentials_are_neither_hashed_nor_recorded(tmp_path: Path) -> None:
+    with_pw = request_key("http://u:SECRETPW@a/v1", "m", MSGS, {}, {})
+    assert with_pw == request_key("http://a/v1", "m", MSGS, {}, {})  # the key is of the redacted URL
+    c = ReplyCache(tmp_path)
+    c.remember_server("http://u:SECRETPW@a/v1", mode="prompt")
+    assert c.server_note("http://a/v1") == {"mode": "prompt"}
+    assert b"SECRETPW" not in (tmp_path / "servers.json").read_bytes()
+
+
+def test_entries_are_ascii_and_oversized_ones_are_misses(tmp_path: Path) -> None:
+    c = ReplyCache(tmp_path)
+    c.put("ab" * 32, {"content": "caf\u00e9 \x1b]0;t\x07 \x9b"})
+    path = tmp_path / "ab" / f"{'ab' * 32}.json"
+    assert path.read_bytes().isascii() and c.get("ab" * 32)["content"] == "caf\u00e9 \x1b]0;t\x07 \x9b"  # lossless
+    path.write_text(json.dumps({"content": "x" * (MAX_ENTRY_BYTES + 1)}), encoding="utf-8")
+    assert c.get("ab" * 32) is None
+    path.write_text("[" * 100_000 + "]" * 100_000, encoding="utf-8")
+    assert c.get("ab" * 32) is None

@@ -12,6 +12,7 @@ read from the environment only, never from a file, and never written to any outp
 
 from __future__ import annotations
 
+import math
 import os
 from dataclasses import dataclass, field, fields, replace
 from pathlib import Path
@@ -19,6 +20,7 @@ from typing import Any
 from urllib.parse import urlparse
 
 from anyhome.errors import LLMError
+from anyhome.sanitize import clean_text, redact_url
 
 DEFAULT_BASE_URL = "http://127.0.0.1:8080/v1"
 """llama.cpp's server on its default port; Ollama is ``http://127.0.0.1:11434/v1``."""
@@ -28,9 +30,14 @@ DEFAULT_TOP_P = 1.0
 DEFAULT_MAX_TOKENS = 1024
 """Most tokens one reply may hold, so a small model cannot loop for ever."""
 DEFAULT_TIMEOUT_S = 180.0
+"""Seconds one request may take in all (connecting, waiting, reading), not per read."""
+MAX_TIMEOUT_S = 3600.0
 DEFAULT_CONCURRENCY = 2
 """Per-room requests in flight at once (a one-slot server such as llama.cpp's queues them,
 and the queueing counts against each request's timeout)."""
+MAX_CONCURRENCY = 32
+MAX_MAX_TOKENS = 1_000_000
+MAX_MODEL_CHARS = 200
 ENV_PREFIX = "ANYHOME_LLM_"
 CONFIG_ENV = "ANYHOME_CONFIG"
 CACHE_ENV = "ANYHOME_CACHE_DIR"
@@ -60,39 +67,81 @@ class LLMConfig:
     api_key: str | None = field(default=None, repr=False)
 
     def __post_init__(self) -> None:
-        url = urlparse(self.base_url)
-        if url.scheme not in ("http", "https") or not url.netloc:
-            raise LLMError(f"LLM base URL must look like http://host:port/v1, got {self.base_url!r}")
-        if not 0.0 <= self.temperature <= 2.0:
-            raise LLMError(f"LLM temperature must be within 0..2, got {self.temperature}")
-        if not 0.0 < self.top_p <= 1.0:
-            raise LLMError(f"LLM top-p must be within (0, 1], got {self.top_p}")
-        if self.max_tokens < 16:
-            raise LLMError(f"LLM max tokens must be at least 16, got {self.max_tokens}")
-        if self.timeout_s <= 0:
-            raise LLMError(f"LLM timeout must be positive, got {self.timeout_s}")
-        if self.concurrency < 1:
-            raise LLMError(f"LLM concurrency must be at least 1, got {self.concurrency}")
+        shown = redact_url(self.base_url) if isinstance(self.base_url, str) else repr(self.base_url)
+        try:
+            url = urlparse(self.base_url)
+            url.port  # noqa: B018  (raises on a port that is not a number in 0..65535)
+        except (TypeError, ValueError, AttributeError):
+            raise LLMError(f"LLM base URL must look like http://host:port/v1, got {shown!r}") from None
+        if url.scheme not in ("http", "https") or not url.hostname or clean_text(self.base_url) != self.base_url or " " in self.base_url:
+            raise LLMError(f"LLM base URL must look like http://host:port/v1, got {shown!r}")
+        if self.model is not None and (not isinstance(self.model, str) or not self.model.strip()
+                                       or clean_text(self.model) != self.model or len(self.model) > MAX_MODEL_CHARS):  # fmt: skip
+            raise LLMError(f"LLM model must be a name of 1 to {MAX_MODEL_CHARS} printable characters, got {clean_text(str(self.model))[:MAX_MODEL_CHARS]!r}")
+        _number("temperature", self.temperature, 0.0, 2.0, "within 0..2")
+        _number("top-p", self.top_p, 0.0, 1.0, "within (0, 1]", low_open=True)
+        _number("timeout", self.timeout_s, 0.0, MAX_TIMEOUT_S, f"more than 0 and at most {MAX_TIMEOUT_S:g} seconds", low_open=True)
+        _integer("max tokens", self.max_tokens, 16, MAX_MAX_TOKENS)
+        _integer("concurrency", self.concurrency, 1, MAX_CONCURRENCY)
 
     def sampling(self) -> dict[str, Any]:
         return {"temperature": self.temperature, "top_p": self.top_p, "max_tokens": self.max_tokens}
 
     def public(self) -> dict[str, Any]:
         """What may be written to outputs (never the API key)."""
-        return {"base_url": self.base_url, "model": self.model, **self.sampling()}
+        return {"base_url": redact_url(self.base_url), "model": self.model, **self.sampling()}
+
+
+def _number(label: str, value: Any, lo: float, hi: float, rule: str, low_open: bool = False) -> None:
+    ok = isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value)
+    if not ok or not (lo < value <= hi if low_open else lo <= value <= hi):
+        raise LLMError(f"LLM {label} must be {rule}, got {value!r}")
+
+
+def _integer(label: str, value: Any, lo: int, hi: int) -> None:
+    if not isinstance(value, int) or isinstance(value, bool) or not lo <= value <= hi:
+        raise LLMError(f"LLM {label} must be a whole number from {lo} to {hi}, got {value!r}")
 
 
 _CASTS: dict[str, Any] = {
     "base_url": str, "model": str, "temperature": float, "top_p": float, "max_tokens": int,
     "timeout_s": float, "concurrency": int, "cache_dir": Path,
 }  # fmt: skip
+_KIND_NAMES = {str: "a string", float: "a number", int: "a whole number", Path: "a folder path"}
 
 
 def _cast(key: str, value: Any, where: str) -> Any:
-    try:
-        return _CASTS[key](value)
-    except (TypeError, ValueError):
-        raise LLMError(f"{where}: {key} must be a {_CASTS[key].__name__}, got {value!r}") from None
+    """``value`` (from a TOML file or an environment variable) as the type of ``key``."""
+    kind = _CASTS[key]
+    shown = redact_url(value) if key == "base_url" and isinstance(value, str) else value
+    bad = LLMError(f"{where}: {key} must be {_KIND_NAMES[kind]}, got {clean_text(repr(shown))[:80]}")
+    if isinstance(value, bool):  # TOML true/false is no number, path or name
+        raise bad
+    if kind is int:
+        if isinstance(value, float):  # 512.0 is fine; 1e400 (inf), nan and 2.5 are not
+            if not math.isfinite(value) or not value.is_integer():
+                raise bad
+            value = int(value)
+        elif isinstance(value, str):
+            try:
+                value = int(value.strip())
+            except ValueError:
+                raise bad from None
+        if not isinstance(value, int):
+            raise bad
+        return value
+    if kind is float:
+        if isinstance(value, str):
+            try:
+                value = float(value.strip())
+            except ValueError:
+                raise bad from None
+        if not isinstance(value, (int, float)):
+            raise bad
+        return float(value)
+    if not isinstance(value, str) or (kind is Path and (not value or "\0" in value)):
+        raise bad
+    return kind(value)
 
 
 def _from_file(path: Path) -> dict[str, Any]:
@@ -101,11 +150,13 @@ def _from_file(path: Path) -> dict[str, Any]:
     except ModuleNotFoundError:  # Python 3.10
         raise LLMError("reading a config file needs Python 3.11 or newer (tomllib)") from None
     try:
-        data = tomllib.loads(path.read_text(encoding="utf-8"))
+        data = tomllib.loads(path.read_bytes().decode("utf-8"))
     except OSError as e:
-        raise LLMError(f"cannot read config file {path}: {e.strerror}") from None
+        raise LLMError(f"cannot read config file {path}: {e.strerror or e}") from None
+    except UnicodeDecodeError as e:
+        raise LLMError(f"config file {path} is not UTF-8 text (byte {e.start})") from None
     except tomllib.TOMLDecodeError as e:
-        raise LLMError(f"config file {path} is not valid TOML: {e}") from None
+        raise LLMError(f"config file {path} is not valid TOML: {clean_text(str(e))}") from None
     table = data.get("llm", {})
     if not isinstance(table, dict):
         raise LLMError(f"config file {path}: [llm] must be a table")
@@ -113,7 +164,8 @@ def _from_file(path: Path) -> dict[str, Any]:
         raise LLMError(f"config file {path}: put the API key in ANYHOME_LLM_API_KEY, not in a file")
     unknown = sorted(set(table) - set(_CASTS))
     if unknown:
-        raise LLMError(f"config file {path}: unknown [llm] keys {', '.join(unknown)} (known: {', '.join(sorted(_CASTS))})")
+        shown = clean_text(", ".join(unknown))[:200]
+        raise LLMError(f"config file {path}: unknown [llm] keys {shown} (known: {', '.join(sorted(_CASTS))})")
     return {k: _cast(k, v, str(path)) for k, v in table.items()}
 
 
@@ -144,6 +196,9 @@ def load_config(options: dict[str, Any] | None = None, env: dict[str, str] | Non
         values.update(_from_file(path))
     values.update(_from_env(env))
     values.update({k: v for k, v in (options or {}).items() if v is not None})
-    values["api_key"] = env.get(ENV_PREFIX + "API_KEY") or env.get("OPENAI_API_KEY") or None
+    key_name = ENV_PREFIX + "API_KEY" if env.get(ENV_PREFIX + "API_KEY") else "OPENAI_API_KEY"
+    values["api_key"] = env.get(key_name) or None
+    if values["api_key"] is not None and (clean_text(values["api_key"]) != values["api_key"] or not values["api_key"].isascii()):
+        raise LLMError(f"{key_name} holds control or non-ASCII characters; an API key cannot be sent so")  # never echo the key
     known = {f.name for f in fields(LLMConfig)}
     return replace(LLMConfig(), **{k: v for k, v in values.items() if k in known})

@@ -14,11 +14,17 @@ sanity rules (:mod:`.checks`). An invalid reply gets one repair request quoting 
 errors; still invalid, or the server down or slow, and the offline planner fills that
 stage, with a warning. The plan records where each stage came from, the token usage,
 the requests and their latency (``HouseSpec.provenance``, written to house.json).
+
+Nothing from the server reaches the plan, the warnings or the provenance raw: its
+strings are cleaned of control characters and escape sequences at the boundary
+(:mod:`.schemas`), errors and kept replies are cleaned and cut to a bounded length, and
+a reply the client rejects (too large, not a chat answer) only costs its stage.
 """
 
 from __future__ import annotations
 
 import logging
+import math
 import re
 from collections.abc import Callable
 from concurrent.futures import ThreadPoolExecutor
@@ -45,13 +51,19 @@ from anyhome.plan.llm.schemas import (
 )
 from anyhome.plan.offline import OfflinePlanner, fallback_room, item_spec, offline_look
 from anyhome.plan.spec import MAX_ROOMS, RELATIVE_RULES, GroupSpec, HouseSpec, RoomSpec
+from anyhome.sanitize import clean_text
 
 log = logging.getLogger(__name__)
 
 MAX_ERRORS_QUOTED = 8
 """Errors quoted in a repair request."""
-MAX_REPLY_CHARS = 2000
-"""Longest reply text kept in the provenance when it is not JSON."""
+MAX_KEPT_REPLY_CHARS = 4096
+"""Most characters of a reply kept in the provenance (its JSON when that is shorter
+serialized, else the start of its text)."""
+MAX_ERROR_CHARS = 300
+"""Longest error line (quoted in a repair request, a warning and the provenance)."""
+MAX_ECHO_CHARS = 16 * 1024
+"""Most characters of an invalid reply sent back in its repair request."""
 STAGE_MAX_TOKENS = {"program": 600, "furniture": 1100, "ornaments": 500, "appearance": 500}
 """Tokens one stage's reply may take (capped by the configured max tokens)."""
 
@@ -68,7 +80,7 @@ class StageRecord:
     completion_tokens: int = 0
     latency_s: float = 0.0
     errors: list[str] = field(default_factory=list)
-    reply: Any = None  # the last reply: its JSON, else its text (cut to MAX_REPLY_CHARS)
+    reply: Any = None  # the last reply: its JSON, else its text (cleaned, at most MAX_KEPT_REPLY_CHARS)
 
     def to_json(self) -> dict[str, Any]:
         return {
@@ -78,11 +90,39 @@ class StageRecord:
         }  # fmt: skip
 
 
+def _cleaned(node: Any) -> Any:
+    """A parsed reply with every string (keys too) cleaned of control characters."""
+    if isinstance(node, str):
+        return clean_text(node, newlines=True)
+    if isinstance(node, dict):
+        return {clean_text(str(k)): _cleaned(v) for k, v in node.items()}
+    if isinstance(node, list):
+        return [_cleaned(v) for v in node]
+    if isinstance(node, float) and not math.isfinite(node):
+        return str(node)  # house.json holds no bare NaN or Infinity
+    return node
+
+
 def _kept_reply(content: str) -> Any:
-    try:
-        return parse_json(content)
-    except ValueError:
-        return content[:MAX_REPLY_CHARS]
+    """What the provenance keeps of a reply: bounded, cleaned."""
+    head = content[: MAX_KEPT_REPLY_CHARS + 1]
+    if len(content) <= MAX_KEPT_REPLY_CHARS:
+        try:
+            return _cleaned(parse_json(content))
+        except (ValueError, RecursionError):
+            pass
+    text = clean_text(head, newlines=True)
+    return text[:MAX_KEPT_REPLY_CHARS] + (" ..." if len(content) > MAX_KEPT_REPLY_CHARS else "")
+
+
+def _error_line(text: str) -> str:
+    text = clean_text(text)
+    return text if len(text) <= MAX_ERROR_CHARS else text[: MAX_ERROR_CHARS - 3] + "..."
+
+
+def _echo(content: str) -> str:
+    """An invalid reply as sent back in the repair request: at most its start."""
+    return content if len(content) <= MAX_ECHO_CHARS else content[:MAX_ECHO_CHARS] + "\n[... cut]"
 
 
 def _slug(text: str) -> str:
@@ -93,7 +133,7 @@ def _pydantic_errors(e: ValidationError) -> list[str]:
     out = []
     for err in e.errors()[:MAX_ERRORS_QUOTED]:
         where = ".".join(str(p) for p in err["loc"]) or "reply"
-        out.append(f"{where}: {err['msg']}")
+        out.append(_error_line(f"{where}: {err['msg']}"))
     return out
 
 
@@ -119,8 +159,8 @@ class LLMPlanner:
             try:
                 obj = model.model_validate(parse_json(content))
             except ValueError as e:  # ValidationError is a ValueError
-                return None, _pydantic_errors(e) if isinstance(e, ValidationError) else [str(e)]
-            return obj, check(obj)
+                return None, _pydantic_errors(e) if isinstance(e, ValidationError) else [_error_line(str(e))]
+            return obj, [_error_line(e) for e in check(obj)]
 
         try:
             for attempt in range(2):
@@ -136,12 +176,12 @@ class LLMPlanner:
                     return obj, rec
                 rec.errors = errors[:MAX_ERRORS_QUOTED]
                 quoted = "\n".join(f"- {e}" for e in rec.errors)
-                messages = [*messages, {"role": "assistant", "content": reply.content},
+                messages = [*messages, {"role": "assistant", "content": _echo(reply.content)},
                             {"role": "user", "content": prompts.fill("repair", errors=quoted)}]  # fmt: skip
             warnings.append(f"LLM {label}: the reply was still invalid after one repair ({rec.errors[0]}); the offline planner filled it")
         except Unavailable as e:
-            rec.errors = [str(e)]
-            warnings.append(f"LLM {label}: {e}; the offline planner filled it")
+            rec.errors = [_error_line(str(e))]
+            warnings.append(f"LLM {label}: {rec.errors[0]}; the offline planner filled it")
         return None, rec
 
     # ------------------------------------------------------------------ the plan
@@ -155,9 +195,10 @@ class LLMPlanner:
         try:
             model_name = self.client.model()
         except Unavailable as e:
-            warnings.append(f"LLM: {e}; the offline planner planned the whole house")
+            why = _error_line(str(e))
+            warnings.append(f"LLM: {why}; the offline planner planned the whole house")
             labels = ["program", *(f"furniture:{r.id}" for r in offline.rooms), "appearance", *(f"ornaments:{r.id}" for r in offline.rooms)]
-            records = [StageRecord(label, errors=[str(e)]) for label in labels]
+            records = [StageRecord(label, errors=[why]) for label in labels]
             return self._finish(offline, offline.warnings + warnings, records, self.config.model or "")
 
         # 1. program and bubble diagram

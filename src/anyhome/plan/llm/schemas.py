@@ -11,10 +11,11 @@ import copy
 from functools import lru_cache
 from typing import Annotated, Any, Literal
 
-from pydantic import BaseModel, ConfigDict, Field
+from pydantic import BaseModel, BeforeValidator, ConfigDict, Field
 
 from anyhome.house import ROOM_TYPES
 from anyhome.plan.spec import MAX_COUNT, MAX_ROOMS, RELATIVE_RULES, RULES
+from anyhome.sanitize import clean_text
 
 MAX_GROUPS = 5
 """Most furniture groups one room reply may hold."""
@@ -31,8 +32,17 @@ RuleName = Literal[tuple(RULES)]  # type: ignore[valid-type]
 AnchorRule = Literal[tuple(r for r in RULES if r not in RELATIVE_RULES)]  # type: ignore[valid-type]
 OrnamentRule = Literal["place_top", "place_on_wall"]
 ArrangementName = Literal["free", "rows", "along_walls", "center", "symmetric"]
-Name = Annotated[str, Field(min_length=1, max_length=NAME_CHARS)]
-Words = Annotated[str, Field(min_length=1, max_length=WORDS_CHARS)]
+
+
+def _clean(value: Any) -> Any:
+    """A string from the model without escape sequences or control characters, trimmed:
+    cleaned at the boundary, before any length check, so nothing later prints one."""
+    return " ".join(clean_text(value).split()) if isinstance(value, str) else value
+
+
+Clean = BeforeValidator(_clean)
+Name = Annotated[str, Clean, Field(min_length=1, max_length=NAME_CHARS)]
+Words = Annotated[str, Clean, Field(min_length=1, max_length=WORDS_CHARS)]
 RoomId = Annotated[str, Field(pattern=r"^[a-z][a-z0-9_]{0,31}$")]
 Size3 = Annotated[list[float], Field(min_length=3, max_length=3)]
 
@@ -62,7 +72,7 @@ class ItemReply(_Reply):
     category: Name
     size_m: Size3
     rule: RuleName
-    target: Annotated[str, Field(max_length=NAME_CHARS)]
+    target: Annotated[str, Clean, Field(max_length=NAME_CHARS)]
     count: Annotated[int, Field(ge=1, le=MAX_ITEM_COUNT)]
 
 
