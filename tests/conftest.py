@@ -7,6 +7,7 @@ exploring new examples.
 
 import os
 
+import pytest
 from hypothesis import settings
 
 settings.register_profile("ci", derandomize=True, print_blob=True)
@@ -15,3 +16,21 @@ if os.environ.get("CI"):
 
 # A real llama.cpp server for the LLM planner tests (tests/plan/llm, tests/e2e).
 from llama_server import closed_port_url, llama_server, own_server, silent_server  # noqa: E402, F401
+
+
+@pytest.fixture(scope="session")
+def gl_available() -> None:
+    """Skip when moderngl or a headless EGL context is missing, except under CI (``CI``
+    set, as .ci/run does), where the renders must run and a missing renderer fails."""
+    if not os.environ.get("CI"):
+        pytest.importorskip("moderngl")
+    from anyhome.errors import RenderError
+    from anyhome.render.gl import create_context
+
+    try:
+        ctx = create_context()
+    except RenderError as e:
+        if os.environ.get("CI"):
+            raise
+        pytest.skip(str(e))
+    ctx.release()

@@ -151,19 +151,8 @@ def house_copy(haunted, tmp_path):
 
 
 @pytest.fixture(scope="module")
-def egl():
-    """Skip without moderngl or EGL, except under CI, where renders must run."""
-    import os
-
-    from anyhome.errors import RenderError
-    from anyhome.render.gl import create_context
-
-    try:
-        create_context().release()
-    except RenderError as e:
-        if os.environ.get("CI"):
-            raise
-        pytest.skip(str(e))
+def egl(gl_available):
+    """Renders need moderngl and EGL (tests/conftest.py: gl_available)."""
 
 
 def _mount_tmpfs(path, options):

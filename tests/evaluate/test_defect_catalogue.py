@@ -12,8 +12,8 @@ one ``error:`` line.
 
 from __future__ import annotations
 
-import math
 import json
+import math
 import subprocess
 import sys
 from collections.abc import Callable

@@ -1,12 +1,9 @@
 from __future__ import annotations
 
 import json
-import os
 
 import pytest
 from render_png import SIZE_PX, VIEW_PX
-
-from anyhome.errors import RenderError
 
 PROMPT = "a one-bedroom apartment"
 
@@ -30,23 +27,6 @@ def small_house():
                     position=(8.45, 3.7, 0), size=(1.0, 0.6, 2.1), yaw=3.141592653589793),
     ]
     return two_room_house(objs)
-
-
-@pytest.fixture(scope="session")
-def gl_available() -> None:
-    """Skip when moderngl or a headless EGL context is missing, except under CI (``CI``
-    set, as .ci/run does), where the renders must run and a missing renderer fails."""
-    if not os.environ.get("CI"):
-        pytest.importorskip("moderngl")
-    from anyhome.render.gl import create_context
-
-    try:
-        ctx = create_context()
-    except RenderError as e:
-        if os.environ.get("CI"):
-            raise
-        pytest.skip(str(e))
-    ctx.release()
 
 
 @pytest.fixture(scope="session")
