@@ -369,6 +369,13 @@ def main(argv: list[str] | None = None) -> int:
     except KeyboardInterrupt:
         _err("interrupted")
         return 130
+    except BrokenPipeError:
+        # the reader of our output went away (`anyhome eval DIR | head`): stop quietly, as
+        # other command-line tools do, with the shell's code for SIGPIPE; whatever was
+        # written (a house folder) is already whole
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+        return 141
 
 
 if __name__ == "__main__":

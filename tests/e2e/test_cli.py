@@ -415,3 +415,15 @@ def test_the_summary_prints_no_escape_sequences(capsys):
     assert "bedred room" in out and "modernred" in out and "carefulred" in out and "rugred" in out
     assert "\x1b" not in out and "\x07" not in out and "\r" not in out and "pwned" not in out
     assert "SECRETKEY" not in out and "qwenred  at http://host:8080/v1" in out
+
+
+def test_output_piped_into_a_reader_that_stops_early(tmp_path):
+    """`anyhome eval DIR | head -1`: the reader closes the pipe; no traceback."""
+    out = tmp_path / "h"
+    anyhome("generate", "a bedroom", "--out", str(out), "--no-glb", "-q")
+    proc = subprocess.Popen([sys.executable, "-m", "anyhome", "eval", str(out)],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    proc.stdout.close()  # like `head` exiting before anything was read
+    _, err = proc.communicate(timeout=60)
+    assert b"Traceback" not in err, err.decode()[-2000:]
+    assert proc.returncode == 141
