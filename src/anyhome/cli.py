@@ -80,6 +80,10 @@ def cmd_generate(args: argparse.Namespace) -> int:
     out = check_out(args.out)
     if args.render:
         _check_render_options(args)
+    if not args.no_glb:
+        from anyhome.materials.catalog import texture_size_px
+
+        texture_size_px()  # a bad $ANYHOME_TEXTURE_PX is one line, before any work
     if args.embedder:
         from anyhome.plan.embed import ENV_BACKEND, get_embedder
 

@@ -427,3 +427,15 @@ def test_output_piped_into_a_reader_that_stops_early(tmp_path):
     _, err = proc.communicate(timeout=60)
     assert b"Traceback" not in err, err.decode()[-2000:]
     assert proc.returncode == 141
+
+
+@pytest.mark.parametrize("value", ["100000", "abc", "-5", "4"])
+def test_bad_texture_size_is_one_line_before_any_work(tmp_path, value):
+    out = tmp_path / "h"
+    proc = subprocess.run([sys.executable, "-m", "anyhome", "generate", "a bedroom", "--out", str(out)],
+                          capture_output=True, text=True, timeout=60,
+                          env={**os.environ, "ANYHOME_TEXTURE_PX": value})
+    assert proc.returncode == 2, proc.stderr[-2000:]
+    lines = proc.stderr.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("error: $ANYHOME_TEXTURE_PX"), proc.stderr
+    assert not out.exists()

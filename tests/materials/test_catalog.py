@@ -3,6 +3,7 @@ from __future__ import annotations
 import pytest
 
 from anyhome.assets.colors import material_color, to_rgba
+from anyhome.errors import ExportError
 from anyhome.materials.catalog import (
     SURFACES,
     TEXTURE_PX_ENV,
@@ -125,8 +126,12 @@ def test_texture_size(monkeypatch: pytest.MonkeyPatch) -> None:
     assert texture_size_px(128) == 128
     monkeypatch.setenv(TEXTURE_PX_ENV, "512")
     assert texture_size_px() == 512 and surface_material("oak", "floor").size_px == 512
-    monkeypatch.setenv(TEXTURE_PX_ENV, "lots")
-    assert texture_size_px() == 256
+    for bad in ("lots", "100000", "4", "-1"):  # refused in one line, not silently replaced
+        monkeypatch.setenv(TEXTURE_PX_ENV, bad)
+        with pytest.raises(ExportError, match=TEXTURE_PX_ENV):
+            texture_size_px()
+    with pytest.raises(ExportError, match="texture size"):
+        texture_size_px(100000)
 
 
 def test_unknown_surface() -> None:

@@ -22,6 +22,7 @@ from typing import Any
 
 from anyhome.assets.colors import material_color, shade, to_hex, to_rgba
 from anyhome.materials.textures import DEFAULT_SIZE_PX, GENERATORS, VARIANTS
+from anyhome.sanitize import clean_text
 
 MATERIALS_FILE = Path(__file__).with_name("materials.yaml")
 SURFACES: tuple[str, ...] = ("floor", "walls", "ceiling", "furniture")
@@ -86,12 +87,29 @@ def _lexicon() -> dict[str, tuple[int, dict[str, Any]]]:
     return out
 
 
+MIN_TEXTURE_PX = 8
+MAX_TEXTURE_PX = 2048
+"""Texture sizes allowed (a 100,000 px texture asked numpy for 37 GiB)."""
+
+
 def texture_size_px(size_px: int | None = None) -> int:
-    """The texture size to use: ``size_px``, else ``$ANYHOME_TEXTURE_PX``, else 256."""
-    if size_px is not None:
-        return int(size_px)
-    env = os.environ.get(TEXTURE_PX_ENV, "").strip()
-    return int(env) if env.isdigit() and int(env) >= 8 else DEFAULT_SIZE_PX
+    """The texture size to use: ``size_px``, else ``$ANYHOME_TEXTURE_PX``, else 256.
+
+    Raises ExportError (one line) for a size that is not an integer from
+    :data:`MIN_TEXTURE_PX` to :data:`MAX_TEXTURE_PX`."""
+    from anyhome.errors import ExportError
+
+    if size_px is None:
+        env = os.environ.get(TEXTURE_PX_ENV, "").strip()
+        if not env:
+            return DEFAULT_SIZE_PX
+        where, value = f"${TEXTURE_PX_ENV}", env
+    else:
+        where, value = "the texture size", str(size_px)
+    if not value.isdigit() or not MIN_TEXTURE_PX <= int(value) <= MAX_TEXTURE_PX:
+        raise ExportError(f"{where} must be an integer from {MIN_TEXTURE_PX} to {MAX_TEXTURE_PX}, "
+                          f"got {clean_text(value)[:40]!r}")
+    return int(value)
 
 
 def _words(text: str) -> list[str]:
