@@ -27,8 +27,6 @@ log = logging.getLogger(__name__)
 
 STAGES: tuple[str, ...] = ("plan", "floorplan", "layout", "refine", "assets")
 """The generation stages in order (exports are timed separately by write_outputs)."""
-OUTPUTS: tuple[str, ...] = ("house.json", "house.glb", "floorplan.svg")
-"""Files ``write_outputs`` writes by default (plus the manifest, see anyhome.outdir)."""
 
 Progress = Callable[[str, str, float], None]
 """progress(stage, event, seconds): event is "start" or "done" (seconds then set)."""
