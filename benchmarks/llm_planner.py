@@ -23,6 +23,7 @@ from collections import Counter
 from pathlib import Path
 
 from anyhome.evaluate import evaluate_house, load_expectations
+from anyhome.floorplan import floorplan_errors
 from anyhome.pipeline import generate
 from anyhome.plan.llm import LLMPlanner, load_config
 
@@ -55,7 +56,7 @@ def main(argv: list[str] | None = None) -> int:
         for pid in ids:
             entry = table[pid]
             config = load_config({"base_url": args.base_url, "model": args.model, "cache_dir": Path(td) / pid})
-            planner = LLMPlanner(config)
+            planner = LLMPlanner(config, floorplan_check=floorplan_errors)
             t0 = time.perf_counter()
             house = generate(entry["prompt"], seed=args.seed, planner=planner)
             wall = time.perf_counter() - t0

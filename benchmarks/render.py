@@ -22,11 +22,11 @@ import tempfile
 import time
 from pathlib import Path
 
-from anyhome.export.glb import build_scene
 from anyhome.pipeline import generate
 from anyhome.render import Renderer, render_house, room_camera
 from anyhome.render.lights import room_lights
 from anyhome.render.meshes import scene_meshes
+from anyhome.scene import build_scene
 
 HERE = Path(__file__).resolve().parent
 DEFAULT_PROMPTS = HERE.parent.parent / "shared" / "eval" / "prompts.jsonl"

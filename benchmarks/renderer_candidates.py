@@ -150,12 +150,12 @@ def timed(fn, frames: int, warmup: bool = True) -> dict:
 def worker_moderngl(scene: Path, view: dict, args: argparse.Namespace) -> dict:
     import moderngl
 
-    from anyhome.export.glb import build_scene
     from anyhome.house import load
     from anyhome.render import Renderer, room_camera
     from anyhome.render.images import write_png
     from anyhome.render.lights import room_lights
     from anyhome.render.meshes import scene_meshes
+    from anyhome.scene import build_scene
 
     t0 = time.perf_counter()
     house = load(scene)
@@ -365,11 +365,11 @@ def build_scene_dir(prompt: str, seed: int, out: Path) -> dict:
     import numpy as np
     import trimesh
 
-    from anyhome.export.glb import ROOT_NODE, build_scene
     from anyhome.house import load
     from anyhome.render import room_camera
     from anyhome.render.lights import room_lights, sun_direction
     from anyhome.render.meshes import scene_meshes
+    from anyhome.scene import ROOT_NODE, build_scene
 
     exe = Path(sys.executable).parent / "anyhome"
     cmd = [str(exe), "generate", prompt, "--seed", str(seed), "--out", str(out), "-q", "--no-svg"]

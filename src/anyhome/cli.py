@@ -119,6 +119,7 @@ def _planner(args: argparse.Namespace):
 
     if args.planner != "llm":
         return get_planner(args.planner)  # an unknown name raises the one-line error
+    from anyhome.floorplan import floorplan_errors
     from anyhome.plan.llm import LLMPlanner, load_config
 
     options = {
@@ -126,7 +127,7 @@ def _planner(args: argparse.Namespace):
         "top_p": args.llm_top_p, "max_tokens": args.llm_max_tokens, "timeout_s": args.llm_timeout,
         "concurrency": args.llm_concurrency, **({"cache": False} if args.no_cache else {}),
     }  # fmt: skip
-    return LLMPlanner(load_config(options, config_file=args.config))
+    return LLMPlanner(load_config(options, config_file=args.config), floorplan_check=floorplan_errors)
 
 
 def _llm_usage(planner, house) -> dict:

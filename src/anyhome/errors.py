@@ -16,10 +16,6 @@ class FloorplanError(AnyHomeError):
     """The room program could not be laid out as a floorplan within the retry budget."""
 
 
-class LayoutError(AnyHomeError):
-    """Objects could not be placed (only for hard failures; unplaceable items are dropped)."""
-
-
 class HouseFormatError(AnyHomeError):
     """A house.json is not of this format or version, or is malformed."""
 

@@ -1,8 +1,11 @@
 """Runs the stages: plan -> floorplan -> layout -> refine -> assets, and writes outputs.
 
-Every stage gets its own child RNG spawned from the seed, so a change inside one stage
-does not shift the random draws of the others, and a run is reproducible: the same
-text, seed, planner and options give a byte-identical house.json.
+Entry points: :func:`generate` (text), :func:`generate_from_spec` (a HouseSpec: every
+stage after planning) and :func:`relayout` (some rooms of an existing house again). The
+stage functions are replaceable (:class:`anyhome.stages.Stages`). Every stage gets its
+own child RNG spawned from the seed, so a change inside one stage does not shift the
+random draws of the others, and a run is reproducible: the same text, seed, planner and
+options give a byte-identical house.json.
 """
 
 from __future__ import annotations
@@ -10,7 +13,7 @@ from __future__ import annotations
 import logging
 import os
 import time
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from contextlib import contextmanager
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -18,17 +21,17 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from anyhome.errors import AnyHomeError, ExportError, PlanError
-from anyhome.house import HOUSE_FILE, House
+from anyhome.house import HOUSE_FILE, House, HouseObject
+from anyhome.sanitize import clean_text, is_safe_id
 
 if TYPE_CHECKING:
-    from anyhome.plan import Planner
+    from anyhome.plan import HouseSpec, Planner
+    from anyhome.stages import Stages
 
 log = logging.getLogger(__name__)
 
 STAGES: tuple[str, ...] = ("plan", "floorplan", "layout", "refine", "assets")
 """The generation stages in order (exports are timed separately by write_outputs)."""
-OUTPUTS: tuple[str, ...] = ("house.json", "house.glb", "floorplan.svg")
-"""Files ``write_outputs`` writes by default (plus the manifest, see anyhome.outdir)."""
 
 Progress = Callable[[str, str, float], None]
 """progress(stage, event, seconds): event is "start" or "done" (seconds then set)."""
@@ -60,13 +63,20 @@ def check_text(text: object) -> None:
         raise PlanError(f"the text is not valid UTF-8 ({what} at character {e.start + 1})") from None
 
 
+def _check_seed(seed: object) -> int:
+    if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
+        raise AnyHomeError(f"seed must be a non-negative integer, got {seed!r}")
+    return int(seed)
+
+
 def generate(
     text: str,
     seed: int = 0,
     planner: str | Planner = "offline",
     progress: Progress | None = None,
+    stages: Stages | None = None,
 ) -> House:
-    """Generate a house from text.
+    """Generate a house from text: the plan stage, then :func:`generate_from_spec`.
 
     Parameters
     ----------
@@ -75,44 +85,82 @@ def generate(
     planner : "offline" (default, embedded), "llm" (configured from the environment and
         the config file, see anyhome.plan.llm.config), or a Planner instance
     progress : optional callback, see :data:`Progress`
+    stages : the stage functions (:class:`anyhome.stages.Stages`); None: the defaults
 
     Returns
     -------
     House, with ``house.timings_s`` holding seconds per stage.
     """
-    from anyhome.assets import assign_asset
-    from anyhome.floorplan import solve_floorplan
-    from anyhome.layout import layout_house
     from anyhome.plan import get_planner
-    from anyhome.refine import refine_objects
+    from anyhome.stages import Stages, stage_rngs
 
     progress = progress or _quiet
     check_text(text)
-    if not isinstance(seed, (int, np.integer)) or seed < 0:
-        raise AnyHomeError(f"seed must be a non-negative integer, got {seed!r}")
-    rngs = dict(
-        zip(STAGES, (np.random.default_rng(s) for s in np.random.SeedSequence(int(seed)).spawn(5)))
-    )
-    timings: dict[str, float] = {}
+    seed = _check_seed(seed)
+    stages = stages or Stages()
     planner = get_planner(planner) if isinstance(planner, str) else planner
+    timings: dict[str, float] = {}
     with _stage("plan", timings, progress):
-        spec = planner.plan(text, rngs["plan"])
+        spec = stages.plan(text, stage_rngs(seed)["plan"], planner)
+    house = generate_from_spec(spec, seed, stages, planner=planner.name, progress=progress)
+    later = dict(house._timings_s)
+    house._timings_s.clear()
+    house._timings_s.update({**timings, **later})
+    return house
+
+
+def generate_from_spec(
+    spec: HouseSpec,
+    seed: int = 0,
+    stages: Stages | None = None,
+    *,
+    planner: str | None = None,
+    progress: Progress | None = None,
+) -> House:
+    """Run every stage after planning (floorplan, layout, refine, assets) on ``spec``.
+
+    ``generate(text, seed)`` is exactly ``generate_from_spec(plan, seed)`` of the plan it
+    made, so the house is byte-identical. The house's ``plan`` holds the spec (without its
+    provenance, which is the house's ``provenance``), so
+    ``HouseSpec.model_validate(house.plan)`` gives the spec back.
+
+    Parameters
+    ----------
+    spec : a HouseSpec (or its JSON as a dict)
+    seed : the same seed as ``generate``'s gives the same house
+    stages : the stage functions; None: the defaults
+    planner : the name recorded as the house's planner; None: the spec's provenance
+        ``planner`` if it has one, else "offline"
+    progress : optional callback, see :data:`Progress`
+    """
+    from anyhome.plan import HouseSpec
+    from anyhome.stages import Stages, stage_rngs
+
+    progress = progress or _quiet
+    seed = _check_seed(seed)
+    if not isinstance(spec, HouseSpec):
+        spec = _spec_from_json(spec, "the spec")
+    stages = stages or Stages()
+    rngs = stage_rngs(seed)
+    timings: dict[str, float] = {}
     with _stage("floorplan", timings, progress):
-        floorplan = solve_floorplan(spec, rngs["floorplan"])
+        floorplan = stages.floorplan(spec, rngs["floorplan"])
     with _stage("layout", timings, progress):
-        result = layout_house(spec, floorplan, rngs["layout"])
+        result = stages.layout(spec, floorplan, rngs["layout"])
     with _stage("refine", timings, progress):
-        objects = refine_objects(floorplan, result.objects, rngs["refine"])
+        objects = stages.refine(floorplan, result.objects, rngs["refine"])
     with _stage("assets", timings, progress):
-        for obj in objects:
-            obj.asset = assign_asset(obj, rngs["assets"], spec.style)
+        objects = stages.assets(objects, rngs["assets"], spec)
+    if planner is None:
+        named = (spec.provenance or {}).get("planner")
+        planner = named if isinstance(named, str) else "offline"
     house = House(
-        prompt=text,
-        seed=int(seed),
+        prompt=spec.prompt,
+        seed=seed,
         style=spec.style,
         building=spec.building,
         palette=spec.palette,
-        planner=planner.name,
+        planner=planner,
         rooms=floorplan.rooms,
         connections=floorplan.connections,
         doors=floorplan.doors,
@@ -125,6 +173,125 @@ def generate(
     )
     house._timings_s.update(timings)
     return house
+
+
+def _spec_from_json(data: object, what: str) -> HouseSpec:
+    from pydantic import ValidationError
+
+    from anyhome.plan import HouseSpec
+
+    if not isinstance(data, dict):
+        raise PlanError(f"{what} must be a HouseSpec or its JSON object, got {type(data).__name__}")
+    try:
+        return HouseSpec.model_validate(data)
+    except ValidationError as e:
+        err = e.errors()[0]
+        where = ".".join(str(x) for x in err["loc"]) or "plan"
+        raise PlanError(f"{what} is not a valid plan: {where}: {clean_text(err['msg'])}") from None
+
+
+def relayout(
+    house: House,
+    rooms: Iterable[str] | str | None = None,
+    seed: int = 0,
+    stages: Stages | None = None,
+) -> House:
+    """Lay out, refine and furnish the named rooms of ``house`` again.
+
+    The house's floorplan (rooms, doors, windows) and plan (``house.plan``) are used as
+    they are; the objects of every other room are kept exactly (same JSON), and the new
+    objects' ids are unique in the house. ``house`` is not modified.
+
+    Parameters
+    ----------
+    house : a generated (or loaded) house that holds its plan
+    rooms : room ids (one id as a string is fine); None: every room
+    seed : seeds the layout, refine and asset stages (as ``generate`` with that seed:
+        relayout of every room with the house's own seed gives the house back)
+    stages : the stage functions (layout, refine, assets are used); None: the defaults
+
+    Returns
+    -------
+    A new House (``timings_s``: layout, refine, assets).
+
+    Raises
+    ------
+    AnyHomeError
+        for an unknown room id, a house without a plan, or a plan that is not valid.
+    """
+    from anyhome.stages import Stages, stage_rngs
+
+    seed = _check_seed(seed)
+    stages = stages or Stages()
+    chosen = _chosen_rooms(house, rooms)
+    if house.plan is None:
+        raise AnyHomeError("this house holds no plan (house.json has no 'plan'), so its rooms cannot be "
+                           "laid out again; generate it again to get one")
+    spec = _spec_from_json({**house.plan, "provenance": house.provenance}, "the house's plan")
+    unplanned = sorted(chosen - {rs.id for rs in spec.rooms})
+    if unplanned:
+        raise AnyHomeError(f"room {unplanned[0]!r} is not in the house's plan, so it cannot be laid out again")
+    floorplan = house.floorplan
+    rngs = stage_rngs(seed)
+    timings: dict[str, float] = {}
+    sub = spec.model_copy(update={"rooms": [rs for rs in spec.rooms if rs.id in chosen]})
+    kept = [o for o in house.objects if o.room not in chosen]
+    with _stage("layout", timings, _quiet):
+        result = stages.layout(sub, floorplan, rngs["layout"])
+    new = [o for o in result.objects if o.room in chosen]
+    with _stage("refine", timings, _quiet):
+        # the other rooms' objects are there as context (the walkways are house-wide);
+        # only the chosen rooms' objects are taken from the result
+        refined = stages.refine(floorplan, [o.model_copy(deep=True) for o in kept] + new, rngs["refine"])
+    new = _unique_ids([o for o in refined if o.room in chosen], {o.id for o in kept})
+    with _stage("assets", timings, _quiet):
+        new = stages.assets(new, rngs["assets"], spec)
+    rank = {rid: i for i, rid in enumerate([rs.id for rs in spec.rooms] + [r.id for r in house.rooms])}
+
+    def order(items: list) -> list:  # grouped by room in plan order, stable inside a room
+        return sorted(items, key=lambda x: rank.get(x.room, len(rank)))
+
+    data = house.model_dump()
+    data["objects"] = [o.model_dump() for o in order(kept + new)]
+    data["dropped"] = [d.model_dump() for d in order([d for d in house.dropped if d.room not in chosen]
+                                                     + [d for d in result.dropped if d.room in chosen])]
+    out = House.model_validate(data)
+    out._timings_s.update(timings)
+    return out
+
+
+def _chosen_rooms(house: House, rooms: Iterable[str] | str | None) -> set[str]:
+    ids = [r.id for r in house.rooms]
+    if rooms is None:
+        return set(ids)
+    names = [rooms] if isinstance(rooms, str) else list(rooms)
+    for rid in names:
+        if not isinstance(rid, str) or rid not in ids:
+            shown = clean_text(repr(rid))[:80]
+            raise AnyHomeError(f"unknown room {shown} (rooms: {', '.join(ids)})")
+    return set(names)
+
+
+def _unique_ids(objects: list[HouseObject], taken: set[str]) -> list[HouseObject]:
+    """``objects`` with ids renamed where they clash with ``taken`` (the kept objects'),
+    and the support and anchor references among them following."""
+    renames: dict[str, str] = {}
+    used = set(taken) | {o.id for o in objects}
+    for o in objects:
+        if o.id in taken:
+            base, k = o.id, 1
+            while f"{base}-{k}" in used or not is_safe_id(f"{base}-{k}"):
+                if not is_safe_id(f"{base}-{k}"):
+                    base = base[:-1]
+                else:
+                    k += 1
+            renames[o.id] = f"{base}-{k}"
+            used.add(renames[o.id])
+    if not renames:
+        return objects
+    return [o.model_copy(update={"id": renames.get(o.id, o.id), "support": renames.get(o.support, o.support),
+                                 "anchor": renames.get(o.anchor, o.anchor) if o.anchor else o.anchor})
+            for o in objects]
 
 
 def write_outputs(

@@ -8,8 +8,8 @@ import pytest
 import trimesh
 
 from anyhome.export import write_glb
-from anyhome.export.glb import PLAN_TO_GLTF, room_wall_meshes, wall_meshes
 from anyhome.export.walls import WALL_THICKNESS_M, wall_pieces
+from anyhome.scene import PLAN_TO_GLTF, room_wall_meshes, wall_meshes
 
 
 def _json_chunk(data: bytes) -> dict:

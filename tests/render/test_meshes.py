@@ -16,7 +16,7 @@ def test_node_kind() -> None:
 
 
 def test_scene_meshes_of_exported_house(small_house) -> None:
-    from anyhome.export.glb import build_scene
+    from anyhome.scene import build_scene
 
     meshes = scene_meshes(small_house, build_scene(small_house))
     n = len(small_house.objects)

@@ -145,7 +145,7 @@ def test_maps_reach_the_batches() -> None:
 
 
 def test_exported_house_batches_carry_the_material_maps(small_house) -> None:
-    from anyhome.export.glb import build_scene
+    from anyhome.scene import build_scene
 
     meshes = scene_meshes(small_house, build_scene(small_house))
     textured = [b for b in meshes.batches if b.texture is not None]
@@ -286,9 +286,9 @@ def test_maps_leave_depth_and_ids_alone(gl_available) -> None:
 def test_brick_wall_of_a_house_shows_relief(gl_available, small_house) -> None:
     """A house's brick wall, seen from a metre away, renders differently once its maps
     count: relief, not a darker or brighter wall."""
-    from anyhome.export.glb import build_scene
     from anyhome.render import Camera, Renderer
     from anyhome.render.lights import room_lights
+    from anyhome.scene import build_scene
 
     house = small_house.model_copy(deep=True)
     house.rooms[0].materials = {**house.rooms[0].materials, "walls": "red brick"}

@@ -1,14 +1,8 @@
-"""GLB export: one node per room part (floor, walls, ceiling) and per object.
+"""GLB export: the house's scene (:mod:`anyhome.scene`) as a binary glTF file.
 
-The plan frame (x east, y north, z up) is turned into glTF's +Y-up frame by a single
-root node ``house`` whose matrix maps plan ``(x, y, z)`` to glTF ``(x, z, -y)``; every
-other node hangs under it with its transform in plan coordinates.
-
-Surfaces carry PBR materials with procedural textures (``anyhome.materials``): floors,
-walls and ceilings get planar UVs in meters / tile size; each object node holds one
-child node per material part (``object:<id>:<role>``). Ceilings stay their own nodes
-(category ``ceiling``) so a viewer can hide them. Texture size: ``texture_px``, else
-``$ANYHOME_TEXTURE_PX``, else 256.
+The scene's root node ``house`` maps the plan frame (x east, y north, z up) to glTF's
++Y-up frame; each object node holds one child node per material part
+(``object:<id>:<role>``); texture images are embedded once per distinct image.
 """
 
 from __future__ import annotations
@@ -16,215 +10,12 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
-import numpy as np
-import shapely
-import trimesh
-from shapely.geometry import Polygon
-
-from anyhome.assets import FAMILIES, assign_asset, build_object_mesh, family_for
-from anyhome.assets.registry import SOURCE, object_rng
 from anyhome.errors import ExportError
-from anyhome.export.architecture import architecture_meshes
 from anyhome.export.output import write_file
-from anyhome.export.walls import WALL_THICKNESS_M, solid_blocks, wall_pieces
-from anyhome.house import House, HouseObject, Room
-from anyhome.materials import (
-    MaterialSpec,
-    material_key,
-    object_parts,
-    pbr_material,
-    surface_material,
-    texture_size_px,
-)
+from anyhome.house import House
 from anyhome.materials.gltf import embed_textures
-from anyhome.materials.uv import face_normals, textured_mesh
 from anyhome.sanitize import clean_text
-
-FLOOR_THICKNESS_M = 0.05
-"""Floor slabs run from z = -thickness to z = 0; ceilings from the room height up."""
-ROOT_NODE = "house"
-PLAN_TO_GLTF = np.array(
-    [[1.0, 0.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0], [0.0, -1.0, 0.0, 0.0], [0.0, 0.0, 0.0, 1.0]]
-)
-"""Plan (x, y, z) -> glTF (x, z, -y)."""
-ROOM_PARTS: tuple[str, ...] = ("floor", "walls", "ceiling")
-WALL_PROBE_M = 0.03
-"""A wall face belongs to the room this far in front of it (see room_wall_meshes)."""
-
-
-def _slab(polygon, z0: float, z1: float) -> trimesh.Trimesh:
-    poly = Polygon(polygon)
-    if not poly.is_valid:
-        poly = poly.buffer(0)
-    mesh = trimesh.creation.extrude_polygon(poly, z1 - z0)
-    mesh.apply_translation((0.0, 0.0, z0))
-    return mesh
-
-
-def _box_corners(a, u, t0, t1, z0, z1, thick) -> np.ndarray:
-    n = np.array([-u[1], u[0]]) * thick / 2
-    p0, p1 = a + u * t0, a + u * t1
-    quad = np.array([p0 - n, p1 - n, p1 + n, p0 + n])
-    return np.vstack([np.column_stack([quad, np.full(4, z0)]), np.column_stack([quad, np.full(4, z1)])])
-
-
-_BOX_FACES = np.array(
-    [[0, 2, 1], [0, 3, 2], [4, 5, 6], [4, 6, 7], [0, 1, 5], [0, 5, 4],
-     [1, 2, 6], [1, 6, 5], [2, 3, 7], [2, 7, 6], [3, 0, 4], [3, 4, 7]]
-)
-
-
-def wall_meshes(house: House, thickness: float = WALL_THICKNESS_M) -> dict[str, trimesh.Trimesh]:
-    """One wall mesh per room (pieces shared by two rooms belong to the first)."""
-    verts: dict[str, list[np.ndarray]] = {}
-    for piece in wall_pieces(house):
-        u = piece.direction
-        for t0, t1, z0, z1 in solid_blocks(piece):
-            ext0 = thickness / 2 if t0 <= 1e-9 else 0.0  # close the corners
-            ext1 = thickness / 2 if t1 >= piece.length - 1e-9 else 0.0
-            verts.setdefault(piece.room, []).append(
-                _box_corners(piece.a, u, t0 - ext0, t1 + ext1, z0, z1, thickness))
-    out = {}
-    for room_id, boxes in verts.items():
-        v = np.concatenate(boxes)
-        f = np.concatenate([_BOX_FACES + 8 * i for i in range(len(boxes))])
-        out[room_id] = trimesh.Trimesh(vertices=v, faces=f, process=False)
-    return out
-
-
-def room_wall_meshes(house: House, thickness: float = WALL_THICKNESS_M) -> dict[str, trimesh.Trimesh]:
-    """Wall faces grouped by the room they face, so each side of a wall shared by two
-    rooms wears its own room's wall material.
-
-    An upright face belongs to the room a point ``WALL_PROBE_M`` in front of it lies in;
-    faces that face no room (outside faces, tops, the reveals of openings) stay with the
-    room that owns the wall piece (see :func:`wall_meshes`).
-    """
-    owned = wall_meshes(house, thickness)
-    index = {room.id: i for i, room in enumerate(house.rooms)}
-    parts = [(index[rid], m) for rid, m in owned.items() if rid in index]
-    if not parts:
-        return {}
-    corners = np.concatenate([np.asarray(m.vertices)[np.asarray(m.faces)] for _, m in parts])
-    room_of = np.concatenate([np.full(len(m.faces), i) for i, m in parts])
-    normals = face_normals(corners)
-    probe = corners.mean(axis=1)[:, :2] + normals[:, :2] * WALL_PROBE_M
-    upright = np.abs(normals[:, 2]) < 0.5
-    for i, room in enumerate(house.rooms):
-        poly = Polygon(room.polygon)
-        room_of[upright & shapely.contains_xy(poly, probe[:, 0], probe[:, 1])] = i
-    out = {}
-    for i, room in enumerate(house.rooms):
-        mine = corners[room_of == i]
-        if len(mine):
-            out[room.id] = trimesh.Trimesh(vertices=mine.reshape(-1, 3),
-                                           faces=np.arange(3 * len(mine)).reshape(-1, 3), process=False)
-    return out
-
-
-def object_transform(position, yaw: float) -> np.ndarray:
-    """Local object frame -> plan frame."""
-    m = trimesh.transformations.rotation_matrix(float(yaw), [0, 0, 1])
-    m[:3, 3] = position
-    return m
-
-
-class _SceneBuilder:
-    """Adds nodes under the root node and remembers every material spec used."""
-
-    def __init__(self, house: House, texture_px: int | None, textures: bool) -> None:
-        self.scene = trimesh.Scene()
-        self.scene.graph.update(frame_from=self.scene.graph.base_frame, frame_to=ROOT_NODE,
-                                matrix=PLAN_TO_GLTF)
-        self.scene.metadata.update({"generator": "anyhome", "prompt": house.prompt, "seed": house.seed,
-                                    "style": house.style, "up": "+Y", "units": "meters"})
-        self.px = texture_size_px(texture_px)
-        self.textures = textures
-        self.walls = room_wall_meshes(house)
-        self.specs: dict[str, MaterialSpec] = {}
-
-    def add(self, mesh: trimesh.Trimesh, name: str, meta: dict, transform=None,
-            parent: str = ROOT_NODE) -> None:
-        mesh.metadata.update(meta)
-        self.scene.add_geometry(mesh, node_name=name, geom_name=name, parent_node_name=parent,
-                                transform=transform, metadata=dict(meta))
-
-    def surface(self, mesh: trimesh.Trimesh, spec: MaterialSpec) -> trimesh.Trimesh:
-        self.specs[material_key(spec)] = spec
-        return textured_mesh(mesh.vertices, mesh.faces, pbr_material(spec, self.textures), spec.tile_m)
-
-    def room(self, room: Room) -> None:
-        base = {"room": room.id, "room_name": room.name, "room_type": room.type}
-        slabs = {"floor": _slab(room.polygon, -FLOOR_THICKNESS_M, 0.0),
-                 "ceiling": _slab(room.polygon, room.height, room.height + FLOOR_THICKNESS_M)}
-        for part in ROOM_PARTS:
-            mesh = slabs.get(part) if part != "walls" else self.walls.get(room.id)
-            if mesh is None:
-                continue
-            words = room.materials.get(part, "")
-            spec = surface_material(words, part, self.px)
-            meta = {**base, "name": f"{room.name} {part}", "category": part, "material": words,
-                    "texture": spec.kind}
-            self.add(self.surface(mesh, spec), f"room:{room.id}:{part}", meta)
-
-    def object(self, obj: HouseObject) -> None:
-        node = f"object:{obj.id}"
-        meta = {"id": obj.id, "name": obj.name, "category": obj.category, "room": obj.room,
-                "support": obj.support, "material": obj.material,
-                "family": (obj.asset or {}).get("family") or family_for(obj.category, obj.name)}
-        self.scene.graph.update(frame_from=ROOT_NODE, frame_to=node,
-                                matrix=object_transform(obj.position, obj.yaw), metadata=dict(meta))
-        params = _asset_record(obj)["params"]
-        seen: dict[str, int] = {}
-        for part in object_parts(build_object_mesh(obj), params, obj.material, self.px, self.textures):
-            seen[part.role] = seen.get(part.role, 0) + 1
-            suffix = "" if seen[part.role] == 1 else f"-{seen[part.role]}"
-            self.specs[material_key(part.spec)] = part.spec
-            self.add(part.mesh, f"{node}:{part.role}{suffix}",
-                     {"object": obj.id, "room": obj.room, "category": obj.category,
-                      "role": part.role, "texture": part.spec.kind}, parent=node)
-
-
-def _asset_record(obj: HouseObject) -> dict:
-    """The asset record ``build_object_mesh`` builds the object from (sampled from the
-    object id when the object has no usable record)."""
-    record = obj.asset
-    if not record or record.get("source") != SOURCE or record.get("family") not in FAMILIES:
-        record = assign_asset(obj, object_rng(obj), "")
-    return record
-
-
-def _build(house: House, texture_px: int | None, textures: bool
-           ) -> tuple[trimesh.Scene, dict[str, MaterialSpec]]:
-    b = _SceneBuilder(house, texture_px, textures)
-    for room in house.rooms:
-        b.room(room)
-    for obj in house.objects:
-        b.object(obj)
-    for name, mesh, meta in architecture_meshes(house):  # doors, windows, skirting, lights
-        b.add(mesh, name, meta)
-    return b.scene, b.specs
-
-
-def build_scene(house: House, texture_px: int | None = None) -> trimesh.Scene:
-    """The house as a trimesh Scene (glTF frame via the root node), with textured PBR
-    materials (PIL images on the materials).
-
-    Nodes: ``room:<id>:floor|walls|ceiling`` (one mesh each) and ``object:<id>`` (no
-    mesh; the object's transform and metadata) with one child per material part,
-    ``object:<id>:<role>`` (role primary, secondary, accent, glass..., a ``-2`` suffix
-    for repeats), in the object's local frame.
-    """
-    try:
-        return _build(house, texture_px, textures=True)[0]
-    except Exception as e:  # trimesh and the asset builders raise many kinds
-        raise ExportError(f"could not build the 3D scene: {_one_line(e)}") from e
-
-
-def _one_line(e: Exception) -> str:
-    """An exception as one clean line, never a bare "'x'" (the str of a KeyError)."""
-    detail = clean_text(str(e)) if str(e) and not isinstance(e, LookupError) else ""
-    return detail or f"{type(e).__name__} {clean_text(str(e))}".strip()
+from anyhome.scene import one_line, scene_and_materials
 
 
 def write_glb(house: House, path: str | os.PathLike[str], texture_px: int | None = None) -> Path:
@@ -235,8 +26,8 @@ def write_glb(house: House, path: str | os.PathLike[str], texture_px: int | None
     """
     path = Path(path)
     try:
-        scene, specs = _build(house, texture_px, textures=False)
+        scene, specs = scene_and_materials(house, texture_px, textures=False)
         data = embed_textures(scene.export(file_type="glb"), specs)
     except Exception as e:  # trimesh raises many kinds
-        raise ExportError(f"could not build the GLB for {clean_text(path.name)}: {_one_line(e)}") from e
+        raise ExportError(f"could not build the GLB for {clean_text(path.name)}: {one_line(e)}") from e
     return write_file(path, data)

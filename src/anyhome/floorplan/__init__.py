@@ -1,5 +1,5 @@
 """Floorplan stage: HouseSpec -> Floorplan (room polygons, doors, windows)."""
 
-from anyhome.floorplan.solver import solve_floorplan
+from anyhome.floorplan.solver import floorplan_errors, solve_floorplan
 
-__all__ = ["solve_floorplan"]
+__all__ = ["floorplan_errors", "solve_floorplan"]

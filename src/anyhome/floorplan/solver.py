@@ -107,6 +107,16 @@ def solve_floorplan(spec: HouseSpec, rng: np.random.Generator) -> Floorplan:
     return _to_floorplan(spec, prog, best)
 
 
+def floorplan_errors(spec: HouseSpec) -> list[str]:
+    """Why ``spec``'s rooms and connections cannot be laid out as a floorplan (one line,
+    from the solver at seed 0), or [] when they can. The LLM planner checks a program
+    reply with it (``LLMPlanner(config, floorplan_check=floorplan_errors)``)."""
+    try:
+        solve_floorplan(spec, np.random.default_rng(0))
+    except FloorplanError as e:
+        return [str(e)]
+    return []
+
 def _precheck(prog: Program) -> None:
     """Reject programs whose rooms cannot have enough wall for their doors."""
     degree = Counter(k for link in prog.links for k in link if k != OUTSIDE)

@@ -11,14 +11,13 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import ndimage
 
-from anyhome.floorplan.grid import OUTSIDE
-
 FOUR = np.array([[0, 1, 0], [1, 1, 1], [0, 1, 0]], dtype=bool)
 
 
 @dataclass(frozen=True)
 class Run:
-    """A straight wall piece between room ``a`` and room ``b`` (or :data:`OUTSIDE`).
+    """A straight wall piece between room ``a`` and room ``b`` (or
+    :data:`anyhome.floorplan.grid.OUTSIDE`).
 
     ``axis`` 0 is a vertical wall ``x = line``, spanning ``y`` in ``[t0, t1]``; axis 1 a
     horizontal wall ``y = line`` spanning ``x``; all in cells (unpadded frame).
@@ -124,6 +123,3 @@ def bbox_aspect(mask: np.ndarray) -> float:
     w, h = xs.max() - xs.min() + 1, ys.max() - ys.min() + 1
     return max(w, h) / min(w, h)
 
-
-def is_outside(k: int) -> bool:
-    return k == OUTSIDE

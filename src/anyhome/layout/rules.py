@@ -11,14 +11,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from anyhome.layout.freespace import RoomSpace, Wall
+from anyhome.space import RoomSpace, Wall
 
 GRID_STEP_M = 0.1
 """Spacing of candidate positions along walls and over the room."""
 MAX_CENTER_CANDIDATES = 1200
 """The centre grid is coarsened so it holds at most about this many positions."""
-CENTER_WALL_CLEARANCE_M = 0.4
-"""``place_center`` prefers footprints at least this far from the walls."""
 BESIDE_GAPS_M = (0.03, 0.08, 0.15, 0.25)
 """Gaps tried between an object and the one it stands beside (first is preferred)."""
 AROUND_GAP_M = 0.05

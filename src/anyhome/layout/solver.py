@@ -24,8 +24,8 @@ from anyhome.geometry import (
 )
 from anyhome.house import Dropped, Floorplan, HouseObject, Room
 from anyhome.layout import rules as R
-from anyhome.layout.freespace import NavGrid, Placed, RoomSpace, Wall, nav_blocks, rect_corners
 from anyhome.plan.spec import GroupSpec, HouseSpec, ItemSpec, RoomSpec
+from anyhome.space import NavGrid, Placed, RoomSpace, Wall, nav_blocks, rect_corners
 
 log = logging.getLogger(__name__)
 

@@ -30,9 +30,10 @@ def get_planner(name: str = "offline") -> Planner:
 
         return OfflinePlanner()
     if name == "llm":
+        from anyhome.floorplan import floorplan_errors
         from anyhome.plan.llm import LLMPlanner, load_config
 
-        return LLMPlanner(load_config())
+        return LLMPlanner(load_config(), floorplan_check=floorplan_errors)
     raise PlanError(f"unknown planner {name!r} (available: {', '.join(PLANNERS)})")
 
 

@@ -26,7 +26,7 @@ from anyhome.geometry import (
     opening_zone,
 )
 from anyhome.house import Floorplan, HouseObject
-from anyhome.layout.freespace import (
+from anyhome.space import (
     WALL_OPENING_MARGIN_M,
     Placed,
     RoomSpace,

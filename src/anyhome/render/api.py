@@ -102,7 +102,7 @@ def render_house(
     view_size_px : side of the square per-room views (1 to MAX_IMAGE_PX)
     views : render the per-room views
     depth, ids : also write depth and instance maps
-    scene : the house's trimesh Scene; built with ``anyhome.export.glb.build_scene`` if None
+    scene : the house's trimesh Scene; built with ``anyhome.scene.build_scene`` if None
     supersample : anti-aliasing factor per axis (1 is fastest, without anti-aliasing)
 
     Returns
@@ -127,7 +127,7 @@ def render_house(
         raise RenderError(f"could not create {out}: {e.strerror}") from None
     t = time.perf_counter()
     if scene is None:
-        from anyhome.export.glb import build_scene
+        from anyhome.scene import build_scene
 
         scene = build_scene(house)
     meshes = scene_meshes(house, scene)

@@ -1,4 +1,4 @@
-"""Turn the exporter's trimesh Scene into flat vertex batches for the GPU.
+"""Turn the house's trimesh Scene (:mod:`anyhome.scene`) into flat vertex batches for the GPU.
 
 Every triangle corner becomes one vertex (no index buffer) carrying its plan-frame
 position and normal, a tangent (for normal maps), texture coordinates, linear base
@@ -15,7 +15,7 @@ more, which is what software Mesa pays for.)
 
 Colour spaces: base-colour textures are sRGB (decoded in the shader, as glTF says).
 glTF says ``baseColorFactor`` and vertex colours are linear. The in-memory scene of
-:func:`anyhome.export.glb.build_scene` keeps AnyHome's sRGB values there (hex colours as
+:func:`anyhome.scene.build_scene` keeps AnyHome's sRGB values there (hex colours as
 they are; ``write_glb`` converts them to linear in the file, see
 :func:`anyhome.materials.gltf.linear_factors`), so ``FACTORS_ARE_SRGB`` decodes them here.
 
@@ -36,9 +36,8 @@ import trimesh
 from shapely.geometry import Polygon
 
 from anyhome.house import House
+from anyhome.scene import ROOT_NODE
 
-ROOT_NODE = "house"
-"""The exporter's root node; its matrix maps plan coordinates to glTF's y-up frame."""
 SMOOTH_ANGLE_DEG = 35.0
 """Corners whose vertex normal is within this angle of the face normal shade smoothly."""
 DEFAULT_ROUGHNESS = 0.7
@@ -334,7 +333,7 @@ def _ground(bounds: np.ndarray, inst: int) -> np.ndarray:
 
 
 def scene_meshes(house: House, scene: trimesh.Scene) -> SceneMeshes:
-    """Flatten ``scene`` (from :func:`anyhome.export.glb.build_scene`) into batches.
+    """Flatten ``scene`` (from :func:`anyhome.scene.build_scene`) into batches.
 
     Parameters
     ----------

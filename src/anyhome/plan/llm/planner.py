@@ -68,6 +68,10 @@ STAGE_MAX_TOKENS = {"program": 600, "furniture": 1100, "ornaments": 500, "appear
 """Tokens one stage's reply may take (capped by the configured max tokens)."""
 
 
+FloorplanCheck = Callable[[HouseSpec], list[str]]
+"""``check(spec)``: why the floorplan stage cannot lay out the spec's rooms ([] if it can)."""
+
+
 @dataclass
 class StageRecord:
     """Where one stage's plan came from; written to house.json (no cache flags: a rerun
@@ -142,8 +146,13 @@ class LLMPlanner:
 
     name = "llm"
 
-    def __init__(self, config: LLMConfig) -> None:
+    def __init__(self, config: LLMConfig, floorplan_check: FloorplanCheck | None = None) -> None:
+        """``floorplan_check(spec)`` lists why a program's rooms and connections cannot be
+        laid out ([] when they can); the program reply is checked with it too. None skips
+        that check: whoever builds the planner passes the floorplan stage's check (see
+        ``anyhome.plan.get_planner`` and ``anyhome.floorplan.floorplan_errors``)."""
         self.config = config
+        self.floorplan_check = floorplan_check
         self.client: LLMClient | None = None  # of the last run: usage for the summary
 
     # ------------------------------------------------------------------ one stage
@@ -184,6 +193,16 @@ class LLMPlanner:
             warnings.append(f"LLM {label}: {rec.errors[0]}; the offline planner filled it")
         return None, rec
 
+    def _program_check(self, reply: ProgramReply) -> list[str]:
+        """The sanity rules, then whether the floorplan stage can lay the rooms out."""
+        errors = checks.check_program(reply)
+        if errors or self.floorplan_check is None:
+            return errors
+        rooms = [RoomSpec(id=r.id, name=r.name, type=r.type, area_m2=r.area_m2) for r in reply.rooms]
+        spec = HouseSpec(prompt="", rooms=rooms, connections=_connections(reply))
+        return [f"these rooms and connections cannot be laid out as a floorplan: {e}"
+                for e in self.floorplan_check(spec)]
+
     # ------------------------------------------------------------------ the plan
     def plan(self, text: str, rng: np.random.Generator) -> HouseSpec:
         offline = OfflinePlanner().plan(text, rng)  # the fallback of every stage (raises on empty text)
@@ -204,7 +223,7 @@ class LLMPlanner:
         # 1. program and bubble diagram
         types = ", ".join(ROOM_TYPES)
         msgs = prompts.messages("program", text=text, max_rooms=MAX_ROOMS, types=types)
-        program, rec = self._ask("program", "program", msgs, ProgramReply, _program_check, seed, warnings)
+        program, rec = self._ask("program", "program", msgs, ProgramReply, self._program_check, seed, warnings)
         records.append(rec)
         if program is None:
             rooms = list(offline.rooms)
@@ -293,22 +312,6 @@ class LLMPlanner:
 
 
 # ---------------------------------------------------------------------- helpers
-def _program_check(reply: ProgramReply) -> list[str]:
-    """The sanity rules, then whether the floorplan solver can lay the rooms out."""
-    errors = checks.check_program(reply)
-    if errors:
-        return errors
-    from anyhome.errors import FloorplanError
-    from anyhome.floorplan import solve_floorplan
-
-    rooms = [RoomSpec(id=r.id, name=r.name, type=r.type, area_m2=r.area_m2) for r in reply.rooms]
-    try:
-        solve_floorplan(HouseSpec(prompt="", rooms=rooms, connections=_connections(reply)), np.random.default_rng(0))
-    except FloorplanError as e:
-        return [f"these rooms and connections cannot be laid out as a floorplan: {e}"]
-    return []
-
-
 def _area_check(area_m2: float) -> Callable[[FurnitureReply], list[str]]:
     return lambda reply: checks.check_furniture(reply, area_m2)
 

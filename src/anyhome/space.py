@@ -1,4 +1,5 @@
-"""Free space of one room: walls, openings, placed objects, vectorized validity, navigation.
+"""Free space of one room (shared by layout and refine): walls, openings, placed objects,
+vectorized validity, navigation.
 
 The checks here are *stricter* than the definitions in :mod:`anyhome.geometry` (small
 margins everywhere), so a pose accepted here stays valid after house.json rounds it to

@@ -1,0 +1,80 @@
+"""The generation stages as replaceable functions (as ProcTHOR's generation functions are).
+
+:class:`Stages` names one function per stage; ``anyhome.generate``,
+``anyhome.generate_from_spec`` and ``anyhome.relayout`` take one and call only it, so a
+replacement for one stage runs with the defaults of the others::
+
+    from anyhome.stages import Stages
+
+    def no_refine(floorplan, objects, rng):
+        return objects
+
+    house = anyhome.generate("a kitchen", stages=Stages(refine=no_refine))
+
+Every stage gets its own child RNG (:func:`stage_rngs`), so a change inside one stage
+does not shift the random draws of the others.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+
+from anyhome.assets import assign_asset
+from anyhome.errors import AnyHomeError
+from anyhome.floorplan import solve_floorplan
+from anyhome.house import Floorplan, HouseObject
+from anyhome.layout import LayoutResult, layout_house
+from anyhome.pipeline import STAGES
+from anyhome.plan import HouseSpec, Planner
+from anyhome.refine import refine_objects
+
+PlanStage = Callable[[str, np.random.Generator, Planner], HouseSpec]
+"""plan(text, rng, planner) -> HouseSpec."""
+FloorplanStage = Callable[[HouseSpec, np.random.Generator], Floorplan]
+"""floorplan(spec, rng) -> Floorplan (rooms, doors, windows)."""
+LayoutStage = Callable[[HouseSpec, Floorplan, np.random.Generator], LayoutResult]
+"""layout(spec, floorplan, rng) -> LayoutResult: the objects of ``spec.rooms`` (only
+those: relayout passes a spec holding just the rooms it lays out again) and what was
+dropped."""
+RefineStage = Callable[[Floorplan, list[HouseObject], np.random.Generator], list[HouseObject]]
+"""refine(floorplan, objects, rng) -> the refined objects (the input is not modified)."""
+AssetsStage = Callable[[list[HouseObject], np.random.Generator, HouseSpec], list[HouseObject]]
+"""assets(objects, rng, spec) -> the objects with their asset records."""
+
+
+def plan_text(text: str, rng: np.random.Generator, planner: Planner) -> HouseSpec:
+    """The default plan stage: ``planner.plan(text, rng)``."""
+    return planner.plan(text, rng)
+
+
+def assign_assets(objects: list[HouseObject], rng: np.random.Generator, spec: HouseSpec) -> list[HouseObject]:
+    """The default assets stage: an asset record per object, drawn in order from ``rng``."""
+    for obj in objects:
+        obj.asset = assign_asset(obj, rng, spec.style)
+    return objects
+
+
+@dataclass(frozen=True)
+class Stages:
+    """One function per generation stage; replace any with ``Stages(layout=...)`` or
+    ``dataclasses.replace(stages, refine=...)``. Field order is the run order."""
+
+    plan: PlanStage = plan_text
+    floorplan: FloorplanStage = solve_floorplan
+    layout: LayoutStage = layout_house
+    refine: RefineStage = refine_objects
+    assets: AssetsStage = assign_assets
+
+    def __post_init__(self) -> None:
+        for name in STAGES:
+            if not callable(getattr(self, name)):
+                raise AnyHomeError(f"stage {name!r} must be a function, got {type(getattr(self, name)).__name__}")
+
+
+def stage_rngs(seed: int) -> dict[str, np.random.Generator]:
+    """One child generator per stage (:data:`anyhome.pipeline.STAGES`), spawned from ``seed``."""
+    children = np.random.SeedSequence(int(seed)).spawn(len(STAGES))
+    return dict(zip(STAGES, (np.random.default_rng(s) for s in children)))
