@@ -2,6 +2,7 @@
 
 from anyhome.errors import AnyHomeError
 from anyhome.house import House, load
+from anyhome.restyle import restyle as restyle
 
 __version__ = "0.1.0"
 __all__ = ["AnyHomeError", "House", "__version__", "generate", "load"]

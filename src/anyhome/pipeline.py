@@ -105,11 +105,12 @@ def generate(
         objects = refine_objects(floorplan, result.objects, rngs["refine"])
     with _stage("assets", timings, progress):
         for obj in objects:
-            obj.asset = assign_asset(obj, rngs["assets"], spec.style)
+            obj.asset = assign_asset(obj, rngs["assets"], spec.styles_for(obj.room))
     house = House(
         prompt=text,
         seed=int(seed),
         style=spec.style,
+        styles=spec.styles,
         building=spec.building,
         palette=spec.palette,
         planner=planner.name,
