@@ -6,6 +6,7 @@ from typing import TYPE_CHECKING, Any
 
 from anyhome.errors import AnyHomeError
 from anyhome.house import House, load
+from anyhome.restyle import restyle as restyle
 
 if TYPE_CHECKING:
     from anyhome.stages import Stages

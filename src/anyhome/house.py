@@ -196,6 +196,7 @@ class House(_Model):
     prompt: str
     seed: int
     style: str = ""
+    styles: list[str] = Field(default_factory=list, description="style keys of the knowledge base, the lead first")
     rooms: list[Room]
     connections: list[tuple[str, str]] = Field(default_factory=list)
     doors: list[Door] = Field(default_factory=list)

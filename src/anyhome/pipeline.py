@@ -158,6 +158,7 @@ def generate_from_spec(
         prompt=spec.prompt,
         seed=seed,
         style=spec.style,
+        styles=spec.styles,
         building=spec.building,
         palette=spec.palette,
         planner=planner,

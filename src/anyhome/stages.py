@@ -53,7 +53,7 @@ def plan_text(text: str, rng: np.random.Generator, planner: Planner) -> HouseSpe
 def assign_assets(objects: list[HouseObject], rng: np.random.Generator, spec: HouseSpec) -> list[HouseObject]:
     """The default assets stage: an asset record per object, drawn in order from ``rng``."""
     for obj in objects:
-        obj.asset = assign_asset(obj, rng, spec.style)
+        obj.asset = assign_asset(obj, rng, spec.styles_for(obj.room))
     return objects
 
 

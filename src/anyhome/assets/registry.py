@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import re
 import zlib
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
 from functools import lru_cache
 from pathlib import Path
@@ -20,6 +20,7 @@ import trimesh
 
 from anyhome.assets.colors import material_color
 from anyhome.assets.procedural._parts import Params, Size
+from anyhome.assets.styles import class_name
 from anyhome.house import HouseObject
 
 SYNONYMS_FILE = Path(__file__).with_name("synonyms.yaml")
@@ -149,15 +150,19 @@ def object_rng(obj: HouseObject) -> np.random.Generator:
     return np.random.default_rng(zlib.crc32(obj.id.encode("utf-8")))
 
 
-def assign_asset(obj: HouseObject, rng: np.random.Generator, style: str = "") -> dict[str, Any]:
+def assign_asset(obj: HouseObject, rng: np.random.Generator, style: str | Sequence[str] = "") -> dict[str, Any]:
     """Choose and parametrise the procedural asset for an object.
 
-    Returns the JSON-serialisable record to store in ``HouseObject.asset``; the object's
-    material words (else its description's) set the main colour.
+    ``style`` is the house's (or room's) style keys of plan/knowledge/styles.yaml, the
+    lead first, or one key or asset class name; the lead's asset style class shapes and
+    colours the asset, and the record's ``params.style`` names that class (see
+    :mod:`anyhome.assets.styles`). Returns the JSON-serialisable record to store in
+    ``HouseObject.asset``; the object's material words (else its description's) set the
+    main colour.
     """
     name = family_for(obj.category, obj.name)
     fam = get(name)
-    params = fam.sample(rng, tuple(obj.size), style)
+    params = fam.sample(rng, tuple(obj.size), class_name(style))
     color = material_color(obj.material) or material_color(obj.description)
     if color:
         params = replace(params, primary=color)

@@ -1,4 +1,9 @@
-"""Styles, palettes and material words for the offline planner (``knowledge/styles.yaml``)."""
+"""Styles, palettes and material words for the offline planner (``knowledge/styles.yaml``).
+
+A plan carries its style as keys of ``styles.yaml`` (``HouseSpec.styles``); the words
+(``Look.describe``) are for display. :func:`style_keys` reads keys from free text,
+:func:`look_for` makes the look of given keys, :func:`room_materials` dresses a room.
+"""
 
 from __future__ import annotations
 
@@ -6,11 +11,14 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from anyhome.plan.knowledge import load
+from anyhome.plan.knowledge import load, normalize, vocabulary
 from anyhome.plan.parse import Parsed
 
 WOOD_WORDS = ("wood", "wooden", "oak", "walnut", "pine", "bamboo", "teak", "mahogany", "birch", "ebony")
 """Materials that read as planks when put on a floor."""
+
+KEEP_DEFAULT_SURFACES = frozenset({"bathroom", "laundry", "changing_room", "balcony", "garage"})
+"""Room types whose floor and walls keep their own materials unless the text names them."""
 
 
 @dataclass
@@ -37,13 +45,10 @@ def choose_look(parsed: Parsed, implied: list[str], building: str, rng: np.rando
     if not keys:
         pool = data["defaults"].get(building) or data["defaults"]["*"]
         keys = [str(pool[int(rng.integers(len(pool)))])]
-    lead = styles[keys[0]]
-    describe = "; ".join(styles[k]["describe"] for k in keys)
-    own = [w for w in parsed.style_words if w not in describe]
+    look = look_for(keys, parsed.colours)
+    own = [w for w in parsed.style_words if w not in look.describe]
     if own:  # the user's own words lead ("moroccan: mediterranean, terracotta...")
-        describe = ", ".join(own) + ": " + describe
-    palette = list(dict.fromkeys([*parsed.colours, *lead["palette"], *(c for k in keys[1:] for c in styles[k]["palette"][:1])]))
-    look = Look(keys, describe, palette, lead["floor"], lead["walls"], lead["ceiling"], lead["furniture"])
+        look.describe = ", ".join(own) + ": " + look.describe
     furniture_words: list[str] = []
     for mm in parsed.materials:
         for surface in mm.surfaces:
@@ -66,6 +71,53 @@ def choose_look(parsed: Parsed, implied: list[str], building: str, rng: np.rando
     if parsed.colours:
         look.describe += "; accents of " + ", ".join(parsed.colours)
     return look
+
+
+def style_keys(text: str, open_vocab: bool = False) -> list[str]:
+    """The style keys ``text`` names, in order: a key itself ("art_deco"), the words of
+    the styles ("gothic revival", "scandi"), and with ``open_vocab`` the nearest style by
+    meaning of each other word ("craftsman", "spooky")."""
+    styles = load("styles")["styles"]
+    norm = normalize(text)
+    if norm.replace(" ", "_") in styles:
+        return [norm.replace(" ", "_")]
+    voc = vocabulary()
+    keys = [voc.style_forms[m.group()] for m in voc.style_regex.finditer(norm)]
+    if open_vocab and not keys:
+        from anyhome.plan import openvocab as ov
+
+        for word in norm.split():
+            match = ov.map_style(word)
+            if match is not None:
+                keys.append(match.key)
+    return list(dict.fromkeys(keys))
+
+
+def look_for(keys: list[str], palette: list[str] | None = None) -> Look:
+    """The look of the style ``keys`` (the first leads), as :func:`choose_look` makes it
+    for a text naming just these styles; ``palette`` leads the palette when given."""
+    styles = load("styles")["styles"]
+    lead = styles[keys[0]]
+    palette = list(dict.fromkeys([*(palette or []), *lead["palette"], *(styles[k]["palette"][0] for k in keys[1:])]))
+    describe = "; ".join(styles[k]["describe"] for k in keys)
+    return Look(list(keys), describe, palette, lead["floor"], lead["walls"], lead["ceiling"], lead["furniture"])
+
+
+def room_materials(look: Look, room_type: str) -> dict[str, str]:
+    """Floor, walls and ceiling words of a room of ``room_type`` in ``look``: wet rooms and
+    the types of :data:`KEEP_DEFAULT_SURFACES` keep their own floor and walls unless the
+    text named them (``look.user_surfaces``)."""
+    types = load("rooms")["types"]
+    defaults = types.get(room_type, types["other"])["materials"]
+    materials = {"floor": look.floor, "walls": look.walls, "ceiling": look.ceiling}
+    keep = room_type in KEEP_DEFAULT_SURFACES or bool(defaults.get("wet")) or bool(types.get(room_type, {}).get("wet"))
+    if keep:
+        for surface in ("floor", "walls"):
+            if surface not in look.user_surfaces:
+                materials[surface] = defaults[surface]
+        if room_type == "balcony":
+            materials["ceiling"] = defaults["ceiling"]
+    return materials
 
 
 def item_material(category: str, look: Look, furniture: str, rng: np.random.Generator) -> str:

@@ -19,7 +19,7 @@ import numpy as np
 from anyhome.errors import PlanError
 from anyhome.house import is_habitable
 from anyhome.plan import furnish as fu
-from anyhome.plan.appearance import Look, choose_look, item_material
+from anyhome.plan.appearance import Look, choose_look, item_material, room_materials
 from anyhome.plan.knowledge import load
 from anyhome.plan.parse import Mention, Parsed, parse, plural
 from anyhome.plan.program import Slot, choose_program, connect, plan_rooms, sample_areas
@@ -54,9 +54,6 @@ with the objects a room must try to place, so this keeps a room within a second 
 MAX_HOUSE_OBJECTS = 400
 """Most objects a whole plan places: about twice the busiest benchmark house (a law firm,
 about 180), so that generation stays within seconds."""
-
-KEEP_DEFAULT_SURFACES = frozenset({"bathroom", "laundry", "changing_room", "balcony", "garage"})
-"""Room types whose floor and walls keep their own materials unless the text names them."""
 
 
 class OfflinePlanner:
@@ -94,6 +91,7 @@ class OfflinePlanner:
             prompt=text,
             building=building,
             style=look.describe,
+            styles=look.styles,
             palette=look.palette,
             rooms=specs,
             connections=connections,
@@ -243,17 +241,7 @@ def _rows_cell_m2(g: fu.Group) -> float:
 
 
 def _room_spec(s: Slot, groups: list[fu.Group], ornaments: list[fu.Item], look: Look, rng: np.random.Generator) -> RoomSpec:
-    defaults = load("rooms")["types"].get(s.type, load("rooms")["types"]["other"])["materials"]
-    materials = {"floor": look.floor, "walls": look.walls, "ceiling": look.ceiling}
-    keep = s.type in KEEP_DEFAULT_SURFACES or bool(defaults.get("wet")) or bool(
-        load("rooms")["types"].get(s.type, {}).get("wet")
-    )
-    if keep:
-        for surface in ("floor", "walls"):
-            if surface not in look.user_surfaces:
-                materials[surface] = defaults[surface]
-        if s.type == "balcony":
-            materials["ceiling"] = defaults["ceiling"]
+    materials = room_materials(look, s.type)
     furniture = look.furniture
     if s.mention is not None:
         for surface, words in look.room_overrides.get(s.mention, {}).items():

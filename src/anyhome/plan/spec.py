@@ -163,6 +163,35 @@ class GroupSpec(_Model):
     required: bool = Field(default=False, description="the text asked for it explicitly")
 
 
+def _style_keys(v: Any) -> Any:
+    """Style keys as written in styles.yaml: lower case, ``_`` for spaces and hyphens,
+    each once, in order."""
+    if not isinstance(v, list):
+        return v
+    keys = [re.sub(r"[\s-]+", "_", clean_text(k).strip().lower()) if isinstance(k, str) else k for k in v]
+    return list(dict.fromkeys(keys))
+
+
+def _check_style_keys(keys: list[str]) -> list[str]:
+    from anyhome.plan.knowledge import load
+
+    known = load("styles")["styles"]
+    unknown = [k for k in keys if k not in known]
+    if unknown:
+        raise ValueError(f"unknown style {unknown[0]!r}; known styles include {', '.join(list(known)[:8])}")
+    return keys
+
+
+def _keys_from_words(style: str) -> list[str]:
+    from anyhome.plan.appearance import style_keys
+
+    return style_keys(style)
+
+
+StyleKeys = Annotated[list[str], BeforeValidator(_style_keys)]
+"""Keys of plan/knowledge/styles.yaml (``["gothic", "victorian"]``), the lead style first."""
+
+
 class RoomSpec(_Model):
     """One planned room."""
 
@@ -171,7 +200,11 @@ class RoomSpec(_Model):
     type: CleanStr = Field(min_length=1, description="functional type, see anyhome.house.ROOM_TYPES")
     area_m2: float = Field(gt=0.5, le=400.0)
     height_m: float = Field(default=2.7, ge=2.0, le=12.0)
-    style: CleanStr = ""
+    style: CleanStr = Field(default="", description="the room's style in words, for display")
+    styles: StyleKeys = Field(
+        default_factory=list,
+        description="the room's own style keys (styles.yaml), when it differs from the house; empty: the house's",
+    )
     materials: dict[CleanStr, CleanStr] = Field(default_factory=dict)
     groups: list[GroupSpec] = Field(default_factory=list)
     ornaments: list[ItemSpec] = Field(default_factory=list)
@@ -182,13 +215,23 @@ class RoomSpec(_Model):
             self.materials.setdefault(key, "")
         return self
 
+    @field_validator("styles")
+    @classmethod
+    def _known_styles(cls, v: list[str]) -> list[str]:
+        return _check_style_keys(v)
+
 
 class HouseSpec(_Model):
     """The whole plan: rooms, bubble diagram, appearance."""
 
     prompt: Annotated[str, BeforeValidator(lambda v: clean_text(v, newlines=True) if isinstance(v, str) else v)]
     building: CleanStr = Field(default="home", description="kind of building: home, office, cafe...")
-    style: CleanStr = ""
+    style: CleanStr = Field(default="", description="the style in words, for display")
+    styles: StyleKeys = Field(
+        default_factory=list,
+        description="style keys of plan/knowledge/styles.yaml, the lead first: assets and materials read them. "
+        "Read from `style` when empty",
+    )
     palette: list[CleanStr] = Field(default_factory=list)
     rooms: list[RoomSpec] = Field(min_length=1, max_length=MAX_ROOMS)
     connections: list[tuple[RoomId, RoomId]] = Field(
@@ -214,6 +257,22 @@ class HouseSpec(_Model):
         if not any(b == "outside" for _, b in self.connections):
             raise ValueError("the plan has no entrance: add (room_id, 'outside')")
         return self
+
+    @model_validator(mode="before")
+    @classmethod
+    def _styles_from_words(cls, data: Any) -> Any:
+        if isinstance(data, dict) and not data.get("styles") and isinstance(data.get("style"), str):
+            data = {**data, "styles": _keys_from_words(clean_text(data["style"]))}
+        return data
+
+    @field_validator("styles")
+    @classmethod
+    def _known_styles(cls, v: list[str]) -> list[str]:
+        return _check_style_keys(v)
+
+    def styles_for(self, room_id: str) -> list[str]:
+        """The style keys of a room: its own, else the house's."""
+        return self.room(room_id).styles or self.styles
 
     @property
     def entrance_room(self) -> str:

@@ -17,6 +17,7 @@ import numpy as np
 import trimesh
 
 from anyhome.assets.colors import mix, to_rgba
+from anyhome.assets.styles import TRAITS, class_name, style_class
 
 Size = tuple[float, float, float]
 KNOB_DECIMALS = 4
@@ -24,22 +25,6 @@ KNOB_DECIMALS = 4
 CYL_SECTIONS = 16
 """Sections of a cylinder or cone primitive."""
 
-ANTIQUE_WORDS = frozenset(
-    "antique victorian gothic baroque classic classical traditional rococo colonial "
-    "vintage ornate regency georgian french".split()
-)
-MODERN_WORDS = frozenset(
-    "modern scandinavian nordic minimal minimalist minimalistic contemporary mid century "
-    "midcentury japandi sleek".split()
-)
-INDUSTRIAL_WORDS = frozenset("industrial loft steampunk futuristic cyberpunk hightech tech".split())
-RUSTIC_WORDS = frozenset("rustic farmhouse cottage country cabin log medieval".split())
-
-WOODS = {
-    "light": ["#d8bf98", "#c9a77c", "#e0cfae", "#bf9b6e"],
-    "mid": ["#a0714a", "#8f6642", "#b08058", "#9a6a3c"],
-    "dark": ["#5c3b26", "#4a2f20", "#6b4330", "#3e2a1e"],
-}
 FABRICS = ["#b9b2a6", "#8c8f94", "#5f6b7a", "#a6896b", "#7d8c74", "#c9c1b4", "#6d5a6e", "#3f4a5a"]
 TEXTILE_WHITE = "#eeebe4"
 METAL = "#9a9da3"
@@ -133,7 +118,7 @@ def make_params(
     return Params(
         family=family,
         size=size,  # type: ignore[arg-type]
-        style=style,
+        style=class_name(style),
         primary=pick(primary),
         secondary=pick(secondary),
         accent=pick(accent),
@@ -143,45 +128,31 @@ def make_params(
 
 
 # ----------------------------------------------------------------- style helpers
-def style_words(style: str) -> set[str]:
-    return set(style.lower().replace("-", " ").split())
+# A style reaches a factory as a string: a style key or an asset class name, read
+# through the asset style classes of plan/knowledge/styles.yaml (anyhome.assets.styles).
+def style_is(style: str, *traits: str) -> bool:
+    """Whether the style's asset class has any of ``traits`` (antique, modern,
+    industrial, rustic, eastern)."""
+    unknown = set(traits) - TRAITS
+    if unknown:
+        raise ValueError(f"unknown style traits {sorted(unknown)}")
+    return bool(style_class(style).traits & set(traits))
 
 
 def leg_style(rng: np.random.Generator, style: str) -> str:
-    """Leg shape for a style: turned (antique), tapered (modern), metal (industrial)."""
-    w = style_words(style)
-    if w & ANTIQUE_WORDS:
-        return "turned"
-    if w & MODERN_WORDS:
-        return "tapered"
-    if w & INDUSTRIAL_WORDS:
-        return "metal"
-    if w & RUSTIC_WORDS:
-        return "straight"
-    return str(rng.choice(["straight", "tapered", "straight", "turned", "metal"]))
+    """Leg shape for a style: its class's one shape, else one drawn from its shapes."""
+    legs = style_class(style).legs
+    return legs[0] if len(legs) == 1 else str(rng.choice(list(legs)))
 
 
 def wood_tones(style: str) -> list[str]:
     """Candidate wood colours for a style."""
-    w = style_words(style)
-    if w & MODERN_WORDS:
-        return WOODS["light"] + ["#f0ede6", "#2b2b2b"]
-    if w & ANTIQUE_WORDS:
-        return WOODS["dark"] + WOODS["mid"][:1]
-    if w & INDUSTRIAL_WORDS:
-        return WOODS["dark"] + ["#2b2b2b", "#6b4330"]
-    if w & RUSTIC_WORDS:
-        return WOODS["mid"] + WOODS["dark"][:2]
-    return WOODS["light"] + WOODS["mid"] + WOODS["dark"]
+    return list(style_class(style).woods)
 
 
 def fabric_tones(style: str) -> list[str]:
-    w = style_words(style)
-    if w & MODERN_WORDS:
-        return ["#c9c1b4", "#8c8f94", "#e3ddd2", "#5f6b7a", "#a7a195"]
-    if w & ANTIQUE_WORDS:
-        return ["#6e2233", "#2f4a3a", "#5a3a5e", "#7a5a30", "#3a3f66"]
-    return FABRICS
+    """Candidate upholstery colours for a style."""
+    return list(style_class(style).fabrics)
 
 
 def darker(c: str, t: float = 0.35) -> str:

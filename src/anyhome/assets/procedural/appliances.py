@@ -26,19 +26,16 @@ from anyhome.assets.procedural._kit import (
     wheel_x,
 )
 from anyhome.assets.procedural._parts import (
-    ANTIQUE_WORDS,
     BLACK,
     DARK_METAL,
     GLASS,
-    MODERN_WORDS,
-    RUSTIC_WORDS,
     Builder,
     darker,
     lighter,
     make_params,
     move,
     rot_x,
-    style_words,
+    style_is,
     wood_tones,
 )
 from anyhome.assets.registry import register
@@ -50,10 +47,9 @@ TAP_HANDLES = ["#c0392b", "#f1c40f", "#2e86c1", "#27ae60", BLACK, "#e67e22", "#8
 
 
 def _vintage(style: str, rng, share: float = 0.25) -> bool:
-    words = style_words(style)
-    if words & (ANTIQUE_WORDS | RUSTIC_WORDS):
+    if style_is(style, "antique", "rustic"):
         return True
-    if words & MODERN_WORDS:
+    if style_is(style, "modern"):
         return False
     return bool(rng.random() < share)
 

@@ -16,7 +16,7 @@ from anyhome.assets.procedural._parts import (
     leg_style,
     lighter,
     make_params,
-    style_words,
+    style_is,
     wood_tones,
 )
 from anyhome.assets.registry import register
@@ -25,12 +25,11 @@ BEDDING = ["#e9e4da", "#d7dde6", "#c8b8a6", "#9fb2a0", "#b9a2b8", "#d9c3a0", "#8
 
 
 def sample_bed(rng: np.random.Generator, size: Size, style: str) -> Params:
-    w = style_words(style)
     return make_params(
         "bed", rng, size, style, wood_tones(style), TEXTILE_WHITE, BEDDING + fabric_tones(style),
         legs=leg_style(rng, style),
-        headboard="upholstered" if rng.random() < 0.35 and not w & {"rustic"} else "panel",
-        footboard=bool(rng.random() < (0.6 if {"antique", "victorian"} & w else 0.25)),
+        headboard="upholstered" if rng.random() < 0.35 and not style_is(style, "rustic") else "panel",
+        footboard=bool(rng.random() < (0.6 if style_is(style, "antique") else 0.25)),
         mattress_top=float(rng.uniform(0.48, 0.58)),
         pillows=int(rng.integers(1, 3)),
     )

@@ -19,18 +19,15 @@ from anyhome.assets.procedural._kit import (
     vent_lines,
 )
 from anyhome.assets.procedural._parts import (
-    ANTIQUE_WORDS,
     BLACK,
     DARK_METAL,
     FABRICS,
     GLASS,
-    MODERN_WORDS,
-    RUSTIC_WORDS,
     Builder,
     darker,
     lighter,
     make_params,
-    style_words,
+    style_is,
     wood_tones,
 )
 from anyhome.assets.registry import register
@@ -42,10 +39,9 @@ NEON = ["#e040a0", "#40c0e0", "#7b4ad5", "#40e080"]
 
 
 def _antique(style: str, rng, share: float) -> bool:
-    words = style_words(style)
-    if words & (ANTIQUE_WORDS | RUSTIC_WORDS):
+    if style_is(style, "antique", "rustic"):
         return True
-    if words & MODERN_WORDS:
+    if style_is(style, "modern"):
         return False
     return bool(rng.random() < share)
 

@@ -6,14 +6,10 @@ from __future__ import annotations
 import numpy as np
 
 from anyhome.assets.procedural._parts import (
-    ANTIQUE_WORDS,
     BLACK,
     DARK_METAL,
     FABRICS,
-    INDUSTRIAL_WORDS,
     METAL,
-    MODERN_WORDS,
-    RUSTIC_WORDS,
     TEXTILE_WHITE,
     Builder,
     about,
@@ -24,7 +20,7 @@ from anyhome.assets.procedural._parts import (
     make_params,
     rot_x,
     rot_y,
-    style_words,
+    style_is,
     wood_tones,
 )
 from anyhome.assets.registry import register
@@ -75,8 +71,7 @@ def build_hospital_bed(p):
 
 # ----------------------------------------------------------------- massage / examination table
 def sample_massage_table(rng, size, style):
-    words = style_words(style)
-    metal = bool(words & (MODERN_WORDS | INDUSTRIAL_WORDS)) or rng.random() < 0.3
+    metal = style_is(style, "modern", "industrial") or rng.random() < 0.3
     return make_params("massage_table", rng, size, style, [METAL, CHROME] if metal else wood_tones(style),
                        ["#e8e6e0", BLACK, "#5f6b7a", "#7d8c74", "#a6896b", "#2f4a5a"], "#f4f1ea",
                        cradle=bool(rng.random() < 0.7), towel=bool(rng.random() < 0.5))
@@ -120,8 +115,7 @@ def build_massage_table(p):
 
 # ----------------------------------------------------------------- salon / barber chair
 def sample_salon_chair(rng, size, style):
-    words = style_words(style)
-    barber = bool(words & (ANTIQUE_WORDS | RUSTIC_WORDS)) or rng.random() < 0.35
+    barber = style_is(style, "antique", "rustic") or rng.random() < 0.35
     return make_params("salon_chair", rng, size, style, LEATHERS, CHROME, ["#c9a54a", CHROME],
                        kind="barber" if barber else "styling")
 
@@ -213,8 +207,7 @@ def build_mannequin(p):
 
 # ----------------------------------------------------------------- clothes rack
 def sample_clothes_rack(rng, size, style):
-    words = style_words(style)
-    wood = bool(words & (RUSTIC_WORDS | ANTIQUE_WORDS))
+    wood = style_is(style, "rustic", "antique")
     return make_params("clothes_rack", rng, size, style, wood_tones(style) if wood else [CHROME, BLACK, DARK_METAL],
                        GARMENTS[0], GARMENTS[1], garments=int(rng.integers(5, 12)), shelf=bool(rng.random() < 0.5))
 
@@ -256,8 +249,7 @@ def build_clothes_rack(p):
 
 # ----------------------------------------------------------------- coat rack
 def sample_coat_rack(rng, size, style):
-    words = style_words(style)
-    metal = bool(words & (MODERN_WORDS | INDUSTRIAL_WORDS)) and rng.random() < 0.6
+    metal = style_is(style, "modern", "industrial") and rng.random() < 0.6
     return make_params("coat_rack", rng, size, style, [BLACK, CHROME] if metal else wood_tones(style),
                        GARMENTS[0], ["#5c3b26", "#2b2b2b", "#a6896b"], hooks=int(rng.integers(4, 7)),
                        coats=int(rng.integers(0, 3)), base=str(rng.choice(["tripod", "disc"])))
@@ -302,8 +294,7 @@ def build_coat_rack(p):
 
 # ----------------------------------------------------------------- sewing machine
 def sample_sewing_machine(rng, size, style):
-    words = style_words(style)
-    treadle = bool(words & (ANTIQUE_WORDS | RUSTIC_WORDS)) or (not words & MODERN_WORDS and rng.random() < 0.4)
+    treadle = style_is(style, "antique", "rustic") or (not style_is(style, "modern") and rng.random() < 0.4)
     return make_params("sewing_machine", rng, size, style, wood_tones(style),
                        BLACK if treadle else str(rng.choice(["#f0ede6", "#e8e6e0", "#d0d8e0"])),
                        ["#c9a54a", "#c0392b", "#2e86c1"], kind="treadle" if treadle else "table")

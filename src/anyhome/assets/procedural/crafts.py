@@ -18,12 +18,9 @@ from anyhome.assets.procedural._kit import (
     ring_y,
 )
 from anyhome.assets.procedural._parts import (
-    ANTIQUE_WORDS,
     BLACK,
     DARK_METAL,
     METAL,
-    MODERN_WORDS,
-    RUSTIC_WORDS,
     Builder,
     about,
     darker,
@@ -31,7 +28,7 @@ from anyhome.assets.procedural._parts import (
     lighter,
     make_params,
     rot_y,
-    style_words,
+    style_is,
     wood_tones,
 )
 from anyhome.assets.registry import register
@@ -46,8 +43,7 @@ TOOL_HANDLES = ["#c0392b", "#f1c40f", "#2e86c1", BLACK, "#27ae60", "#e67e22"]
 
 # ----------------------------------------------------------------- kiln
 def sample_kiln(rng, size, style):
-    words = style_words(style)
-    brick = bool(words & (ANTIQUE_WORDS | RUSTIC_WORDS)) and rng.random() < 0.7
+    brick = style_is(style, "antique", "rustic") and rng.random() < 0.7
     return make_params("kiln", rng, size, style, [STEEL, "#9a9da3", "#c9ccd0"] if not brick else BRICK,
                        [DARK_METAL, BLACK], EMBER[0], kind="brick" if brick else "electric")
 
@@ -232,7 +228,7 @@ def build_pottery_wheel(p):
 
 # ----------------------------------------------------------------- printing press
 def sample_printing_press(rng, size, style):
-    iron = bool(style_words(style) & MODERN_WORDS) or rng.random() < 0.3
+    iron = style_is(style, "modern") or rng.random() < 0.3
     return make_params("printing_press", rng, size, style, wood_tones("antique") if not iron else
                        [DARK_METAL, "#2b2b2b", "#3a4a3a"], [DARK_METAL, BLACK], ["#f4f1e6", "#e8dcc0"],
                        kind="iron" if iron else "wooden")

@@ -6,7 +6,6 @@ import numpy as np
 
 from anyhome.assets.colors import to_rgba
 from anyhome.assets.procedural._parts import (
-    ANTIQUE_WORDS,
     BLACK,
     DARK_METAL,
     METAL,
@@ -15,7 +14,7 @@ from anyhome.assets.procedural._parts import (
     make_params,
     move,
     rot_x,
-    style_words,
+    style_is,
     wood_tones,
 )
 from anyhome.assets.registry import register
@@ -28,7 +27,7 @@ LAND = ["#6b8f4e", "#c9a56a", "#8a6a3a"]
 
 # ----------------------------------------------------------------- telescope
 def sample_telescope(rng, size, style):
-    antique = bool(style_words(style) & ANTIQUE_WORDS)
+    antique = style_is(style, "antique")
     return make_params("telescope", rng, size, style, [BRASS] if antique else ["#e8e6e0", BLACK, "#2d4f8a", BRASS],
                        wood_tones(style) if antique or rng.random() < 0.3 else [DARK_METAL, METAL], BLACK,
                        tilt=float(rng.uniform(0.55, 0.85)))
@@ -68,7 +67,7 @@ def build_telescope(p):
 
 # ----------------------------------------------------------------- globe
 def sample_globe(rng, size, style):
-    antique = bool(style_words(style) & ANTIQUE_WORDS)
+    antique = style_is(style, "antique")
     return make_params("globe", rng, size, style, wood_tones(style), OCEANS[2] if antique else OCEANS[:2],
                        LAND[1] if antique else LAND[0], floor=bool(size[2] > 1.5 * min(size[0], size[1])))
 

@@ -16,7 +16,7 @@ from anyhome.assets.procedural._parts import (
     lighter,
     make_params,
     rot_y,
-    style_words,
+    style_is,
     wood_tones,
 )
 from anyhome.assets.registry import register
@@ -151,8 +151,7 @@ def build_plant(p):
 
 
 def sample_wall_art(rng, size, style):
-    w = style_words(style)
-    frame = ["#c9a54a", "#5c3b26"] if w & {"victorian", "antique", "baroque", "classic"} else \
+    frame = ["#c9a54a", "#5c3b26"] if style_is(style, "antique") else \
         ["#2b2b2b", "#f0ede6", "#c9a77c", "#c9a54a"]
     return make_params("wall_art", rng, size, style, frame, "#f4f1ea", ART,
                        motif=str(rng.choice(["abstract", "landscape", "blocks"])), mat=bool(rng.random() < 0.5))

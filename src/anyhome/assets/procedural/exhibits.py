@@ -19,10 +19,8 @@ from anyhome.assets.procedural._kit import (
     wheel_y,
 )
 from anyhome.assets.procedural._parts import (
-    ANTIQUE_WORDS,
     BLACK,
     DARK_METAL,
-    MODERN_WORDS,
     Builder,
     about,
     darker,
@@ -32,7 +30,7 @@ from anyhome.assets.procedural._parts import (
     move,
     rot_y,
     rot_z,
-    style_words,
+    style_is,
     wood_tones,
 )
 from anyhome.assets.registry import register
@@ -51,10 +49,9 @@ DART_GREEN = "#2a7a3a"
 
 # ----------------------------------------------------------------- plinth
 def sample_plinth(rng, size, style):
-    words = style_words(style)
-    if words & ANTIQUE_WORDS:
+    if style_is(style, "antique"):
         kind = str(rng.choice(["classic", "column"]))
-    elif words & MODERN_WORDS:
+    elif style_is(style, "modern"):
         kind = "modern"
     else:
         kind = str(rng.choice(["modern", "column", "classic", "classic"]))

@@ -8,13 +8,10 @@ from __future__ import annotations
 import numpy as np
 
 from anyhome.assets.procedural._parts import (
-    ANTIQUE_WORDS,
     BLACK,
     DARK_METAL,
     GLASS,
-    INDUSTRIAL_WORDS,
     METAL,
-    MODERN_WORDS,
     Builder,
     about,
     darker,
@@ -22,7 +19,7 @@ from anyhome.assets.procedural._parts import (
     make_params,
     rot_x,
     rot_z,
-    style_words,
+    style_is,
     wood_tones,
 )
 from anyhome.assets.registry import register
@@ -39,8 +36,7 @@ PENDANT_WIDTH_M = 0.55
 
 # ----------------------------------------------------------------- chandelier / pendant
 def sample_chandelier(rng, size, style):
-    words = style_words(style)
-    candles = bool(words & ANTIQUE_WORDS) or (not words & (MODERN_WORDS | INDUSTRIAL_WORDS) and rng.random() < 0.5)
+    candles = style_is(style, "antique") or (not style_is(style, "modern", "industrial") and rng.random() < 0.5)
     return make_params("chandelier", rng, size, style, [BRASS, BLACK, "#c9ccd0", "#8a6a3a"],
                        ["#f4f1e6", "#e8e2d4", BLACK, "#c9a54a", "#8a9aa8"], GLASS,
                        arms=int(rng.integers(5, 9)), candles=candles, crystals=bool(candles and rng.random() < 0.5),
@@ -133,8 +129,7 @@ def build_ceiling_fan(p):
 
 # ----------------------------------------------------------------- straight staircase
 def sample_staircase(rng, size, style):
-    words = style_words(style)
-    kind = "open" if words & (MODERN_WORDS | INDUSTRIAL_WORDS) else str(rng.choice(["closed", "open"]))
+    kind = "open" if style_is(style, "modern", "industrial") else str(rng.choice(["closed", "open"]))
     return make_params("staircase", rng, size, style, wood_tones(style) + ["#e8e6e0", "#9a958c"],
                        wood_tones(style) + [BLACK, METAL], ["#e8e6e0", BLACK, METAL],
                        kind=kind, rails=str(rng.choice(["both", "one", "one"])))

@@ -16,18 +16,16 @@ from anyhome.assets.procedural._kit import (
     wheel_x,
 )
 from anyhome.assets.procedural._parts import (
-    ANTIQUE_WORDS,
     BLACK,
     DARK_METAL,
     GLASS,
     METAL,
-    RUSTIC_WORDS,
     Builder,
     darker,
     lengthwise,
     lighter,
     make_params,
-    style_words,
+    style_is,
 )
 from anyhome.assets.registry import register
 
@@ -87,8 +85,7 @@ def build_fermentation_tank(p):
 
 # ----------------------------------------------------------------- brew kettle
 def sample_brew_kettle(rng, size, style):
-    words = style_words(style)
-    copper = bool(words & (ANTIQUE_WORDS | RUSTIC_WORDS)) or rng.random() < 0.45
+    copper = style_is(style, "antique", "rustic") or rng.random() < 0.45
     return make_params("brew_kettle", rng, size, style, [COPPER, "#c07a40"] if copper else [STEEL, "#c9ccd0"],
                        [BRASS, CHROME] if copper else [CHROME, STEEL], "#c0392b", kind="copper" if copper else "steel")
 

@@ -14,10 +14,8 @@ from anyhome.assets.procedural._kit import (
     ring_y,
 )
 from anyhome.assets.procedural._parts import (
-    ANTIQUE_WORDS,
     BLACK,
     DARK_METAL,
-    MODERN_WORDS,
     Builder,
     about,
     darker,
@@ -25,7 +23,7 @@ from anyhome.assets.procedural._parts import (
     lighter,
     make_params,
     rot_x,
-    style_words,
+    style_is,
     wood_tones,
 )
 from anyhome.assets.registry import register
@@ -40,8 +38,7 @@ VOTIVE_GLASS = ["#b8202a", "#c0392b", "#f4f1e6", "#d9a32a"]
 
 # ----------------------------------------------------------------- harp
 def sample_harp(rng, size, style):
-    words = style_words(style)
-    gilt = bool(words & ANTIQUE_WORDS) or (not words & MODERN_WORDS and rng.random() < 0.5)
+    gilt = style_is(style, "antique") or (not style_is(style, "modern") and rng.random() < 0.5)
     return make_params("harp", rng, size, style, [GOLD, "#c9a54a"] if gilt else wood_tones(style),
                        wood_tones(style), "#b8202a", strings=int(rng.integers(26, 40)))
 

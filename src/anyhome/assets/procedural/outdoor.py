@@ -5,13 +5,9 @@ from __future__ import annotations
 import numpy as np
 
 from anyhome.assets.procedural._parts import (
-    ANTIQUE_WORDS,
     BLACK,
     DARK_METAL,
-    INDUSTRIAL_WORDS,
     METAL,
-    MODERN_WORDS,
-    RUSTIC_WORDS,
     Builder,
     about,
     darker,
@@ -20,7 +16,7 @@ from anyhome.assets.procedural._parts import (
     move,
     rot_y,
     rot_z,
-    style_words,
+    style_is,
     wood_tones,
 )
 from anyhome.assets.registry import register
@@ -143,10 +139,9 @@ def build_hot_tub(p):
 
 # ----------------------------------------------------------------- fire pit
 def sample_fire_pit(rng, size, style):
-    words = style_words(style)
-    if words & (MODERN_WORDS | INDUSTRIAL_WORDS):
+    if style_is(style, "modern", "industrial"):
         kind = "bowl"
-    elif words & (RUSTIC_WORDS | ANTIQUE_WORDS):
+    elif style_is(style, "rustic", "antique"):
         kind = "stone"
     else:
         kind = str(rng.choice(["stone", "stone", "bowl"]))

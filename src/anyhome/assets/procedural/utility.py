@@ -19,15 +19,11 @@ from anyhome.assets.procedural._kit import (
     path,
 )
 from anyhome.assets.procedural._parts import (
-    ANTIQUE_WORDS,
     BLACK,
     DARK_METAL,
     FABRICS,
     GLASS,
-    INDUSTRIAL_WORDS,
     METAL,
-    MODERN_WORDS,
-    RUSTIC_WORDS,
     Builder,
     about,
     darker,
@@ -37,7 +33,7 @@ from anyhome.assets.procedural._parts import (
     move,
     rot_x,
     rot_z,
-    style_words,
+    style_is,
     wood_tones,
 )
 from anyhome.assets.registry import register
@@ -50,9 +46,8 @@ BULB = "#fff1c4"
 
 # ----------------------------------------------------------------- radiator
 def sample_radiator(rng, size, style):
-    words = style_words(style)
-    panel = bool(words & MODERN_WORDS) and rng.random() < 0.6
-    iron = bool(words & (ANTIQUE_WORDS | RUSTIC_WORDS | INDUSTRIAL_WORDS))
+    panel = style_is(style, "modern") and rng.random() < 0.6
+    iron = style_is(style, "antique", "rustic", "industrial")
     return make_params("radiator", rng, size, style, ["#4a4c50", "#2b2b2b", "#8a7a6a"] if iron else
                        [WHITE_PLASTIC, "#f4f4f2", "#3a3b3e", "#e8e6e0"], CHROME, BRASS if iron else CHROME,
                        kind="panel" if panel else "column")
@@ -376,8 +371,7 @@ def build_urinal(p):
 def sample_ladder(rng, size, style):
     w, d, h = size
     step = d > 0.3 * h
-    words = style_words(style)
-    wood = bool(words & (ANTIQUE_WORDS | RUSTIC_WORDS)) or rng.random() < 0.4
+    wood = style_is(style, "antique", "rustic") or rng.random() < 0.4
     return make_params("ladder", rng, size, style, wood_tones(style) if wood else [METAL, "#b8bcc0", "#e0b030"],
                        [BLACK, "#c0392b", "#e8702a", BRASS], METAL, kind="step" if step else "leaning",
                        rolling=bool(wood and not step and rng.random() < 0.5))
@@ -434,8 +428,7 @@ def build_ladder(p):
 
 # ----------------------------------------------------------------- coat hook
 def sample_coat_hook(rng, size, style):
-    words = style_words(style)
-    pegs = bool(words & (RUSTIC_WORDS | MODERN_WORDS)) and rng.random() < 0.6
+    pegs = style_is(style, "rustic", "modern") and rng.random() < 0.6
     return make_params("coat_hook", rng, size, style, wood_tones(style) + ["#e8e6e0"], [BLACK, BRASS, CHROME, DARK_METAL],
                        FABRICS, kind="pegs" if pegs else "hooks", scarf=bool(rng.random() < 0.4))
 
@@ -522,12 +515,11 @@ def build_mailbox(p):
 
 # ----------------------------------------------------------------- wall sconce
 def sample_wall_sconce(rng, size, style):
-    words = style_words(style)
-    if words & ANTIQUE_WORDS:
+    if style_is(style, "antique"):
         kind = "candle"
-    elif words & RUSTIC_WORDS:
+    elif style_is(style, "rustic"):
         kind = str(rng.choice(["torch", "candle"]))
-    elif words & MODERN_WORDS:
+    elif style_is(style, "modern"):
         kind = "cylinder"
     else:
         u = rng.random()
@@ -578,10 +570,9 @@ def build_wall_sconce(p):
 
 # ----------------------------------------------------------------- room divider
 def sample_room_divider(rng, size, style):
-    words = style_words(style)
-    if words & {"japandi", "japanese", "zen", "asian", "minimal", "minimalist"}:
+    if style_is(style, "eastern"):
         kind = "shoji"
-    elif words & ANTIQUE_WORDS:
+    elif style_is(style, "antique"):
         kind = "lattice"
     else:
         kind = str(rng.choice(["fabric", "shoji", "lattice", "fabric"]))
@@ -640,8 +631,7 @@ def build_room_divider(p):
 
 # ----------------------------------------------------------------- safe
 def sample_safe(rng, size, style):
-    words = style_words(style)
-    old = bool(words & (ANTIQUE_WORDS | RUSTIC_WORDS)) or (not words & MODERN_WORDS and rng.random() < 0.4)
+    old = style_is(style, "antique", "rustic") or (not style_is(style, "modern") and rng.random() < 0.4)
     return make_params("safe", rng, size, style, ["#2f4a3a", "#3a2a26", BLACK] if old else
                        [DARK_METAL, "#2b2b2b", "#5f6b7a", "#8a8d92"], BRASS if old else CHROME, "#c9a54a",
                        lock="dial" if old else str(rng.choice(["dial", "keypad"])))
@@ -693,9 +683,8 @@ def build_safe(p):
 
 # ----------------------------------------------------------------- acoustic panel
 def sample_acoustic_panel(rng, size, style):
-    words = style_words(style)
     u = rng.random()
-    kind = "slats" if words & (MODERN_WORDS | RUSTIC_WORDS) and u < 0.6 else \
+    kind = "slats" if style_is(style, "modern", "rustic") and u < 0.6 else \
         "foam" if u < 0.55 else "slats" if u < 0.8 else "fabric"
     return make_params("acoustic_panel", rng, size, style, ["#2b2b2b", "#3a3b3e", "#2d4f8a", "#8a1f2b", "#5f6b7a",
                                                            "#7d8c74"], wood_tones(style), BLACK, kind=kind)

@@ -5,7 +5,6 @@ from __future__ import annotations
 import numpy as np
 
 from anyhome.assets.procedural._parts import (
-    ANTIQUE_WORDS,
     BLACK,
     TEXTILE_WHITE,
     Builder,
@@ -15,7 +14,7 @@ from anyhome.assets.procedural._parts import (
     lighter,
     make_params,
     rot_x,
-    style_words,
+    style_is,
     wood_tones,
 )
 from anyhome.assets.registry import register
@@ -27,7 +26,7 @@ ALTAR_FRONTALS = ["#7a1f2b", "#4a2a6a", "#2f5a3a", "#c9a54a", "#e8e2d4"]
 # ----------------------------------------------------------------- lectern / pulpit / music stand
 def sample_lectern(rng, size, style):
     w, d, h = size
-    antique = bool(style_words(style) & ANTIQUE_WORDS)
+    antique = style_is(style, "antique")
     kind = "pulpit" if w >= 0.9 else str(rng.choice(["panel", "pedestal", "stand"], p=[0.55, 0.3, 0.15]))
     if kind == "pedestal" and not antique and rng.random() < 0.5:
         kind = "panel"
@@ -99,7 +98,7 @@ def build_lectern(p):
 
 # ----------------------------------------------------------------- pew
 def sample_pew(rng, size, style):
-    antique = bool(style_words(style) & ANTIQUE_WORDS)
+    antique = style_is(style, "antique")
     return make_params("pew", rng, size, style, wood_tones(style), fabric_tones(style), BRASS,
                        cushion=bool(rng.random() < 0.5), finial=bool(antique or rng.random() < 0.3),
                        kneeler=bool(rng.random() < 0.6))
@@ -142,7 +141,7 @@ def build_pew(p):
 
 # ----------------------------------------------------------------- altar
 def sample_altar(rng, size, style):
-    antique = bool(style_words(style) & ANTIQUE_WORDS)
+    antique = style_is(style, "antique")
     stone = ["#d8d0c0", "#c9c1b0", "#e8e2d4"]
     return make_params("altar", rng, size, style, stone if antique else wood_tones(style) + stone, TEXTILE_WHITE,
                        ALTAR_FRONTALS, candles=int(rng.choice([2, 2, 4])), cross=bool(rng.random() < 0.6))

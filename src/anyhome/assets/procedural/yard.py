@@ -13,11 +13,9 @@ from anyhome.assets.procedural._kit import (
     wheel_x,
 )
 from anyhome.assets.procedural._parts import (
-    ANTIQUE_WORDS,
     BLACK,
     DARK_METAL,
     METAL,
-    RUSTIC_WORDS,
     Builder,
     about,
     darker,
@@ -26,7 +24,7 @@ from anyhome.assets.procedural._parts import (
     make_params,
     rot_x,
     rot_y,
-    style_words,
+    style_is,
     wood_tones,
 )
 from anyhome.assets.registry import register
@@ -174,8 +172,7 @@ def build_surfboard(p):
 
 # ----------------------------------------------------------------- beehive
 def sample_beehive(rng, size, style):
-    words = style_words(style)
-    skep = bool(words & (RUSTIC_WORDS | ANTIQUE_WORDS)) and rng.random() < 0.6
+    skep = style_is(style, "rustic", "antique") and rng.random() < 0.6
     return make_params("beehive", rng, size, style, HIVE_PAINT, wood_tones("rustic"), "#b8bcc0",
                        kind="skep" if skep else "boxes", boxes=int(rng.integers(2, 5)))
 

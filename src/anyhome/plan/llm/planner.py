@@ -35,6 +35,7 @@ import numpy as np
 from pydantic import BaseModel, ValidationError
 
 from anyhome.house import ROOM_TYPES
+from anyhome.plan.appearance import style_keys
 from anyhome.plan.llm import checks, prompts
 from anyhome.plan.llm.cache import ReplyCache
 from anyhome.plan.llm.client import LLMClient, Unavailable, parse_json
@@ -274,6 +275,7 @@ class LLMPlanner:
         spec = HouseSpec(
             prompt=text, building=building or offline.building,
             style=appearance.style if appearance is not None else offline.style,
+            styles=(style_keys(appearance.style) or offline.styles) if appearance is not None else offline.styles,
             palette=list(appearance.palette) if appearance is not None else offline.palette,
             rooms=rooms, connections=connections, warnings=warnings,
         )  # fmt: skip

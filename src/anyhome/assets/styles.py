@@ -1,0 +1,110 @@
+"""Asset style classes: how a style shapes and colours the procedural assets.
+
+The knowledge lives in ``plan/knowledge/styles.yaml``: every style names its
+``asset_class``, and ``asset_classes`` says what each class means (its traits, leg
+shapes, wood and fabric colours). A factory gets a style as a string, a style key
+("gothic", "japandi") or an asset class name ("antique"), and reads it through
+:func:`style_class`; anything else (no style, prose) is the ``plain`` class.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Sequence
+from dataclasses import dataclass
+from functools import lru_cache
+from typing import Any
+
+from anyhome.errors import PlanError
+
+DEFAULT_CLASS = "plain"
+"""The class of no style: random leg shapes, every wood tone."""
+TRAITS = frozenset({"antique", "modern", "industrial", "rustic", "eastern"})
+"""The broad looks factories choose forms by."""
+LEG_SHAPES = frozenset({"straight", "tapered", "turned", "metal"})
+"""Leg shapes ``Builder.legs`` draws."""
+_HEX = re.compile(r"#[0-9a-fA-F]{6}")
+_FILE = "styles.yaml"
+
+
+@dataclass(frozen=True)
+class StyleClass:
+    """One asset style class of ``styles.yaml``'s ``asset_classes``."""
+
+    name: str
+    traits: frozenset[str]
+    legs: tuple[str, ...]
+    woods: tuple[str, ...]
+    fabrics: tuple[str, ...]
+
+
+def _bad(key: str, what: str) -> PlanError:
+    return PlanError(f"{_FILE}: {key}: {what}")
+
+
+def _colours(key: str, value: Any) -> tuple[str, ...]:
+    if not isinstance(value, list) or not value or not all(isinstance(c, str) and _HEX.fullmatch(c) for c in value):
+        raise _bad(key, "must be a non-empty list of #rrggbb colours")
+    return tuple(value)
+
+
+def _parse_class(name: str, entry: Any) -> StyleClass:
+    where = f"asset_classes.{name}"
+    if not isinstance(entry, dict):
+        raise _bad(where, "must be a mapping with traits, legs, woods and fabrics")
+    unknown = sorted(set(entry) - {"traits", "legs", "woods", "fabrics"})
+    if unknown:
+        raise _bad(f"{where}.{unknown[0]}", "unknown field (known: traits, legs, woods, fabrics)")
+    traits = entry.get("traits", [])
+    if not isinstance(traits, list) or not set(traits) <= TRAITS:
+        raise _bad(f"{where}.traits", f"must be a list of {', '.join(sorted(TRAITS))}")
+    legs = entry.get("legs")
+    if not isinstance(legs, list) or not legs or not set(legs) <= LEG_SHAPES:
+        raise _bad(f"{where}.legs", f"must be a non-empty list of {', '.join(sorted(LEG_SHAPES))}")
+    return StyleClass(name, frozenset(traits), tuple(legs), _colours(f"{where}.woods", entry.get("woods")),
+                      _colours(f"{where}.fabrics", entry.get("fabrics")))
+
+
+@lru_cache(maxsize=None)
+def _tables() -> tuple[dict[str, StyleClass], dict[str, str]]:
+    from anyhome.plan.knowledge import load
+
+    data = load("styles")
+    raw = data.get("asset_classes")
+    if not isinstance(raw, dict) or DEFAULT_CLASS not in raw:
+        raise _bad("asset_classes", f"must be a mapping that holds the {DEFAULT_CLASS!r} class")
+    classes = {str(k): _parse_class(str(k), v) for k, v in raw.items()}
+    of_style: dict[str, str] = {}
+    for key, entry in data.get("styles", {}).items():
+        cls = entry.get("asset_class") if isinstance(entry, dict) else None
+        if cls is None:
+            raise _bad(f"styles.{key}.asset_class", f"missing (write {DEFAULT_CLASS} for no particular look)")
+        if cls not in classes:
+            raise _bad(f"styles.{key}.asset_class", f"unknown class {cls!r} (known: {', '.join(sorted(classes))})")
+        if key in classes and cls != key:
+            raise _bad(f"styles.{key}.asset_class", f"a style named like the class {key!r} must use it")
+        of_style[str(key)] = str(cls)
+    return classes, of_style
+
+
+def asset_classes() -> dict[str, StyleClass]:
+    """Every asset style class by name."""
+    return dict(_tables()[0])
+
+
+def class_name(style: str | Sequence[str]) -> str:
+    """The asset class name of a style key, an asset class name, or a list of style keys
+    (the first one known leads); :data:`DEFAULT_CLASS` when none is known."""
+    classes, of_style = _tables()
+    for key in [style] if isinstance(style, str) else style:
+        k = str(key).strip().lower().replace(" ", "_").replace("-", "_")
+        if k in of_style:
+            return of_style[k]
+        if k in classes:
+            return k
+    return DEFAULT_CLASS
+
+
+def style_class(style: str | Sequence[str]) -> StyleClass:
+    """The :class:`StyleClass` of a style (see :func:`class_name`)."""
+    return _tables()[0][class_name(style)]
