@@ -15,6 +15,8 @@ import shapely
 from scipy import ndimage
 from shapely.geometry import LineString, Polygon
 
+from anyhome.tags import is_floor_layer, tags_for
+
 TOLERANCE_M = 0.01
 """Validity tolerance of SCENE_FORMAT.md (1 cm)."""
 DOOR_CLEARANCE_M = 0.8
@@ -24,11 +26,9 @@ NAV_CELL_M = 0.05
 AGENT_RADIUS_M = 0.25
 """Radius the free space is eroded by in the navigability check."""
 NAV_IGNORE_HEIGHT_M = 0.03
-"""Objects lower than this (and rugs) do not block navigation."""
+"""Objects lower than this (and walkable floor layers, tag ``floor_layer``) do not block navigation."""
 WALL_INSET_CELLS = 0.75
 """Room interiors are shrunk by this many cells so a shared wall is at least one cell thick."""
-NAV_IGNORE_CATEGORIES = frozenset({"rug", "carpet", "mat", "yoga_mat", "play_mat"})
-"""Flat floor coverings that an agent walks over."""
 MAX_NAV_CELLS = 4_000_000
 """Most cells the navigation raster may hold (about 30 bytes each at the peak, so the
 check never needs more than ~120 MB): a 100 m x 100 m house at 5 cm. A larger house is
@@ -177,13 +177,22 @@ def nav_cell_size(width_m: float, height_m: float, cell_m: float = NAV_CELL_M,
     return step
 
 
-def blocks_navigation(category: str, height_m: float, support: str) -> bool:
-    """Whether an object's footprint counts as an obstacle for the agent."""
+def blocks_navigation(
+    category: str, height_m: float, support: str, tags: Sequence[str] | None = None
+) -> bool:
+    """Whether an object's footprint counts as an obstacle for the agent.
+
+    A walkable floor layer (tag ``floor_layer``: rugs, mats) never does. ``tags`` are the
+    object's semantic tags; when None they are looked up from ``category`` with
+    :func:`anyhome.tags.tags_for`.
+    """
     if support not in ("floor", "wall"):
         return False  # on top of something: the supporter already blocks
     if height_m < NAV_IGNORE_HEIGHT_M:
         return False
-    return category not in NAV_IGNORE_CATEGORIES
+    if tags is None:
+        tags = tags_for(category, category)
+    return not is_floor_layer(tags)
 
 
 def navigability(

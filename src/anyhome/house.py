@@ -22,6 +22,7 @@ from shapely.geometry import Polygon
 
 from anyhome.errors import HouseFormatError
 from anyhome.sanitize import clean_text, is_safe_id
+from anyhome.tags import Tag, tags_for
 
 FORMAT = "anyhome.house"
 VERSION = 1
@@ -165,6 +166,20 @@ class HouseObject(_Model):
     asset: dict[str, Any] | None = Field(
         default=None, description="how the mesh was made: family and parameters or file"
     )
+    tags: list[Tag] = Field(
+        default_factory=list,
+        description="semantic tags (anyhome.tags.TAGS); derived from name and category when absent",
+    )
+
+    @model_validator(mode="before")
+    @classmethod
+    def _derive_tags(cls, data: Any) -> Any:
+        """Files written before tags existed: derive them from the knowledge base."""
+        if isinstance(data, dict) and data.get("tags") is None:
+            name, category = data.get("name"), data.get("category")
+            if isinstance(name, str) and isinstance(category, str):
+                data = {**data, "tags": list(tags_for(name, category))}
+        return data
 
 
 class Dropped(_Model):

@@ -437,4 +437,4 @@ class NavGrid:
 
 
 def nav_blocks(obj: HouseObject) -> bool:
-    return blocks_navigation(obj.category, obj.size[2], obj.support)
+    return blocks_navigation(obj.category, obj.size[2], obj.support, obj.tags)

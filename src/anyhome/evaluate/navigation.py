@@ -30,7 +30,7 @@ def navigation_obstacles(house: House, footprints: Sequence[Polygon] | None = No
                       for o in house.objects]
     return [
         fp for o, fp in zip(house.objects, footprints)
-        if geometry.blocks_navigation(o.category, o.size[2], o.support)
+        if geometry.blocks_navigation(o.category, o.size[2], o.support, o.tags)
     ]
 
 

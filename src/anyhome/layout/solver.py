@@ -24,8 +24,9 @@ from anyhome.geometry import (
 )
 from anyhome.house import Dropped, Floorplan, HouseObject, Room
 from anyhome.layout import rules as R
-from anyhome.plan.spec import GroupSpec, HouseSpec, ItemSpec, RoomSpec
+from anyhome.plan.spec import WALL_RULES, GroupSpec, HouseSpec, ItemSpec, RoomSpec
 from anyhome.space import NavGrid, Placed, RoomSpace, Wall, nav_blocks, rect_corners
+from anyhome.tags import is_front_of_room, is_supporter
 
 log = logging.getLogger(__name__)
 
@@ -56,20 +57,10 @@ ROW_FRONT_CLEARANCE_M = 1.0
 """Free band kept in front of the wall the rows face."""
 ROW_SIDE_CLEARANCE_M = 0.3
 """Band kept along the other walls of a ``rows`` arrangement."""
-FRONT_WORDS = ("board", "screen", "projector", "lectern", "podium", "teacher", "television", "tv", "stage", "altar", "pulpit", "mihrab")
-"""Items that go on (or against) the wall a rows arrangement faces."""
 FRONT_WALL_BONUS = 2.0
-"""Score added to front items' poses on the wall the rows face."""
-SURFACE_WORDS = (
-    "table", "desk", "nightstand", "night stand", "bedside", "dresser", "shelf", "cabinet",
-    "counter", "sideboard", "console", "chest", "stand", "bench", "vanity", "bureau",
-    "buffet", "credenza", "island", "bookcase", "cupboard", "commode", "drawer", "piano",
-)
-"""Words naming furniture whose top can carry ornaments."""
+"""Score added to front-of-room items' poses (tag ``front_of_room``) on the wall the rows face."""
 SURFACE_TOP_RANGE_M = (0.4, 1.2)
 """Top heights an ornament without a named target may stand on."""
-NOT_SURFACES = ("chair", "stool", "sofa", "couch", "bed", "toilet", "bathtub", "rug", "seat")
-WALL_RULES = frozenset({"place_wall", "place_corner", "place_next_wall", "place_on_wall"})
 
 
 @dataclass
@@ -183,6 +174,7 @@ class RoomLayout:
             position=(float(ch.xy[0]), float(ch.xy[1]), float(ch.z)),
             size=(float(size[0]), float(size[1]), float(size[2])), yaw=R.wrap(ch.yaw),
             support=support, group=group, anchor=anchor, rule=rule, material=item.material,
+            tags=list(item.tags),
         )
         corners = rect_corners(ch.xy[None], size[:2], [obj.yaw])[0]
         mask = self.nav.obstacle_mask(corners) if nav_blocks(obj) else None
@@ -595,12 +587,9 @@ class RoomLayout:
         out = []
         for o in self.space.objects:
             top = o.position[2] + o.size[2]
-            text = f"{o.name} {o.category}".lower()
             if not lo <= top <= hi or o.size[0] * o.size[1] < 0.04:
                 continue
-            if any(w in text for w in NOT_SURFACES) and not any(w in text for w in ("table", "desk", "stand")):
-                continue
-            if any(w in text for w in SURFACE_WORDS):
+            if is_supporter(o.tags):
                 out.append(o)
         return out
 
@@ -780,8 +769,7 @@ class RoomLayout:
 
 def _front_item(item: ItemSpec) -> bool:
     """Whether an item belongs at the front of a room set out in rows (a board, a lectern)."""
-    text = f"{item.name} {item.category}".lower()
-    return any(w in text for w in FRONT_WORDS)
+    return is_front_of_room(item.tags)
 
 
 R_REL = frozenset({"place_beside", "place_around", "place_front", "place_top", "place_on_wall"})

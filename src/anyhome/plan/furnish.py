@@ -17,6 +17,7 @@ from anyhome.plan.knowledge import load
 from anyhome.plan.openvocab import fallback_object
 from anyhome.plan.parse import Mention
 from anyhome.plan.spec import MAX_COUNT
+from anyhome.tags import tags_by_name
 
 SIZE_JITTER = 0.10
 """Relative spread of sampled item widths and depths (heights vary by half of it)."""
@@ -74,6 +75,9 @@ def make_item(entry: dict[str, Any], rng: np.random.Generator, ornament: bool = 
         "params": params,
         "count": max(1, min(MAX_COUNT, _sample(entry.get("count", 1), rng))),
         "material": entry.get("material", ""),
+        # the entry's own tags, else what its name means ("low altar" with use: cabinet is
+        # an altar), else its prototype's; with none of these ItemSpec derives them
+        "tags": list(entry.get("tags") or tags_by_name(name) or proto.get("tags") or []) or None,
     }
 
 

@@ -8,6 +8,7 @@ planner (:mod:`anyhome.plan.offline`) turns the result into a ``HouseSpec``.
 
 from __future__ import annotations
 
+import functools
 import math
 import re
 from dataclasses import dataclass, field
@@ -86,16 +87,15 @@ FORWARD_ARRANGEMENTS: list[tuple[re.Pattern[str], str]] = [
 ]
 """Arrangement phrases that apply to the object named right after them ("two rows of pews")."""
 
-SURFACE_WORDS: dict[str, str] = {
-    "wall": "walls", "walls": "walls", "wallpaper": "walls", "accent": "walls",
-    "accents": "walls", "paneling": "walls", "panelling": "walls", "backsplash": "walls",
-    "floor": "floor", "floors": "floor", "flooring": "floor", "planks": "floor",
-    "floorboards": "floor", "parquet": "floor", "ceiling": "ceiling", "ceilings": "ceiling",
-    "beams": "ceiling", "furniture": "furniture", "furnishings": "furniture",
-    "furnishing": "furniture", "cabinets": "furniture", "cabinetry": "furniture",
-    "decor": "furniture", "details": "furniture", "countertops": "furniture",
-}  # fmt: skip
-"""Words after a material phrase that say which surface it dresses."""
+@functools.lru_cache(maxsize=1)
+def _surface_words() -> dict[str, str]:
+    """Word after a material phrase -> the room surface it dresses (knowledge/surfaces.yaml)."""
+    return {w: surface for surface, words in load("surfaces").items() for w in words}
+
+
+def surface_of_word(word: str) -> str | None:
+    """The room surface (walls, floor, ceiling, furniture) a word names, or None."""
+    return _surface_words().get(word)
 
 _TOKEN = re.compile(r"[^\W_]+(?:'[^\W_]+)*|[.,;:!?()]")
 _BED_BATH = re.compile(
@@ -678,8 +678,9 @@ def _find_materials(text: str, p: Parsed, rooms: list[Mention]) -> None:
         explicit = False
         phrase = " ".join(colour + [material])
         for tok, _, _ in after:
-            if tok in SURFACE_WORDS:
-                surfaces.append(SURFACE_WORDS[tok])
+            surface = surface_of_word(tok)
+            if surface is not None:
+                surfaces.append(surface)
                 explicit = True
                 phrase += " " + tok
                 break

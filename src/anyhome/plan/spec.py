@@ -54,6 +54,7 @@ from typing import Annotated, Any, Literal
 from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, field_validator, model_validator
 
 from anyhome.sanitize import clean_text, is_safe_id
+from anyhome.tags import Tag, tags_for
 
 Rule = Literal[
     "place_corner",
@@ -71,6 +72,8 @@ RULES: tuple[str, ...] = Rule.__args__  # type: ignore[attr-defined]
 RELATIVE_RULES: frozenset[str] = frozenset(
     {"place_beside", "place_around", "place_front", "place_top", "place_on_wall"}
 )
+WALL_RULES: frozenset[str] = frozenset({"place_wall", "place_corner", "place_next_wall", "place_on_wall"})
+"""Rules that put an object against (or on) a wall."""
 Arrangement = Literal["free", "rows", "along_walls", "center", "symmetric"]
 
 MAX_COUNT = 120
@@ -142,6 +145,20 @@ class ItemSpec(_Model):
     params: Annotated[dict[str, Any], BeforeValidator(_clean_deep)] = Field(default_factory=dict)
     count: int = Field(default=1, ge=1, le=MAX_COUNT)
     material: CleanStr = ""
+    tags: list[Tag] = Field(
+        default_factory=list,
+        description="semantic tags (anyhome.tags); derived from name and category when not given",
+    )
+
+    @model_validator(mode="before")
+    @classmethod
+    def _derive_tags(cls, data: Any) -> Any:
+        """Items built without tags (the LLM planner's) get them from the knowledge base."""
+        if isinstance(data, dict) and data.get("tags") is None:
+            name, category = data.get("name"), data.get("category")
+            if isinstance(name, str) and isinstance(category, str):
+                data = {**data, "tags": list(tags_for(name, category))}
+        return data
 
     @field_validator("size_m")
     @classmethod

@@ -26,6 +26,7 @@ from anyhome.geometry import (
     opening_zone,
 )
 from anyhome.house import Floorplan, HouseObject
+from anyhome.plan.spec import WALL_RULES
 from anyhome.space import (
     WALL_OPENING_MARGIN_M,
     Placed,
@@ -34,6 +35,7 @@ from anyhome.space import (
     rect_corners,
     room_polygon,
 )
+from anyhome.tags import is_seat, is_table
 
 log = logging.getLogger(__name__)
 
@@ -45,9 +47,6 @@ MOVE_RADII_M = (0.02, 0.05, 0.1, 0.15, 0.2, 0.3)
 """Distances tried when moving an object out of a penetration."""
 YAW_SNAP_RAD = 0.2
 """Floor and on-top objects turned less than this off a right angle are squared up."""
-SEAT_WORDS = ("chair", "stool", "seat")
-TABLE_WORDS = ("table", "desk", "counter", "bar", "workstation", "bench")
-WALL_RULES = ("place_wall", "place_corner", "place_next_wall")
 FACE_TABLE_RULES = ("place_around", "place_center", "place_next")
 """Seats placed by these rules are turned to face the table they sit at; the others
 (``place_front`` with its explicit facing, seats against walls, beside things) keep
@@ -76,18 +75,14 @@ def refine_objects(floorplan: Floorplan, objects: list[HouseObject], rng: np.ran
     return [o for o in ref.objs if o is not None]
 
 
-def _text(o: HouseObject) -> str:
-    return f"{o.name} {o.category}".lower()
-
-
 def _is_seat(o: HouseObject) -> bool:
-    t = _text(o)
-    return any(w in t for w in SEAT_WORDS) and not any(w in t for w in ("table", "desk"))
+    """A seat (tag ``seat``) that is not also a table."""
+    return is_seat(o.tags)
 
 
 def _is_table(o: HouseObject) -> bool:
-    t = _text(o)
-    return any(w in t for w in TABLE_WORDS) and not _is_seat(o)
+    """A table or work surface (tags ``table``, ``work_surface``) that is not a seat."""
+    return is_table(o.tags)
 
 
 def _wrap(yaw: float) -> float:
@@ -367,7 +362,7 @@ class _Refiner:
         rooms = [(r.id, r.polygon) for r in self.fp.rooms]
         doors = [(d.id, d.rooms, d.segment) for d in self.fp.doors]
         obst = [Polygon(footprint_corners(o.position, o.size, o.yaw)) for o in objs
-                if blocks_navigation(o.category, o.size[2], o.support)]
+                if blocks_navigation(o.category, o.size[2], o.support, o.tags)]
         return navigability(rooms, doors, obst).ok
 
     def guard_navigation(self) -> None:
