@@ -42,6 +42,7 @@ other object. That is the explicit, safe fallback.
 from __future__ import annotations
 
 import functools
+from collections.abc import Collection
 from typing import Literal, get_args
 
 Tag = Literal[
@@ -61,23 +62,23 @@ TABLE_TAGS: frozenset[str] = frozenset({"table", "work_surface"})
 """What a seat nearby is turned to face."""
 
 
-def is_seat(tags: tuple[str, ...] | list[str]) -> bool:
+def is_seat(tags: Collection[str]) -> bool:
     return "seat" in tags and not TABLE_TAGS.intersection(tags)
 
 
-def is_table(tags: tuple[str, ...] | list[str]) -> bool:
+def is_table(tags: Collection[str]) -> bool:
     return bool(TABLE_TAGS.intersection(tags)) and "seat" not in tags
 
 
-def is_supporter(tags: tuple[str, ...] | list[str]) -> bool:
+def is_supporter(tags: Collection[str]) -> bool:
     return bool(SUPPORT_TAGS.intersection(tags)) and not NO_SUPPORT_TAGS.intersection(tags)
 
 
-def is_front_of_room(tags: tuple[str, ...] | list[str]) -> bool:
+def is_front_of_room(tags: Collection[str]) -> bool:
     return "front_of_room" in tags
 
 
-def is_floor_layer(tags: tuple[str, ...] | list[str]) -> bool:
+def is_floor_layer(tags: Collection[str]) -> bool:
     return "floor_layer" in tags
 
 
