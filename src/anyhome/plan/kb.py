@@ -15,11 +15,19 @@ contract those mappings satisfy, and what later stages take as ``KnowledgeBase``
 
 from __future__ import annotations
 
+import difflib
 from collections.abc import Callable, Mapping
-from pathlib import Path
 from typing import Annotated, Any, Literal
 
-from pydantic import BaseModel, ConfigDict, Field, RootModel, ValidationError, field_validator, model_validator
+from pydantic import (
+    BaseModel,
+    ConfigDict,
+    Field,
+    RootModel,
+    ValidationError,
+    field_validator,
+    model_validator,
+)
 
 from anyhome.errors import KnowledgeError
 from anyhome.plan.spec import RULES, Arrangement, Rule
@@ -374,8 +382,10 @@ class KnowledgeBase:
                 raise self._bad(name, loc, msg)
 
         def known(v: str, pool: Any, what: str) -> str:
-            near = sorted(pool)[:8]
-            return f"unknown {what} {v!r} (known include: {', '.join(near)}{', ...' if len(pool) > 8 else ''})"
+            near = difflib.get_close_matches(v, [str(p) for p in pool], n=3, cutoff=0.6)
+            if near:
+                return f"unknown {what} {v!r} (did you mean {' or '.join(repr(x) for x in near)}?)"
+            return f"unknown {what} {v!r} ({len(pool)} known, e.g. {', '.join(sorted(map(str, pool))[:5])})"
 
         # programs.yaml
         for i, b in enumerate(self.programs.buildings):
