@@ -328,14 +328,16 @@ def validate_file(name: str, data: Any, source: Source) -> BaseModel:
         return FILE_MODELS[name].model_validate(data)
     except ValidationError as e:
         err = e.errors()[0]
-        loc = tuple(x for x in err["loc"] if not _is_tag(x))
+        n = 1 if name == "objects" else 2
+        loc = tuple(err["loc"][:n]) + tuple(x for x in err["loc"][n:] if not _is_tag(x))
         raise _fail(source, name, loc, _message(err)) from None
 
 
 def _is_tag(part: Any) -> bool:
     """True for the parts pydantic adds to a location inside a union ("int",
     "tuple[int, int]", "function-after[...]"): they are no field of the file."""
-    return isinstance(part, str) and (part in {"int", "float", "str", "bool", "list", "dict", "none"} or "[" in part)
+    return isinstance(part, str) and (part in {"int", "float", "str", "bool", "list", "dict", "none"} or "[" in part
+                                      or part.startswith(("constrained-", "function-")))
 
 
 def _message(err: Mapping[str, Any]) -> str:
