@@ -379,9 +379,9 @@ class KnowledgeBase:
         furnish_names |= {r.furnish for p in programs.values() for r in p.rooms if r.furnish}
         room_refs = types | set(sets) | furnish_names | set(programs)
 
-        def need(ok: bool, name: str, loc: tuple[Any, ...], msg: str) -> None:
-            if not ok:
-                raise self._bad(name, loc, msg)
+        def need(ok: bool, name: str, loc: tuple[Any, ...], msg: str | Callable[[], str]) -> None:
+            if not ok:  # the message (close matches: slow) only for an entry that fails
+                raise self._bad(name, loc, msg() if callable(msg) else msg)
 
         def known(v: str, pool: Any, what: str) -> str:
             near = difflib.get_close_matches(v, [str(p) for p in pool], n=3, cutoff=0.6)
@@ -391,62 +391,63 @@ class KnowledgeBase:
 
         # programs.yaml
         for i, b in enumerate(self.programs.buildings):
-            need(b.program in programs, "programs", ("buildings", i, "program"), known(b.program, programs, "program"))
+            need(b.program in programs, "programs", ("buildings", i, "program"), lambda: known(b.program, programs, "program"))
             for s in b.styles:
-                need(s in styles, "programs", ("buildings", i, "styles"), known(s, styles, "style"))
+                need(s in styles, "programs", ("buildings", i, "styles"), lambda: known(s, styles, "style"))
         for key, p in programs.items():
             for t in p.entrance:
-                need(t in types, "programs", ("programs", key, "entrance"), known(t, types, "room type"))
+                need(t in types, "programs", ("programs", key, "entrance"), lambda: known(t, types, "room type"))
             for j, r in enumerate(p.rooms):
-                need(r.type in types, "programs", ("programs", key, "rooms", j, "type"), known(r.type, types, "room type"))
+                need(r.type in types, "programs", ("programs", key, "rooms", j, "type"), lambda: known(r.type, types, "room type"))
                 if r.furnish is not None:
-                    need(r.furnish in sets, "programs", ("programs", key, "rooms", j, "furnish"), known(r.furnish, sets, "furnishing set"))
+                    need(r.furnish in sets, "programs", ("programs", key, "rooms", j, "furnish"), lambda: known(str(r.furnish), sets, "furnishing set"))
             for room, gs in p.extra.items():
                 for g in gs:
-                    need(g in groups, "programs", ("programs", key, "extra", room), known(g, groups, "group"))
+                    need(g in groups, "programs", ("programs", key, "extra", room), lambda: known(g, groups, "group"))
         # rooms.yaml
         for t, rt in self.rooms.types.items():
-            need(t in types, "rooms", ("types", t), known(t, types, "room type (anyhome.house.ROOM_TYPES)"))
+            need(t in types, "rooms", ("types", t), lambda: known(t, types, "room type (anyhome.house.ROOM_TYPES)"))
             for a in rt.attach:
-                need(a in types, "rooms", ("types", t, "attach"), known(a, types, "room type"))
+                need(a in types, "rooms", ("types", t, "attach"), lambda: known(a, types, "room type"))
         for n, rn in self.rooms.names.items():
-            need(rn.type in types, "rooms", ("names", n, "type"), known(rn.type, types, "room type"))
+            need(rn.type in types, "rooms", ("names", n, "type"), lambda: known(rn.type, types, "room type"))
             if rn.furnish is not None:
-                need(rn.furnish in sets, "rooms", ("names", n, "furnish"), known(rn.furnish, sets, "furnishing set"))
+                need(rn.furnish in sets, "rooms", ("names", n, "furnish"), lambda: known(str(rn.furnish), sets, "furnishing set"))
         # objects.yaml
         for k, o in objects.items():
             if o.group is not None:
-                need(o.group in groups, "objects", (k, "group"), known(o.group, groups, "group"))
-            for r in o.rooms:
-                need(r in room_refs, "objects", (k, "rooms"), known(r, room_refs, "room type or furnishing"))
+                need(o.group in groups, "objects", (k, "group"), lambda: known(str(o.group), groups, "group"))
+            for ref in o.rooms:
+                need(ref in room_refs, "objects", (k, "rooms"), lambda: known(ref, room_refs, "room type or furnishing"))
         # furniture.yaml
         for g, grp in groups.items():
             for j, it in enumerate([grp.anchor, *grp.members]):
                 loc = ("groups", g, "anchor") if j == 0 else ("groups", g, "members", j - 1)
                 need(it.use is not None, "furniture", loc, "missing use (the object prototype)")
-                need(it.use in objects, "furniture", (*loc, "use"), known(str(it.use), objects, "object"))
+                need(it.use in objects, "furniture", (*loc, "use"), lambda: known(str(it.use), objects, "object"))
         need("other" in sets, "furniture", ("sets",), "needs a set named 'other' (rooms with no set of their own)")
         for s, fs in sets.items():
             for j, e in enumerate(fs.groups):
-                for g in e.one_of or [e.group]:
-                    need(g in groups, "furniture", ("sets", s, "groups", j), known(str(g), groups, "group"))
-                for m, it in enumerate([e.anchor, *(e.members or [])]):
-                    if it is not None and it.use is not None:
-                        need(it.use in objects, "furniture", ("sets", s, "groups", j, "use"), known(it.use, objects, "object"))
+                for g in e.one_of or [str(e.group)]:
+                    need(g in groups, "furniture", ("sets", s, "groups", j), lambda: known(str(g), groups, "group"))
+                for part in [e.anchor, *(e.members or [])]:
+                    if part is not None and part.use is not None:
+                        use = part.use
+                        need(use in objects, "furniture", ("sets", s, "groups", j, "use"), lambda: known(use, objects, "object"))
             for j, it in enumerate(fs.ornaments):
                 need(it.use is not None, "furniture", ("sets", s, "ornaments", j), "missing use (the object prototype)")
-                need(it.use in objects, "furniture", ("sets", s, "ornaments", j, "use"), known(str(it.use), objects, "object"))
+                need(it.use in objects, "furniture", ("sets", s, "ornaments", j, "use"), lambda: known(str(it.use), objects, "object"))
         # styles.yaml
         classes = self.styles.asset_classes
         need("plain" in classes, "styles", ("asset_classes",), "needs the 'plain' class (no particular look)")
         for k, st in styles.items():
-            need(st.asset_class in classes, "styles", ("styles", k, "asset_class"), known(st.asset_class, classes, "asset class"))
+            need(st.asset_class in classes, "styles", ("styles", k, "asset_class"), lambda: known(st.asset_class, classes, "asset class"))
             if k in classes:
                 need(st.asset_class == k, "styles", ("styles", k, "asset_class"), f"a style named like the class {k!r} must use it")
         for prog, keys in self.styles.defaults.items():
             for s in keys:
-                need(s in styles, "styles", ("defaults", prog), known(s, styles, "style"))
+                need(s in styles, "styles", ("defaults", prog), lambda: known(s, styles, "style"))
         # concepts.yaml
         for kind, pool, what in (("rooms", sets, "furnishing set"), ("objects", objects, "object"), ("buildings", programs, "program")):
             for k in getattr(self.concepts, kind):
-                need(k in pool, "concepts", (kind, k), known(k, pool, what))
+                need(k in pool, "concepts", (kind, k), lambda: known(k, pool, what))

@@ -244,7 +244,7 @@ def vocabulary() -> Vocabulary:
 
 
 @functools.lru_cache(maxsize=8)
-def _vocabulary(key: tuple[str, ...]) -> Vocabulary:
+def _vocabulary(overlay_key: tuple[str, ...]) -> Vocabulary:
     forms: dict[str, tuple[Entry, bool]] = {}
     for key, proto in load("objects").items():
         for phrase in [key, *proto.get("synonyms", [])]:
