@@ -89,6 +89,10 @@ def cmd_generate(args: argparse.Namespace) -> int:
 
         os.environ[ENV_BACKEND] = args.embedder
         get_embedder()  # fails early, with one line, on an unknown or missing backend
+    from anyhome.plan.knowledge import knowledge_base, use_knowledge
+
+    use_knowledge(args.knowledge)
+    knowledge_base()  # a bad knowledge file (shipped or the user's) is one line, before any work
     planner = _planner(args)
     t0 = time.perf_counter()
     progress = _StageProgress(not args.quiet)
@@ -325,6 +329,11 @@ def build_parser() -> argparse.ArgumentParser:
         "--embedder",
         help="text-embedding backend for unknown words: hybrid (default), static, minilm, lexical "
         "(or set ANYHOME_EMBEDDER)",
+    )
+    g.add_argument(
+        "--knowledge", action="append", metavar="DIR",
+        help="a folder of knowledge files (objects.yaml, rooms.yaml...) that add to or override the "
+        "shipped ones; repeatable, later ones win; after those of ANYHOME_KNOWLEDGE_PATH",
     )
     g.add_argument("--no-glb", action="store_true", help="skip house.glb")
     g.add_argument("--no-svg", action="store_true", help="skip floorplan.svg")

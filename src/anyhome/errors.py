@@ -37,3 +37,9 @@ class LLMError(PlanError):
 
     A server that is down, slow or answers nonsense is *not* an error: the offline planner
     fills the stages it could not plan, with a warning."""
+
+
+class KnowledgeError(AnyHomeError):
+    """A knowledge file (shipped or a user's overlay) is unreadable or holds a bad entry.
+
+    The message is one line: ``FILE: KEY: what is wrong``."""

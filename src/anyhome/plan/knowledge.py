@@ -8,17 +8,21 @@ lookup tables and regular expressions used by :mod:`anyhome.plan.parse`.
 from __future__ import annotations
 
 import functools
+import os
 import re
+import sys
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 import yaml
 
-from anyhome.errors import PlanError
+from anyhome.errors import KnowledgeError
+from anyhome.plan.kb import SECTIONED, KnowledgeBase, Source
 
 KNOWLEDGE_DIR = Path(__file__).with_name("knowledge")
-"""Folder holding programs.yaml, rooms.yaml, objects.yaml, furniture.yaml, styles.yaml."""
+"""Folder holding the shipped programs.yaml, rooms.yaml, objects.yaml, furniture.yaml,
+styles.yaml and concepts.yaml."""
 
 KNOWLEDGE_FILES = ("programs", "rooms", "objects", "furniture", "styles", "concepts")
 
@@ -31,18 +35,165 @@ def normalize(text: str) -> str:
     return re.sub(r"\s+", " ", t).strip()
 
 
-@functools.lru_cache(maxsize=None)
-def load(name: str) -> dict[str, Any]:
-    """Return the parsed content of ``knowledge/<name>.yaml`` (cached)."""
-    path = KNOWLEDGE_DIR / f"{name}.yaml"
+ENV_VAR = "ANYHOME_KNOWLEDGE_PATH"
+"""Environment variable naming the user's knowledge folders (several separated by
+``os.pathsep``; later folders win)."""
+
+_cli_dirs: tuple[str, ...] = ()
+"""Folders given with ``--knowledge DIR`` (after those of :data:`ENV_VAR`: they win)."""
+
+_DEPENDENT_CACHES = (("anyhome.plan.concepts", "_index"), ("anyhome.assets.styles", "_tables"))
+"""Caches elsewhere computed from the knowledge without an argument that says which:
+cleared whenever the overlay changes (the caches here are keyed by it)."""
+
+_last_overlay: tuple[str, ...] | None = None
+
+
+def use_knowledge(dirs: list[str] | tuple[str, ...] | None) -> None:
+    """Add the user's knowledge folders (``--knowledge DIR``) on top of the shipped files
+    and :data:`ENV_VAR`'s; ``None`` or ``[]`` drops them again."""
+    global _cli_dirs
+    _cli_dirs = tuple(str(d) for d in dirs or ())
+
+
+def overlay() -> tuple[str, ...]:
+    """The user's knowledge folders in force, lowest priority first."""
+    env = os.environ.get(ENV_VAR, "")
+    return tuple(p for p in env.split(os.pathsep) if p.strip()) + _cli_dirs
+
+
+def _sync() -> tuple[str, ...]:
+    """The overlay in force; clears the dependent caches when it changed since the last call."""
+    global _last_overlay
+    key = overlay()
+    if key != _last_overlay:
+        if _last_overlay is not None:
+            for module, attr in _DEPENDENT_CACHES:
+                mod = sys.modules.get(module)
+                fn = getattr(mod, attr, None) if mod is not None else None
+                if fn is not None and hasattr(fn, "cache_clear"):
+                    fn.cache_clear()
+        _last_overlay = key
+    return key
+
+
+@functools.lru_cache(maxsize=64)
+def _read(path: Path, user: bool) -> dict[str, Any]:
+    """One YAML file's top-level mapping (an empty user file is an empty mapping)."""
     try:
         with path.open(encoding="utf-8") as f:
             data = yaml.load(f, Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader))
-    except (OSError, yaml.YAMLError) as e:
-        raise PlanError(f"cannot read knowledge file {path}: {e}") from None
+    except yaml.YAMLError as e:
+        mark = getattr(e, "problem_mark", None)
+        where = f"line {mark.line + 1}" if mark is not None else "top level"
+        what = " ".join(str(getattr(e, "problem", None) or e).split())
+        raise KnowledgeError(f"{path}: {where}: invalid YAML: {what}") from None
+    except (OSError, UnicodeDecodeError) as e:
+        raise KnowledgeError(f"{path}: top level: cannot read: {getattr(e, 'strerror', None) or e}") from None
+    if data is None and user:
+        return {}
     if not isinstance(data, dict):
-        raise PlanError(f"knowledge file {path} must hold a mapping")
+        raise KnowledgeError(f"{path}: top level: must be a mapping (key: value lines), got {type(data).__name__}")
     return data
+
+
+def _user_files(folder: str) -> dict[str, Path]:
+    d = Path(folder).expanduser()
+    if not d.is_dir():
+        raise KnowledgeError(f"{d}: top level: knowledge folder not found (from ${ENV_VAR} or --knowledge)")
+    files: dict[str, Path] = {}
+    for p in sorted(d.iterdir()):
+        if p.suffix.lower() in (".yaml", ".yml"):
+            if p.stem not in KNOWLEDGE_FILES or p.suffix != ".yaml":
+                raise KnowledgeError(f"{p}: top level: not a knowledge file (known: "
+                                     f"{', '.join(n + '.yaml' for n in KNOWLEDGE_FILES)})")
+            files[p.stem] = p
+    return files
+
+
+def _merge_entries(base: dict[Any, Any], user: dict[Any, Any], prefix: tuple[Any, ...], path: str,
+                   src: dict[tuple[Any, ...], str]) -> None:
+    """Entries key by key: a new key adds its entry; a known key whose old and new values
+    are both mappings gets the new fields (each field replaced whole); else replaced."""
+    for k, v in user.items():
+        old = base.get(k)
+        if isinstance(old, dict) and isinstance(v, dict):
+            base[k] = {**old, **v}
+            for f in v:
+                src[(*prefix, k, f)] = path
+        else:
+            base[k] = v
+            src[(*prefix, k)] = path
+
+
+def _merge(name: str, base: dict[str, Any], user: dict[str, Any], path: str,
+           src: dict[tuple[Any, ...], str]) -> dict[str, Any]:
+    out = dict(base)
+    if name not in SECTIONED:
+        _merge_entries(out, user, (), path, src)
+        return out
+    for sec, uv in user.items():
+        old = out.get(sec)
+        src[(sec,)] = path
+        if isinstance(old, list) and isinstance(uv, list):
+            if sec == "buildings":  # the user's building words come first: they win
+                shipped = [src.get((sec, i), "") for i in range(len(old))]
+                out[sec] = uv + old
+                for i, p in enumerate([path] * len(uv) + shipped):
+                    src[(sec, i)] = p
+            else:
+                out[sec] = old + [x for x in uv if x not in old]
+        elif isinstance(old, dict) and isinstance(uv, dict):
+            out[sec] = dict(old)
+            _merge_entries(out[sec], uv, (sec,), path, src)
+        else:
+            out[sec] = uv
+    return out
+
+
+@functools.lru_cache(maxsize=8)
+def _raw(key: tuple[str, ...]) -> tuple[dict[str, dict[str, Any]], dict[str, dict[tuple[Any, ...], str]]]:
+    """Every knowledge file merged with the overlay ``key``, and where each entry came from."""
+    data = {name: _read(KNOWLEDGE_DIR / f"{name}.yaml", False) for name in KNOWLEDGE_FILES}
+    sources: dict[str, dict[tuple[Any, ...], str]] = {name: {} for name in KNOWLEDGE_FILES}
+    for folder in key:
+        for name, path in _user_files(folder).items():
+            data[name] = _merge(name, data[name], _read(path, True), str(path), sources[name])
+    return data, sources
+
+
+def _source(sources: dict[str, dict[tuple[Any, ...], str]]) -> Source:
+    def source(name: str, loc: tuple[Any, ...]) -> str:
+        src = sources[name]
+        for n in range(len(loc), 0, -1):
+            if tuple(loc[:n]) in src:
+                return src[tuple(loc[:n])]
+        return str(KNOWLEDGE_DIR / f"{name}.yaml")
+
+    return source
+
+
+@functools.lru_cache(maxsize=8)
+def _knowledge_base(key: tuple[str, ...]) -> KnowledgeBase:
+    data, sources = _raw(key)
+    return KnowledgeBase(data, _source(sources))
+
+
+def knowledge_base() -> KnowledgeBase:
+    """The validated knowledge (shipped files and the user's overlay), built once per
+    overlay; a bad entry raises :class:`KnowledgeError` (``FILE: KEY: what is wrong``)."""
+    return _knowledge_base(_sync())
+
+
+def load(name: str) -> dict[str, Any]:
+    """The content of ``knowledge/<name>.yaml`` merged with the user's overlay (see
+    :func:`overlay`), as plain mappings; every file is validated (once per overlay) before
+    any is handed out."""
+    if name not in KNOWLEDGE_FILES:
+        raise KeyError(name)
+    key = _sync()
+    _knowledge_base(key)
+    return _raw(key)[0][name]
 
 
 def _plural_forms(phrase: str) -> list[str]:
@@ -87,9 +238,13 @@ def _alternation(phrases: list[str]) -> re.Pattern[str]:
     return re.compile(rf"(?<![\w'])(?:{body})(?![\w])")
 
 
-@functools.lru_cache(maxsize=None)
 def vocabulary() -> Vocabulary:
-    """Compile every phrase of the knowledge base into lookup tables (cached)."""
+    """Compile every phrase of the knowledge base into lookup tables (cached per overlay)."""
+    return _vocabulary(_sync())
+
+
+@functools.lru_cache(maxsize=8)
+def _vocabulary(overlay_key: tuple[str, ...]) -> Vocabulary:
     forms: dict[str, tuple[Entry, bool]] = {}
     for key, proto in load("objects").items():
         for phrase in [key, *proto.get("synonyms", [])]:

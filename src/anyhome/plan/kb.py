@@ -1,0 +1,453 @@
+"""Typed models of the knowledge files (``plan/knowledge/*.yaml``) and their checks.
+
+Each file has a pydantic model (``extra="forbid"``: a misspelt field is an error, not a
+silently ignored default); :class:`KnowledgeBase` holds the six validated files and checks
+the references between them (a furniture set naming a group that does not exist, a
+program naming an unknown room type, a style naming an unknown asset class...).
+
+Every problem is reported as a :class:`~anyhome.errors.KnowledgeError` whose message is
+one line, ``FILE: KEY: what is wrong``; ``FILE`` is the file the faulty entry came from
+(a shipped file or a user's overlay file, see :mod:`anyhome.plan.knowledge`).
+
+The planner still reads the raw mappings (``knowledge.load(name)``); the models are the
+contract those mappings satisfy, and what later stages take as ``KnowledgeBase``.
+"""
+
+from __future__ import annotations
+
+import difflib
+from collections.abc import Callable, Mapping
+from typing import Annotated, Any, Literal
+
+from pydantic import (
+    BaseModel,
+    ConfigDict,
+    Field,
+    RootModel,
+    ValidationError,
+    field_validator,
+    model_validator,
+)
+
+from anyhome.errors import KnowledgeError
+from anyhome.plan.spec import RULES, Arrangement, Rule
+
+MIN_SIZE_M = 0.005
+MAX_SIZE_M = 20.0
+
+SizeM = Annotated[float, Field(ge=MIN_SIZE_M, le=MAX_SIZE_M)]
+Size = tuple[SizeM, SizeM, SizeM]
+"""``[width, depth, height]`` in metres, each within 0.005..20 m (as ``ItemSpec.size_m``)."""
+Area = Annotated[float, Field(gt=0, le=1000)]
+Prob = Annotated[float, Field(ge=0, le=1)]
+NonNeg = Annotated[int, Field(ge=0)]
+HexColour = Annotated[str, Field(pattern=r"^#[0-9a-fA-F]{6}$")]
+Word = Annotated[str, Field(min_length=1)]
+Category = Annotated[str, Field(pattern=r"^[a-z0-9_]+$")]
+Surface = Literal["furniture", "floor", "walls", "ceiling"]
+
+
+def _ordered(v: Any) -> Any:
+    if isinstance(v, (list, tuple)) and len(v) == 2 and all(isinstance(x, (int, float)) for x in v) and v[0] > v[1]:
+        raise ValueError(f"a range [lo, hi] needs lo <= hi, got {list(v)}")
+    return v
+
+
+AreaRange = Annotated[tuple[Area, Area], Field(description="[lo, hi] m2")]
+CountRange = tuple[NonNeg, NonNeg]
+Count = NonNeg | CountRange
+"""``n`` or ``[lo, hi]`` (one drawn per seed)."""
+
+
+class _Model(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+
+
+# ------------------------------------------------------------------ programs.yaml
+class Building(_Model):
+    """Words in the text that name a kind of building, its program and implied styles."""
+
+    words: list[Word] = Field(min_length=1)
+    program: str
+    styles: list[str] = Field(default_factory=list)
+
+
+class ProgramRoom(_Model):
+    key: Word
+    type: str
+    name: Word | None = None
+    furnish: str | None = None
+    area: AreaRange | None = None
+    count: Count | None = None
+    optional: Prob | None = None
+
+    _r = field_validator("area", "count")(classmethod(lambda cls, v: _ordered(v)))
+
+
+class Program(_Model):
+    building: Word
+    main: str
+    entrance: list[str] = Field(min_length=1)
+    rooms: list[ProgramRoom] = Field(min_length=1)
+    extra: dict[str, list[str]] = Field(default_factory=dict, description="room key -> extra group names")
+
+    @model_validator(mode="after")
+    def _keys(self) -> Program:
+        keys = [r.key for r in self.rooms]
+        if len(set(keys)) != len(keys):
+            raise ValueError(f"room keys must be unique: {keys}")
+        if self.main not in keys:
+            raise ValueError(f"main {self.main!r} is not the key of one of its rooms ({', '.join(keys)})")
+        for k in self.extra:
+            if k not in keys:
+                raise ValueError(f"extra names room {k!r}, not one of its rooms ({', '.join(keys)})")
+        return self
+
+
+class ProgramsFile(_Model):
+    buildings: list[Building]
+    programs: dict[str, Program] = Field(min_length=1)
+
+
+# ------------------------------------------------------------------ rooms.yaml
+class SurfaceMaterials(_Model):
+    floor: str
+    walls: str
+    ceiling: str
+
+
+class RoomType(_Model):
+    area: AreaRange
+    tier: NonNeg
+    hub: bool = False
+    attach: list[str] = Field(default_factory=list)
+    max: Annotated[int, Field(ge=1)]
+    wet: bool = False
+    materials: SurfaceMaterials
+
+    _r = field_validator("area")(classmethod(lambda cls, v: _ordered(v)))
+
+
+class RoomName(_Model):
+    type: str
+    generic: bool = False
+    name: Word | None = None
+    furnish: str | None = None
+    area: AreaRange | None = None
+
+    _r = field_validator("area")(classmethod(lambda cls, v: _ordered(v)))
+
+
+class RoomsFile(_Model):
+    types: dict[str, RoomType]
+    names: dict[str, RoomName]
+
+
+# ------------------------------------------------------------------ objects.yaml
+class ObjectProto(_Model):
+    """An object prototype: what the planner knows of a kind of object."""
+
+    category: Category = Field(description="asset family (lowercase, underscores)")
+    size: Size = Field(description="[width, depth, height] m of the whole box")
+    rule: Rule
+    params: dict[str, Any] = Field(default_factory=dict)
+    target: str | None = None
+    rooms: list[str] = Field(default_factory=list)
+    synonyms: list[Word] = Field(default_factory=list)
+    plural: CountRange | None = None
+    ornament: bool = False
+    group: str | None = None
+    wall_mount_m: Annotated[float, Field(gt=0, le=10)] | None = None
+    tags: list[Word] = Field(default_factory=list, description="semantic tags (seat, table, ...)")
+
+    _r = field_validator("plural")(classmethod(lambda cls, v: _ordered(v)))
+
+
+class ObjectsFile(RootModel[dict[str, ObjectProto]]):
+    pass
+
+
+# ------------------------------------------------------------------ furniture.yaml
+class GroupItem(_Model):
+    """An anchor, member or ornament: an object prototype (``use``) with overrides."""
+
+    use: str | None = None
+    name: Word | None = None
+    names: list[Word] | None = None
+    category: Category | None = None
+    size: Size | None = None
+    rule: Rule | None = None
+    target: str | None = None
+    params: dict[str, Any] = Field(default_factory=dict)
+    count: Count = 1
+    prob: Prob = 1.0
+
+    _r = field_validator("count")(classmethod(lambda cls, v: _ordered(v)))
+
+
+class Group(_Model):
+    anchor: GroupItem
+    members: list[GroupItem] = Field(default_factory=list)
+    priority: int = 0
+    arrangement: Arrangement = "free"
+    repeat: Annotated[int, Field(ge=1)] | tuple[Annotated[int, Field(ge=1)], Annotated[int, Field(ge=1)]] = 1
+    per_m2: Annotated[float, Field(gt=0)] | None = None
+
+    _r = field_validator("repeat")(classmethod(lambda cls, v: _ordered(v)))
+
+
+class SetEntry(_Model):
+    """A group of a furnishing set: a template (``group``) or one of several
+    (``one_of``), with overrides."""
+
+    group: str | None = None
+    one_of: list[str] | None = None
+    prob: Prob = 1.0
+    anchor: GroupItem | None = None
+    members: list[GroupItem] | None = None
+    priority: int | None = None
+    arrangement: Arrangement | None = None
+    repeat: Annotated[int, Field(ge=1)] | tuple[Annotated[int, Field(ge=1)], Annotated[int, Field(ge=1)]] | None = None
+    per_m2: Annotated[float, Field(gt=0)] | None = None
+
+    _r = field_validator("repeat")(classmethod(lambda cls, v: _ordered(v)))
+
+    @model_validator(mode="after")
+    def _one(self) -> SetEntry:
+        if (self.group is None) == (self.one_of is None):
+            raise ValueError("give exactly one of group or one_of")
+        if self.one_of is not None and not self.one_of:
+            raise ValueError("one_of needs at least one group")
+        return self
+
+
+class FurnitureSet(_Model):
+    groups: list[SetEntry] = Field(default_factory=list)
+    ornaments: list[GroupItem] = Field(default_factory=list)
+
+
+class FurnitureFile(_Model):
+    groups: dict[str, Group]
+    sets: dict[str, FurnitureSet]
+
+
+# ------------------------------------------------------------------ styles.yaml
+class Style(_Model):
+    words: list[Word] = Field(min_length=1)
+    describe: Word
+    palette: list[Word] = Field(min_length=1)
+    floor: Word
+    walls: Word
+    ceiling: Word
+    furniture: Word
+    asset_class: str
+
+
+class AssetClass(_Model):
+    traits: list[Literal["antique", "modern", "industrial", "rustic", "eastern"]]
+    legs: list[Literal["straight", "tapered", "turned", "metal"]] = Field(min_length=1)
+    woods: list[HexColour] = Field(min_length=1)
+    fabrics: list[HexColour] = Field(min_length=1)
+
+
+class StylesFile(_Model):
+    styles: dict[str, Style] = Field(min_length=1)
+    asset_classes: dict[str, AssetClass]
+    defaults: dict[str, list[str]] = Field(description="program -> style keys drawn when the text names none")
+    colours: list[Word]
+    materials: dict[str, list[Surface]] = Field(description="material word -> surfaces it goes to")
+    category_materials: dict[str, str]
+
+    @field_validator("category_materials")
+    @classmethod
+    def _patterns(cls, v: dict[str, str]) -> dict[str, str]:
+        for k, p in v.items():
+            try:
+                p.format(colour="", furniture="")
+            except (KeyError, IndexError, ValueError) as e:
+                raise ValueError(f"{k}: pattern {p!r} may use only {{colour}} and {{furniture}} ({e})") from None
+        return v
+
+
+# ------------------------------------------------------------------ concepts.yaml
+class FallbackObject(_Model):
+    size: Size
+    rule: Rule
+
+
+class ConceptsFile(_Model):
+    rooms: dict[str, list[Word]] = Field(default_factory=dict)
+    objects: dict[str, list[Word]] = Field(default_factory=dict)
+    buildings: dict[str, list[Word]] = Field(default_factory=dict)
+    non_objects: list[Word] = Field(default_factory=list)
+    fallback_object: FallbackObject | None = None
+
+
+FILE_MODELS: dict[str, type[BaseModel]] = {
+    "programs": ProgramsFile,
+    "rooms": RoomsFile,
+    "objects": ObjectsFile,
+    "furniture": FurnitureFile,
+    "styles": StylesFile,
+    "concepts": ConceptsFile,
+}
+"""The model of each knowledge file, by file name (without ``.yaml``)."""
+
+SECTIONED = frozenset(FILE_MODELS) - {"objects"}
+"""Files whose top level holds sections (``types:``, ``names:``...); objects.yaml's top
+level holds the entries themselves."""
+
+
+Source = Callable[[str, tuple[Any, ...]], str]
+"""``(file name, location) -> path`` of the file an entry came from."""
+
+
+def _where(name: str, loc: tuple[Any, ...]) -> tuple[tuple[Any, ...], tuple[Any, ...]]:
+    """Split a location into the entry's key and the path inside the entry."""
+    n = 1 if name == "objects" else 2
+    return tuple(loc[:n]), tuple(loc[n:])
+
+
+def _dotted(parts: tuple[Any, ...]) -> str:
+    out = ""
+    for p in parts:
+        out += f"[{p}]" if isinstance(p, int) else (f".{p}" if out else str(p))
+    return out
+
+
+def _fail(source: Source, name: str, loc: tuple[Any, ...], msg: str) -> KnowledgeError:
+    key, rest = _where(name, loc)
+    what = f"{_dotted(rest)}: {msg}" if rest else msg
+    return KnowledgeError(f"{source(name, loc)}: {_dotted(key) or 'top level'}: {what}")
+
+
+def validate_file(name: str, data: Any, source: Source) -> BaseModel:
+    """The model of one knowledge file's (merged) content, or a :class:`KnowledgeError`
+    naming the first bad entry."""
+    try:
+        return FILE_MODELS[name].model_validate(data)
+    except ValidationError as e:
+        err = e.errors()[0]
+        n = 1 if name == "objects" else 2
+        loc = tuple(err["loc"][:n]) + tuple(x for x in err["loc"][n:] if not _is_tag(x))
+        raise _fail(source, name, loc, _message(err)) from None
+
+
+def _is_tag(part: Any) -> bool:
+    """True for the parts pydantic adds to a location inside a union ("int",
+    "tuple[int, int]", "function-after[...]"): they are no field of the file."""
+    return isinstance(part, str) and (part in {"int", "float", "str", "bool", "list", "dict", "none"} or "[" in part
+                                      or part.startswith(("constrained-", "function-")))
+
+
+def _message(err: Mapping[str, Any]) -> str:
+    msg = str(err["msg"]).removeprefix("Value error, ")
+    if err["type"] == "extra_forbidden":
+        return "unknown field (misspelt?)"
+    if err["type"] == "literal_error" and "rule" in [str(x) for x in err["loc"]][-1:]:
+        return f"unknown rule {err.get('input')!r} (known: {', '.join(RULES)})"
+    if err["type"] == "missing":
+        return "missing (required)"
+    return msg
+
+
+# ------------------------------------------------------------------ the whole base
+class KnowledgeBase:
+    """The six knowledge files, validated, with every reference between them checked."""
+
+    def __init__(self, raw: Mapping[str, Any], source: Source) -> None:
+        self.source = source
+        self.programs: ProgramsFile = validate_file("programs", raw["programs"], source)  # type: ignore[assignment]
+        self.rooms: RoomsFile = validate_file("rooms", raw["rooms"], source)  # type: ignore[assignment]
+        objects: ObjectsFile = validate_file("objects", raw["objects"], source)  # type: ignore[assignment]
+        self.objects: dict[str, ObjectProto] = objects.root
+        self.furniture: FurnitureFile = validate_file("furniture", raw["furniture"], source)  # type: ignore[assignment]
+        self.styles: StylesFile = validate_file("styles", raw["styles"], source)  # type: ignore[assignment]
+        self.concepts: ConceptsFile = validate_file("concepts", raw["concepts"], source)  # type: ignore[assignment]
+        self._check_references()
+
+    def _bad(self, name: str, loc: tuple[Any, ...], msg: str) -> KnowledgeError:
+        return _fail(self.source, name, loc, msg)
+
+    def _check_references(self) -> None:  # noqa: C901 - one check per reference, in file order
+        from anyhome.house import ROOM_TYPES
+
+        types = set(ROOM_TYPES)
+        groups, sets = self.furniture.groups, self.furniture.sets
+        programs, styles, objects = self.programs.programs, self.styles.styles, self.objects
+        furnish_names = {n.furnish for n in self.rooms.names.values() if n.furnish}
+        furnish_names |= {r.furnish for p in programs.values() for r in p.rooms if r.furnish}
+        room_refs = types | set(sets) | furnish_names | set(programs)
+
+        def need(ok: bool, name: str, loc: tuple[Any, ...], msg: str | Callable[[], str]) -> None:
+            if not ok:  # the message (close matches: slow) only for an entry that fails
+                raise self._bad(name, loc, msg() if callable(msg) else msg)
+
+        def known(v: str, pool: Any, what: str) -> str:
+            near = difflib.get_close_matches(v, [str(p) for p in pool], n=3, cutoff=0.6)
+            if near:
+                return f"unknown {what} {v!r} (did you mean {' or '.join(repr(x) for x in near)}?)"
+            return f"unknown {what} {v!r} ({len(pool)} known, e.g. {', '.join(sorted(map(str, pool))[:5])})"
+
+        # programs.yaml
+        for i, b in enumerate(self.programs.buildings):
+            need(b.program in programs, "programs", ("buildings", i, "program"), lambda: known(b.program, programs, "program"))
+            for s in b.styles:
+                need(s in styles, "programs", ("buildings", i, "styles"), lambda: known(s, styles, "style"))
+        for key, p in programs.items():
+            for t in p.entrance:
+                need(t in types, "programs", ("programs", key, "entrance"), lambda: known(t, types, "room type"))
+            for j, r in enumerate(p.rooms):
+                need(r.type in types, "programs", ("programs", key, "rooms", j, "type"), lambda: known(r.type, types, "room type"))
+                if r.furnish is not None:
+                    need(r.furnish in sets, "programs", ("programs", key, "rooms", j, "furnish"), lambda: known(str(r.furnish), sets, "furnishing set"))
+            for room, gs in p.extra.items():
+                for g in gs:
+                    need(g in groups, "programs", ("programs", key, "extra", room), lambda: known(g, groups, "group"))
+        # rooms.yaml
+        for t, rt in self.rooms.types.items():
+            need(t in types, "rooms", ("types", t), lambda: known(t, types, "room type (anyhome.house.ROOM_TYPES)"))
+            for a in rt.attach:
+                need(a in types, "rooms", ("types", t, "attach"), lambda: known(a, types, "room type"))
+        for n, rn in self.rooms.names.items():
+            need(rn.type in types, "rooms", ("names", n, "type"), lambda: known(rn.type, types, "room type"))
+            if rn.furnish is not None:
+                need(rn.furnish in sets, "rooms", ("names", n, "furnish"), lambda: known(str(rn.furnish), sets, "furnishing set"))
+        # objects.yaml
+        for k, o in objects.items():
+            if o.group is not None:
+                need(o.group in groups, "objects", (k, "group"), lambda: known(str(o.group), groups, "group"))
+            for ref in o.rooms:
+                need(ref in room_refs, "objects", (k, "rooms"), lambda: known(ref, room_refs, "room type or furnishing"))
+        # furniture.yaml
+        for g, grp in groups.items():
+            for j, it in enumerate([grp.anchor, *grp.members]):
+                loc = ("groups", g, "anchor") if j == 0 else ("groups", g, "members", j - 1)
+                need(it.use is not None, "furniture", loc, "missing use (the object prototype)")
+                need(it.use in objects, "furniture", (*loc, "use"), lambda: known(str(it.use), objects, "object"))
+        need("other" in sets, "furniture", ("sets",), "needs a set named 'other' (rooms with no set of their own)")
+        for s, fs in sets.items():
+            for j, e in enumerate(fs.groups):
+                for g in e.one_of or [str(e.group)]:
+                    need(g in groups, "furniture", ("sets", s, "groups", j), lambda: known(str(g), groups, "group"))
+                for part in [e.anchor, *(e.members or [])]:
+                    if part is not None and part.use is not None:
+                        use = part.use
+                        need(use in objects, "furniture", ("sets", s, "groups", j, "use"), lambda: known(use, objects, "object"))
+            for j, it in enumerate(fs.ornaments):
+                need(it.use is not None, "furniture", ("sets", s, "ornaments", j), "missing use (the object prototype)")
+                need(it.use in objects, "furniture", ("sets", s, "ornaments", j, "use"), lambda: known(str(it.use), objects, "object"))
+        # styles.yaml
+        classes = self.styles.asset_classes
+        need("plain" in classes, "styles", ("asset_classes",), "needs the 'plain' class (no particular look)")
+        for k, st in styles.items():
+            need(st.asset_class in classes, "styles", ("styles", k, "asset_class"), lambda: known(st.asset_class, classes, "asset class"))
+            if k in classes:
+                need(st.asset_class == k, "styles", ("styles", k, "asset_class"), f"a style named like the class {k!r} must use it")
+        for prog, keys in self.styles.defaults.items():
+            for s in keys:
+                need(s in styles, "styles", ("defaults", prog), lambda: known(s, styles, "style"))
+        # concepts.yaml
+        for kind, pool, what in (("rooms", sets, "furnishing set"), ("objects", objects, "object"), ("buildings", programs, "program")):
+            for k in getattr(self.concepts, kind):
+                need(k in pool, "concepts", (kind, k), lambda: known(k, pool, what))
