@@ -118,3 +118,33 @@ def test_object_size_and_rule(size, rule):
 def test_shipped_files_live_where_load_reads_them():
     for name in KNOWLEDGE_FILES:
         assert (KNOWLEDGE_DIR / f"{name}.yaml").is_file()
+
+
+def test_object_tags_are_from_the_closed_set(tmp_path, monkeypatch):
+    """A user object with a tag outside anyhome.tags.TAGS is one KnowledgeError naming it."""
+    import pytest as _pytest
+
+    from anyhome.errors import KnowledgeError
+    from anyhome.plan.knowledge import knowledge_base, use_knowledge
+
+    (tmp_path / "objects.yaml").write_text(
+        "hammock:\n  category: hammock\n  size: [1, 3, 1]\n  rule: place_center\n  tags: [seat, comfy]\n")
+    try:
+        with _pytest.raises(KnowledgeError, match=r"objects.yaml: hammock"):
+            use_knowledge([tmp_path])
+            knowledge_base()
+    finally:
+        use_knowledge([])
+
+
+def test_surfaces_file_is_checked(tmp_path):
+    from anyhome.errors import KnowledgeError
+    from anyhome.plan.knowledge import knowledge_base, use_knowledge
+
+    (tmp_path / "surfaces.yaml").write_text("roof: [roof, tiles]\n")
+    try:
+        with pytest.raises(KnowledgeError, match=r"surfaces.yaml: roof"):
+            use_knowledge([tmp_path])
+            knowledge_base()
+    finally:
+        use_knowledge([])

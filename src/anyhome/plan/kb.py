@@ -31,6 +31,7 @@ from pydantic import (
 
 from anyhome.errors import KnowledgeError
 from anyhome.plan.spec import RULES, Arrangement, Rule
+from anyhome.tags import Tag
 
 MIN_SIZE_M = 0.005
 MAX_SIZE_M = 20.0
@@ -158,7 +159,7 @@ class ObjectProto(_Model):
     ornament: bool = False
     group: str | None = None
     wall_mount_m: Annotated[float, Field(gt=0, le=10)] | None = None
-    tags: list[Word] = Field(default_factory=list, description="semantic tags (seat, table, ...)")
+    tags: list[Tag] = Field(default_factory=list, description="semantic tags (anyhome.tags.TAGS)")
 
     _r = field_validator("plural")(classmethod(lambda cls, v: _ordered(v)))
 
@@ -283,6 +284,10 @@ class ConceptsFile(_Model):
     fallback_object: FallbackObject | None = None
 
 
+class SurfacesFile(RootModel[dict[Surface, list[Word]]]):
+    """surfaces.yaml: the words naming each room surface a material phrase can dress."""
+
+
 FILE_MODELS: dict[str, type[BaseModel]] = {
     "programs": ProgramsFile,
     "rooms": RoomsFile,
@@ -290,10 +295,11 @@ FILE_MODELS: dict[str, type[BaseModel]] = {
     "furniture": FurnitureFile,
     "styles": StylesFile,
     "concepts": ConceptsFile,
+    "surfaces": SurfacesFile,
 }
 """The model of each knowledge file, by file name (without ``.yaml``)."""
 
-SECTIONED = frozenset(FILE_MODELS) - {"objects"}
+SECTIONED = frozenset(FILE_MODELS) - {"objects", "surfaces"}
 """Files whose top level holds sections (``types:``, ``names:``...); objects.yaml's top
 level holds the entries themselves."""
 
@@ -304,7 +310,7 @@ Source = Callable[[str, tuple[Any, ...]], str]
 
 def _where(name: str, loc: tuple[Any, ...]) -> tuple[tuple[Any, ...], tuple[Any, ...]]:
     """Split a location into the entry's key and the path inside the entry."""
-    n = 1 if name == "objects" else 2
+    n = 1 if name not in SECTIONED else 2
     return tuple(loc[:n]), tuple(loc[n:])
 
 
@@ -328,7 +334,7 @@ def validate_file(name: str, data: Any, source: Source) -> BaseModel:
         return FILE_MODELS[name].model_validate(data)
     except ValidationError as e:
         err = e.errors()[0]
-        n = 1 if name == "objects" else 2
+        n = 1 if name not in SECTIONED else 2
         loc = tuple(err["loc"][:n]) + tuple(x for x in err["loc"][n:] if not _is_tag(x))
         raise _fail(source, name, loc, _message(err)) from None
 
@@ -353,7 +359,7 @@ def _message(err: Mapping[str, Any]) -> str:
 
 # ------------------------------------------------------------------ the whole base
 class KnowledgeBase:
-    """The six knowledge files, validated, with every reference between them checked."""
+    """The knowledge files, validated, with every reference between them checked."""
 
     def __init__(self, raw: Mapping[str, Any], source: Source) -> None:
         self.source = source
@@ -364,6 +370,7 @@ class KnowledgeBase:
         self.furniture: FurnitureFile = validate_file("furniture", raw["furniture"], source)  # type: ignore[assignment]
         self.styles: StylesFile = validate_file("styles", raw["styles"], source)  # type: ignore[assignment]
         self.concepts: ConceptsFile = validate_file("concepts", raw["concepts"], source)  # type: ignore[assignment]
+        self.surfaces: SurfacesFile = validate_file("surfaces", raw["surfaces"], source)  # type: ignore[assignment]
         self._check_references()
 
     def _bad(self, name: str, loc: tuple[Any, ...], msg: str) -> KnowledgeError:
