@@ -16,12 +16,14 @@ from anyhome.assets.procedural._parts import (
     leg_style,
     lighter,
     make_params,
+    slot_roles,
     style_words,
+    tint,
     wood_tones,
 )
 from anyhome.assets.registry import register
 
-BEDDING = ["#e9e4da", "#d7dde6", "#c8b8a6", "#9fb2a0", "#b9a2b8", "#d9c3a0", "#8a9bb0"]
+BEDDING = tint(["#e9e4da", "#d7dde6", "#c8b8a6", "#9fb2a0", "#b9a2b8", "#d9c3a0", "#8a9bb0"], "fabric")
 
 
 def sample_bed(rng: np.random.Generator, size: Size, style: str) -> Params:
@@ -126,6 +128,9 @@ def build_crib(p: Params) -> trimesh.Trimesh:
     return b.mesh(p.size)
 
 
+slot_roles("bed", "wood", "fabric", "fabric")
 register("bed", sample_bed, build_bed)
+slot_roles("bunk_bed", "wood", "fabric", "fabric")
 register("bunk_bed", sample_bunk_bed, build_bunk_bed)
+slot_roles("crib", "wood", "fabric", "fabric")
 register("crib", sample_crib, build_crib)
