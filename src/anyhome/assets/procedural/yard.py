@@ -310,7 +310,7 @@ def build_lawn_mower(p):
         R = 0.2 * h
         for y, r in ((-0.3 * d, R), (0.32 * d, 0.7 * R)):
             for s in (-1, 1):
-                wheel_x(b, s * (w / 2 - 0.06 * w), y, r, r, 0.12 * w, BLACK, "#e0b030")
+                wheel_x(b, s * (w / 2 - 0.06 * w), y, r, r, 0.12 * w, BLACK, tint("#e0b030", "paint"))
         b.box((-0.38 * w, -0.45 * d, 0.15 * h), (0.38 * w, 0.45 * d, 0.35 * h), p.primary)
         b.box((-0.45 * w, -0.05 * d, 0.05 * h), (0.45 * w, 0.3 * d, 0.15 * h), DARK_METAL)  # deck
         b.hull([(-0.35 * w, 0.05 * d, 0.35 * h), (0.35 * w, 0.05 * d, 0.35 * h), (-0.35 * w, 0.48 * d, 0.35 * h),
