@@ -21,6 +21,7 @@ import trimesh
 from shapely.geometry import Polygon
 
 from anyhome.assets import FAMILIES, assign_asset, build_object_mesh, family_for
+from anyhome.assets.procedural._parts import slot_role
 from anyhome.assets.registry import SOURCE, object_rng
 from anyhome.errors import ExportError
 from anyhome.export.architecture import architecture_meshes
@@ -171,15 +172,17 @@ class _SceneBuilder:
                 "family": (obj.asset or {}).get("family") or family_for(obj.category, obj.name)}
         self.scene.graph.update(frame_from=ROOT_NODE, frame_to=node,
                                 matrix=object_transform(obj.position, obj.yaw), metadata=dict(meta))
-        params = _asset_record(obj)["params"]
+        record = _asset_record(obj)
+        mesh = build_object_mesh(obj)  # (loads the families, so their slot roles are known)
+        body = slot_role(record["family"], 0, str(record["params"].get("primary", "")))
         seen: dict[str, int] = {}
-        for part in object_parts(build_object_mesh(obj), params, obj.material, self.px, self.textures):
+        for part in object_parts(mesh, obj.material, body, self.px, self.textures):
             seen[part.role] = seen.get(part.role, 0) + 1
             suffix = "" if seen[part.role] == 1 else f"-{seen[part.role]}"
             self.specs[material_key(part.spec)] = part.spec
             self.add(part.mesh, f"{node}:{part.role}{suffix}",
                      {"object": obj.id, "room": obj.room, "category": obj.category,
-                      "role": part.role, "texture": part.spec.kind}, parent=node)
+                      "role": part.role, "body": part.body, "texture": part.spec.kind}, parent=node)
 
 
 def _asset_record(obj: HouseObject) -> dict:
@@ -214,7 +217,7 @@ def build_scene(house: House, texture_px: int | None = None) -> trimesh.Scene:
 
     Nodes: ``room:<id>:floor|walls|ceiling`` (one mesh each) and ``object:<id>`` (no
     mesh; the object's transform and metadata) with one child per material part,
-    ``object:<id>:<role>`` (role primary, secondary, accent, glass..., a ``-2`` suffix
+    ``object:<id>:<role>`` (the part's material role: wood, fabric, metal, glass...; a ``-2`` suffix
     for repeats), in the object's local frame.
     """
     try:

@@ -185,7 +185,7 @@ def test_loads_back_with_textures(generated) -> None:
     assert all(n["extras"]["category"] == "ceiling" for n in ceilings)
 
 
-def test_objects_have_textured_primary_parts(generated) -> None:
+def test_objects_have_textured_body_parts(generated) -> None:
     house, path = generated
     tree = _json_chunk(path.read_bytes())
     nodes = tree["nodes"]
@@ -198,7 +198,7 @@ def test_objects_have_textured_primary_parts(generated) -> None:
         assert children and all(c["name"].startswith(f"object:{obj.id}:") for c in children)
         for c in children:
             mat = tree["materials"][tree["meshes"][c["mesh"]]["primitives"][0]["material"]]
-            if c["extras"]["role"] == "primary" and _textured(mat):
+            if c["extras"]["body"] and _textured(mat):
                 textured_objects += 1
                 break
     assert textured_objects >= len(house.objects) // 2

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import os
 import re
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
 from typing import Any
@@ -26,8 +26,6 @@ from anyhome.sanitize import clean_text
 
 MATERIALS_FILE = Path(__file__).with_name("materials.yaml")
 SURFACES: tuple[str, ...] = ("floor", "walls", "ceiling", "furniture")
-UNTEXTURED: tuple[str, ...] = ("plain", "glass")
-"""Kinds drawn with constant factors only."""
 TEXTURE_PX_ENV = "ANYHOME_TEXTURE_PX"
 """Environment variable that sets the texture size in texels (default 256)."""
 MIN_ROUGHNESS = 0.06
@@ -221,7 +219,3 @@ def surface_material(words: str, surface: str, size_px: int | None = None,
     color = color or material_color(" ".join(clause_words)) or material_color(words)
     return spec_from_entry(entry, surface, clause_words, color, size_px)
 
-
-def with_color(spec: MaterialSpec, color: str) -> MaterialSpec:
-    """The same material in another colour."""
-    return replace(spec, color=color)

@@ -1,5 +1,14 @@
 """Shared pieces of the procedural factories: the parameter record, a mesh builder
-made of coloured primitives, and style helpers.
+made of coloured primitives, each labelled with its material role, and style helpers.
+
+Every part a factory builds says what it is made of (:data:`Role`: wood, fabric, metal,
+glass...). A part's role is its ``role=`` argument, else the role its colour carries: a
+:class:`Tint` is a colour string with a role (``METAL``, ``GLASS``, ``tint("#f4f1ea",
+"ceramic")``), and the three colour slots of a :class:`Params` (``p.primary``...) carry
+the roles the family declared with :func:`slot_roles`. ``darker``/``lighter`` keep the
+role. A part with neither is an error. :meth:`Builder.mesh` stores the roles per face
+(``mesh.face_attributes["role"]``, indices into :data:`ROLES`); the materials read them
+(:func:`face_roles`), never guessing from colours.
 
 A factory is a pair ``sample(rng, size, style) -> Params`` and ``build(params) ->
 trimesh.Trimesh``. ``build`` uses nothing but its parameters (randomness needed at
@@ -11,7 +20,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from functools import lru_cache
-from typing import Any
+from typing import Any, Literal, get_args
 
 import numpy as np
 import trimesh
@@ -25,12 +34,98 @@ KNOB_DECIMALS = 4
 CYL_SECTIONS = 16
 """Sections of a cylinder or cone primitive."""
 
+Role = Literal["wood", "fabric", "leather", "metal", "glass", "ceramic", "stone", "plastic", "rubber",
+               "paper", "plant", "light", "screen", "paint"]
+"""What a part is made of. ``light``: a glowing part (bulb, flame, LED); ``screen``: a
+display; ``paint``: a painted or lacquered surface of no other named material."""
+ROLES: tuple[Role, ...] = get_args(Role)
+ROLE_INDEX: dict[str, int] = {r: i for i, r in enumerate(ROLES)}
+ROLE_ATTRIBUTE = "role"
+"""Name of the per-face attribute holding role indices."""
+
+
+class Tint(str):
+    """A colour string (``"#rrggbb"``) that carries the material role of what it paints."""
+
+    role: Role
+
+    def __new__(cls, color: str, role: Role) -> Tint:
+        if role not in ROLE_INDEX:
+            raise ValueError(f"unknown material role {role!r}")
+        t = super().__new__(cls, color)
+        t.role = role
+        return t
+
+    def __reduce__(self):  # keep the role through copy/pickle
+        return (Tint, (str(self), self.role))
+
+
+def tint(color: str | list[str], role: Role) -> Any:
+    """``color`` (or each colour of a list) labelled with ``role``."""
+    if isinstance(color, list):
+        return [Tint(c, role) for c in color]
+    return Tint(color, role)
+
+
+def role_of(color: str, role: Role | None = None) -> Role:
+    """The role of a part: ``role`` if given, else the one ``color`` carries."""
+    if role is not None:
+        if role not in ROLE_INDEX:
+            raise ValueError(f"unknown material role {role!r}")
+        return role
+    r = getattr(color, "role", None)
+    if r is None:
+        raise ValueError(f"part coloured {color!r} has no material role (pass role= or a Tint)")
+    return r
+
+
+SlotRole = Role | dict[str, Role]
+"""A slot's role, or a table ``{colour: role}`` over the slot's candidate colours whose
+``""`` entry is the role of every other candidate."""
+_SLOT_ROLES: dict[str, tuple[SlotRole, SlotRole, SlotRole]] = {}
+
+
+def slot_roles(family: str, primary: SlotRole, secondary: SlotRole, accent: SlotRole) -> None:
+    """Declare what a family's primary, secondary and accent colours paint: a role per
+    slot, or a ``{colour: role}`` table for a slot whose candidates differ in material
+    (``{"": "ceramic", BRASS: "metal"}``: a brass lamp base is metal, any other ceramic)."""
+    for spec in (primary, secondary, accent):
+        table = spec if isinstance(spec, dict) else {"": spec}
+        if "" not in table:
+            raise ValueError(f"{family}: slot role table needs a '' (default) entry")
+        for r in table.values():
+            role_of("", r)
+    _SLOT_ROLES[family] = (primary, secondary, accent)
+
+
+def slot_role(family: str, slot: int, color: str) -> Role | None:
+    """The role family ``family`` declared for colour ``color`` in slot ``slot`` (0
+    primary, 1 secondary, 2 accent); None if the family declared none."""
+    roles = _SLOT_ROLES.get(family)
+    if roles is None:
+        return None
+    spec = roles[slot]
+    if isinstance(spec, dict):
+        return spec.get(str(color).lower(), spec[""])
+    return spec
+
+
+def face_roles(mesh: trimesh.Trimesh) -> list[Role]:
+    """The material role of each face of a mesh built by :class:`Builder`."""
+    codes = mesh.face_attributes.get(ROLE_ATTRIBUTE) if hasattr(mesh, "face_attributes") else None
+    if codes is None or len(codes) != len(mesh.faces):
+        raise ValueError("mesh has no per-face material roles")
+    return [ROLES[int(c)] for c in codes]
+
+
 FABRICS = ["#b9b2a6", "#8c8f94", "#5f6b7a", "#a6896b", "#7d8c74", "#c9c1b4", "#6d5a6e", "#3f4a5a"]
-TEXTILE_WHITE = "#eeebe4"
-METAL = "#9a9da3"
-DARK_METAL = "#3c3d40"
-BLACK = "#1f1f22"
-GLASS = "#b8d4de"
+TEXTILE_WHITE = Tint("#eeebe4", "fabric")
+METAL = Tint("#9a9da3", "metal")
+DARK_METAL = Tint("#3c3d40", "metal")
+BLACK = Tint("#1f1f22", "plastic")
+"""Black plastic (knobs, handles, housings); paint a black part of another material with
+``tint(BLACK, role)``."""
+GLASS = Tint("#b8d4de", "glass")
 
 
 @dataclass(frozen=True)
@@ -51,6 +146,13 @@ class Params:
     seed: int = 0
     knobs: tuple[tuple[str, Any], ...] = field(default=())
 
+    def __post_init__(self) -> None:
+        for i, slot in enumerate(("primary", "secondary", "accent")):
+            color = str(getattr(self, slot))
+            role = slot_role(self.family, i, color)
+            # the slot colours carry the roles the family declared (plain strings if none)
+            object.__setattr__(self, slot, color if role is None else Tint(color, role))
+
     def __getattr__(self, name: str) -> Any:
         if name.startswith("__") or name == "knobs":
             raise AttributeError(name)
@@ -63,9 +165,9 @@ class Params:
         return {
             "size": [float(s) for s in self.size],
             "style": self.style,
-            "primary": self.primary,
-            "secondary": self.secondary,
-            "accent": self.accent,
+            "primary": str(self.primary),
+            "secondary": str(self.secondary),
+            "accent": str(self.accent),
             "seed": int(self.seed),
             "knobs": {k: v for k, v in self.knobs},
         }
@@ -119,9 +221,9 @@ def make_params(
         family=family,
         size=size,  # type: ignore[arg-type]
         style=class_name(style),
-        primary=pick(primary),
-        secondary=pick(secondary),
-        accent=pick(accent),
+        primary=str(pick(primary)),
+        secondary=str(pick(secondary)),
+        accent=str(pick(accent)),
         seed=int(rng.integers(2**31 - 1)),
         knobs=_knobs(knobs),
     )
@@ -155,12 +257,19 @@ def fabric_tones(style: str) -> list[str]:
     return list(style_class(style).fabrics)
 
 
+def _keep_role(c: str, out: str) -> str:
+    r = getattr(c, "role", None)
+    return Tint(out, r) if r is not None else out
+
+
 def darker(c: str, t: float = 0.35) -> str:
-    return mix(c, "#000000", t)
+    """``c`` mixed towards black by ``t``; a :class:`Tint` keeps its role."""
+    return _keep_role(c, mix(c, "#000000", t))
 
 
 def lighter(c: str, t: float = 0.35) -> str:
-    return mix(c, "#ffffff", t)
+    """``c`` mixed towards white by ``t``; a :class:`Tint` keeps its role."""
+    return _keep_role(c, mix(c, "#ffffff", t))
 
 
 # ----------------------------------------------------------------- primitives
@@ -213,41 +322,51 @@ def about(matrix: np.ndarray, point) -> np.ndarray:
 
 
 class Builder:
-    """Accumulates coloured primitives and emits one vertex-coloured mesh fitted to a box."""
+    """Accumulates coloured primitives, each with its material role, and emits one
+    vertex-coloured mesh fitted to a box whose faces carry their roles.
+
+    Every primitive takes ``role=``; left out, the role is the one its colour carries (a
+    :class:`Tint`); a part with no role raises ValueError.
+    """
 
     def __init__(self) -> None:
         self._v: list[np.ndarray] = []
         self._f: list[np.ndarray] = []
         self._c: list[np.ndarray] = []
+        self._r: list[np.ndarray] = []
         self._n = 0
 
     def add(self, vertices: np.ndarray, faces: np.ndarray, color: str, alpha: int = 255,
-            transform: np.ndarray | None = None) -> None:
+            transform: np.ndarray | None = None, role: Role | None = None) -> None:
+        code = ROLE_INDEX[role_of(color, role)]
         v = np.asarray(vertices, dtype=float)
         if transform is not None:
             v = v @ transform[:3, :3].T + transform[:3, 3]
+        f = np.asarray(faces, dtype=np.int64)
         self._v.append(v)
-        self._f.append(np.asarray(faces, dtype=np.int64) + self._n)
+        self._f.append(f + self._n)
         self._c.append(np.tile(to_rgba(color, alpha), (len(v), 1)))
+        self._r.append(np.full(len(f), code, dtype=np.uint8))
         self._n += len(v)
 
-    def box(self, lo, hi, color: str, transform: np.ndarray | None = None, alpha: int = 255) -> None:
+    def box(self, lo, hi, color: str, transform: np.ndarray | None = None, alpha: int = 255,
+            role: Role | None = None) -> None:
         """Axis-aligned box from corner ``lo`` to corner ``hi``."""
         lo = np.asarray(lo, dtype=float)
         hi = np.asarray(hi, dtype=float)
         v, f = _unit_box()
-        self.add(lo + v * (hi - lo), f, color, alpha, transform)
+        self.add(lo + v * (hi - lo), f, color, alpha, transform, role)
 
     def cbox(self, center, extents, color: str, transform: np.ndarray | None = None,
-             alpha: int = 255) -> None:
+             alpha: int = 255, role: Role | None = None) -> None:
         """Box by centre and extents."""
         c = np.asarray(center, dtype=float)
         e = np.asarray(extents, dtype=float) / 2
-        self.box(c - e, c + e, color, transform, alpha)
+        self.box(c - e, c + e, color, transform, alpha, role)
 
     def cyl(self, x: float, y: float, z0: float, z1: float, r: float, color: str,
             r_top: float | None = None, sections: int = CYL_SECTIONS, ry: float | None = None,
-            transform: np.ndarray | None = None, alpha: int = 255) -> None:
+            transform: np.ndarray | None = None, alpha: int = 255, role: Role | None = None) -> None:
         """Vertical cylinder or cone frustum (``r_top``), elliptic if ``ry`` is given."""
         v, f = _unit_cylinder(sections)
         v = v.copy()
@@ -259,9 +378,10 @@ class Builder:
         v[:, 2] = z0 + v[:, 2] * (z1 - z0)
         v[:, 0] += x
         v[:, 1] += y
-        self.add(v, f, color, alpha, transform)
+        self.add(v, f, color, alpha, transform, role)
 
-    def rod(self, a, b, r: float, color: str, sections: int = 12, alpha: int = 255) -> None:
+    def rod(self, a, b, r: float, color: str, sections: int = 12, alpha: int = 255,
+            role: Role | None = None) -> None:
         """Cylinder of radius ``r`` from point ``a`` to point ``b``."""
         a = np.asarray(a, dtype=float)
         b = np.asarray(b, dtype=float)
@@ -273,90 +393,102 @@ class Builder:
         v = v * np.array([r, r, length])
         m = trimesh.geometry.align_vectors([0, 0, 1], d / length)
         m[:3, 3] = a
-        self.add(v, f, color, alpha, m)
+        self.add(v, f, color, alpha, m, role)
 
     def sphere(self, center, radii, color: str, subdivisions: int = 1,
-               transform: np.ndarray | None = None, alpha: int = 255) -> None:
+               transform: np.ndarray | None = None, alpha: int = 255, role: Role | None = None) -> None:
         """Ellipsoid; ``radii`` a number or (rx, ry, rz)."""
         v, f = _unit_sphere(subdivisions)
         self.add(v * np.broadcast_to(np.asarray(radii, dtype=float), (3,)) + np.asarray(center),
-                 f, color, alpha, transform)
+                 f, color, alpha, transform, role)
 
     def lathe(self, profile, color: str, x: float = 0.0, y: float = 0.0,
-              sections: int = 24, transform: np.ndarray | None = None) -> None:
+              sections: int = 24, transform: np.ndarray | None = None, role: Role | None = None) -> None:
         """Surface of revolution about a vertical axis; ``profile`` is (n, 2) (radius, z)."""
         prof = np.asarray(profile, dtype=float)
         m = trimesh.creation.revolve(prof, sections=sections)
         v = np.asarray(m.vertices) + np.array([x, y, 0.0])
-        self.add(v, m.faces, color, 255, transform)
+        self.add(v, m.faces, color, 255, transform, role)
 
-    def add_colored(self, vertices: np.ndarray, faces: np.ndarray, colors: np.ndarray) -> None:
-        """A part with its own per-vertex RGBA colours (``colors`` : (n, 4) uint8)."""
+    def add_colored(self, vertices: np.ndarray, faces: np.ndarray, colors: np.ndarray, role: Role) -> None:
+        """A part of one ``role`` with its own per-vertex RGBA colours (``colors`` : (n, 4) uint8)."""
+        code = ROLE_INDEX[role_of("", role)]
         v = np.asarray(vertices, dtype=float)
+        f = np.asarray(faces, dtype=np.int64)
         self._v.append(v)
-        self._f.append(np.asarray(faces, dtype=np.int64) + self._n)
+        self._f.append(f + self._n)
         self._c.append(np.asarray(colors, dtype=np.uint8).reshape(len(v), 4))
+        self._r.append(np.full(len(f), code, dtype=np.uint8))
         self._n += len(v)
 
-    def hull(self, points, color: str, alpha: int = 255, transform: np.ndarray | None = None) -> None:
+    def hull(self, points, color: str, alpha: int = 255, transform: np.ndarray | None = None,
+             role: Role | None = None) -> None:
         """Convex hull of ``points`` ((n, 3) float): wedges, prisms, tapered slabs."""
         m = trimesh.convex.convex_hull(np.asarray(points, dtype=float))
-        self.add(m.vertices, m.faces, color, alpha, transform)
+        self.add(m.vertices, m.faces, color, alpha, transform, role)
 
     def torus(self, center, major: float, minor: float, color: str, transform: np.ndarray | None = None,
-              sections: int = 24, minor_sections: int = 6) -> None:
+              sections: int = 24, minor_sections: int = 6, role: Role | None = None) -> None:
         """Ring about the vertical axis through ``center`` (then ``transform``, about the origin)."""
         m = trimesh.creation.torus(major, minor, major_sections=sections, minor_sections=minor_sections)
-        self.add(np.asarray(m.vertices) + np.asarray(center, dtype=float), m.faces, color, 255, transform)
+        self.add(np.asarray(m.vertices) + np.asarray(center, dtype=float), m.faces, color, 255, transform,
+                 role)
 
-    def extrude_x(self, profile, x0: float, x1: float, color: str, alpha: int = 255) -> None:
+    def extrude_x(self, profile, x0: float, x1: float, color: str, alpha: int = 255,
+                  role: Role | None = None) -> None:
         """A polygon in the (y, z) plane (``profile`` : (n, 2) float) extruded from x0 to x1."""
         from shapely.geometry import Polygon
 
         m = trimesh.creation.extrude_polygon(Polygon(np.asarray(profile, dtype=float)), x1 - x0)
         v = np.asarray(m.vertices)
         # (u, v, t) -> (x = x0 + t, y = u, z = v): a cyclic permutation keeps faces outward
-        self.add(np.column_stack([v[:, 2] + x0, v[:, 0], v[:, 1]]), m.faces, color, alpha)
+        self.add(np.column_stack([v[:, 2] + x0, v[:, 0], v[:, 1]]), m.faces, color, alpha, role=role)
 
-    def legs(self, xy, z0: float, z1: float, r: float, kind: str, color: str) -> None:
-        """Legs at the (x, y) points from ``z0`` up to ``z1`` in the given style."""
+    def legs(self, xy, z0: float, z1: float, r: float, kind: str, color: str,
+             role: Role | None = None) -> None:
+        """Legs at the (x, y) points from ``z0`` up to ``z1`` in the given style (``metal``
+        legs are metal whatever ``color`` is)."""
         for x, y in xy:
             if kind == "tapered":
-                self.cyl(x, y, z0, z1, r * 0.55, color, r_top=r)
+                self.cyl(x, y, z0, z1, r * 0.55, color, r_top=r, role=role)
             elif kind == "turned":
                 h = z1 - z0
-                self.cyl(x, y, z0, z0 + 0.12 * h, r * 0.7, color, r_top=r * 0.9)
-                self.sphere((x, y, z0 + 0.3 * h), (r * 1.3, r * 1.3, 0.16 * h), color)
-                self.cyl(x, y, z0 + 0.1 * h, z0 + 0.75 * h, r * 0.7, color)
-                self.sphere((x, y, z0 + 0.75 * h), (r * 1.15, r * 1.15, 0.08 * h), color)
-                self.box((x - r, y - r, z0 + 0.8 * h), (x + r, y + r, z1), color)
+                self.cyl(x, y, z0, z0 + 0.12 * h, r * 0.7, color, r_top=r * 0.9, role=role)
+                self.sphere((x, y, z0 + 0.3 * h), (r * 1.3, r * 1.3, 0.16 * h), color, role=role)
+                self.cyl(x, y, z0 + 0.1 * h, z0 + 0.75 * h, r * 0.7, color, role=role)
+                self.sphere((x, y, z0 + 0.75 * h), (r * 1.15, r * 1.15, 0.08 * h), color, role=role)
+                self.box((x - r, y - r, z0 + 0.8 * h), (x + r, y + r, z1), color, role=role)
             elif kind == "metal":
                 self.cyl(x, y, z0, z1, r * 0.5, DARK_METAL, sections=10)
             else:
-                self.box((x - r, y - r, z0), (x + r, y + r, z1), color)
+                self.box((x - r, y - r, z0), (x + r, y + r, z1), color, role=role)
 
     def extend(self, other: Builder, transform: np.ndarray | None = None) -> None:
-        for v, f, c in zip(other._v, other._f, other._c, strict=True):
+        for v, f, c, r in zip(other._v, other._f, other._c, other._r, strict=True):
             base = f.min() if len(f) else 0
             vv = v if transform is None else v @ transform[:3, :3].T + transform[:3, 3]
             self._v.append(vv)
             self._f.append(f - base + self._n)
             self._c.append(c)
+            self._r.append(r)
             self._n += len(v)
 
     def mesh(self, size: Size) -> trimesh.Trimesh:
         """One mesh, scaled and moved so its bounds are exactly the box of ``size``:
-        x and y centred on 0, bottom at z = 0."""
+        x and y centred on 0, bottom at z = 0. ``face_attributes["role"]`` holds each
+        face's role (an index into :data:`ROLES`; see :func:`face_roles`)."""
         if not self._v:
             raise ValueError("no parts built")
         v = np.concatenate(self._v)
         f = np.concatenate(self._f)
         c = np.concatenate(self._c)
+        r = np.concatenate(self._r)
         target = np.asarray(size, dtype=float)
         lo, hi = v.min(axis=0), v.max(axis=0)
         ext = np.where(hi - lo > 1e-12, hi - lo, 1.0)
         v = (v - lo) / ext * target + np.array([-target[0] / 2, -target[1] / 2, 0.0])
-        return trimesh.Trimesh(vertices=v, faces=f, vertex_colors=c, process=False)
+        return trimesh.Trimesh(vertices=v, faces=f, vertex_colors=c, process=False,
+                               face_attributes={ROLE_ATTRIBUTE: r})
 
 
 def corners(w: float, d: float, inset: float) -> list[tuple[float, float]]:

@@ -35,15 +35,17 @@ from anyhome.assets.procedural._parts import (
     make_params,
     move,
     rot_x,
+    slot_roles,
     style_is,
+    tint,
     wood_tones,
 )
 from anyhome.assets.registry import register
 
-APPLIANCE_FINISHES = [STEEL, WHITE_PLASTIC, "#2b2b2b", "#c9ccd0"]
-OFFICE_GREYS = ["#e6e4de", "#d9dadc", "#c9ccd0", "#3a3b3e", "#f2f1ed"]
-RETRO = ["#c9483a", "#7fb8a8", "#e8d9b0", "#3a6fb0", "#2b2b2b", "#e8e6e0"]
-TAP_HANDLES = ["#c0392b", "#f1c40f", "#2e86c1", "#27ae60", BLACK, "#e67e22", "#8e44ad", "#e8e6e0"]
+APPLIANCE_FINISHES = tint([STEEL, WHITE_PLASTIC, "#2b2b2b", "#c9ccd0"], "metal")
+OFFICE_GREYS = tint(["#e6e4de", "#d9dadc", "#c9ccd0", "#3a3b3e", "#f2f1ed"], "plastic")
+RETRO = tint(["#c9483a", "#7fb8a8", "#e8d9b0", "#3a6fb0", "#2b2b2b", "#e8e6e0"], "paint")
+TAP_HANDLES = tint(["#c0392b", "#f1c40f", "#2e86c1", "#27ae60", BLACK, "#e67e22", "#8e44ad", "#e8e6e0"], "plastic")
 
 
 def _vintage(style: str, rng, share: float = 0.25) -> bool:
@@ -73,7 +75,7 @@ def build_dishwasher(p):
     b.box((-w / 2, fy, kick), (w / 2, d / 2 - 0.01, h - strip), p.primary)  # door
     b.box((-w / 2, fy, h - strip), (w / 2, d / 2 - 0.01, h), p.secondary)  # control strip
     b.box((-w / 2 + 0.01, fy - 0.01, h - strip - 0.006), (w / 2 - 0.01, d / 2, h - strip), DARK_METAL)
-    buttons(b, 0.05 * w, 0.45 * w, h - 0.75 * strip, h - 0.25 * strip, d / 2 - 0.01, 1, 5, "#9a9da3", 0.5)
+    buttons(b, 0.05 * w, 0.45 * w, h - 0.75 * strip, h - 0.25 * strip, d / 2 - 0.01, 1, 5, tint("#9a9da3", "metal"), 0.5)
     b.box((-0.35 * w, d / 2 - 0.01, h - 0.72 * strip), (-0.1 * w, d / 2 - 0.005, h - 0.28 * strip), SCREEN)
     b.box((-0.3 * w, d / 2 - 0.006, h - 0.6 * strip), (-0.2 * w, d / 2 - 0.004, h - 0.4 * strip), p.accent)
     hz = h - strip - 0.06 * h
@@ -107,8 +109,8 @@ def build_microwave(p):
     b.box((-w / 2, -d / 2, foot), (w / 2, fy, h), p.primary)
     split = -w / 2 + 0.7 * w
     b.box((-w / 2 + 0.004, fy, foot + 0.005), (split, d / 2 - 0.004, h - 0.005), p.secondary)  # door
-    b.box((-w / 2 + 0.1 * w, d / 2 - 0.005, foot + 0.16 * h), (split - 0.1 * w, d / 2, h - 0.14 * h), "#14181c")
-    b.box((-w / 2 + 0.13 * w, d / 2 - 0.002, h - 0.3 * h), (-w / 2 + 0.3 * w, d / 2, h - 0.18 * h), "#3a4450")
+    b.box((-w / 2 + 0.1 * w, d / 2 - 0.005, foot + 0.16 * h), (split - 0.1 * w, d / 2, h - 0.14 * h), tint("#14181c", "paint"))
+    b.box((-w / 2 + 0.13 * w, d / 2 - 0.002, h - 0.3 * h), (-w / 2 + 0.3 * w, d / 2, h - 0.18 * h), tint("#3a4450", "paint"))
     b.box((split, fy, foot + 0.005), (w / 2 - 0.004, d / 2 - 0.006, h - 0.005), darker(p.primary, 0.12))
     px0, px1 = split + 0.03 * w, w / 2 - 0.03 * w
     if p.dials:
@@ -120,7 +122,7 @@ def build_microwave(p):
         b.box((px0 + 0.2 * (px1 - px0), d / 2 - 0.003, 0.78 * h), (px1 - 0.2 * (px1 - px0), d / 2, 0.84 * h),
               p.accent)
         buttons(b, px0, px1, 0.26 * h, 0.7 * h, d / 2 - 0.006, 4, 3, lighter(p.secondary, 0.5), 0.65)
-        b.box((px0, d / 2 - 0.006, 0.1 * h), (px1, d / 2, 0.22 * h), "#3a7a4a")  # start
+        b.box((px0, d / 2 - 0.006, 0.1 * h), (px1, d / 2, 0.22 * h), tint("#3a7a4a", "paint"))  # start
     if p.handle:
         b.box((split - 0.045 * w, d / 2 - 0.004, 0.2 * h), (split - 0.025 * w, d / 2, 0.8 * h), CHROME)
     return b.mesh(p.size)
@@ -142,13 +144,13 @@ def build_printer(p):
     body_top = 0.6 * h if p.feeder else 0.8 * h
     b.box((-w / 2, -d / 2, 0), (w / 2, fy, body_top), p.primary)
     b.box((-w / 2 + 0.01, -d / 2 + 0.005, body_top), (w / 2 - 0.01, fy - 0.01, body_top + 0.12 * h),
-          lighter(p.primary, 0.15) if p.primary != "#f2f1ed" else "#d9dadc")  # scanner lid
+          lighter(p.primary, 0.15) if p.primary != tint("#f2f1ed", "paint") else tint("#d9dadc", "paint"))  # scanner lid
     b.box((-0.44 * w, fy, 0.04 * h), (0.44 * w, fy + 0.2 * tray, 0.3 * h), darker(p.primary, 0.08))  # cassette
     b.box((-0.12 * w, fy + 0.2 * tray, 0.14 * h), (0.12 * w, fy + 0.22 * tray, 0.2 * h), p.secondary)
     b.box((-0.4 * w, fy - 0.01, 0.38 * h), (0.4 * w, fy + 0.003, 0.55 * h), BLACK)  # output slot
     b.box((-0.38 * w, fy, 0.36 * h), (0.38 * w, d / 2, 0.38 * h), p.secondary)  # output tray
-    b.box((-0.3 * w, fy, 0.385 * h), (0.3 * w, d / 2 - 0.02, 0.395 * h), "#fbfbf8")  # printed sheet
-    b.box((-0.2 * w, fy + 0.2 * tray, 0.392 * h), (0.15 * w, fy + 0.5 * tray, 0.397 * h), "#5a6b7a")
+    b.box((-0.3 * w, fy, 0.385 * h), (0.3 * w, d / 2 - 0.02, 0.395 * h), tint("#fbfbf8", "paper"))  # printed sheet
+    b.box((-0.2 * w, fy + 0.2 * tray, 0.392 * h), (0.15 * w, fy + 0.5 * tray, 0.397 * h), tint("#5a6b7a", "paint"))
     pz = body_top
     b.box((0.12 * w, fy - 0.1 * d, pz - 0.02 * h), (0.46 * w, fy + 0.02, pz + 0.05 * h), p.secondary)  # panel
     b.box((0.16 * w, fy - 0.08 * d, pz + 0.05 * h), (0.3 * w, fy - 0.01, pz + 0.055 * h), SCREEN)
@@ -163,7 +165,7 @@ def build_printer(p):
         b.hull([(-0.3 * w, -d / 2 + 0.165 * d, z0 + 0.02 * h), (0.3 * w, -d / 2 + 0.165 * d, z0 + 0.02 * h),
                 (-0.3 * w, -d / 2 + 0.17 * d, z0 + 0.02 * h), (0.3 * w, -d / 2 + 0.17 * d, z0 + 0.02 * h),
                 (-0.3 * w, -d / 2 + 0.05 * d, 0.97 * h), (0.3 * w, -d / 2 + 0.05 * d, 0.97 * h),
-                (-0.3 * w, -d / 2 + 0.055 * d, 0.97 * h), (0.3 * w, -d / 2 + 0.055 * d, 0.97 * h)], "#fbfbf8")
+                (-0.3 * w, -d / 2 + 0.055 * d, 0.97 * h), (0.3 * w, -d / 2 + 0.055 * d, 0.97 * h)], tint("#fbfbf8", "paint"))
     return b.mesh(p.size)
 
 
@@ -199,13 +201,13 @@ def build_photocopier(p):
     b.box((x0, d / 2 - 0.04, base_top + 0.02), (w / 2, d / 2 - 0.03, base_top + 0.05), p.secondary)
     # output tray on the left with a few sheets
     b.box((-w / 2 + 0.01, -0.35 * d, base_top + 0.04 * h), (x0, 0.3 * d, base_top + 0.055 * h), p.secondary)
-    b.box((-w / 2 + 0.03, -0.3 * d, base_top + 0.055 * h), (x0, 0.25 * d, base_top + 0.075 * h), "#fbfbf8")
+    b.box((-w / 2 + 0.03, -0.3 * d, base_top + 0.055 * h), (x0, 0.25 * d, base_top + 0.075 * h), tint("#fbfbf8", "paint"))
     if p.finisher:
         b.box((-w / 2, -0.4 * d, wheel), (x0, 0.35 * d, base_top + 0.03 * h), darker(p.primary, 0.06))
-    b.box((x0 + 0.01, -d / 2 + 0.01, top), (w / 2 - 0.01, d / 2 - 0.06, top + 0.03 * h), "#2a3a44")  # glass
+    b.box((x0 + 0.01, -d / 2 + 0.01, top), (w / 2 - 0.01, d / 2 - 0.06, top + 0.03 * h), tint("#2a3a44", "glass"))  # glass
     b.box((x0, -d / 2, top + 0.03 * h), (w / 2, d / 2 - 0.08, top + 0.07 * h), p.primary)  # lid
     b.box((x0 + 0.06, -d / 2 + 0.05, top + 0.07 * h), (w / 2 - 0.06, 0.1 * d, h), lighter(p.primary, 0.1))  # feeder
-    b.box((x0 + 0.1, 0.1 * d, top + 0.07 * h), (w / 2 - 0.1, 0.3 * d, top + 0.075 * h), "#fbfbf8")
+    b.box((x0 + 0.1, 0.1 * d, top + 0.07 * h), (w / 2 - 0.1, 0.3 * d, top + 0.075 * h), tint("#fbfbf8", "paint"))
     # tilted control panel at the front right
     px0, px1 = 0.05 * w, w / 2 - 0.01
     b.hull([(px0, d / 2 - 0.1, top - 0.04 * h), (px1, d / 2 - 0.1, top - 0.04 * h), (px0, d / 2, top - 0.06 * h),
@@ -232,12 +234,12 @@ def build_water_cooler(p):
     b.box((-w / 2 + 0.01, -d / 2 + 0.01, 0), (w / 2 - 0.01, d / 2 - 0.01, 0.03 * h), DARK_METAL)
     b.box((-w / 2, -d / 2, 0.03 * h), (w / 2, d / 2 - 0.02, top), p.primary)
     b.box((-w / 2 + 0.015, d / 2 - 0.02, 0.03 * h), (w / 2 - 0.015, d / 2, 0.36 * top), p.primary)
-    b.box((-0.38 * w, d / 2 - 0.06, 0.62 * top), (0.38 * w, d / 2 - 0.019, 0.88 * top), "#4a4c50")  # recess
+    b.box((-0.38 * w, d / 2 - 0.06, 0.62 * top), (0.38 * w, d / 2 - 0.019, 0.88 * top), tint("#4a4c50", "paint"))  # recess
     b.box((-w / 2 + 0.015, d / 2 - 0.02, 0.88 * top), (w / 2 - 0.015, d / 2, top), p.primary)
     b.box((-0.35 * w, d / 2 - 0.07, 0.6 * top), (0.35 * w, d / 2, 0.63 * top), p.accent)  # drip tray
     for x, col in ((-0.18 * w, "#d63a2a"), (0.18 * w, "#2e74c8")):
-        b.box((x - 0.03 * w, d / 2 - 0.06, 0.8 * top), (x + 0.03 * w, d / 2 - 0.01, 0.86 * top), col)
-        b.cyl(x, d / 2 - 0.025, 0.74 * top, 0.8 * top, 0.012, col, sections=8)
+        b.box((x - 0.03 * w, d / 2 - 0.06, 0.8 * top), (x + 0.03 * w, d / 2 - 0.01, 0.86 * top), col, role="plastic")
+        b.cyl(x, d / 2 - 0.025, 0.74 * top, 0.8 * top, 0.012, col, sections=8, role="plastic")
     b.box((-w / 2 + 0.015, d / 2 - 0.021, 0.36 * top), (w / 2 - 0.015, d / 2, 0.6 * top), lighter(p.primary, 0.1))
     if p.bottle:
         r = 0.45 * min(w, d)
@@ -284,7 +286,7 @@ def build_popcorn_machine(p):
     for _ in range(60):  # popcorn heap
         x, y = rng.uniform(0.95 * x0, 0.95 * x1), rng.uniform(0.95 * y0, 0.95 * y1)
         z = g0 + rng.uniform(0, 0.28 * (g1 - g0)) * (1.2 - abs(x) / (x1 + 1e-9))
-        b.sphere((x, y, z), 0.018 + 0.01 * rng.random(), "#fbf3c8" if rng.random() < 0.8 else "#f1d27a",
+        b.sphere((x, y, z), 0.018 + 0.01 * rng.random(), tint("#fbf3c8", "light") if rng.random() < 0.8 else tint("#f1d27a", "paint"),
                  subdivisions=0)
     b.box((x0, y0, g0), (x1, y1, g0 + 0.01 * hb), p.primary)
     b.cyl(0, 0, g1 - 0.3 * (g1 - g0), g1 - 0.12 * (g1 - g0), 0.15 * w, CHROME, r_top=0.17 * w, sections=14)
@@ -363,17 +365,17 @@ def build_projector(p):
         b.box((-0.3 * w, -0.3 * d, 0), (0.3 * w, 0.3 * d, 0.06 * h), BLACK)
         b.box((-0.22 * w, -0.25 * d, 0.06 * h), (0.22 * w, 0.25 * d, body), p.primary)
         disc_y(b, -0.05 * w, 0.25 * d, d / 2, 0.25 * h, 0.07 * h, p.secondary, sections=16)
-        disc_y(b, -0.05 * w, d / 2 - 0.005, d / 2, 0.25 * h, 0.05 * h, "#8ab0c8", sections=16)
+        disc_y(b, -0.05 * w, d / 2 - 0.005, d / 2, 0.25 * h, 0.05 * h, tint("#8ab0c8", "paint"), sections=16)
         R = min(0.3 * h, 0.25 * d)
         for y in (-d / 2 + R, d / 2 - R):
             zc = h - R
             b.rod((0.1 * w, 0.5 * y, body), (0.1 * w, y, zc), 0.01, p.primary, sections=6)
-            disc_x(b, 0.05 * w, 0.15 * w, y, zc, R, "#3a3b3e", sections=24)
+            disc_x(b, 0.05 * w, 0.15 * w, y, zc, R, tint("#3a3b3e", "paint"), sections=24)
             disc_x(b, 0.045 * w, 0.155 * w, y, zc, 0.15 * R, CHROME, sections=10)
             for k in range(3):
                 a = 2 * np.pi * k / 3
                 disc_x(b, 0.04 * w, 0.16 * w, y + 0.55 * R * np.cos(a), zc + 0.55 * R * np.sin(a), 0.2 * R,
-                       "#15161a", sections=10)
+                       tint("#15161a", "paint"), sections=10)
         return b.mesh(p.size)
     foot = 0.08 * h
     for x in (-0.35 * w, 0.35 * w):
@@ -383,8 +385,8 @@ def build_projector(p):
     b.box((-w / 2 + 0.01, -d / 2 + 0.01, h - 0.01), (w / 2 - 0.01, 0.4 * d, h), lighter(p.primary, 0.1))
     lx, lz, lr = -0.22 * w, (foot + h) / 2, 0.33 * (h - foot)
     disc_y(b, lx, 0.42 * d, d / 2, lz, lr, p.secondary, sections=20)
-    disc_y(b, lx, d / 2 - 0.004, d / 2, lz, 0.7 * lr, "#2a4a6a", sections=20)
-    disc_y(b, lx + 0.2 * lr, d / 2 - 0.002, d / 2 + 0.0001, lz + 0.25 * lr, 0.18 * lr, "#8ab0c8", sections=10)
+    disc_y(b, lx, d / 2 - 0.004, d / 2, lz, 0.7 * lr, tint("#2a4a6a", "paint"), sections=20)
+    disc_y(b, lx + 0.2 * lr, d / 2 - 0.002, d / 2 + 0.0001, lz + 0.25 * lr, 0.18 * lr, tint("#8ab0c8", "paint"), sections=10)
     vent_lines(b, 0.08 * w, 0.45 * w, foot + 0.2 * h, h - 0.2 * h, 0.42 * d, 4, darker(p.primary, 0.5))
     b.box((0.15 * w, -0.2 * d, h), (0.3 * w, 0.0, h + 0.002), p.secondary)
     b.cbox((0.36 * w, 0.25 * d, h + 0.001), (0.03 * w, 0.04 * d, 0.002), p.accent)
@@ -404,7 +406,7 @@ def _platter(b: Builder, cx: float, cy: float, z: float, R: float, p) -> float:
     b.cyl(cx, cy, z, z + 0.012, R, CHROME, sections=28)
     b.cyl(cx, cy, z + 0.012, z + 0.016, 0.97 * R, p.secondary, sections=28)
     for k in (0.5, 0.75):
-        b.cyl(cx, cy, z + 0.016, z + 0.0165, k * R, "#2a2a2e", r_top=k * R, sections=28)
+        b.cyl(cx, cy, z + 0.016, z + 0.0165, k * R, tint("#2a2a2e", "paint"), r_top=k * R, sections=28)
     b.cyl(cx, cy, z + 0.016, z + 0.017, 0.33 * R, p.accent, sections=16)
     b.cyl(cx, cy, z + 0.017, z + 0.03, 0.02 * R + 0.002, CHROME, sections=6)
     return z + 0.017
@@ -452,7 +454,7 @@ def build_record_player(p):
         disc_y(b, w / 2 - 0.08 * w - k * 0.09 * w, d / 2, d / 2 + 0.002, (foot + top) / 2, 0.2 * (top - foot),
                CHROME, sections=10)
     if p.lid:  # a smoked dust cover raised at the back
-        b.box((-w / 2, -d / 2, top), (w / 2, -d / 2 + 0.01, h), "#3a3f46", alpha=120)
+        b.box((-w / 2, -d / 2, top), (w / 2, -d / 2 + 0.01, h), tint("#3a3f46", "paint"), alpha=120)
     return b.mesh(p.size)
 
 
@@ -536,13 +538,13 @@ def build_typewriter(p):
         for k in range(n):
             x = (-0.5 + (k + 0.5 + 0.3 * (row % 2)) / 10.6) * 0.8 * w
             b.cyl(x, y, z + 0.0 * top, z + 0.05 * top, 0.022 * w + 0.002, BLACK, sections=8)
-            b.cyl(x, y, z + 0.05 * top, z + 0.055 * top, 0.018 * w + 0.002, "#e8e6e0", sections=8)
+            b.cyl(x, y, z + 0.05 * top, z + 0.055 * top, 0.018 * w + 0.002, tint("#e8e6e0", "paint"), sections=8)
     b.box((-0.25 * w, d / 2 - 0.05 * d, 0.1 * top), (0.25 * w, d / 2 - 0.01, 0.16 * top), BLACK)  # space bar
     b.cyl(0, back - 0.02, 0.6 * top, 0.8 * top, 0.15 * w, darker(p.primary, 0.4), sections=12)  # type basket
     pr = 0.12 * top + 0.01
     pz = 0.75 * top + pr
     py = back - 0.3 * (back + d / 2)
-    disc_x(b, -w / 2 + 0.04 * w, w / 2 - 0.04 * w, py, pz, pr, "#15161a", sections=16)  # platen
+    disc_x(b, -w / 2 + 0.04 * w, w / 2 - 0.04 * w, py, pz, pr, tint("#15161a", "paint"), sections=16)  # platen
     disc_x(b, -w / 2 + 0.06 * w, w / 2 - 0.06 * w, py + 0.6 * pr, pz - 0.3 * pr, 0.35 * pr, p.secondary, sections=8)
     for s in (-1, 1):
         disc_x(b, s * (w / 2 - 0.04 * w), s * (w / 2), py, pz, 0.8 * pr, BLACK, sections=12)
@@ -589,7 +591,7 @@ def build_dough_mixer(p):
              h - 0.22 * h - t * 0.33 * h) for t in np.linspace(0, 1, 14)]
     path(b, [(0, by, h - 0.22 * h)] + hook, 0.015, STEEL)
     b.box((-0.3 * w, col_y1, 0.55 * h), (0.3 * w, col_y1 + 0.01, 0.7 * h), DARK_METAL)  # control panel
-    buttons(b, -0.25 * w, 0.15 * w, 0.57 * h, 0.68 * h, col_y1 + 0.01, 2, 3, "#e8e6e0", 0.5)
+    buttons(b, -0.25 * w, 0.15 * w, 0.57 * h, 0.68 * h, col_y1 + 0.01, 2, 3, tint("#e8e6e0", "paint"), 0.5)
     disc_y(b, 0.2 * w, col_y1 + 0.01, col_y1 + 0.04, 0.625 * h, 0.035 * h, GLOW_RED, sections=12)
     return b.mesh(p.size)
 
@@ -614,7 +616,7 @@ def build_coffee_roaster(p):
     b.box((dx - 0.8 * R, -d / 2 + 0.05, 0.5 * h), (dx + 0.8 * R, d / 2 - 0.16 * d, dz), p.primary)
     fy = d / 2 - 0.16 * d
     disc_y(b, dx, fy, fy + 0.04, dz, 1.05 * R, p.secondary, sections=24)
-    disc_y(b, dx, fy + 0.04, fy + 0.045, dz, 0.35 * R, "#3a2a1a", sections=16)  # window
+    disc_y(b, dx, fy + 0.04, fy + 0.045, dz, 0.35 * R, tint("#3a2a1a", "glass"), sections=16)  # window
     disc_y(b, dx + 0.55 * R, fy + 0.04, fy + 0.07, dz - 0.5 * R, 0.1 * R, BLACK, sections=8)
     for a in (0.3, 2.2, 4.2):
         disc_y(b, dx + 0.75 * R * np.cos(a), fy + 0.04, fy + 0.05, dz + 0.75 * R * np.sin(a), 0.04 * R, DARK_METAL,
@@ -641,20 +643,33 @@ def build_coffee_roaster(p):
             (dx - 0.3 * R, fy + 0.1, dz - 0.9 * R), (dx + 0.3 * R, fy + 0.1, dz - 0.9 * R),
             (tx - 0.2 * tr, ty, tz + 0.03 * h), (tx + 0.1 * tr, ty, tz + 0.03 * h)], p.secondary)  # chute
     for k, x in enumerate((-0.4 * w, -0.25 * w)):  # gauges
-        disc_y(b, x, d / 2 - 0.12 * d, d / 2 - 0.1 * d, 0.4 * h, 0.04 * h, "#f4f1ea" if k else CHROME, sections=12)
+        disc_y(b, x, d / 2 - 0.12 * d, d / 2 - 0.1 * d, 0.4 * h, 0.04 * h, tint("#f4f1ea", "metal") if k else CHROME, sections=12)
     return b.mesh(p.size)
 
 
+slot_roles("dishwasher", "metal", "plastic", "light")
 register("dishwasher", sample_dishwasher, build_dishwasher)
+slot_roles("microwave", "paint", "plastic", "light")
 register("microwave", sample_microwave, build_microwave)
+slot_roles("printer", "plastic", {"": "plastic", "#9a9da3": "metal"}, "light")
 register("printer", sample_printer, build_printer)
+slot_roles("photocopier", "plastic", "plastic", "light")
 register("photocopier", sample_photocopier, build_photocopier)
+slot_roles("water_cooler", {"": "plastic", STEEL: "metal"}, "plastic", {"": "plastic", "#c9ccd0": "metal"})
 register("water_cooler", sample_water_cooler, build_water_cooler)
+slot_roles("popcorn_machine", "paint", "paint", "metal")
 register("popcorn_machine", sample_popcorn_machine, build_popcorn_machine)
+slot_roles("beer_tap", "metal", "metal", "plastic")
 register("beer_tap", sample_beer_tap, build_beer_tap)
+slot_roles("projector", {"": "plastic", DARK_METAL: "metal"}, "plastic", "glass")
 register("projector", sample_projector, build_projector)
+slot_roles("record_player", "wood", "plastic", "paint")
 register("record_player", sample_record_player, build_record_player)
+slot_roles("radio", {"": "wood", "#9a9da3": "metal"}, {"": "fabric", CHROME: "metal"}, "paper")
 register("radio", sample_radio, build_radio)
+slot_roles("typewriter", "paint", "metal", "plastic")
 register("typewriter", sample_typewriter, build_typewriter)
+slot_roles("dough_mixer", {"": "paint", "#9a9da3": "metal"}, "metal", "ceramic")
 register("dough_mixer", sample_dough_mixer, build_dough_mixer)
+slot_roles("coffee_roaster", "paint", "metal", "wood")
 register("coffee_roaster", sample_coffee_roaster, build_coffee_roaster)

@@ -16,12 +16,16 @@ from anyhome.assets.procedural._parts import (
     leg_style,
     lighter,
     make_params,
+    slot_roles,
     style_is,
+    tint,
     wood_tones,
 )
 from anyhome.assets.registry import register
 
-BEDDING = ["#e9e4da", "#d7dde6", "#c8b8a6", "#9fb2a0", "#b9a2b8", "#d9c3a0", "#8a9bb0"]
+MATTRESS_TOP_M = (0.45, 0.62)
+"""Height range of a bed's mattress top; the bed's box reaches up to its headboard."""
+BEDDING = tint(["#e9e4da", "#d7dde6", "#c8b8a6", "#9fb2a0", "#b9a2b8", "#d9c3a0", "#8a9bb0"], "fabric")
 
 
 def sample_bed(rng: np.random.Generator, size: Size, style: str) -> Params:
@@ -39,7 +43,8 @@ def build_bed(p: Params) -> trimesh.Trimesh:
     w, d, h = p.size
     h = max(h, 0.3)
     b = Builder()
-    top = min(p.mattress_top * h, h - 0.05)
+    # the box holds the headboard: the mattress top stays at a sitting height whatever the box
+    top = min(float(np.clip(p.mattress_top * h, MATTRESS_TOP_M[0], MATTRESS_TOP_M[1])), h - 0.05)
     rail = top * 0.55
     leg = rail * 0.45
     # frame and legs
@@ -125,6 +130,9 @@ def build_crib(p: Params) -> trimesh.Trimesh:
     return b.mesh(p.size)
 
 
+slot_roles("bed", "wood", "fabric", "fabric")
 register("bed", sample_bed, build_bed)
+slot_roles("bunk_bed", "wood", "fabric", "fabric")
 register("bunk_bed", sample_bunk_bed, build_bunk_bed)
+slot_roles("crib", "wood", "fabric", "fabric")
 register("crib", sample_crib, build_crib)

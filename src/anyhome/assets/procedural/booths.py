@@ -27,15 +27,17 @@ from anyhome.assets.procedural._parts import (
     darker,
     lighter,
     make_params,
+    slot_roles,
     style_is,
+    tint,
     wood_tones,
 )
 from anyhome.assets.registry import register
 
-FELTS = ["#5f6b7a", "#7d8c74", "#3f4a5a", "#8c8f94", "#2b2b2b", "#a6896b", "#c9c1b4"]
-PANE = "#cfe0e6"
-SIGN_LIGHT = "#fff4c8"
-NEON = ["#e040a0", "#40c0e0", "#7b4ad5", "#40e080"]
+FELTS = tint(["#5f6b7a", "#7d8c74", "#3f4a5a", "#8c8f94", "#2b2b2b", "#a6896b", "#c9c1b4"], "fabric")
+PANE = tint("#cfe0e6", "glass")
+SIGN_LIGHT = tint("#fff4c8", "light")
+NEON = tint(["#e040a0", "#40c0e0", "#7b4ad5", "#40e080"], "light")
 
 
 def _antique(style: str, rng, share: float) -> bool:
@@ -87,7 +89,7 @@ def build_phone_booth(p):
         body = 0.86 * h
         b.box((-w / 2, -d / 2, 0), (w / 2, d / 2, 0.04 * h), darker(p.primary, 0.3))
         post = 0.1 * min(w, d)
-        b.box((-w / 2 + post, -d / 2 + post, 0.04 * h), (w / 2 - post, d / 2 - post, body), "#3a2a26")  # inside
+        b.box((-w / 2 + post, -d / 2 + post, 0.04 * h), (w / 2 - post, d / 2 - post, body), tint("#3a2a26", "paint"))  # inside
 
         def side(s: Builder, hw: float, hy: float, k: int) -> None:
             s.box((-hw, hy - post, 0.04 * h), (-hw + post, hy, body), p.primary)  # corner post
@@ -99,7 +101,7 @@ def build_phone_booth(p):
             s.box((-0.25 * hw, hy, 0.815 * h), (0.25 * hw, hy + 0.002, 0.825 * h), BLACK)  # lettering
             s.box((-hw, hy - post, body), (hw, hy, body + 0.03 * h), p.primary)
             if k == 0:
-                s.box((hw - post - 0.12 * hw, hy, 0.45 * h), (hw - post - 0.08 * hw, hy + 0.01, 0.52 * h), "#3a2a26")
+                s.box((hw - post - 0.12 * hw, hy, 0.45 * h), (hw - post - 0.08 * hw, hy + 0.01, 0.52 * h), tint("#3a2a26", "paint"))
 
         _turned(b, w, d, side)
         top = body + 0.03 * h
@@ -120,7 +122,7 @@ def build_phone_booth(p):
     b.box((-w / 2 + t, -d / 2 + t, 0.48 * h), (w / 2 - t, -d / 2 + 0.35 * d, 0.5 * h), p.accent)  # shelf
     b.cyl(0, 0.05 * d, 0.04 * h, 0.28 * h, 0.03, DARK_METAL, sections=8)
     b.cyl(0, 0.05 * d, 0.28 * h, 0.31 * h, 0.17 * min(w, d), p.accent, sections=16)  # stool
-    b.box((-w / 2 + t, -d / 2 + t, h - 0.08 * h), (w / 2 - t, d / 2 - 0.02, h - 0.06 * h), "#fff8e0")  # light
+    b.box((-w / 2 + t, -d / 2 + t, h - 0.08 * h), (w / 2 - t, d / 2 - 0.02, h - 0.06 * h), tint("#fff8e0", "light"))  # light
     frame_y(b, -w / 2, w / 2, 0.04 * h, h - 0.06 * h, d / 2 - 0.03, d / 2, 0.025, p.secondary)
     b.box((-w / 2 + 0.025, d / 2 - 0.02, 0.04 * h), (w / 2 - 0.025, d / 2 - 0.01, h - 0.06 * h), GLASS, alpha=90)
     b.box((w / 2 - 0.1 * w, d / 2, 0.35 * h), (w / 2 - 0.08 * w, d / 2 + 0.0, 0.6 * h), CHROME)
@@ -146,7 +148,7 @@ def build_photo_booth(p):
     split = -0.05 * w
     b.box((-w / 2, d / 2 - 0.04, 0.05 * h), (split, d / 2, sign), p.primary)  # front left panel
     b.box((split, d / 2 - 0.04, 0.05 * h), (w / 2, d / 2 - 0.02, 0.07 * h), darker(p.primary, 0.2))
-    b.box((split + 0.02, d / 2 - 0.05, 0.07 * h), (w / 2 - 0.03, d / 2 - 0.04, sign), "#2a2528")  # doorway
+    b.box((split + 0.02, d / 2 - 0.05, 0.07 * h), (w / 2 - 0.03, d / 2 - 0.04, sign), tint("#2a2528", "paper"))  # doorway
     n = max(6, int((w / 2 - split) / 0.06))
     for k in range(n):  # curtain folds
         x = split + 0.04 + (k + 0.5) * (w / 2 - split - 0.07) / n
@@ -154,14 +156,14 @@ def build_photo_booth(p):
     b.rod((split + 0.02, d / 2 - 0.02, sign - 0.015 * h), (w / 2 - 0.02, d / 2 - 0.02, sign - 0.015 * h), 0.01,
           CHROME, sections=6)
     sx0, sx1 = -w / 2 + 0.08 * w, split - 0.08 * w
-    b.box((sx0 - 0.02, d / 2, 0.42 * h), (sx1 + 0.02, d / 2 + 0.005, 0.76 * h), "#f4f1ea")  # sample panel
+    b.box((sx0 - 0.02, d / 2, 0.42 * h), (sx1 + 0.02, d / 2 + 0.005, 0.76 * h), tint("#f4f1ea", "paint"))  # sample panel
     cols = ["#d9a070", "#6a8ab0", "#c0708a", "#80a070", "#a0a0a0"]
     for i in range(3):
         xa = sx0 + i * (sx1 - sx0) / 3 + 0.02
         xb = sx0 + (i + 1) * (sx1 - sx0) / 3 - 0.02
         for j in range(4):
             z0 = 0.44 * h + j * 0.08 * h
-            b.box((xa, d / 2 + 0.005, z0), (xb, d / 2 + 0.008, z0 + 0.065 * h), cols[int(rng.integers(len(cols)))])
+            b.box((xa, d / 2 + 0.005, z0), (xb, d / 2 + 0.008, z0 + 0.065 * h), cols[int(rng.integers(len(cols)))], role="paint")
     b.box((sx0, d / 2, 0.25 * h), (sx1, d / 2 + 0.03, 0.35 * h), darker(p.primary, 0.3))  # payment box
     b.box((sx0 + 0.03, d / 2 + 0.03, 0.31 * h), (sx0 + 0.08, d / 2 + 0.032, 0.33 * h), BLACK)
     b.box((sx1 - 0.12, d / 2 + 0.03, 0.28 * h), (sx1 - 0.03, d / 2 + 0.032, 0.33 * h), SCREEN)
@@ -171,7 +173,7 @@ def build_photo_booth(p):
     for k in range(5):  # the word on the sign, in blocks
         x = -0.3 * w + k * 0.15 * w
         b.box((x - 0.04 * w, d / 2 + 0.006, sign + 0.06 * h), (x + 0.04 * w, d / 2 + 0.009, h - 0.06 * h),
-              darker(p.primary, 0.1) if p.primary != BLACK else "#c0392b")
+              darker(p.primary, 0.1) if p.primary != BLACK else tint("#c0392b", "paper"))
     return b.mesh(p.size)
 
 
@@ -203,11 +205,11 @@ def build_vocal_booth(p):
     b.box((dx0, d / 2 - 0.01, 0.04 * h), (dx1, d / 2 + 0.03, 0.82 * h), lighter(p.primary, 0.1))  # door
     frame_y(b, dx0 - 0.03, dx1 + 0.03, 0.04 * h, 0.84 * h, d / 2 - 0.01, d / 2 + 0.015, 0.03, p.secondary)
     b.box((dx0 + 0.25 * (dx1 - dx0), d / 2 + 0.03, 0.55 * h), (dx1 - 0.25 * (dx1 - dx0), d / 2 + 0.034, 0.72 * h),
-          "#2a3038")
+          tint("#2a3038", "paint"))
     b.box((dx1 - 0.06, d / 2 + 0.03, 0.35 * h), (dx1 - 0.03, d / 2 + 0.07, 0.5 * h), CHROME)  # lever
     b.box((-0.08 * w + 0.075 * w, d / 2, 0.855 * h), (0.08 * w + 0.075 * w, d / 2 + 0.03, 0.885 * h), p.accent)
     if p.window:
-        b.box((w / 2 - 0.001, -0.3 * d, 0.45 * h), (w / 2 + 0.004, 0.2 * d, 0.75 * h), "#2a3038")
+        b.box((w / 2 - 0.001, -0.3 * d, 0.45 * h), (w / 2 + 0.004, 0.2 * d, 0.75 * h), tint("#2a3038", "paint"))
         b.cyl(0.2 * w, -0.05 * d, 0.04 * h, 0.55 * h, 0.012, DARK_METAL, sections=6)
     for x in (-0.3 * w, 0.3 * w):  # silencer boxes on the roof
         b.box((x - 0.12 * w, -0.3 * d, roof), (x + 0.12 * w, 0.2 * d, h), p.secondary)
@@ -241,7 +243,7 @@ def build_ticket_booth(p):
     b.box((-w / 2 + 0.03, -d / 2, cz), (w / 2 - 0.03, -d / 2 + 0.05, wz), p.primary)
     ring_y(b, (0, d / 2 - 0.1 * d + 0.005, cz + 0.2 * h), 0.05, 0.01, p.secondary, sections=16)
     b.box((-0.12 * w, d / 2 - 0.12 * d, cz + 0.03 * h), (0.12 * w, d / 2 - 0.09 * d, cz + 0.05 * h), DARK_METAL)
-    b.box((-w / 2 + 0.09, -d / 2 + 0.05, cz + 0.03 * h), (w / 2 - 0.09, d / 2 - 0.12 * d, wz), "#4a3a30")  # inside
+    b.box((-w / 2 + 0.09, -d / 2 + 0.05, cz + 0.03 * h), (w / 2 - 0.09, d / 2 - 0.12 * d, wz), tint("#4a3a30", "paint"))  # inside
     for x in (-w / 2 + 0.03, w / 2 - 0.09):  # side windows
         b.box((x - 0.001, -0.25 * d, cz + 0.06 * h), (x + 0.061, 0.2 * d, wz - 0.04 * h), GLASS)
     sign_z = wz + 0.02 * h
@@ -260,10 +262,10 @@ def build_ticket_booth(p):
     for k in range(4):
         x = -0.22 * w + k * 0.147 * w
         b.box((x - 0.05 * w, d / 2, sz0 + 0.25 * (sz1 - sz0)), (x + 0.05 * w, d / 2 + 0.004,
-                                                                sz1 - 0.25 * (sz1 - sz0)), "#8a1f2b")
+                                                                sz1 - 0.25 * (sz1 - sz0)), tint("#8a1f2b", "paint"))
     for t in np.linspace(0, 1, 12):  # bulbs round the sign
         for z in (sz0, sz1):
-            b.sphere((-sx + t * 2 * sx, d / 2 + 0.005, z), 0.012 * w, "#ffe890", subdivisions=0)
+            b.sphere((-sx + t * 2 * sx, d / 2 + 0.005, z), 0.012 * w, tint("#ffe890", "light"), subdivisions=0)
     return b.mesh(p.size)
 
 
@@ -286,7 +288,7 @@ def build_cubicle(p):
         panels.append(((w / 2 - t, -d / 2), (w / 2, 0.0)))
     for (x0, y0), (x1, y1) in panels:
         b.box((x0, y0, 0.02 * h), (x1, y1, h - 0.02 * h), p.primary)
-        b.box((x0, y0, h - 0.02 * h), (x1, y1, h), trim)
+        b.box((x0, y0, h - 0.02 * h), (x1, y1, h), trim, role="metal")
         b.box((x0, y0, 0), (x1, y1, 0.02 * h), DARK_METAL)
     dz = min(0.74, 0.5 * h)
     b.box((-w / 2 + t, -d / 2 + t, dz - 0.03), (w / 2 - (t if p.sides == 3 else 0), -d / 2 + t + 0.6 * d * 0.42, dz),
@@ -300,19 +302,19 @@ def build_cubicle(p):
     b.box((mx - 0.08, my, dz), (mx + 0.08, my + 0.15, dz + 0.01), p.accent)
     b.box((mx - 0.02, my + 0.03, dz), (mx + 0.02, my + 0.05, dz + 0.18), p.accent)
     b.box((mx - 0.28, my + 0.05, dz + 0.1), (mx + 0.28, my + 0.08, dz + 0.42), p.accent)  # monitor
-    b.box((mx - 0.26, my + 0.08, dz + 0.12), (mx + 0.26, my + 0.081, dz + 0.4), "#3a5a7a")
-    b.box((mx - 0.22, my + 0.22, dz), (mx + 0.22, my + 0.36, dz + 0.02), "#3a3b3e")  # keyboard
+    b.box((mx - 0.26, my + 0.08, dz + 0.12), (mx + 0.26, my + 0.081, dz + 0.4), tint("#3a5a7a", "paint"))
+    b.box((mx - 0.22, my + 0.22, dz), (mx + 0.22, my + 0.36, dz + 0.02), tint("#3a3b3e", "paint"))  # keyboard
     cols = ["#f4f1ea", "#f1e6a0", "#a8d0e8", "#f4c0c0"]
     for _ in range(5):  # notes pinned to the back panel
         x = rng.uniform(-0.4 * w, 0.3 * w)
         z = dz + rng.uniform(0.25, 0.75) * (h - dz)
         b.box((x, -d / 2 + t, z), (x + 0.06 * w, -d / 2 + t + 0.003, z + 0.15 * (h - dz)),
-              cols[int(rng.integers(len(cols)))])
+              cols[int(rng.integers(len(cols)))], role="paper")
     cx, cy = 0.1 * w, 0.22 * d  # desk chair
     b.cyl(cx, cy, 0, 0.03, 0.28, DARK_METAL, sections=5)
     b.cyl(cx, cy, 0.03, 0.42, 0.025, DARK_METAL, sections=8)
-    b.box((cx - 0.24, cy - 0.22, 0.42), (cx + 0.24, cy + 0.22, 0.5), "#2b2b2b")
-    b.box((cx - 0.22, cy + 0.2, 0.5), (cx + 0.22, cy + 0.26, min(1.0, h - 0.05)), "#2b2b2b")
+    b.box((cx - 0.24, cy - 0.22, 0.42), (cx + 0.24, cy + 0.22, 0.5), tint("#2b2b2b", "paint"))
+    b.box((cx - 0.22, cy + 0.2, 0.5), (cx + 0.22, cy + 0.26, min(1.0, h - 0.05)), tint("#2b2b2b", "paint"))
     return b.mesh(p.size)
 
 
@@ -339,11 +341,11 @@ def build_sleeping_pod(p):
     extrude_y(b, outer, -d / 2, -d / 2 + 0.04, p.primary)  # back cap
     extrude_y(b, outer, -d / 2 + 0.04, d / 2 - 0.04, p.primary, holes=[inner[::-1]])
     extrude_y(b, outer, d / 2 - 0.04, d / 2, darker(p.primary, 0.15), holes=[inner[::-1]])  # front rim
-    b.box((-w / 2 + t, -d / 2 + 0.04, 0.12 * h), (w / 2 - t, d / 2 - 0.04, 0.13 * h), "#4a4c50")
+    b.box((-w / 2 + t, -d / 2 + 0.04, 0.12 * h), (w / 2 - t, d / 2 - 0.04, 0.13 * h), tint("#4a4c50", "paint"))
     b.box((-w / 2 + t, -d / 2 + 0.05, 0.13 * h), (w / 2 - t, d / 2 - 0.06, 0.22 * h), p.secondary)  # mattress
-    b.box((-0.3 * w, -d / 2 + 0.06, 0.22 * h), (0.3 * w, -d / 2 + 0.06 + 0.18 * d, 0.3 * h), "#f8f8f6")  # pillow
+    b.box((-0.3 * w, -d / 2 + 0.06, 0.22 * h), (0.3 * w, -d / 2 + 0.06 + 0.18 * d, 0.3 * h), tint("#f8f8f6", "fabric"))  # pillow
     b.box((-w / 2 + t, -d / 2 + 0.3 * d, 0.22 * h), (w / 2 - t, d / 2 - 0.1, 0.26 * h), p.accent)  # blanket
-    b.box((-w / 2 + t, -d / 2 + 0.04, 0.55 * h), (-w / 2 + t + 0.01, -d / 2 + 0.5 * d, 0.58 * h), "#fff1c4")
+    b.box((-w / 2 + t, -d / 2 + 0.04, 0.55 * h), (-w / 2 + t + 0.01, -d / 2 + 0.5 * d, 0.58 * h), tint("#fff1c4", "light"))
     b.box((-w / 2 + t, -d / 2 + 0.15 * d, 0.5 * h), (-w / 2 + t + 0.01, -d / 2 + 0.3 * d, 0.65 * h), SCREEN)
     if p.curtain:
         n = 6
@@ -374,9 +376,9 @@ def build_elevator(p):
     dh = min(0.82 * h, 2.1)
     fr = 0.06
     if p.kind == "cage":
-        b.box((-dw / 2, fy - 0.6 * d, 0.02), (dw / 2, fy, dh), "#5c3b26")  # the car inside
-        b.box((-dw / 2 + 0.05, fy - 0.58 * d, 0.3 * dh), (dw / 2 - 0.05, fy - 0.57 * d, 0.9 * dh), "#7a5030")
-        b.box((-dw / 2, fy - 0.6 * d, 0), (dw / 2, fy, 0.02), "#3a2a1a")
+        b.box((-dw / 2, fy - 0.6 * d, 0.02), (dw / 2, fy, dh), tint("#5c3b26", "paint"))  # the car inside
+        b.box((-dw / 2 + 0.05, fy - 0.58 * d, 0.3 * dh), (dw / 2 - 0.05, fy - 0.57 * d, 0.9 * dh), tint("#7a5030", "paint"))
+        b.box((-dw / 2, fy - 0.6 * d, 0), (dw / 2, fy, 0.02), tint("#3a2a1a", "paint"))
         frame_y(b, -dw / 2 - fr, dw / 2 + fr, 0, dh + fr, fy, d / 2, fr, p.secondary)
         n = 9
         for k in range(n + 1):  # lattice gate
@@ -392,7 +394,7 @@ def build_elevator(p):
         cz = dh + fr + 0.5 * (h - dh - fr)
         R = min(0.4 * (h - dh - fr), 0.2 * w)
         extrude_y(b, arc(0, cz - 0.5 * R, R, 0, np.pi, 12), fy, d / 2, p.secondary)
-        extrude_y(b, arc(0, cz - 0.45 * R, 0.85 * R, 0, np.pi, 12), d / 2, d / 2 + 0.003, "#f4f1e6")
+        extrude_y(b, arc(0, cz - 0.45 * R, 0.85 * R, 0, np.pi, 12), d / 2, d / 2 + 0.003, tint("#f4f1e6", "paint"))
         b.rod((0, d / 2 + 0.004, cz - 0.45 * R), (0.5 * R, d / 2 + 0.004, cz + 0.2 * R), 0.008, BLACK, sections=4)
         return b.mesh(p.size)
     frame_y(b, -dw / 2 - fr, dw / 2 + fr, 0, dh + fr, fy, d / 2, fr, p.secondary)
@@ -406,7 +408,7 @@ def build_elevator(p):
     b.box((px - 0.05, fy, 0.45 * dh), (px + 0.05, d / 2 - 0.01, 0.6 * dh), p.secondary)  # call panel
     for k, z in enumerate((0.5 * dh, 0.55 * dh)):
         disc_y(b, px, d / 2 - 0.01, d / 2, z, 0.02, p.accent if k else CHROME, sections=10)
-    b.box((-w / 2, fy, 0), (w / 2, d / 2, 0.02), "#9a9da3")  # sill
+    b.box((-w / 2, fy, 0), (w / 2, d / 2, 0.02), tint("#9a9da3", "metal"))  # sill
     return b.mesh(p.size)
 
 
@@ -433,32 +435,32 @@ def build_golf_simulator(p):
         b.box((x, -d / 2, h - t), (x + t, d / 2, h), p.primary)
     sy = -d / 2 + t
     b.box((-w / 2 + t, sy, 0.55 * h), (w / 2 - t, sy + 0.02, h - t), p.accent)  # sky
-    b.box((-w / 2 + t, sy, 0.05), (w / 2 - t, sy + 0.02, 0.55 * h), "#5aa04a")  # fairway
+    b.box((-w / 2 + t, sy, 0.05), (w / 2 - t, sy + 0.02, 0.55 * h), tint("#5aa04a", "plant"))  # fairway
     b.hull([(-0.2 * w, sy + 0.021, 0.3 * h), (0.25 * w, sy + 0.021, 0.3 * h), (-0.05 * w, sy + 0.021, 0.55 * h),
             (0.05 * w, sy + 0.021, 0.55 * h), (-0.2 * w, sy + 0.023, 0.3 * h), (0.25 * w, sy + 0.023, 0.3 * h),
-            (-0.05 * w, sy + 0.023, 0.55 * h), (0.05 * w, sy + 0.023, 0.55 * h)], "#8ad06a")
+            (-0.05 * w, sy + 0.023, 0.55 * h), (0.05 * w, sy + 0.023, 0.55 * h)], tint("#8ad06a", "paint"))
     for _ in range(8):  # trees along the horizon
         x = rng.uniform(-0.45 * w, 0.45 * w)
         if abs(x) < 0.12 * w:
             continue
         r = rng.uniform(0.04, 0.07) * h
-        b.sphere((x, sy + 0.03, 0.55 * h + 0.6 * r), (r, 0.01, r), "#2a5a2a", subdivisions=1)
-    b.box((0.0, sy + 0.024, 0.5 * h), (0.004 * w + 0.006, sy + 0.028, 0.6 * h), "#f4f4f4")  # flag pole
-    b.box((0.004 * w + 0.006, sy + 0.024, 0.57 * h), (0.03 * w + 0.02, sy + 0.028, 0.6 * h), "#d63a2a")
+        b.sphere((x, sy + 0.03, 0.55 * h + 0.6 * r), (r, 0.01, r), tint("#2a5a2a", "paint"), subdivisions=1)
+    b.box((0.0, sy + 0.024, 0.5 * h), (0.004 * w + 0.006, sy + 0.028, 0.6 * h), tint("#f4f4f4", "paint"))  # flag pole
+    b.box((0.004 * w + 0.006, sy + 0.024, 0.57 * h), (0.03 * w + 0.02, sy + 0.028, 0.6 * h), tint("#d63a2a", "paint"))
     for x0 in (-w / 2 + t / 2, w / 2 - t / 2 - 0.01):  # side nets
-        b.box((x0, -d / 2 + t, 0.05), (x0 + 0.01, d / 2 - t, h - t), "#303234", alpha=110)
-    b.box((-w / 2 + t, -d / 2 + t, h - t - 0.01), (w / 2 - t, -d / 2 + 0.25 * d, h - t), "#303234", alpha=110)
+        b.box((x0, -d / 2 + t, 0.05), (x0 + 0.01, d / 2 - t, h - t), tint("#303234", "paint"), alpha=110)
+    b.box((-w / 2 + t, -d / 2 + t, h - t - 0.01), (w / 2 - t, -d / 2 + 0.25 * d, h - t), tint("#303234", "paint"), alpha=110)
     b.box((-w / 2, -d / 2, 0), (w / 2, d / 2, 0.03), p.secondary)  # turf
-    b.box((-0.2 * w, 0.05 * d, 0.03), (0.2 * w, 0.35 * d, 0.05), "#6ab85a")  # hitting mat
-    b.cyl(0.0, 0.15 * d, 0.05, 0.07, 0.005, "#f4f4f4", sections=6)
-    b.sphere((0.0, 0.15 * d, 0.09), 0.025, "#fbfbfb", subdivisions=1)
+    b.box((-0.2 * w, 0.05 * d, 0.03), (0.2 * w, 0.35 * d, 0.05), tint("#6ab85a", "rubber"))  # hitting mat
+    b.cyl(0.0, 0.15 * d, 0.05, 0.07, 0.005, tint("#f4f4f4", "paint"), sections=6)
+    b.sphere((0.0, 0.15 * d, 0.09), 0.025, tint("#fbfbfb", "paint"), subdivisions=1)
     b.box((0.12 * w, 0.2 * d, 0.05), (0.16 * w, 0.26 * d, 0.12), BLACK)  # launch monitor
-    b.box((-0.05 * w, d / 2 - t - 0.4, h - t - 0.2), (0.05 * w, d / 2 - t - 0.05, h - t), "#e8e6e0")  # projector
-    disc_y(b, 0, d / 2 - t - 0.42, d / 2 - t - 0.4, h - t - 0.1, 0.05, "#2a4a6a", sections=12)
+    b.box((-0.05 * w, d / 2 - t - 0.4, h - t - 0.2), (0.05 * w, d / 2 - t - 0.05, h - t), tint("#e8e6e0", "paint"))  # projector
+    disc_y(b, 0, d / 2 - t - 0.42, d / 2 - t - 0.4, h - t - 0.1, 0.05, tint("#2a4a6a", "paint"), sections=12)
     b.box((-0.01, d / 2 - t - 0.3, h - t), (0.01, d / 2 - t - 0.25, h), p.primary)
     if p.bag:
         bx, by = 0.35 * w, 0.2 * d
-        b.cyl(bx, by, 0.03, 0.9, 0.13, "#2d4f8a", sections=12)
+        b.cyl(bx, by, 0.03, 0.9, 0.13, tint("#2d4f8a", "paint"), sections=12)
         for k in range(5):
             a = 2 * np.pi * k / 5
             b.rod((bx + 0.06 * np.cos(a), by + 0.06 * np.sin(a), 0.85), (bx + 0.08 * np.cos(a), by + 0.08 * np.sin(a),
@@ -502,29 +504,38 @@ def build_dj_booth(p):
         b.cyl(cx - 0.03, -0.03, z + 0.06, z + 0.065, 0.135, BLACK, sections=24)
         b.cyl(cx - 0.03, -0.03, z + 0.065, z + 0.067, 0.045, p.accent, sections=12)
         b.rod((cx + 0.15, -0.15, z + 0.08), (cx + 0.08, 0.05, z + 0.07), 0.006, CHROME, sections=5)
-    b.box((-0.09, -0.18, z), (0.09, 0.15, z + 0.06), "#2b2b2b")  # mixer
+    b.box((-0.09, -0.18, z), (0.09, 0.15, z + 0.06), tint("#2b2b2b", "paint"))  # mixer
     for i in range(3):
         for j in range(4):
-            b.cyl(-0.06 + 0.06 * i, -0.14 + 0.06 * j, z + 0.06, z + 0.075, 0.012, "#c9ccd0", sections=6)
+            b.cyl(-0.06 + 0.06 * i, -0.14 + 0.06 * j, z + 0.06, z + 0.075, 0.012, tint("#c9ccd0", "metal"), sections=6)
     b.box((-0.07, 0.1, z + 0.06), (0.07, 0.11, z + 0.07), CHROME)
     lx = 0.0
     b.box((lx - 0.08, -d / 2 + 0.05, z), (lx + 0.08, -d / 2 + 0.2, z + 0.12), DARK_METAL)  # laptop stand
-    b.box((lx - 0.17, -d / 2 + 0.05, z + 0.12), (lx + 0.17, -d / 2 + 0.28, z + 0.13), "#9a9da3")
-    b.box((lx - 0.17, -d / 2 + 0.04, z + 0.13), (lx + 0.17, -d / 2 + 0.06, h), "#9a9da3")
-    b.box((lx - 0.15, -d / 2 + 0.061, z + 0.15), (lx + 0.15, -d / 2 + 0.062, h - 0.01), "#2a3a5a")
+    b.box((lx - 0.17, -d / 2 + 0.05, z + 0.12), (lx + 0.17, -d / 2 + 0.28, z + 0.13), tint("#9a9da3", "metal"))
+    b.box((lx - 0.17, -d / 2 + 0.04, z + 0.13), (lx + 0.17, -d / 2 + 0.06, h), tint("#9a9da3", "metal"))
+    b.box((lx - 0.15, -d / 2 + 0.061, z + 0.15), (lx + 0.15, -d / 2 + 0.062, h - 0.01), tint("#2a3a5a", "paint"))
     for s in (-1, 1):  # monitors
         x = s * (w / 2 - 0.1)
         b.box((x - 0.09, -d / 2 + 0.02, z), (x + 0.09, -d / 2 + 0.24, z + 0.28), BLACK)
-        disc_y(b, x, -d / 2 + 0.24, -d / 2 + 0.25, z + 0.1, 0.06, "#3a3b3e", sections=12)
+        disc_y(b, x, -d / 2 + 0.24, -d / 2 + 0.25, z + 0.1, 0.06, tint("#3a3b3e", "paint"), sections=12)
     return b.mesh(p.size)
 
 
+slot_roles("phone_booth", "paint", "light", "wood")
 register("phone_booth", sample_phone_booth, build_phone_booth)
+slot_roles("photo_booth", {"": "paint", "#c9ccd0": "metal"}, "fabric", "light")
 register("photo_booth", sample_photo_booth, build_photo_booth)
+slot_roles("vocal_booth", "fabric", "paint", "light")
 register("vocal_booth", sample_vocal_booth, build_vocal_booth)
+slot_roles("ticket_booth", "paint", {"": "wood", BRASS: "metal"}, "light")
 register("ticket_booth", sample_ticket_booth, build_ticket_booth)
+slot_roles("cubicle", "fabric", "plastic", "plastic")
 register("cubicle", sample_cubicle, build_cubicle)
+slot_roles("sleeping_pod", "plastic", "fabric", "fabric")
 register("sleeping_pod", sample_sleeping_pod, build_sleeping_pod)
+slot_roles("elevator", "paint", "metal", "light")
 register("elevator", sample_elevator, build_elevator)
+slot_roles("golf_simulator", "fabric", "fabric", "fabric")
 register("golf_simulator", sample_golf_simulator, build_golf_simulator)
+slot_roles("dj_booth", "paint", "plastic", "light")
 register("dj_booth", sample_dj_booth, build_dj_booth)

@@ -20,14 +20,16 @@ from anyhome.assets.procedural._parts import (
     make_params,
     rot_x,
     rot_y,
+    slot_roles,
     style_is,
+    tint,
     wood_tones,
 )
 from anyhome.assets.registry import register
 
-CHROME = "#c9ccd0"
-LEATHERS = [BLACK, "#2b2b2b", "#7a1f2b", "#e8e6e0", "#5c3b26", "#2f4a5a"]
-SKIN_TONES = ["#e8e4dc", "#f0ede6", "#2b2b2b", "#d9c3a0", "#b08a66"]
+CHROME = tint("#c9ccd0", "metal")
+LEATHERS = tint([BLACK, "#2b2b2b", "#7a1f2b", "#e8e6e0", "#5c3b26", "#2f4a5a"], "leather")
+SKIN_TONES = tint(["#e8e4dc", "#f0ede6", "#2b2b2b", "#d9c3a0", "#b08a66"], "plastic")
 GARMENTS = FABRICS + ["#c0392b", "#e8e6e0", "#2e4a8b", "#d9a32a", "#3f6b4a", "#ec7fa9"]
 
 
@@ -49,7 +51,7 @@ def build_hospital_bed(p):
     for x, y in corners(w, d, 0.1):
         b.box((x - 0.025, y - 0.025, wheel), (x + 0.025, y + 0.025, frame_z - 0.06), CHROME)
         b.rod((x - 0.02, y, wheel / 2), (x + 0.02, y, wheel / 2), wheel / 2, BLACK, sections=10)
-    b.box((-0.15 * w, -0.2 * d, wheel + 0.05), (0.15 * w, 0.2 * d, frame_z - 0.06), "#9a9da3")  # lift column
+    b.box((-0.15 * w, -0.2 * d, wheel + 0.05), (0.15 * w, 0.2 * d, frame_z - 0.06), tint("#9a9da3", "metal"))  # lift column
     hinge = -d / 2 + 0.4 * d
     b.box((-w / 2 + 0.05, hinge, frame_z), (w / 2 - 0.05, d / 2 - 0.07, top), p.secondary)  # mattress
     tilt = about(rot_x(-p.raised), (0, hinge, frame_z))
@@ -101,8 +103,8 @@ def _draw_massage(b: Builder, L: float, B: float, H: float, p) -> None:
     else:
         b.box((-L / 2, -B / 2, top - pad), (x0, B / 2, top), p.secondary,
               transform=about(rot_y(0.45), (x0, 0, top - pad)))
-        b.rod((L / 2 - 0.04, -0.4 * B, top), (L / 2 - 0.04, 0.4 * B, top), 0.04, "#f8f8f6", sections=12)
-        b.box((x0 + 0.02, -0.35 * B, top), (L / 2 - 0.04, 0.35 * B, top + 0.003), "#f8f8f6")  # paper sheet
+        b.rod((L / 2 - 0.04, -0.4 * B, top), (L / 2 - 0.04, 0.4 * B, top), 0.04, tint("#f8f8f6", "paint"), sections=12)
+        b.box((x0 + 0.02, -0.35 * B, top), (L / 2 - 0.04, 0.35 * B, top + 0.003), tint("#f8f8f6", "paper"))  # paper sheet
     if p.towel:
         b.box((-0.1 * L, -B / 2 - 0.005, top - 0.02), (0.15 * L, B / 2 + 0.005, top + 0.01), p.accent)
 
@@ -230,7 +232,7 @@ def build_clothes_rack(p):
             x = -w / 2 + 0.2 + i * 0.35
             if x > w / 2 - 0.2:
                 break
-            b.box((x - 0.06, -0.1, 0.18), (x + 0.06, 0.05, 0.28), GARMENTS[(i * 5) % len(GARMENTS)])  # shoes / boxes
+            b.box((x - 0.06, -0.1, 0.18), (x + 0.06, 0.05, 0.28), GARMENTS[(i * 5) % len(GARMENTS)], role="fabric")  # shoes / boxes
     n = p.garments
     span = w - 0.2
     for i in range(n):
@@ -243,7 +245,7 @@ def build_clothes_rack(p):
                 (x - 0.012, gw / 2, rail - 0.07), (x + 0.012, gw / 2, rail - 0.07),
                 (x - 0.03, -gw / 2 - 0.03, rail - 0.07 - length), (x + 0.03, -gw / 2 - 0.03, rail - 0.07 - length),
                 (x - 0.03, gw / 2 + 0.03, rail - 0.07 - length), (x + 0.03, gw / 2 + 0.03, rail - 0.07 - length)],
-               col)
+               col, role="plastic")
     return b.mesh(p.size)
 
 
@@ -286,7 +288,7 @@ def build_coat_rack(p):
 
         b.hull([at(r0 - 0.04, -0.09, z0), at(r0 - 0.04, 0.09, z0), at(r0 + 0.05, -0.09, z0),
                 at(r0 + 0.05, 0.09, z0), at(r1 - 0.06, -0.17, z1), at(r1 - 0.06, 0.17, z1),
-                at(r1 + 0.08, -0.17, z1), at(r1 + 0.08, 0.17, z1)], col)
+                at(r1 + 0.08, -0.17, z1), at(r1 + 0.08, 0.17, z1)], col, role="fabric")
     if p.coats and rng.random() < 0.5:
         b.cyl(0.2 * R, 0, top + 0.06, top + 0.12, 0.12, p.accent, r_top=0.08, sections=14)  # a hat
     return b.mesh(p.size)
@@ -315,7 +317,7 @@ def _machine(b: Builder, x0: float, x1: float, y0: float, y1: float, z0: float, 
           sections=20)  # hand wheel
     b.cyl(x0 + 0.5 * L, yc, z1, z1 + 0.03, 0.015, accent, sections=10)  # spool
     b.box((x0 + 0.3 * L, yc + 0.25 * D, z1 - 0.25 * H), (x0 + 0.55 * L, yc + 0.251 * D + 0.002, z1 - 0.12 * H),
-          "#c9a54a")  # decal
+          tint("#c9a54a", "metal"))  # decal
 
 
 def build_sewing_machine(p):
@@ -381,8 +383,8 @@ def build_espresso_machine(p):
         b.cyl(x, yg, head_z - 0.11 * h, head_z - 0.05 * h, 0.035, DARK_METAL, sections=14)  # portafilter
         b.rod((x, yg + 0.02, head_z - 0.08 * h), (x, d / 2, head_z - 0.1 * h), 0.012,
               p.secondary if p.secondary != CHROME else BLACK, sections=8)
-        b.cyl(x, yg, 0.06, 0.16, 0.03, "#f4f1ea", sections=10)  # a cup under it
-        b.rod((x, yf, 0.72 * h), (x, yf + 0.006, 0.72 * h), 0.035, "#f4f1ea", sections=14)  # gauge
+        b.cyl(x, yg, 0.06, 0.16, 0.03, tint("#f4f1ea", "paint"), sections=10)  # a cup under it
+        b.rod((x, yf, 0.72 * h), (x, yf + 0.006, 0.72 * h), 0.035, tint("#f4f1ea", "paint"), sections=14)  # gauge
     for sx in (-1, 1):  # steam wand and hot water tap
         x = sx * (w / 2 - 0.05)
         b.rod((x, yf - 0.05, head_z), (x, yf, head_z - 0.05 * h), 0.008, CHROME, sections=6)
@@ -392,15 +394,23 @@ def build_espresso_machine(p):
         mx, my = min(0.06, w / 4), min(0.06, (yf - yb) / 4)
         x = rng.uniform(-w / 2 + mx, w / 2 - mx)
         y = rng.uniform(yb + my, yf - my)
-        b.cyl(x, y, top + 0.008, h, 0.03, "#f4f1ea", r_top=0.035, sections=10)
+        b.cyl(x, y, top + 0.008, h, 0.03, tint("#f4f1ea", "paint"), r_top=0.035, sections=10)
     return b.mesh(p.size)
 
 
+slot_roles("hospital_bed", "paint", "fabric", {"": "plastic", "#c9ccd0": "metal"})
 register("hospital_bed", sample_hospital_bed, build_hospital_bed)
+slot_roles("massage_table", {"": "wood", CHROME: "metal", METAL: "metal"}, "leather", "fabric")
 register("massage_table", sample_massage_table, build_massage_table)
+slot_roles("salon_chair", "leather", "metal", "metal")
 register("salon_chair", sample_salon_chair, build_salon_chair)
+slot_roles("mannequin", "plastic", "fabric", "metal")
 register("mannequin", sample_mannequin, build_mannequin)
+slot_roles("clothes_rack", {"": "wood", CHROME: "metal", DARK_METAL: "metal"}, "fabric", "fabric")
 register("clothes_rack", sample_clothes_rack, build_clothes_rack)
+slot_roles("coat_rack", {"": "wood", CHROME: "metal"}, "fabric", "wood")
 register("coat_rack", sample_coat_rack, build_coat_rack)
+slot_roles("sewing_machine", "wood", "paint", {"": "paint", "#c9a54a": "metal"})
 register("sewing_machine", sample_sewing_machine, build_sewing_machine)
+slot_roles("espresso_machine", "metal", "metal", "plastic")
 register("espresso_machine", sample_espresso_machine, build_espresso_machine)

@@ -17,18 +17,21 @@ from anyhome.assets.procedural._kit import (
 from anyhome.assets.procedural._parts import (
     BLACK,
     DARK_METAL,
+    METAL,
     Builder,
     darker,
     lengthwise,
     lighter,
     make_params,
+    slot_roles,
+    tint,
 )
 from anyhome.assets.registry import register
 
-CART_COLORS = ["#c0392b", "#2d6fb0", "#9a9da3", "#e8e6e0", "#3f8a4a"]
-DRAWER_FRONTS = ["#e8e6e0", "#f4f4f2", "#c9ccd0"]
-MEDICAL_WHITE = ["#f4f4f2", "#eceae4", "#e6ebee"]
-MEDICAL_ACCENTS = ["#2d6fb0", "#4ab0c0", "#7fa8c8", "#5f6b7a", "#3f8a8a"]
+CART_COLORS = tint(["#c0392b", "#2d6fb0", "#9a9da3", "#e8e6e0", "#3f8a4a"], "paint")
+DRAWER_FRONTS = tint(["#e8e6e0", "#f4f4f2", "#c9ccd0"], "plastic")
+MEDICAL_WHITE = tint(["#f4f4f2", "#eceae4", "#e6ebee"], "paint")
+MEDICAL_ACCENTS = tint(["#2d6fb0", "#4ab0c0", "#7fa8c8", "#5f6b7a", "#3f8a8a"], "plastic")
 
 
 # ----------------------------------------------------------------- wheelchair
@@ -47,7 +50,7 @@ def build_wheelchair(p):
     tyre = min(0.035, 0.06 * w)
     for s in (-1, 1):
         x = s * (w / 2 - tyre / 2 - 0.035 * w)
-        wheel_x(b, x, wy, R, R, tyre, BLACK, p.primary if p.primary != BLACK else "#9a9da3", spokes=p.spokes // 2)
+        wheel_x(b, x, wy, R, R, tyre, BLACK, p.primary if p.primary != BLACK else METAL, spokes=p.spokes // 2)
         ring_x(b, (s * (w / 2 - 0.012 * w), wy, R), 0.85 * R, 0.008, CHROME, sections=24)  # push rim
     seat_z = 0.5 * h
     fx = w / 2 - tyre - 0.1 * w
@@ -105,11 +108,11 @@ def build_medical_cart(p):
     path(b, [(w / 2 - 0.05 * w, -0.3 * d, 0.7 * h), (w / 2, -0.3 * d, 0.72 * h), (w / 2, 0.3 * d, 0.72 * h),
              (w / 2 - 0.05 * w, 0.3 * d, 0.7 * h)], 0.012, CHROME, sections=6)
     b.box((-w / 2, -0.2 * d, 0.55 * h), (-0.45 * w, 0.1 * d, 0.72 * h), p.accent)  # sharps box
-    b.box((-w / 2 - 0.0, -0.18 * d, 0.72 * h), (-0.45 * w, 0.08 * d, 0.74 * h), "#c0392b")
+    b.box((-w / 2 - 0.0, -0.18 * d, 0.72 * h), (-0.45 * w, 0.08 * d, 0.74 * h), tint("#c0392b", "paint"))
     if p.monitor:
-        b.box((-0.3 * w, -0.3 * d, top + 0.015 * h), (0.3 * w, 0.2 * d, h - 0.01 * h), "#e8e6e0")
+        b.box((-0.3 * w, -0.3 * d, top + 0.015 * h), (0.3 * w, 0.2 * d, h - 0.01 * h), tint("#e8e6e0", "paint"))
         b.box((-0.25 * w, 0.2 * d, top + 0.04 * h), (0.05 * w, 0.202 * d, h - 0.03 * h), SCREEN)
-        b.box((0.1 * w, 0.2 * d, top + 0.05 * h), (0.2 * w, 0.205 * d, top + 0.09 * h), "#c0392b")
+        b.box((0.1 * w, 0.2 * d, top + 0.05 * h), (0.2 * w, 0.205 * d, top + 0.09 * h), tint("#c0392b", "paint"))
     return b.mesh(p.size)
 
 
@@ -128,7 +131,7 @@ def _draw_xray(b: Builder, L: float, B: float, H: float, p) -> None:
     b.box((-0.08 * L, -0.12 * B, 0.05 * H), (0.08 * L, 0.12 * B, tz - 0.05 * H), p.primary)
     b.box((tx0, -0.3 * B, tz - 0.05 * H), (tx1, 0.3 * B, tz), p.primary)
     b.box((tx0 + 0.02 * L, -0.27 * B, tz), (tx1 - 0.02 * L, 0.27 * B, tz + 0.03 * H), p.secondary)  # pad
-    b.box((tx0 + 0.02 * L, -0.22 * B, tz + 0.03 * H), (tx0 + 0.14 * L, 0.22 * B, tz + 0.05 * H), "#f4f4f2")
+    b.box((tx0 + 0.02 * L, -0.22 * B, tz + 0.03 * H), (tx0 + 0.14 * L, 0.22 * B, tz + 0.05 * H), tint("#f4f4f2", "paint"))
     cx, cy = -0.46 * L, -0.38 * B
     b.box((cx - 0.04 * L, cy - 0.1 * B, 0), (cx + 0.04 * L, cy + 0.1 * B, 0.04 * H), darker(p.primary, 0.1))
     b.box((cx - 0.025 * L, cy - 0.06 * B, 0.04 * H), (cx + 0.025 * L, cy + 0.06 * B, H), p.primary)  # column
@@ -179,14 +182,18 @@ def _draw_scanner(b: Builder, L: float, B: float, H: float, p) -> None:
     b.box((gx1 + 0.05 * L, -0.15 * B, 0), (L / 2 - 0.05 * L, 0.15 * B, tz - 0.06 * H), lighter(p.primary, 0.05))
     b.box((gx0 + 0.05 * L, -0.5 * br, tz - 0.05 * H), (L / 2, 0.5 * br, tz), p.primary)  # table
     b.box((gx1 - 0.02 * L, -0.45 * br, tz), (L / 2 - 0.02 * L, 0.45 * br, tz + 0.03 * H), p.secondary)
-    b.box((L / 2 - 0.14 * L, -0.3 * br, tz + 0.03 * H), (L / 2 - 0.04 * L, 0.3 * br, tz + 0.06 * H), "#f4f4f2")
+    b.box((L / 2 - 0.14 * L, -0.3 * br, tz + 0.03 * H), (L / 2 - 0.04 * L, 0.3 * br, tz + 0.06 * H), tint("#f4f4f2", "paint"))
 
 
 def build_medical_scanner(p):
     return lengthwise(p.size, lambda b, L, B, H: _draw_scanner(b, L, B, H, p))
 
 
+slot_roles("wheelchair", "metal", "fabric", "plastic")
 register("wheelchair", sample_wheelchair, build_wheelchair)
+slot_roles("medical_cart", "paint", "paint", "plastic")
 register("medical_cart", sample_medical_cart, build_medical_cart)
+slot_roles("xray_machine", "paint", "paint", "paint")
 register("xray_machine", sample_xray_machine, build_xray_machine)
+slot_roles("medical_scanner", "plastic", "plastic", "plastic")
 register("medical_scanner", sample_medical_scanner, build_medical_scanner)

@@ -28,17 +28,19 @@ from anyhome.assets.procedural._parts import (
     lighter,
     make_params,
     rot_y,
+    slot_roles,
     style_is,
+    tint,
     wood_tones,
 )
 from anyhome.assets.registry import register
 
-BRICK = ["#a0472e", "#8a3a28", "#b0583a"]
-FIREBRICK = "#d9c3a0"
-EMBER = ["#ff7a1a", "#e8402a", "#ffb030", "#c0301a"]
-CLAY = ["#b5754a", "#a0643c", "#9a8a7a", "#c98a5a"]
-YARNS = ["#c0392b", "#2e4a8b", "#d9a32a", "#3f6b4a", "#8e44ad", "#e8e6e0", "#d35400", "#5f6b7a"]
-TOOL_HANDLES = ["#c0392b", "#f1c40f", "#2e86c1", BLACK, "#27ae60", "#e67e22"]
+BRICK = tint(["#a0472e", "#8a3a28", "#b0583a"], "stone")
+FIREBRICK = tint("#d9c3a0", "stone")
+EMBER = tint(["#ff7a1a", "#e8402a", "#ffb030", "#c0301a"], "light")
+CLAY = tint(["#b5754a", "#a0643c", "#9a8a7a", "#c98a5a"], "ceramic")
+YARNS = tint(["#c0392b", "#2e4a8b", "#d9a32a", "#3f6b4a", "#8e44ad", "#e8e6e0", "#d35400", "#5f6b7a"], "fabric")
+TOOL_HANDLES = tint(["#c0392b", "#f1c40f", "#2e86c1", BLACK, "#27ae60", "#e67e22"], "plastic")
 
 
 # ----------------------------------------------------------------- kiln
@@ -69,7 +71,7 @@ def build_kiln(p):
         zs = 0.12 * h
         prof = [(-r, zs), (r, zs), (r, zs + 0.3 * top)] + arc(0, zs + 0.3 * top, r, 0, np.pi, 10)[1:-1] + \
             [(-r, zs + 0.3 * top)]
-        extrude_y(b, [(x, min(z, top - 0.05 * h)) for x, z in prof], d / 2 - 0.021, d / 2 - 0.01, "#3a1a10")
+        extrude_y(b, [(x, min(z, top - 0.05 * h)) for x, z in prof], d / 2 - 0.021, d / 2 - 0.01, tint("#3a1a10", "paint"))
         inner = [(x * 0.75, zs + (z - zs) * 0.75) for x, z in prof]
         extrude_y(b, inner, d / 2 - 0.012, d / 2 - 0.006, p.accent)
         return b.mesh(p.size)
@@ -115,7 +117,7 @@ def build_forge(p):
             b.box((x - 0.03, y - 0.03, 0), (x + 0.03, y + 0.03, tz - 0.08 * h), p.primary)
     b.box((-0.45 * w, -0.4 * d, 0.12 * h), (0.45 * w, 0.4 * d, 0.14 * h), p.primary)  # shelf
     b.box((-w / 2, -d / 2 + 0.1 * d, tz - 0.08 * h), (w / 2, d / 2, tz), p.primary)
-    b.box((-w / 2 + 0.04, -d / 2 + 0.14 * d, tz), (w / 2 - 0.04, d / 2 - 0.04, tz + 0.01), "#2a2522")
+    b.box((-w / 2 + 0.04, -d / 2 + 0.14 * d, tz), (w / 2 - 0.04, d / 2 - 0.04, tz + 0.01), tint("#2a2522", "paint"))
     for sx in (-1, 1):
         b.box((sx * w / 2 - (0.04 if sx > 0 else 0), -d / 2 + 0.1 * d, tz), (sx * w / 2 + (0.04 if sx < 0 else 0),
                                                                             d / 2, tz + 0.05 * h), p.primary)
@@ -125,7 +127,7 @@ def build_forge(p):
         a, r = rng.uniform(0, 2 * np.pi), cr * np.sqrt(rng.random())
         z = tz + 0.01 + 0.06 * h * (1 - r / cr) * rng.uniform(0.5, 1)
         col = EMBER[int(rng.integers(len(EMBER)))] if r < 0.75 * cr else "#2a2522"
-        b.sphere((cx + r * np.cos(a), cy + r * np.sin(a), z), 0.03 + 0.02 * rng.random(), col, subdivisions=0)
+        b.sphere((cx + r * np.cos(a), cy + r * np.sin(a), z), 0.03 + 0.02 * rng.random(), col, subdivisions=0, role="light")
     hz0, hz1 = 0.72 * h, 0.86 * h
     b.hull([(-0.45 * w, -0.45 * d, hz0), (0.45 * w, -0.45 * d, hz0), (-0.45 * w, 0.35 * d, hz0),
             (0.45 * w, 0.35 * d, hz0), (-0.12 * w, -0.3 * d, hz1), (0.12 * w, -0.3 * d, hz1),
@@ -250,7 +252,7 @@ def _draw_press(b: Builder, L: float, B: float, H: float, p) -> None:
         for y in (-0.22 * B, 0.22 * B):
             b.box((x - 0.02 * L, y - 0.04 * B, 0), (x + 0.02 * L, y + 0.04 * B, rail_z - 0.05 * H), p.primary)
     b.box((-0.35 * L, -0.3 * B, rail_z), (0.1 * L, 0.3 * B, rail_z + 0.05 * H), darker(p.primary, 0.2))  # coffin
-    b.box((-0.33 * L, -0.27 * B, rail_z + 0.05 * H), (0.08 * L, 0.27 * B, rail_z + 0.06 * H), "#2a2522")  # forme
+    b.box((-0.33 * L, -0.27 * B, rail_z + 0.05 * H), (0.08 * L, 0.27 * B, rail_z + 0.06 * H), tint("#2a2522", "paint"))  # forme
     hinge = (0.1 * L, 0, rail_z + 0.05 * H)
     tilt = about(rot_y(0.75), hinge)  # tympan swung up at +x
     b.box((0.1 * L, -0.28 * B, rail_z + 0.04 * H), (0.42 * L, 0.28 * B, rail_z + 0.06 * H), p.accent,
@@ -318,7 +320,7 @@ def build_loom(p):
         b.box((x0, y, hz1 - 0.02 * h), (x1, y + 0.015, hz1), lighter(p.primary, 0.15))
         b.box((x0, y, hz0 + 0.12 * h), (x1, y + 0.015, hz0 + 0.14 * h), lighter(p.primary, 0.15))
         for x in np.linspace(x0 + 0.02, x1 - 0.02, 12):
-            b.box((x - 0.002, y + 0.005, hz0 + 0.14 * h), (x + 0.002, y + 0.01, hz1 - 0.02 * h), "#9a9da3")
+            b.box((x - 0.002, y + 0.005, hz0 + 0.14 * h), (x + 0.002, y + 0.01, hz1 - 0.02 * h), tint("#9a9da3", "metal"))
     by = 0.12 * d  # the beater
     for x in (x0 - t, x1 + t):
         b.box((x - t / 2, by - t / 2, 0.15 * h), (x + t / 2, by + t / 2, hz1 - 0.1 * h), p.primary)
@@ -369,8 +371,8 @@ def _draw_spinning_wheel(b: Builder, L: float, B: float, H: float, p) -> None:
         b.rod((mx - 0.08 * L, 0, fz), (mx - 0.08 * L, s * 0.06, fz + 0.03), 0.006, p.primary, sections=5)
         b.rod((mx - 0.08 * L, s * 0.06, fz + 0.03), (mx + 0.04 * L, s * 0.06, fz + 0.03), 0.006, p.primary,
               sections=5)
-    b.rod((cx, 0, cz), (mx - 0.04 * L, 0, fz), 0.002, "#e8dcc0", sections=4)  # drive band
-    b.rod((cx, 0, cz - R), (mx - 0.04 * L, 0, fz), 0.002, "#e8dcc0", sections=4)
+    b.rod((cx, 0, cz), (mx - 0.04 * L, 0, fz), 0.002, tint("#e8dcc0", "fabric"), sections=4)  # drive band
+    b.rod((cx, 0, cz - R), (mx - 0.04 * L, 0, fz), 0.002, tint("#e8dcc0", "paint"), sections=4)
     b.box((-0.3 * L, 0.1 * B, 0.02), (0.1 * L, 0.35 * B, 0.05), p.primary)  # treadle
     b.rod((-0.1 * L, 0.22 * B, 0.05), (cx + 0.1 * R, 0.12 * B, cz - 0.1 * R), 0.008, p.primary, sections=5)
 
@@ -442,7 +444,7 @@ def build_pegboard(p):
     b.box((x - 0.05 * u, ty, 0.75 * h), (x + 0.07 * u, ty + td * 0.5, 0.85 * h), handle())
     # tape measure and a coil of cord
     x = slots[5]
-    disc_y(b, x, ty, ty + td * 0.8, 0.68 * h, 0.05 * u, "#f1c40f", sections=14)
+    disc_y(b, x, ty, ty + td * 0.8, 0.68 * h, 0.05 * u, tint("#f1c40f", "paint"), sections=14)
     ring_y(b, (x, ty + td * 0.3, 0.35 * h), 0.06 * u, 0.012 * u, handle(), sections=16)
     for xx in np.linspace(-w / 2 + 0.15 * w, w / 2 - 0.15 * w, 5):  # hooks along the bottom
         path(b, [(xx, fy, 0.15 * h), (xx, ty + td * 0.8, 0.15 * h), (xx, ty + td * 0.8, 0.18 * h)], 0.003, METAL,
@@ -450,11 +452,19 @@ def build_pegboard(p):
     return b.mesh(p.size)
 
 
+slot_roles("kiln", "metal", "metal", "light")
 register("kiln", sample_kiln, build_kiln)
+slot_roles("forge", "metal", "metal", "light")
 register("forge", sample_forge, build_forge)
+slot_roles("anvil", "metal", "wood", "metal")
 register("anvil", sample_anvil, build_anvil)
+slot_roles("pottery_wheel", "paint", "ceramic", "wood")
 register("pottery_wheel", sample_pottery_wheel, build_pottery_wheel)
+slot_roles("printing_press", {"": "wood", DARK_METAL: "metal"}, "metal", "paper")
 register("printing_press", sample_printing_press, build_printing_press)
+slot_roles("loom", "wood", "fabric", "fabric")
 register("loom", sample_loom, build_loom)
+slot_roles("spinning_wheel", "wood", "fabric", "wood")
 register("spinning_wheel", sample_spinning_wheel, build_spinning_wheel)
+slot_roles("pegboard", "paint", "wood", "metal")
 register("pegboard", sample_pegboard, build_pegboard)

@@ -14,15 +14,17 @@ from anyhome.assets.procedural._parts import (
     make_params,
     move,
     rot_x,
+    slot_roles,
     style_is,
+    tint,
     wood_tones,
 )
 from anyhome.assets.registry import register
 
-BRASS = "#c9a54a"
-BONE = "#e6dcc4"
-OCEANS = ["#3a6fa0", "#4f86b0", "#d9c9a0"]
-LAND = ["#6b8f4e", "#c9a56a", "#8a6a3a"]
+BRASS = tint("#c9a54a", "metal")
+BONE = tint("#e6dcc4", "stone")
+OCEANS = tint(["#3a6fa0", "#4f86b0", "#d9c9a0"], "paper")
+LAND = tint(["#6b8f4e", "#c9a56a", "#8a6a3a"], "paper")
 
 
 # ----------------------------------------------------------------- telescope
@@ -53,7 +55,7 @@ def build_telescope(p):
     front = mount + axis * 0.6 * length
     b.rod(back, front, r, p.primary, sections=16)
     b.rod(front - axis * 0.15 * length, front, r * 1.25, p.primary, sections=16)  # dew shield
-    b.rod(front - axis * 0.005, front, r * 1.15, "#1c2430", sections=16)
+    b.rod(front - axis * 0.005, front, r * 1.15, tint("#1c2430", "paint"), sections=16)
     b.rod(back - axis * 0.03, back, r * 0.7, p.accent, sections=12)
     b.rod(back, back + (0, 0, 0.08), 0.012, p.accent, sections=8)  # diagonal + eyepiece
     b.rod(back + (0, 0, 0.08), back + (-0.02, 0, 0.12), 0.018, p.accent, sections=8)
@@ -103,7 +105,7 @@ def build_globe(p):
     land = field > np.quantile(field, 0.68)
     colors = np.where(land[:, None], to_rgba(p.accent), to_rgba(p.secondary))
     tilt = move((0, 0, cz)) @ rot_x(0.41)
-    b.add_colored(v @ tilt[:3, :3].T + tilt[:3, 3], sph.faces, colors)
+    b.add_colored(v @ tilt[:3, :3].T + tilt[:3, 3], sph.faces, colors, role="paper")
     b.torus((0, 0, 0), R * 1.06, 0.012, BRASS, transform=tilt @ rot_x(np.pi / 2) @ np.eye(4), sections=32,
             minor_sections=4)  # meridian
     b.rod(tilt[:3, :3] @ (0, 0, -1.1 * R) + tilt[:3, 3], tilt[:3, :3] @ (0, 0, 1.1 * R) + tilt[:3, 3], 0.01, BRASS,
@@ -174,7 +176,7 @@ def _draw_dinosaur(b: Builder, L: float, B: float, H: float, p) -> None:
     b.hull([head + (-0.1 * hl, -0.25 * hh, -0.45 * hh), head + (-0.1 * hl, 0.25 * hh, -0.45 * hh),
             head + (0.9 * hl, -0.1 * hh, -0.75 * hh), head + (0.9 * hl, 0.1 * hh, -0.75 * hh),
             head + (0.2 * hl, 0, -0.35 * hh)], p.primary)  # open jaw
-    b.sphere(head + (0.15 * hl, 0.2 * hh, 0.15 * hh), 0.12 * hh, "#2a2520", subdivisions=0)
+    b.sphere(head + (0.15 * hl, 0.2 * hh, 0.15 * hh), 0.12 * hh, tint("#2a2520", "paint"), subdivisions=0)
     hip = sp[hip_i]
     thick = s * (1.3 if p.kind == "sauropod" else 1.0)
     for side in (-1, 1):
@@ -195,6 +197,9 @@ def build_dinosaur_skeleton(p):
     return lengthwise(p.size, lambda b, L, B, H: _draw_dinosaur(b, L, B, H, p))
 
 
+slot_roles("telescope", {"": "paint", BRASS: "metal"}, {"": "wood", DARK_METAL: "metal", METAL: "metal"}, "plastic")
 register("telescope", sample_telescope, build_telescope)
+slot_roles("globe", "wood", "paper", "paper")
 register("globe", sample_globe, build_globe)
+slot_roles("dinosaur_skeleton", "stone", "metal", "stone")
 register("dinosaur_skeleton", sample_dinosaur_skeleton, build_dinosaur_skeleton)

@@ -16,16 +16,18 @@ from anyhome.assets.procedural._parts import (
     lighter,
     make_params,
     rot_y,
+    slot_roles,
     style_is,
+    tint,
     wood_tones,
 )
 from anyhome.assets.registry import register
 
-SHADES = ["#f1ead8", "#e9e4da", "#d9c3a0", "#f4efe6", "#c8b8a6"]
-RUGS = ["#8b3a3a", "#3a4f7a", "#b59b72", "#6f7f5f", "#c9b8a0", "#5a3a5e", "#d8cfc0", "#7a5a30"]
-FOLIAGE = ["#3e7a3a", "#2f6b35", "#4f8a3f", "#5b9450", "#356b4a"]
-POTS = ["#b5654a", "#e8e6e0", "#2b2b2b", "#8c8f94", "#c9a77c", "#3f6f7a"]
-ART = ["#c0392b", "#2e86c1", "#f1c40f", "#27ae60", "#8e44ad", "#e67e22", "#1abc9c", "#34495e", "#ecf0f1"]
+SHADES = tint(["#f1ead8", "#e9e4da", "#d9c3a0", "#f4efe6", "#c8b8a6"], "fabric")
+RUGS = tint(["#8b3a3a", "#3a4f7a", "#b59b72", "#6f7f5f", "#c9b8a0", "#5a3a5e", "#d8cfc0", "#7a5a30"], "fabric")
+FOLIAGE = tint(["#3e7a3a", "#2f6b35", "#4f8a3f", "#5b9450", "#356b4a"], "plant")
+POTS = tint(["#b5654a", "#e8e6e0", "#2b2b2b", "#8c8f94", "#c9a77c", "#3f6f7a"], "ceramic")
+ART = tint(["#c0392b", "#2e86c1", "#f1c40f", "#27ae60", "#8e44ad", "#e67e22", "#1abc9c", "#34495e", "#ecf0f1"], "paint")
 
 
 def sample_lamp(rng, size, style):
@@ -48,7 +50,7 @@ def build_lamp(p):
         b.cyl(0, 0, 0, 0.04 * h, r * 0.55, p.primary)
         b.sphere((0, 0, 0.22 * h), (r * 0.45, r * 0.45, 0.18 * h), p.primary)
     b.cyl(0, 0, 0.4 * h, h - shade_h * 0.6, 0.008, p.accent, sections=8)
-    b.sphere((0, 0, h - shade_h * 0.55), r * 0.15, "#fff6d8")
+    b.sphere((0, 0, h - shade_h * 0.55), r * 0.15, tint("#fff6d8", "light"))
     b.cyl(0, 0, h - shade_h, h, r, p.secondary, r_top=r * 0.7, sections=24, alpha=235)
     return b.mesh(p.size)
 
@@ -70,7 +72,7 @@ def build_floor_lamp(p):
     else:
         b.cyl(0, 0, 0, 0.03, r * 0.7, p.primary, sections=24)
     b.cyl(0, 0, 0.03, h - shade_h * 0.5, 0.012, p.primary, sections=8)
-    b.sphere((0, 0, h - shade_h * 0.55), 0.04, "#fff6d8")
+    b.sphere((0, 0, h - shade_h * 0.55), 0.04, tint("#fff6d8", "light"))
     b.cyl(0, 0, h - shade_h, h, r, p.secondary, r_top=r * 0.75, sections=24)
     return b.mesh(p.size)
 
@@ -106,7 +108,7 @@ def build_rug(p):
         b.box((-w / 2 + 0.04, -d / 2 + 0.04, top), (w / 2 - 0.04, d / 2 - 0.04, top + eps), lighter(p.primary, 0.08))
     if p.fringe:
         for y in (-d / 2, d / 2 - 0.03):
-            b.box((-w / 2 + 0.02, y, 0), (w / 2 - 0.02, y + 0.03, h * 0.4), "#eee8da")
+            b.box((-w / 2 + 0.02, y, 0), (w / 2 - 0.02, y + 0.03, h * 0.4), tint("#eee8da", "paint"))
     return b.mesh(p.size)
 
 
@@ -125,10 +127,10 @@ def build_plant(p):
     pr = r * 0.55
     b.cyl(0, 0, 0, pot_h, pr * 0.75, p.primary, r_top=pr, sections=20)
     b.cyl(0, 0, pot_h - 0.02, pot_h, pr * 1.05, darker(p.primary, 0.1), sections=20)
-    b.cyl(0, 0, pot_h - 0.02, pot_h - 0.005, pr * 0.95, "#4a3526", sections=20)
+    b.cyl(0, 0, pot_h - 0.02, pot_h - 0.005, pr * 0.95, tint("#4a3526", "paint"), sections=20)
     if p.kind in ("tree", "tall"):
         trunk_top = h * (0.55 if p.kind == "tree" else 0.35)
-        b.cyl(0, 0, pot_h - 0.02, trunk_top, 0.02, "#6b4a30", r_top=0.012, sections=8)
+        b.cyl(0, 0, pot_h - 0.02, trunk_top, 0.02, tint("#6b4a30", "paint"), r_top=0.012, sections=8)
         c0, c1, rad = trunk_top, h, r
     else:
         c0, c1, rad = pot_h, h, r
@@ -172,12 +174,12 @@ def build_wall_art(p):
     ix0, ix1, iz0, iz1 = -w / 2 + m, w / 2 - m, m, h - m
     yc = y0 + 0.6 * d
     if p.motif == "landscape":
-        b.box((ix0, yc, iz0), (ix1, yc + 0.002, iz0 + 0.55 * (iz1 - iz0)), "#6f9a5a")
-        b.box((ix0, yc, iz0 + 0.55 * (iz1 - iz0)), (ix1, yc + 0.002, iz1), "#9cc3e0")
+        b.box((ix0, yc, iz0), (ix1, yc + 0.002, iz0 + 0.55 * (iz1 - iz0)), tint("#6f9a5a", "paint"))
+        b.box((ix0, yc, iz0 + 0.55 * (iz1 - iz0)), (ix1, yc + 0.002, iz1), tint("#9cc3e0", "paint"))
         b.box((ix0 + 0.2 * (ix1 - ix0), yc + 0.002, iz0 + 0.45 * (iz1 - iz0)),
-              (ix0 + 0.55 * (ix1 - ix0), yc + 0.004, iz0 + 0.7 * (iz1 - iz0)), "#5a6a7a")
+              (ix0 + 0.55 * (ix1 - ix0), yc + 0.004, iz0 + 0.7 * (iz1 - iz0)), tint("#5a6a7a", "paint"))
         b.sphere((ix0 + 0.8 * (ix1 - ix0), yc + 0.003, iz0 + 0.82 * (iz1 - iz0)),
-                 (0.06 * (ix1 - ix0), 0.001, 0.06 * (ix1 - ix0)), "#f5d36a", subdivisions=1)
+                 (0.06 * (ix1 - ix0), 0.001, 0.06 * (ix1 - ix0)), tint("#f5d36a", "paint"), subdivisions=1)
     else:
         b.box((ix0, yc, iz0), (ix1, yc + 0.002, iz1), lighter(p.accent, 0.6))
         for _ in range(6 if p.motif == "abstract" else 4):
@@ -225,9 +227,9 @@ def build_clock(p):
     if tall:  # a standing (grandfather) clock: case with the dial at the top
         b.box((-w / 2, -d / 2, 0), (w / 2, d / 2, 0.08 * h), darker(p.primary, 0.1))
         b.box((-w / 2 + 0.03, -d / 2, 0.08 * h), (w / 2 - 0.03, d / 2 - 0.02, 0.75 * h), p.primary)
-        b.box((-w / 2 + 0.08, d / 2 - 0.02, 0.15 * h), (w / 2 - 0.08, d / 2 - 0.01, 0.7 * h), "#3a3530", alpha=200)
-        b.rod((0, d / 2 - 0.03, 0.65 * h), (0, d / 2 - 0.03, 0.35 * h), 0.008, "#c9a54a")
-        b.rod((0, d / 2 - 0.04, 0.33 * h), (0, d / 2 - 0.02, 0.33 * h), 0.05, "#c9a54a")
+        b.box((-w / 2 + 0.08, d / 2 - 0.02, 0.15 * h), (w / 2 - 0.08, d / 2 - 0.01, 0.7 * h), tint("#3a3530", "paint"), alpha=200)
+        b.rod((0, d / 2 - 0.03, 0.65 * h), (0, d / 2 - 0.03, 0.35 * h), 0.008, tint("#c9a54a", "metal"))
+        b.rod((0, d / 2 - 0.04, 0.33 * h), (0, d / 2 - 0.02, 0.33 * h), 0.05, tint("#c9a54a", "metal"))
         b.box((-w / 2, -d / 2, 0.75 * h), (w / 2, d / 2, h), p.primary)
         cz, r, fy = 0.87 * h, min(w, 0.25 * h) * 0.38, d / 2
     else:
@@ -276,7 +278,7 @@ def build_tapestry(p):
     w, d, h = p.size
     b = Builder()
     rod = min(0.02, d / 2)
-    b.rod((-w / 2, 0, h - rod), (w / 2, 0, h - rod), rod, "#5c3b26")
+    b.rod((-w / 2, 0, h - rod), (w / 2, 0, h - rod), rod, tint("#5c3b26", "paint"))
     b.box((-w / 2 + 0.03, -d / 2, 0.06 * h), (w / 2 - 0.03, -d / 2 + 0.4 * d, h - 2 * rod), p.primary)
     for k, z in enumerate(np.linspace(0.12 * h, h - 0.1 * h, p.bands)):
         b.box((-w / 2 + 0.06, -d / 2 + 0.4 * d, z - 0.02 * h), (w / 2 - 0.06, -d / 2 + 0.45 * d, z + 0.02 * h),
@@ -400,17 +402,31 @@ def build_barrel(p):
     return b.mesh(p.size)
 
 
+slot_roles("lamp", {"": "ceramic", METAL: "metal", "#c9a54a": "metal"}, "fabric", "metal")
 register("lamp", sample_lamp, build_lamp)
+slot_roles("floor_lamp", "metal", "fabric", "metal")
 register("floor_lamp", sample_floor_lamp, build_floor_lamp)
+slot_roles("rug", "fabric", {"": "fabric", "#c9a54a": "metal"}, "fabric")
 register("rug", sample_rug, build_rug)
+slot_roles("plant", "ceramic", "plant", "plant")
 register("plant", sample_plant, build_plant)
+slot_roles("wall_art", "wood", "paper", "paint")
 register("wall_art", sample_wall_art, build_wall_art)
+slot_roles("mirror", {"": "paint", METAL: "metal", "#c9a54a": "metal"}, "glass", "metal")
 register("mirror", sample_mirror, build_mirror)
+slot_roles("clock", {"": "wood", "#c9a54a": "metal"}, "paper", "plastic")
 register("clock", sample_clock, build_clock)
+slot_roles("curtain", "fabric", "metal", "plastic")
 register("curtain", sample_curtain, build_curtain)
+slot_roles("tapestry", "fabric", "metal", "fabric")
 register("tapestry", sample_tapestry, build_tapestry)
+slot_roles("yoga_mat", "rubber", "rubber", "plastic")
 register("yoga_mat", sample_yoga_mat, build_yoga_mat)
+slot_roles("vase", {"": "ceramic", "#c9a54a": "metal"}, "plant", "plant")
 register("vase", sample_vase, build_vase)
+slot_roles("book", "paper", "paper", "metal")
 register("book", sample_book, build_book)
+slot_roles("statue", {"": "stone", "#9a9da3": "metal"}, "stone", "stone")
 register("statue", sample_statue, build_statue)
+slot_roles("barrel", "wood", "metal", "wood")
 register("barrel", sample_barrel, build_barrel)

@@ -30,21 +30,23 @@ from anyhome.assets.procedural._parts import (
     move,
     rot_y,
     rot_z,
+    slot_roles,
     style_is,
+    tint,
     wood_tones,
 )
 from anyhome.assets.registry import register
 
-STONES = ["#e8e4dc", "#f4f4f2", "#d9d3c7", "#c9c1b4", "#2b2b2b"]
-GOLD = "#d4af37"
-LAPIS = "#2a4a8a"
-SAIL = "#efe6d0"
-CARD_COLORS = ["#e05a47", "#2e86c1", "#f1c40f", "#27ae60", "#8e44ad", "#f08a2a", "#4ab0c0", "#ec7fa9", "#f4f1ea"]
-ANTLER = "#e0d0b0"
-FUR = ["#8a5a3a", "#7a4a2a", "#a0703a"]
-DART_CREAM = "#efe2c0"
-DART_RED = "#c0302a"
-DART_GREEN = "#2a7a3a"
+STONES = tint(["#e8e4dc", "#f4f4f2", "#d9d3c7", "#c9c1b4", "#2b2b2b"], "stone")
+GOLD = tint("#d4af37", "metal")
+LAPIS = tint("#2a4a8a", "stone")
+SAIL = tint("#efe6d0", "fabric")
+CARD_COLORS = tint(["#e05a47", "#2e86c1", "#f1c40f", "#27ae60", "#8e44ad", "#f08a2a", "#4ab0c0", "#ec7fa9", "#f4f1ea"], "paper")
+ANTLER = tint("#e0d0b0", "stone")
+FUR = tint(["#8a5a3a", "#7a4a2a", "#a0703a"], "fabric")
+DART_CREAM = tint("#efe2c0", "fabric")
+DART_RED = tint("#c0302a", "fabric")
+DART_GREEN = tint("#2a7a3a", "fabric")
 
 
 # ----------------------------------------------------------------- plinth
@@ -134,9 +136,9 @@ def _draw_ship(b: Builder, L: float, B: float, H: float, p) -> None:
             b.hull([(x, -sw / 2, z1), (x, sw / 2, z1), (x + 0.005, -0.45 * sw, z0), (x + 0.005, 0.45 * sw, z0),
                     (x + 0.04 * L, 0.0, (z0 + z1) / 2), (x + 0.004, -sw / 2, z1 - 0.005),
                     (x + 0.004, sw / 2, z1 - 0.005)], SAIL)
-        b.box((x, -0.002, mt), (x + 0.05 * L, 0.002, mt + 0.04 * H), "#c0392b")  # pennant
-        b.rod((x, 0, mt), (L / 2, 0, deck + 0.12 * H), 0.0015, "#3a2a1a", sections=3)
-        b.rod((x, 0, mt), (-0.42 * L, 0, deck + 0.1 * H), 0.0015, "#3a2a1a", sections=3)
+        b.box((x, -0.002, mt), (x + 0.05 * L, 0.002, mt + 0.04 * H), tint("#c0392b", "paint"))  # pennant
+        b.rod((x, 0, mt), (L / 2, 0, deck + 0.12 * H), 0.0015, tint("#3a2a1a", "paint"), sections=3)
+        b.rod((x, 0, mt), (-0.42 * L, 0, deck + 0.1 * H), 0.0015, tint("#3a2a1a", "paint"), sections=3)
 
 
 def build_model_ship(p):
@@ -198,7 +200,7 @@ def _draw_sarcophagus(b: Builder, L: float, B: float, H: float, p) -> None:
         x = -0.42 * L + k * 0.1 * L
         b.hull([(x, -0.36 * B, 0.7 * H), (x + 0.04 * L, -0.36 * B, 0.7 * H), (x, 0.36 * B, 0.7 * H),
                 (x + 0.04 * L, 0.36 * B, 0.7 * H), (x, -0.3 * B, 0.75 * H), (x + 0.04 * L, -0.3 * B, 0.75 * H),
-                (x, 0.3 * B, 0.75 * H), (x + 0.04 * L, 0.3 * B, 0.75 * H)], LAPIS if k % 2 else "#8a2a2a")
+                (x, 0.3 * B, 0.75 * H), (x + 0.04 * L, 0.3 * B, 0.75 * H)], LAPIS if k % 2 else tint("#8a2a2a", "paint"))
     hx = 0.36 * L  # the head: a striped headdress framing a gilt face
     for k in range(7):
         x0 = hx - 0.12 * L + k * 0.034 * L
@@ -270,7 +272,7 @@ def _barrel(b: Builder, x0: float, x1: float, z: float, r: float, color: str) ->
     b.lathe(prof, color, sections=20, transform=move((x0, 0.0, z)) @ rot_y(np.pi / 2))
     b.sphere((x0 - 0.06 * L, 0, z), 0.35 * r, color, subdivisions=1)  # cascabel
     b.rod((x0 - 0.06 * L, 0, z), (x0, 0, z), 0.15 * r, color, sections=8)
-    b.rod((x0 + L * 0.995, 0, z), (x0 + L * 1.0, 0, z), 0.35 * r, "#15161a", sections=12)  # the bore
+    b.rod((x0 + L * 0.995, 0, z), (x0 + L * 1.0, 0, z), 0.35 * r, tint("#15161a", "paint"), sections=12)  # the bore
 
 
 def _draw_cannon(b: Builder, L: float, B: float, H: float, p) -> None:
@@ -343,13 +345,13 @@ def build_spinner_rack(p):
                 x0 = -span + c * span + 0.05 * span
                 col = CARD_COLORS[int(rng.integers(len(CARD_COLORS)))]
                 ch = 0.85 * tier_h
-                m.box((x0, core + 0.01, z + 0.01 * h), (x0 + 0.9 * span, core + 0.03, z + ch), "#f4f1ea")
+                m.box((x0, core + 0.01, z + 0.01 * h), (x0 + 0.9 * span, core + 0.03, z + ch), tint("#f4f1ea", "paint"))
                 m.box((x0 + 0.05 * span, core + 0.03, z + 0.03 * h), (x0 + 0.85 * span, core + 0.033, z + ch - 0.02 * h),
                       col)
         b.extend(m, rot_z(k * np.pi / 2))
     if p.sign:
         b.box((-0.3 * w, -0.01, h - 0.1 * h), (0.3 * w, 0.01, h), p.accent)
-        b.box((-0.25 * w, -0.012, h - 0.08 * h), (0.25 * w, 0.012, h - 0.02 * h), "#f4f1ea")
+        b.box((-0.25 * w, -0.012, h - 0.08 * h), (0.25 * w, 0.012, h - 0.02 * h), tint("#f4f1ea", "paint"))
     return b.mesh(p.size)
 
 
@@ -398,8 +400,8 @@ def build_mounted_antlers(p):
         by = hc[1] - 0.05 * d
         ah = h - base_z
     else:
-        b.sphere((0, y0 + 0.2 * d, 0.3 * h), (0.1 * w, 0.12 * d, 0.12 * h), "#efe8d8", subdivisions=2)  # skull plate
-        b.sphere((0, y0 + 0.3 * d, 0.2 * h), (0.05 * w, 0.08 * d, 0.08 * h), "#efe8d8", subdivisions=1)
+        b.sphere((0, y0 + 0.2 * d, 0.3 * h), (0.1 * w, 0.12 * d, 0.12 * h), tint("#efe8d8", "paint"), subdivisions=2)  # skull plate
+        b.sphere((0, y0 + 0.3 * d, 0.2 * h), (0.05 * w, 0.08 * d, 0.08 * h), tint("#efe8d8", "paint"), subdivisions=1)
         base_z = 0.38 * h
         by = y0 + 0.2 * d
         ah = h - base_z
@@ -439,7 +441,7 @@ def build_barber_pole(p):
             a0, a1 = i * secs + j, i * secs + (j + 1) % secs
             b0, b1 = a0 + secs, a1 + secs
             faces += [(a0, a1, b1), (a0, b1, b0)]
-    b.add_colored(np.asarray(verts), np.asarray(faces), np.asarray(cols, dtype=np.uint8))
+    b.add_colored(np.asarray(verts), np.asarray(faces), np.asarray(cols, dtype=np.uint8), role="paint")
     for zc, up in ((z1, 1), (z0, -1)):  # caps
         prof = [[0, 0], [1.1 * R, 0], [1.1 * R, 0.03 * h], [0.7 * R, 0.08 * h], [0, 0.1 * h]]
         m = trimesh.creation.revolve(np.asarray(prof, dtype=float), sections=20)
@@ -475,7 +477,7 @@ def build_dartboard(p):
     for k in range(20):
         a = np.pi / 2 + 2 * np.pi * k / 20
         b.cbox((0.9 * R * np.cos(a), y0 + 0.6 * d + 0.002, cz + 0.9 * R * np.sin(a)), (0.05 * R, 0.004, 0.05 * R),
-               "#f4f4f2")
+               tint("#f4f4f2", "paint"))
     rb = 0.78 * R
     fy0, fy1 = y0 + 0.6 * d, y0 + 0.75 * d
     for k in range(20):
@@ -492,18 +494,27 @@ def build_dartboard(p):
     for _ in range(p.darts):
         r, a = rng.uniform(0.1, 0.9) * rb, rng.uniform(0, 2 * np.pi)
         x, z = r * np.cos(a), cz + r * np.sin(a)
-        b.rod((x, fy1, z), (x, d / 2 - 0.3 * d, z + 0.01), 0.006 * R, "#c9ccd0", sections=4)
+        b.rod((x, fy1, z), (x, d / 2 - 0.3 * d, z + 0.01), 0.006 * R, tint("#c9ccd0", "metal"), sections=4)
         b.rod((x, d / 2 - 0.3 * d, z + 0.01), (x, d / 2, z + 0.02), 0.004 * R, BLACK, sections=4)
         b.box((x - 0.05 * R, d / 2 - 0.15 * d, z + 0.015), (x + 0.05 * R, d / 2, z + 0.02), p.accent)
     return b.mesh(p.size)
 
 
+slot_roles("plinth", "stone", "stone", "plastic")
 register("plinth", sample_plinth, build_plinth)
+slot_roles("model_ship", "wood", "wood", {"": "paint", GOLD: "metal"})
 register("model_ship", sample_model_ship, build_model_ship)
+slot_roles("sarcophagus", "stone", "stone", "metal")
 register("sarcophagus", sample_sarcophagus, build_sarcophagus)
+slot_roles("rope_barrier", "metal", "fabric", "metal")
 register("rope_barrier", sample_rope_barrier, build_rope_barrier)
+slot_roles("cannon", "metal", "wood", "metal")
 register("cannon", sample_cannon, build_cannon)
+slot_roles("spinner_rack", "metal", "paper", "paint")
 register("spinner_rack", sample_spinner_rack, build_spinner_rack)
+slot_roles("mounted_antlers", "wood", "fabric", "stone")
 register("mounted_antlers", sample_mounted_antlers, build_mounted_antlers)
+slot_roles("barber_pole", "metal", "paint", "paint")
 register("barber_pole", sample_barber_pole, build_barber_pole)
+slot_roles("dartboard", "plastic", "fabric", "fabric")
 register("dartboard", sample_dartboard, build_dartboard)

@@ -19,15 +19,17 @@ from anyhome.assets.procedural._parts import (
     make_params,
     rot_x,
     rot_z,
+    slot_roles,
     style_is,
+    tint,
     wood_tones,
 )
 from anyhome.assets.registry import register
 
-BRASS = "#c9a54a"
-BULB = "#fff1c4"
-CANDLE = "#f4f1e6"
-FLAME = "#ffb030"
+BRASS = tint("#c9a54a", "metal")
+BULB = tint("#fff1c4", "light")
+CANDLE = tint("#f4f1e6", "paint")
+FLAME = tint("#ffb030", "light")
 RISER_M = 0.18
 """Target rise of one stair step."""
 PENDANT_WIDTH_M = 0.55
@@ -233,7 +235,11 @@ def build_spiral_staircase(p):
     return b.mesh(p.size)
 
 
+slot_roles("chandelier", "metal", {"": "fabric", "#c9a54a": "metal"}, "glass")
 register("chandelier", sample_chandelier, build_chandelier)
+slot_roles("ceiling_fan", "metal", "wood", "glass")
 register("ceiling_fan", sample_ceiling_fan, build_ceiling_fan)
+slot_roles("staircase", "wood", {"": "wood", METAL: "metal"}, {"": "paint", METAL: "metal"})
 register("staircase", sample_staircase, build_staircase)
+slot_roles("spiral_staircase", "metal", {"": "wood", "#9a9da3": "metal"}, "wood")
 register("spiral_staircase", sample_spiral_staircase, build_spiral_staircase)

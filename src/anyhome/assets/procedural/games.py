@@ -16,14 +16,16 @@ from anyhome.assets.procedural._parts import (
     lengthwise,
     lighter,
     make_params,
+    slot_roles,
+    tint,
     wood_tones,
 )
 from anyhome.assets.registry import register
 
-HOLD_COLORS = ["#e05a47", "#f1c40f", "#2e86c1", "#27ae60", "#8e44ad", "#f08a2a", "#ec7fa9", "#1f1f22"]
-FELTS = ["#2f6b3a", "#24588a", "#7a1f2b", "#3a5f4a"]
-PRODUCTS = ["#c0392b", "#f1c40f", "#2e86c1", "#27ae60", "#e67e22", "#8e44ad", "#ecf0f1", "#d35400"]
-SCREEN_GLOW = ["#3a7bd5", "#4ab0c0", "#7b4ad5"]
+HOLD_COLORS = tint(["#e05a47", "#f1c40f", "#2e86c1", "#27ae60", "#8e44ad", "#f08a2a", "#ec7fa9", "#1f1f22"], "plastic")
+FELTS = tint(["#2f6b3a", "#24588a", "#7a1f2b", "#3a5f4a"], "fabric")
+PRODUCTS = tint(["#c0392b", "#f1c40f", "#2e86c1", "#27ae60", "#e67e22", "#8e44ad", "#ecf0f1", "#d35400"], "paper")
+SCREEN_GLOW = tint(["#3a7bd5", "#4ab0c0", "#7b4ad5"], "screen")
 
 
 # ----------------------------------------------------------------- boxing ring
@@ -48,13 +50,13 @@ def build_boxing_ring(p):
     cs = corners(inner_w, inner_d, 0.0)
     for (x, y), col in zip(cs, pad, strict=True):
         b.cyl(x, y, deck, h, post_r, DARK_METAL, sections=10)
-        b.cyl(x, y, deck + 0.15 * (h - deck), h - 0.02, post_r * 1.6, col, sections=10)  # corner pad
+        b.cyl(x, y, deck + 0.15 * (h - deck), h - 0.02, post_r * 1.6, col, sections=10, role="leather")  # corner pad
     for k in range(p.ropes):
         z = deck + (h - deck) * (0.3 + 0.65 * k / max(1, p.ropes - 1))
         col = [p.accent, "#e8e6e0", "#2d4f8a"][k % 3]
         for i in range(4):
             (x0, y0), (x1, y1) = cs[i], cs[(i + 1) % 4]
-            b.rod((x0, y0, z), (x1, y1, z), 0.02, col, sections=6)
+            b.rod((x0, y0, z), (x1, y1, z), 0.02, col, sections=6, role="fabric")
     return b.mesh(p.size)
 
 
@@ -162,11 +164,11 @@ def _draw_pool_table(b: Builder, L: float, B: float, H: float, p) -> None:
               p.primary)
     for x in (-L / 2 + rail * 0.6, 0.0, L / 2 - rail * 0.6):  # pockets
         for sy in (-1, 1):
-            b.cyl(x, sy * (B / 2 - rail * 0.6), top - 0.004, top + 0.002, 0.055, "#111111", sections=12)
+            b.cyl(x, sy * (B / 2 - rail * 0.6), top - 0.004, top + 0.002, 0.055, tint("#111111", "metal"), sections=12)
     for i in range(6):  # diamonds on the rails
         x = -L / 2 + (i + 1) * L / 7
         for sy in (-1, 1):
-            b.cbox((x, sy * (B / 2 - rail / 2), top), (0.02, 0.02, 0.004), "#e8dcc0")
+            b.cbox((x, sy * (B / 2 - rail / 2), top), (0.02, 0.02, 0.004), tint("#e8dcc0", "metal"))
     if p.balls:
         r = 0.028
         x0 = L / 4
@@ -175,12 +177,12 @@ def _draw_pool_table(b: Builder, L: float, B: float, H: float, p) -> None:
             for j in range(row + 1):
                 col = ["#f1c40f", "#2e86c1", "#c0392b", "#8e44ad", "#e67e22", "#27ae60", "#7a1f2b", BLACK,
                        "#f1c40f", "#2e86c1"][k % 10]
-                b.sphere((x0 + row * 2 * r * 0.87, (j - row / 2) * 2 * r, body + r), r, col, subdivisions=1)
+                b.sphere((x0 + row * 2 * r * 0.87, (j - row / 2) * 2 * r, body + r), r, col, subdivisions=1, role="plastic")
                 k += 1
-        b.sphere((-L / 4, 0.0, body + r), r, "#f4f1ea", subdivisions=1)
+        b.sphere((-L / 4, 0.0, body + r), r, tint("#f4f1ea", "paint"), subdivisions=1)
         a = rng.uniform(-0.3, 0.3)
         b.rod((-L / 4 - 0.05, 0, body + 0.03), (-L / 4 - 0.05 - 1.3 * np.cos(a) * 0.6 * L / 1.3, np.sin(a) * 0.3 * B,
-                                                  body + 0.06), 0.012, "#c9a06a", sections=6)
+                                                  body + 0.06), 0.012, tint("#c9a06a", "paint"), sections=6)
 
 
 def build_pool_table(p):
@@ -205,8 +207,8 @@ def _draw_ping_pong(b: Builder, L: float, B: float, H: float, p) -> None:
         b.box((sx * L / 2 - line * (sx > 0), -B / 2, top), (sx * L / 2 + line * (sx < 0), B / 2, top + 0.001),
               p.secondary)
     b.box((-L / 2, -0.003, top), (L / 2, 0.003, top + 0.001), p.secondary)  # centre line
-    b.box((-0.004, -B / 2, top), (0.004, B / 2, H - 0.01), "#2b2b2b", alpha=200)  # net
-    b.box((-0.006, -B / 2, H - 0.012), (0.006, B / 2, H), "#f4f1ea")
+    b.box((-0.004, -B / 2, top), (0.004, B / 2, H - 0.01), tint("#2b2b2b", "fabric"), alpha=200)  # net
+    b.box((-0.006, -B / 2, H - 0.012), (0.006, B / 2, H), tint("#f4f1ea", "paint"))
     for sy in (-1, 1):
         b.cyl(0, sy * (B / 2 - 0.01), top, H, 0.012, DARK_METAL, sections=8)
     for sx in (-1, 1):  # two undercarriages with wheels
@@ -221,8 +223,8 @@ def _draw_ping_pong(b: Builder, L: float, B: float, H: float, p) -> None:
         for sx, sy in ((-1, 0.2), (1, -0.25)):
             x = sx * L / 3
             b.cyl(x, sy * B, top, top + 0.012, 0.08, p.accent, sections=16)
-            b.box((x - 0.012, sy * B + 0.07, top), (x + 0.012, sy * B + 0.17, top + 0.02), "#c9a06a")
-        b.sphere((L / 6, 0.1 * B, top + 0.02), 0.02, "#f4f1ea", subdivisions=1)
+            b.box((x - 0.012, sy * B + 0.07, top), (x + 0.012, sy * B + 0.17, top + 0.02), tint("#c9a06a", "paint"))
+        b.sphere((L / 6, 0.1 * B, top + 0.02), 0.02, tint("#f4f1ea", "paint"), subdivisions=1)
 
 
 def build_ping_pong_table(p):
@@ -290,12 +292,12 @@ def build_arcade_cabinet(p):
         cx = (-0.22 if p.players == 2 and pl == 0 else (0.22 if p.players == 2 else 0.0)) * w
         b.rod((cx - 0.08, yf - 0.12 * d, panel_z + 0.02 * h), (cx - 0.08, yf - 0.12 * d, panel_z + 0.1 * h), 0.008,
               BLACK, sections=6)
-        b.sphere((cx - 0.08, yf - 0.12 * d, panel_z + 0.1 * h), 0.025, "#e74c3c", subdivisions=1)
+        b.sphere((cx - 0.08, yf - 0.12 * d, panel_z + 0.1 * h), 0.025, tint("#e74c3c", "paint"), subdivisions=1)
         for k in range(3):
             b.cyl(cx + 0.02 + 0.045 * k, yf - 0.12 * d, panel_z + 0.03 * h, panel_z + 0.045 * h, 0.016, cols[k],
-                  sections=10)
+                  sections=10, role="plastic")
     b.box((-0.08, yf - 0.1 * d - 0.005, 0.2 * h), (0.08, yf - 0.1 * d, 0.3 * h), DARK_METAL)  # coin door
-    b.box((-0.02, yf - 0.1 * d - 0.008, 0.27 * h), (0.02, yf - 0.1 * d - 0.004, 0.28 * h), "#e74c3c")
+    b.box((-0.02, yf - 0.1 * d - 0.008, 0.27 * h), (0.02, yf - 0.1 * d - 0.004, 0.28 * h), tint("#e74c3c", "paint"))
     return b.mesh(p.size)
 
 
@@ -317,7 +319,7 @@ def build_vending_machine(p):
     b.box((-w / 2 + 0.02, -d / 2 + 0.02, 0), (w / 2 - 0.02, d / 2 - 0.04, 0.04), BLACK)
     gx0, gx1 = -w / 2 + 0.05, w / 2 - 0.3 * w
     gz0, gz1 = 0.25 * h, h - 0.08
-    b.box((gx0, yf - 0.2, gz0), (gx1, yf - 0.02, gz1), "#1c2430")  # dark interior
+    b.box((gx0, yf - 0.2, gz0), (gx1, yf - 0.02, gz1), tint("#1c2430", "paint"))  # dark interior
     rows = p.rows
     for r in range(rows):
         z = gz0 + (r + 0.15) * (gz1 - gz0) / rows
@@ -337,21 +339,28 @@ def build_vending_machine(p):
     b.box((gx0 - 0.02, yf - 0.02, gz1), (gx1 + 0.02, yf + 0.005, gz1 + 0.02), darker(p.primary, 0.2))
     b.box((gx0 - 0.02, yf - 0.02, gz0 - 0.02), (gx1 + 0.02, yf + 0.005, gz0), darker(p.primary, 0.2))
     px0 = gx1 + 0.04
-    b.box((px0, yf - 0.02, 0.55 * h), (w / 2 - 0.04, yf + 0.005, 0.75 * h), "#2b2b2b")  # keypad panel
+    b.box((px0, yf - 0.02, 0.55 * h), (w / 2 - 0.04, yf + 0.005, 0.75 * h), tint("#2b2b2b", "paint"))  # keypad panel
     for r in range(4):
         for c in range(3):
             b.cbox((px0 + 0.03 + c * (w / 2 - 0.07 - px0) / 3, yf + 0.008, 0.58 * h + r * 0.04 * h),
-                   (0.025, 0.008, 0.025), "#c9ccd0")
-    b.box((px0 + 0.02, yf - 0.02, 0.8 * h), (w / 2 - 0.06, yf + 0.005, 0.86 * h), "#3ab0a0")  # display
+                   (0.025, 0.008, 0.025), tint("#c9ccd0", "metal"))
+    b.box((px0 + 0.02, yf - 0.02, 0.8 * h), (w / 2 - 0.06, yf + 0.005, 0.86 * h), tint("#3ab0a0", "screen"))  # display
     b.box((gx0, yf - 0.02, 0.08 * h), (gx1, yf + 0.005, 0.18 * h), BLACK)  # pick-up flap
     b.box((gx0, yf - 0.02, h - 0.07), (w / 2 - 0.04, yf + 0.004, h - 0.02), lighter(p.primary, 0.35))
     return b.mesh(p.size)
 
 
+slot_roles("boxing_ring", "fabric", "fabric", "fabric")
 register("boxing_ring", sample_boxing_ring, build_boxing_ring)
+slot_roles("punching_bag", "leather", "fabric", "metal")
 register("punching_bag", sample_punching_bag, build_punching_bag)
+slot_roles("climbing_wall", {"": "wood", "#c9ccd0": "metal"}, "plastic", "plastic")
 register("climbing_wall", sample_climbing_wall, build_climbing_wall)
+slot_roles("pool_table", "wood", "fabric", "plastic")
 register("pool_table", sample_pool_table, build_pool_table)
+slot_roles("ping_pong_table", "paint", "paint", "plastic")
 register("ping_pong_table", sample_ping_pong_table, build_ping_pong_table)
+slot_roles("arcade_cabinet", "paint", "screen", "plastic")
 register("arcade_cabinet", sample_arcade_cabinet, build_arcade_cabinet)
+slot_roles("vending_machine", "paint", "glass", "metal")
 register("vending_machine", sample_vending_machine, build_vending_machine)

@@ -25,13 +25,15 @@ from anyhome.assets.procedural._parts import (
     lengthwise,
     lighter,
     make_params,
+    slot_roles,
     style_is,
+    tint,
 )
 from anyhome.assets.registry import register
 
-PALLET_WOOD = ["#d8bf98", "#c9a77c", "#e0cfae", "#bf9b6e"]
-CARDBOARD = ["#c9a06a", "#b88a56", "#d4ac74"]
-FORKLIFT = ["#e0b030", "#e8702a", "#c0392b", "#3f8a4a", "#2d6fb0"]
+PALLET_WOOD = tint(["#d8bf98", "#c9a77c", "#e0cfae", "#bf9b6e"], "wood")
+CARDBOARD = tint(["#c9a06a", "#b88a56", "#d4ac74"], "paper")
+FORKLIFT = tint(["#e0b030", "#e8702a", "#c0392b", "#3f8a4a", "#2d6fb0"], "paint")
 
 
 def _valve(b: Builder, x: float, y: float, z: float, r: float, handle: str = "#c0392b") -> None:
@@ -79,7 +81,7 @@ def build_fermentation_tank(p):
     _valve(b, 0, 0.05 * R, cone0 - 0.06 * h, 0.05 * R, p.accent)
     b.rod((0.5 * rr, -0.5 * rr, ca - 0.04 * h), (0.9 * R, -0.9 * R, ca - 0.06 * h), 0.04 * R, p.secondary,
           sections=8)  # racking arm
-    disc_y(b, 0.7 * R, 0.7 * R, 0.74 * R, c0 + 0.25 * (c1 - c0), 0.08 * R, "#f4f1ea", sections=12)  # gauge
+    disc_y(b, 0.7 * R, 0.7 * R, 0.74 * R, c0 + 0.25 * (c1 - c0), 0.08 * R, tint("#f4f1ea", "paint"), sections=12)  # gauge
     return b.mesh(p.size)
 
 
@@ -126,8 +128,8 @@ def build_brew_kettle(p):
         path(b, [(x, 0.6 * R, stand + 0.04 * h), (x, R * 1.05, stand + 0.04 * h), (x, R * 1.05, 0.02 * h)],
              0.05 * R, p.secondary, sections=10)
         _valve(b, x, 0.95 * R, stand + 0.04 * h, 0.05 * R, p.accent)
-    disc_y(b, 0.6 * R, 0.8 * R, 0.84 * R, 0.45 * h, 0.08 * R, "#f4f1ea", sections=12)  # thermometer
-    b.box((-R, -R, 0.3 * h), (-0.8 * R, -0.6 * R, 0.5 * h), "#3a3b3e")  # control box
+    disc_y(b, 0.6 * R, 0.8 * R, 0.84 * R, 0.45 * h, 0.08 * R, tint("#f4f1ea", "paint"), sections=12)  # thermometer
+    b.box((-R, -R, 0.3 * h), (-0.8 * R, -0.6 * R, 0.5 * h), tint("#3a3b3e", "paint"))  # control box
     b.box((-1.0 * R, -0.6 * R, 0.44 * h), (-0.95 * R, -0.59 * R, 0.46 * h), GLOW_RED)
     return b.mesh(p.size)
 
@@ -177,7 +179,7 @@ def build_pallet(p):
                 x0, y0 = -w / 2 + i * w / 2, -d / 2 + j * d / 2
                 b.box((x0 + 0.01, y0 + 0.01, z0), (x0 + w / 2 - 0.01, y0 + d / 2 - 0.01, h - 0.01),
                       CARDBOARD[(i + j) % 3])
-        b.box((-w / 2, -d / 2, z0 + 0.02), (w / 2, d / 2, h), "#dfe6ea", alpha=90)  # stretch wrap
+        b.box((-w / 2, -d / 2, z0 + 0.02), (w / 2, d / 2, h), tint("#dfe6ea", "paint"), alpha=90)  # stretch wrap
     return b.mesh(p.size)
 
 
@@ -196,8 +198,8 @@ def build_forklift(p):
     Rf, Rr = 0.16 * h, 0.12 * h
     yf, yr = 0.15 * d, -0.32 * d
     for s in (-1, 1):
-        wheel_x(b, s * (w / 2 - 0.09 * w), yf, Rf, Rf, 0.18 * w, BLACK, "#9a9da3")
-        wheel_x(b, s * (w / 2 - 0.1 * w), yr, Rr, Rr, 0.15 * w, BLACK, "#9a9da3")
+        wheel_x(b, s * (w / 2 - 0.09 * w), yf, Rf, Rf, 0.18 * w, BLACK, METAL)
+        wheel_x(b, s * (w / 2 - 0.1 * w), yr, Rr, Rr, 0.15 * w, BLACK, METAL)
     b.box((-0.4 * w, -0.38 * d, 0.08 * h), (0.4 * w, 0.22 * d, 0.3 * h), p.primary)  # chassis
     b.box((-0.48 * w, 0.02 * d, 0.2 * h), (0.48 * w, 0.25 * d, 0.26 * h), p.primary)  # fenders
     b.box((-0.48 * w, -0.42 * d, 0.2 * h), (0.48 * w, -0.2 * d, 0.27 * h), p.primary)
@@ -218,7 +220,7 @@ def build_forklift(p):
     for k in range(5):
         y = -0.28 * d + k * 0.36 * d / 4
         b.rod((-0.42 * w, y, h - 0.03 * h), (0.42 * w, y, h - 0.03 * h), 0.6 * gt, DARK_METAL, sections=6)
-    b.cyl(0.3 * w, -0.25 * d, h - 0.03 * h, h, 0.04, "#f08a2a", sections=8)  # beacon
+    b.cyl(0.3 * w, -0.25 * d, h - 0.03 * h, h, 0.04, tint("#f08a2a", "paint"), sections=8)  # beacon
     my = 0.27 * d  # mast
     for x in (-0.32 * w, 0.32 * w):
         b.box((x - 0.04 * w, my - 0.03 * d, 0.05 * h), (x + 0.04 * w, my + 0.03 * d, 0.96 * h), p.accent)
@@ -231,7 +233,7 @@ def build_forklift(p):
         b.box((x - 0.05 * w, my + 0.05 * d, cz), (x + 0.05 * w, my + 0.07 * d, cz + 0.2 * h), DARK_METAL)
         b.box((x - 0.05 * w, my + 0.05 * d, cz), (x + 0.05 * w, d / 2, cz + 0.02 * h), DARK_METAL)  # tines
     for x in (-0.35 * w, 0.35 * w):
-        disc_y(b, x, 0.22 * d, 0.23 * d, 0.45 * h, 0.03, "#fff1c4", sections=8)
+        disc_y(b, x, 0.22 * d, 0.23 * d, 0.45 * h, 0.03, tint("#fff1c4", "light"), sections=8)
     return b.mesh(p.size)
 
 
@@ -260,7 +262,7 @@ def _draw_conveyor(b: Builder, L: float, B: float, H: float, p) -> None:
         m = max(6, int(L / 0.1))
         for k in range(m):
             x = -L / 2 + (k + 0.5) * L / m
-            b.rod((x, -0.42 * B, top - 0.02), (x, 0.42 * B, top - 0.02), min(0.025, 0.35 * L / m), "#c9ccd0",
+            b.rod((x, -0.42 * B, top - 0.02), (x, 0.42 * B, top - 0.02), min(0.025, 0.35 * L / m), tint("#c9ccd0", "metal"),
                   sections=8)
     else:
         b.box((-L / 2 + 0.04, -0.42 * B, top - 0.03), (L / 2 - 0.04, 0.42 * B, top), p.secondary)
@@ -270,24 +272,29 @@ def _draw_conveyor(b: Builder, L: float, B: float, H: float, p) -> None:
     for y in (-0.46 * B, 0.46 * B):  # guide rails
         for x in np.linspace(-0.4 * L, 0.4 * L, 4):
             b.box((x - 0.01, y - 0.01, top), (x + 0.01, y + 0.01, H - 0.03 * H), METAL)
-        b.rod((-L / 2, y, H - 0.03 * H), (L / 2, y, H - 0.03 * H), 0.015, "#c9ccd0", sections=6)
+        b.rod((-L / 2, y, H - 0.03 * H), (L / 2, y, H - 0.03 * H), 0.015, tint("#c9ccd0", "metal"), sections=6)
     mx = L / 2 - 0.1 * L
     b.box((mx - 0.1, -0.3 * B, top - fr - 0.25 * H), (mx + 0.1, 0.1 * B, top - fr), DARK_METAL)  # motor
-    disc_y(b, mx, 0.1 * B, 0.2 * B, top - fr - 0.12 * H, 0.08, "#3a5a8a", sections=12)
+    disc_y(b, mx, 0.1 * B, 0.2 * B, top - fr - 0.12 * H, 0.08, tint("#3a5a8a", "paint"), sections=12)
     slots = np.linspace(-0.38 * L, 0.38 * L, max(1, p.boxes))
     for x in slots:
         bw = rng.uniform(0.25, 0.45) * B
         bh = rng.uniform(0.1, 0.18)
         b.box((x - 0.6 * bw, -bw / 2, top), (x + 0.6 * bw, bw / 2, top + bh), CARDBOARD[int(rng.integers(3))])
-        b.box((x - 0.6 * bw, -0.03, top + bh), (x + 0.6 * bw, 0.03, top + bh + 0.002), "#c9b890")  # tape
+        b.box((x - 0.6 * bw, -0.03, top + bh), (x + 0.6 * bw, 0.03, top + bh + 0.002), tint("#c9b890", "paint"))  # tape
 
 
 def build_conveyor_belt(p):
     return lengthwise(p.size, lambda b, L, B, H: _draw_conveyor(b, L, B, H, p))
 
 
+slot_roles("fermentation_tank", "metal", "metal", "paint")
 register("fermentation_tank", sample_fermentation_tank, build_fermentation_tank)
+slot_roles("brew_kettle", "metal", "metal", "paint")
 register("brew_kettle", sample_brew_kettle, build_brew_kettle)
+slot_roles("pallet", "wood", "wood", "metal")
 register("pallet", sample_pallet, build_pallet)
+slot_roles("forklift", "paint", "rubber", "metal")
 register("forklift", sample_forklift, build_forklift)
+slot_roles("conveyor_belt", "metal", "rubber", "paper")
 register("conveyor_belt", sample_conveyor_belt, build_conveyor_belt)

@@ -23,17 +23,19 @@ from anyhome.assets.procedural._parts import (
     lighter,
     make_params,
     rot_x,
+    slot_roles,
     style_is,
+    tint,
     wood_tones,
 )
 from anyhome.assets.registry import register
 
-GOLD = "#d4af37"
-PIPE_METALS = ["#c9ccd0", "#d8dade", GOLD, "#b8a070"]
-STRING = "#efe6d0"
-ROSEWOOD = ["#7a3b22", "#8a4a2a", "#6b3320", "#9a5a34"]
-FLAME = "#ffb030"
-VOTIVE_GLASS = ["#b8202a", "#c0392b", "#f4f1e6", "#d9a32a"]
+GOLD = tint("#d4af37", "metal")
+PIPE_METALS = tint(["#c9ccd0", "#d8dade", GOLD, "#b8a070"], "metal")
+STRING = tint("#efe6d0", "metal")
+ROSEWOOD = tint(["#7a3b22", "#8a4a2a", "#6b3320", "#9a5a34"], "wood")
+FLAME = tint("#ffb030", "light")
+VOTIVE_GLASS = tint(["#b8202a", "#c0392b", "#f4f1e6", "#d9a32a"], "glass")
 
 
 # ----------------------------------------------------------------- harp
@@ -134,8 +136,8 @@ def _draw_marimba(b: Builder, L: float, B: float, H: float, p) -> None:
         b.box((x0, y - 0.01, top - 0.09 * H), (x1, y + 0.01, top - 0.06 * H), p.secondary)
     for s in (-1, 1):  # mallets lying on the bars
         b.rod((0.1 * L * s, 0.3 * B, top - 0.02 * H), (0.1 * L * s + 0.12 * L, 0.4 * B, top - 0.02 * H), 0.006,
-              "#c9a06a", sections=5)
-        b.sphere((0.1 * L * s, 0.3 * B, top - 0.02 * H), 0.02, "#e8dcc0", subdivisions=1)
+              tint("#c9a06a", "paint"), sections=5)
+        b.sphere((0.1 * L * s, 0.3 * B, top - 0.02 * H), 0.02, tint("#e8dcc0", "paint"), subdivisions=1)
 
 
 def build_marimba(p):
@@ -179,7 +181,7 @@ def build_pipe_organ(p):
             b.cyl(x, y, imp, foot, 0.25 * r, p.secondary, r_top=r, sections=10)
             b.cyl(x, y, foot, ptop, r, p.secondary if k % 2 else lighter(p.secondary, 0.12), sections=10)
             b.box((x - 0.5 * r, y + 0.8 * r, foot + 0.02 * h), (x + 0.5 * r, y + 1.02 * r, foot + 0.05 * h),
-                  "#2a2a2e")
+                  tint("#2a2a2e", "paint"))
         if tower:
             b.box((xa - 0.01, cy1 - 0.2 * case_d, top + 0.01), (xb + 0.01, cy1, top + 0.04 * h), p.primary)
             b.box((xa, cy1 - 0.2 * case_d, top + 0.04 * h), (xb, cy1, min(h, top + 0.06 * h)), p.accent)
@@ -193,11 +195,11 @@ def build_pipe_organ(p):
             for j in range(4):
                 x = s * (cw / 2 - 0.12 - 0.05 * i)
                 disc_y(b, x, cy1 + 0.02, cy1 + 0.05, kz + 0.05 * h + 0.03 * h * j, 0.012,
-                       ["#f4f1e6", "#c0392b", BLACK][(i + j) % 3], sections=6)
+                       [tint("#f4f1e6", "paint"), tint("#c0392b", "paint"), BLACK][(i + j) % 3], sections=6)
     for m in range(p.manuals):
         z = kz + m * 0.035 * h
         y1 = cy1 + 0.33 * d - m * 0.05 * d
-        b.box((-cw / 2 + 0.05, y1 - 0.12 * d, z), (cw / 2 - 0.05, y1, z + 0.015 * h), "#f4f1ea")
+        b.box((-cw / 2 + 0.05, y1 - 0.12 * d, z), (cw / 2 - 0.05, y1, z + 0.015 * h), tint("#f4f1ea", "paint"))
         nkeys = max(8, int((cw - 0.1) / 0.03))
         for k in range(nkeys):
             if k % 7 in (2, 6):
@@ -205,13 +207,13 @@ def build_pipe_organ(p):
             x = -cw / 2 + 0.05 + (k + 1) * (cw - 0.1) / (nkeys + 1)
             b.box((x - 0.006, y1 - 0.12 * d, z + 0.015 * h), (x + 0.006, y1 - 0.05 * d, z + 0.022 * h), BLACK)
     b.box((-cw / 2 + 0.05, cy1, kz + p.manuals * 0.035 * h), (cw / 2 - 0.05, cy1 + 0.06, kz + 0.2 * h), p.primary)
-    b.box((-0.2 * cw, cy1 + 0.06, kz + p.manuals * 0.035 * h + 0.02), (0.2 * cw, cy1 + 0.08, kz + 0.18 * h), "#f4f1ea")
+    b.box((-0.2 * cw, cy1 + 0.06, kz + p.manuals * 0.035 * h + 0.02), (0.2 * cw, cy1 + 0.08, kz + 0.18 * h), tint("#f4f1ea", "paint"))
     b.box((-cw / 2, d / 2 - 0.12 * d, 0.18 * h), (cw / 2, d / 2, 0.21 * h), p.primary)  # bench
     for x in (-cw / 2 + 0.04, cw / 2 - 0.04):
         b.box((x - 0.03, d / 2 - 0.12 * d, 0), (x + 0.03, d / 2, 0.18 * h), p.primary)
     for k in range(12):  # pedalboard
         x = -0.4 * cw + k * 0.8 * cw / 11
-        b.box((x - 0.015, cy1 + 0.35 * d, 0.01), (x + 0.015, d / 2 - 0.14 * d, 0.03), "#e8dcc0" if k % 3 else BLACK)
+        b.box((x - 0.015, cy1 + 0.35 * d, 0.01), (x + 0.015, d / 2 - 0.14 * d, 0.03), tint("#e8dcc0", "paint") if k % 3 else BLACK)
     return b.mesh(p.size)
 
 
@@ -250,9 +252,9 @@ def build_gong(p):
     else:
         disc_y(b, 0, 0.0, 0.004, cz, 0.3 * R, lighter(p.secondary, 0.15), sections=20)
     for s in (-1, 1):
-        b.rod((s * 0.5 * R, -0.015, cz + 0.86 * R), (s * 0.3 * w, 0, h - 0.1 * h), 0.006, "#c0392b", sections=4)
-    b.rod((0.38 * w, 0.4 * d, 0.05 * h), (0.36 * w, 0.1 * d, 0.55 * h), 0.012, "#c9a06a", sections=6)  # mallet
-    b.sphere((0.36 * w, 0.1 * d, 0.55 * h), (0.06 * w, 0.06 * w, 0.05 * h), "#e8dcc0", subdivisions=1)
+        b.rod((s * 0.5 * R, -0.015, cz + 0.86 * R), (s * 0.3 * w, 0, h - 0.1 * h), 0.006, tint("#c0392b", "paint"), sections=4)
+    b.rod((0.38 * w, 0.4 * d, 0.05 * h), (0.36 * w, 0.1 * d, 0.55 * h), 0.012, tint("#c9a06a", "paint"), sections=6)  # mallet
+    b.sphere((0.36 * w, 0.1 * d, 0.55 * h), (0.06 * w, 0.06 * w, 0.05 * h), tint("#e8dcc0", "paint"), subdivisions=1)
     return b.mesh(p.size)
 
 
@@ -272,7 +274,7 @@ def build_stage_light(p):
     b.box((-0.3 * w, -0.3 * d, 0), (0.3 * w, 0.3 * d, 0.05 * h), p.accent)  # mounting plate
     if p.kind == "moving":
         b.box((-0.42 * w, -0.42 * d, 0.05 * h), (0.42 * w, 0.42 * d, 0.3 * h), p.primary)
-        b.box((-0.2 * w, 0.42 * d - 0.01, 0.12 * h), (0.2 * w, 0.42 * d, 0.22 * h), "#1c2430")
+        b.box((-0.2 * w, 0.42 * d - 0.01, 0.12 * h), (0.2 * w, 0.42 * d, 0.22 * h), tint("#1c2430", "paint"))
         arm = 0.08 * w
         for s in (-1, 1):
             b.box((s * 0.4 * w - arm / 2, -0.1 * d, 0.3 * h), (s * 0.4 * w + arm / 2, 0.1 * d, 0.8 * h), p.primary)
@@ -348,14 +350,20 @@ def build_votive_stand(p):
     b.box((-0.06 * w, 0.2 * d, 0.3 * h), (0.06 * w, 0.35 * d, 0.302 * h), BLACK)
     b.cyl(0, -0.3 * d, top, h - 0.02 * h, 0.01, p.accent, sections=6)  # a small cross on top
     b.box((-0.04 * w, -0.3 * d - 0.008, h - 0.07 * h), (0.04 * w, -0.3 * d + 0.008, h - 0.055 * h), p.accent)
-    path(b, [(0.4 * w, 0.4 * d, 0.12 * h), (0.42 * w, 0.42 * d, 0.5 * h)], 0.004, "#c9a06a", sections=4)
+    path(b, [(0.4 * w, 0.4 * d, 0.12 * h), (0.42 * w, 0.42 * d, 0.5 * h)], 0.004, tint("#c9a06a", "paint"), sections=4)
     return b.mesh(p.size)
 
 
+slot_roles("harp", {"": "wood", GOLD: "metal", "#c9a54a": "metal"}, "wood", "fabric")
 register("harp", sample_harp, build_harp)
+slot_roles("marimba", "wood", "metal", "metal")
 register("marimba", sample_marimba, build_marimba)
+slot_roles("pipe_organ", "wood", "metal", "metal")
 register("pipe_organ", sample_pipe_organ, build_pipe_organ)
+slot_roles("gong", "wood", "metal", "metal")
 register("gong", sample_gong, build_gong)
+slot_roles("stage_light", "metal", "light", "metal")
 register("stage_light", sample_stage_light, build_stage_light)
+slot_roles("votive_stand", "metal", "glass", "metal")
 register("votive_stand", sample_votive_stand, build_votive_stand)
 

@@ -16,14 +16,16 @@ from anyhome.assets.procedural._parts import (
     darker,
     lighter,
     make_params,
+    slot_roles,
+    tint,
     wood_tones,
 )
 from anyhome.assets.procedural.storage import HANDLE, case
 from anyhome.assets.registry import register
 
-APPLIANCE = ["#e9e9e6", "#c8cacd", "#b9bcc0", "#2b2b2b"]
-WORKTOPS = ["#e4e1da", "#3a3a3c", "#d9cfb8", "#9a958c", "#f0eeea"]
-PORCELAIN = "#f2f2ef"
+APPLIANCE = tint(["#e9e9e6", "#c8cacd", "#b9bcc0", "#2b2b2b"], "paint")
+WORKTOPS = tint(["#e4e1da", "#3a3a3c", "#d9cfb8", "#9a958c", "#f0eeea"], "stone")
+PORCELAIN = tint("#f2f2ef", "ceramic")
 
 
 def _cabinet_params(name, rng, size, style, **knobs):
@@ -100,7 +102,7 @@ def build_vanity(p):
     for i in range(nb):
         cx = (i - (nb - 1) / 2) * w / 2
         b.cyl(cx, 0.02, h, h + 0.01, min(0.22, w / (2 * nb) - 0.05), PORCELAIN, ry=d * 0.3, sections=24)
-        b.cyl(cx, 0.02, h + 0.01, h + 0.012, min(0.18, w / (2 * nb) - 0.08), "#c9ccd0", ry=d * 0.24, sections=24)
+        b.cyl(cx, 0.02, h + 0.01, h + 0.012, min(0.18, w / (2 * nb) - 0.08), tint("#c9ccd0", "metal"), ry=d * 0.24, sections=24)
         _faucet(b, cx, -d / 2 + 0.05, h, d * 0.25)
     return b.mesh(p.size)
 
@@ -151,7 +153,7 @@ def build_stove(p):
             b.cyl(x, y, top + 0.01, top + 0.015, min(w, d) * 0.05, BLACK, sections=12)
     # oven door with window and bar handle
     b.box((-w / 2 + 0.03, d / 2 - 0.02, 0.12), (w / 2 - 0.03, d / 2, top - 0.2), lighter(p.primary, 0.05))
-    b.box((-w / 2 + 0.1, d / 2, 0.25), (w / 2 - 0.1, d / 2 + 0.005, top - 0.32), "#25282c")
+    b.box((-w / 2 + 0.1, d / 2, 0.25), (w / 2 - 0.1, d / 2 + 0.005, top - 0.32), tint("#25282c", "paint"))
     b.rod((-w / 2 + 0.08, d / 2 + 0.035, top - 0.24), (w / 2 - 0.08, d / 2 + 0.035, top - 0.24), 0.012, p.accent)
     for x in np.linspace(-w / 2 + 0.1, w / 2 - 0.1, 5):
         b.rod((x, d / 2, top - 0.1), (x, d / 2 + 0.03, top - 0.1), 0.02, p.accent, sections=10)
@@ -173,13 +175,13 @@ def _laundry(p, dryer: bool):
     b = Builder()
     b.box((-w / 2, -d / 2, 0), (w / 2, d / 2 - 0.02, h), p.primary)
     b.box((-w / 2 + 0.01, d / 2 - 0.02, h * 0.82), (w / 2 - 0.01, d / 2, h * 0.98), lighter(p.primary, 0.1))
-    b.box((-w / 2 + 0.05, d / 2, h * 0.86), (-w / 2 + 0.25, d / 2 + 0.005, h * 0.94), "#c9ccd0")  # drawer
+    b.box((-w / 2 + 0.05, d / 2, h * 0.86), (-w / 2 + 0.25, d / 2 + 0.005, h * 0.94), tint("#c9ccd0", "metal"))  # drawer
     b.rod((w / 4, d / 2, h * 0.9), (w / 4, d / 2 + 0.02, h * 0.9), 0.03, p.accent, sections=16)
-    b.box((w / 4 + 0.06, d / 2, h * 0.88), (w / 4 + 0.16, d / 2 + 0.004, h * 0.92), "#2b2b2b")
+    b.box((w / 4 + 0.06, d / 2, h * 0.88), (w / 4 + 0.16, d / 2 + 0.004, h * 0.92), tint("#2b2b2b", "paint"))
     r = min(w, h) * 0.3
     cz = h * 0.45
-    b.rod((0, d / 2 - 0.02, cz), (0, d / 2 + 0.03, cz), r, "#c9ccd0", sections=32)
-    b.rod((0, d / 2, cz), (0, d / 2 + 0.035, cz), r * 0.75, "#3a4a55" if not dryer else "#2b2b2b", sections=32)
+    b.rod((0, d / 2 - 0.02, cz), (0, d / 2 + 0.03, cz), r, tint("#c9ccd0", "metal"), sections=32)
+    b.rod((0, d / 2, cz), (0, d / 2 + 0.035, cz), r * 0.75, tint("#3a4a55", "paint") if not dryer else tint("#2b2b2b", "paint"), sections=32)
     if not dryer:
         b.rod((0, d / 2, cz), (0, d / 2 + 0.038, cz), r * 0.5, p.secondary, sections=24, alpha=170)
     b.box((-w / 2 + 0.02, -d / 2 + 0.02, 0), (w / 2 - 0.02, d / 2 - 0.05, 0.02), BLACK)
@@ -219,7 +221,7 @@ def build_fume_hood(p):
     b.box((-w / 2, -d / 2, top0), (w / 2, d / 2, h - 0.12), p.primary)
     b.box((-w / 2 + 0.08, d / 2 - 0.05, work + 0.35), (w / 2 - 0.08, d / 2 - 0.03, top0), p.secondary, alpha=110)
     b.box((-w / 2 + 0.08, d / 2 - 0.06, work + 0.33), (w / 2 - 0.08, d / 2 - 0.02, work + 0.37), p.accent)
-    b.cyl(0, 0, h - 0.12, h, min(0.15, w / 6), "#c9ccd0")
+    b.cyl(0, 0, h - 0.12, h, min(0.15, w / 6), tint("#c9ccd0", "metal"))
     return b.mesh(p.size)
 
 
@@ -242,7 +244,7 @@ def build_toilet(p):
     b.cyl(0, by - 0.03, 0, seat * 0.6, w * 0.22, p.primary, r_top=w * 0.3, ry=(d - tank_d) * 0.3)
     b.cyl(0, by, seat * 0.55, seat - 0.03, w * 0.33, p.primary, r_top=w * 0.48, ry=(d - tank_d) * 0.44, sections=24)
     b.cyl(0, by, seat - 0.03, seat, w * 0.48, p.secondary, ry=(d - tank_d) * 0.48, sections=24)
-    b.cyl(0, by, seat, seat + 0.003, w * 0.32, "#9fb4c0", ry=(d - tank_d) * 0.3, sections=20)
+    b.cyl(0, by, seat, seat + 0.003, w * 0.32, tint("#9fb4c0", "paint"), ry=(d - tank_d) * 0.3, sections=20)
     if p.lid_open:
         b.box((-w * 0.42, -d / 2 + tank_d + 0.01, seat), (w * 0.42, -d / 2 + tank_d + 0.03, seat + 0.4),
               p.secondary)
@@ -266,11 +268,11 @@ def build_bathtub(p):
             for y in (-d / 2 + 0.12, d / 2 - 0.12):
                 b.sphere((x, y, z0 / 2), (0.05, 0.05, z0 / 2), p.accent)
         b.cyl(0, 0, z0, h, w / 2 * 0.93, p.primary, r_top=w / 2, ry=d / 2 * 0.9, sections=32)
-        b.cyl(0, 0, h - 0.005, h + 0.002, w / 2 - t, "#d8e8ee", ry=d / 2 - t, sections=32)
+        b.cyl(0, 0, h - 0.005, h + 0.002, w / 2 - t, tint("#d8e8ee", "paint"), ry=d / 2 - t, sections=32)
     else:
         b.box((-w / 2, -d / 2, 0), (w / 2, d / 2, h - 0.04), p.primary)
         b.box((-w / 2, -d / 2, h - 0.04), (w / 2, d / 2, h), lighter(p.primary, 0.1))
-        b.cyl(0, 0, h - 0.004, h + 0.002, w / 2 - t, "#d8e8ee", ry=d / 2 - t, sections=32)
+        b.cyl(0, 0, h - 0.004, h + 0.002, w / 2 - t, tint("#d8e8ee", "paint"), ry=d / 2 - t, sections=32)
     b.cyl(-w / 2 + 0.12, 0, h, h + 0.04, 0.02, p.accent)
     b.rod((-w / 2 + 0.12, 0, h + 0.04), (-w / 2 + 0.22, 0, h + 0.03), 0.015, p.accent)
     return b.mesh(p.size)
@@ -302,14 +304,25 @@ def build_shower(p):
     return b.mesh(p.size)
 
 
+slot_roles("counter", "wood", "stone", "metal")
 register("counter", sample_counter, build_counter)
+slot_roles("sink", "ceramic", "metal", "metal")
 register("sink", sample_sink, build_sink)
+slot_roles("vanity", "wood", "ceramic", "metal")
 register("vanity", sample_vanity, build_vanity)
+slot_roles("refrigerator", "metal", "metal", "metal")
 register("refrigerator", sample_refrigerator, build_refrigerator)
+slot_roles("stove", "metal", "plastic", "metal")
 register("stove", sample_stove, build_stove)
+slot_roles("washing_machine", "metal", "plastic", "glass")
 register("washing_machine", sample_washing_machine, build_washing_machine)
+slot_roles("dryer", "metal", "plastic", "glass")
 register("dryer", sample_dryer, build_dryer)
+slot_roles("fume_hood", "paint", "glass", "plastic")
 register("fume_hood", sample_fume_hood, build_fume_hood)
+slot_roles("toilet", "ceramic", "ceramic", "metal")
 register("toilet", sample_toilet, build_toilet)
+slot_roles("bathtub", "ceramic", "ceramic", "metal")
 register("bathtub", sample_bathtub, build_bathtub)
+slot_roles("shower", {"": "ceramic", "#c9ccd0": "metal"}, "glass", "metal")
 register("shower", sample_shower, build_shower)

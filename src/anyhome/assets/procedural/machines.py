@@ -29,12 +29,14 @@ from anyhome.assets.procedural._parts import (
     lighter,
     make_params,
     rot_x,
+    slot_roles,
+    tint,
 )
 from anyhome.assets.registry import register
 
-MACHINE_PAINTS = ["#4a6a5a", "#6f7f86", "#3a5a8a", "#d8d0b8", "#5a6b5a", "#8a4a3a", "#e0b030"]
-HANDLES = ["#c0392b", BLACK, "#e0b030"]
-FILAMENTS = ["#e67e22", "#2e86c1", "#27ae60", "#c0392b", "#f1c40f", "#8e44ad", "#e8e6e0"]
+MACHINE_PAINTS = tint(["#4a6a5a", "#6f7f86", "#3a5a8a", "#d8d0b8", "#5a6b5a", "#8a4a3a", "#e0b030"], "paint")
+HANDLES = tint(["#c0392b", BLACK, "#e0b030"], "plastic")
+FILAMENTS = tint(["#e67e22", "#2e86c1", "#27ae60", "#c0392b", "#f1c40f", "#8e44ad", "#e8e6e0"], "plastic")
 
 
 def _handwheel(b: Builder, x: float, y: float, z: float, r: float, color: str) -> None:
@@ -85,7 +87,7 @@ def _draw_lathe(b: Builder, L: float, B: float, H: float, p) -> None:
                DARK_METAL)
     tx0 = L / 2 - 0.2 * L
     work_r = 0.045 * H if p.work == "wood" else 0.03 * H
-    disc_x(b, hx1 + 0.04 * L, tx0 - 0.03 * L, 0, zc, work_r, "#c9a06a" if p.work == "wood" else CHROME,
+    disc_x(b, hx1 + 0.04 * L, tx0 - 0.03 * L, 0, zc, work_r, tint("#c9a06a", "metal") if p.work == "wood" else CHROME,
            sections=14)
     b.box((tx0, -0.18 * B, bed_z), (tx0 + 0.09 * L, 0.15 * B, zc + 0.05 * H), p.primary)  # tailstock
     disc_x(b, tx0 - 0.03 * L, tx0, 0, zc, 0.025 * H, p.secondary, sections=10)
@@ -250,9 +252,9 @@ def build_laser_cutter(p):
           CHROME)  # lid handle
     b.box((panel_x, -d / 2, bz), (w / 2, d / 2, bz + 0.12 * h), darker(p.primary, 0.12))
     b.box((panel_x + 0.03, d / 2 - 0.005, bz + 0.04 * h), (w / 2 - 0.03, d / 2 + 0.001, bz + 0.1 * h), SCREEN)
-    buttons(b, panel_x + 0.03, w / 2 - 0.03, sz + 0.06 * h, bz - 0.06 * h, d / 2, 3, 3, "#9a9da3", 0.5)
+    buttons(b, panel_x + 0.03, w / 2 - 0.03, sz + 0.06 * h, bz - 0.06 * h, d / 2, 3, 3, tint("#9a9da3", "metal"), 0.5)
     b.cyl(w / 2 - 0.1 * w, d / 2 - 0.12 * d, bz + 0.12 * h, bz + 0.15 * h, 0.035, GLOW_RED, sections=12)
-    b.cyl(-0.3 * w, -d / 2 + 0.08 * d, bz, h, 0.05, "#b0b3b8", sections=12)  # exhaust duct
+    b.cyl(-0.3 * w, -d / 2 + 0.08 * d, bz, h, 0.05, tint("#b0b3b8", "metal"), sections=12)  # exhaust duct
     return b.mesh(p.size)
 
 
@@ -279,7 +281,7 @@ def build_cnc_machine(p):
         b.box((-w / 2 + 0.1 * w, -0.3 * d, 0.36 * h), (w / 2 - 0.3 * w, 0.2 * d, 0.42 * h), DARK_METAL)
         b.box((w / 2 - 0.2 * w, -0.1 * d, 0.45 * h), (w / 2, d / 2, 0.85 * h), darker(p.primary, 0.1))  # panel
         b.box((w / 2 - 0.18 * w, d / 2, 0.68 * h), (w / 2 - 0.02 * w, d / 2 + 0.001, 0.82 * h), SCREEN)
-        buttons(b, w / 2 - 0.18 * w, w / 2 - 0.02 * w, 0.48 * h, 0.66 * h, d / 2, 4, 3, "#9a9da3", 0.55)
+        buttons(b, w / 2 - 0.18 * w, w / 2 - 0.02 * w, 0.48 * h, 0.66 * h, d / 2, 4, 3, tint("#9a9da3", "metal"), 0.55)
         b.cyl(w / 2 - 0.05 * w, 0.2 * d, h - 0.08 * h, h, 0.03 * w, GLOW_GREEN, sections=8)  # signal tower
         return b.mesh(p.size)
     bed = 0.58 * h
@@ -301,7 +303,7 @@ def build_cnc_machine(p):
     b.box((-w / 2 + 0.06 * w, gy + 0.06 * d, 0.8 * h), (w / 2 - 0.06 * w, gy + 0.07 * d, 0.82 * h), p.secondary)
     sx = 0.1 * w
     b.box((sx - 0.08 * w, gy + 0.06 * d, 0.72 * h), (sx + 0.08 * w, gy + 0.14 * d, h), darker(p.primary, 0.1))
-    b.cyl(sx, gy + 0.2 * d, 0.7 * h, 0.95 * h, 0.05 * w, "#e8e6e0", sections=14)  # spindle motor
+    b.cyl(sx, gy + 0.2 * d, 0.7 * h, 0.95 * h, 0.05 * w, tint("#e8e6e0", "paint"), sections=14)  # spindle motor
     b.box((sx - 0.02 * w, gy + 0.14 * d, 0.85 * h), (sx + 0.02 * w, gy + 0.2 * d, 0.9 * h), p.secondary)
     b.cyl(sx, gy + 0.2 * d, 0.64 * h, 0.7 * h, 0.02 * w, CHROME, r_top=0.04 * w, sections=10)
     b.cyl(sx, gy + 0.2 * d, bed + 0.03 * h, 0.64 * h, 0.004, CHROME, sections=5)
@@ -345,7 +347,7 @@ def build_3d_printer(p):
     b.hull([(0.05 * w, d / 2, 0.02 * h), (0.4 * w, d / 2, 0.02 * h), (0.05 * w, d / 2 - 0.06 * d, base),
             (0.4 * w, d / 2 - 0.06 * d, base), (0.05 * w, d / 2 + 0.0, base * 0.7), (0.4 * w, d / 2, base * 0.7)],
            BLACK)
-    b.box((0.08 * w, d / 2 - 0.0005, 0.04 * h), (0.37 * w, d / 2, 0.1 * h), "#3a6ab0")
+    b.box((0.08 * w, d / 2 - 0.0005, 0.04 * h), (0.37 * w, d / 2, 0.1 * h), tint("#3a6ab0", "paint"))
     bz = base + 0.06 * h
     b.box((-0.38 * w, -0.38 * d + 0.1 * d, bz - 0.02 * h), (0.38 * w, 0.38 * d + 0.05 * d, bz), DARK_METAL)  # bed
     b.cyl(0.05 * w, 0.05 * d, bz, bz + 0.12 * h, 0.08 * w, part, r_top=0.04 * w, sections=8)  # print
@@ -382,7 +384,7 @@ def build_microscope(p):
     b = Builder()
     b.box((-0.42 * w, -0.48 * d, 0), (0.42 * w, 0.3 * d, 0.1 * h), p.primary)
     b.cyl(0, 0.3 * d, 0, 0.1 * h, 0.42 * w, p.primary, sections=16)
-    b.cyl(0, 0.15 * d, 0.1 * h, 0.14 * h, 0.12 * w, "#f4f1c4", sections=12)  # lamp
+    b.cyl(0, 0.15 * d, 0.1 * h, 0.14 * h, 0.12 * w, tint("#f4f1c4", "light"), sections=12)  # lamp
     ay = -0.3 * d
     b.box((-0.14 * w, ay - 0.12 * d, 0.1 * h), (0.14 * w, ay + 0.08 * d, 0.72 * h), p.primary)  # arm
     b.hull([(-0.14 * w, ay - 0.12 * d, 0.6 * h), (0.14 * w, ay - 0.12 * d, 0.6 * h), (-0.14 * w, ay + 0.08 * d, 0.6 * h),
@@ -428,8 +430,8 @@ def build_bunsen_burner(p):
     b.rod((0, 0, 0.12 * h), (R * 0.95, -0.2 * R, 0.1 * h), 0.07 * R, p.primary, sections=8)  # gas inlet
     b.rod((0.95 * R, -0.2 * R, 0.1 * h), (0.97 * R, -0.9 * R, 0.03 * h), 0.1 * R, p.accent, sections=8)  # hose
     if p.flame:
-        b.cyl(0, 0, tube_top, h, 0.18 * R, "#6aa8f0", r_top=0.0, sections=12, alpha=170)
-        b.cyl(0, 0, tube_top, tube_top + 0.45 * (h - tube_top), 0.12 * R, "#2a5ad0", r_top=0.0, sections=10)
+        b.cyl(0, 0, tube_top, h, 0.18 * R, tint("#6aa8f0", "paint"), r_top=0.0, sections=12, alpha=170)
+        b.cyl(0, 0, tube_top, tube_top + 0.45 * (h - tube_top), 0.12 * R, tint("#2a5ad0", "paint"), r_top=0.0, sections=10)
     return b.mesh(p.size)
 
 
@@ -462,9 +464,9 @@ def build_centrifuge(p):
     if not p.open:
         b.lathe([[0, body], [R, body], [R, body + 0.05 * h], [0.8 * R, h - 0.02 * h], [0, h]], p.primary,
                 x=0, y=cy, sections=28)
-        b.cyl(0, cy, h - 0.02 * h, h, 0.45 * R, "#3a4a5a", sections=20, alpha=200)
+        b.cyl(0, cy, h - 0.02 * h, h, 0.45 * R, tint("#3a4a5a", "paint"), sections=20, alpha=200)
         return b.mesh(p.size)
-    b.cyl(0, cy, body - 0.01, body + 0.012, 0.9 * R, "#4a4c50", sections=24)
+    b.cyl(0, cy, body - 0.01, body + 0.012, 0.9 * R, tint("#4a4c50", "paint"), sections=24)
     b.cyl(0, cy, body + 0.012, body + 0.03, 0.7 * R, CHROME, r_top=0.5 * R, sections=20)  # rotor
     for k in range(8):
         a = 2 * np.pi * k / 8
@@ -477,13 +479,22 @@ def build_centrifuge(p):
     return b.mesh(p.size)
 
 
+slot_roles("lathe", "paint", "metal", "plastic")
 register("lathe", sample_lathe, build_lathe)
+slot_roles("drill_press", "paint", "metal", "plastic")
 register("drill_press", sample_drill_press, build_drill_press)
+slot_roles("bandsaw", "paint", "metal", "plastic")
 register("bandsaw", sample_bandsaw, build_bandsaw)
+slot_roles("laser_cutter", "plastic", "plastic", "plastic")
 register("laser_cutter", sample_laser_cutter, build_laser_cutter)
+slot_roles("cnc_machine", "paint", "metal", "wood")
 register("cnc_machine", sample_cnc_machine, build_cnc_machine)
+slot_roles("3d_printer", "plastic", "plastic", "plastic")
 register("3d_printer", sample_3d_printer, build_3d_printer)
+slot_roles("microscope", "plastic", {"": "plastic", CHROME: "metal"}, "metal")
 register("microscope", sample_microscope, build_microscope)
+slot_roles("bunsen_burner", "metal", "rubber", "light")
 register("bunsen_burner", sample_bunsen_burner, build_bunsen_burner)
+slot_roles("centrifuge", "plastic", "plastic", "plastic")
 register("centrifuge", sample_centrifuge, build_centrifuge)
 

@@ -15,6 +15,8 @@ from anyhome.assets.procedural._parts import (
     lighter,
     make_params,
     rot_x,
+    slot_roles,
+    tint,
     wood_tones,
 )
 from anyhome.assets.registry import register
@@ -35,7 +37,7 @@ def build_tv(p):
     b.box((-w / 2, y0, foot_h), (w / 2, y0 + sd * 0.8, h), p.primary)  # body
     b.box((-w / 2 + 0.015, y0 + sd * 0.8, foot_h + 0.02), (w / 2 - 0.015, y0 + sd, h - 0.015), p.secondary)
     b.box((-w / 2 + 0.05, y0 + sd * 0.8 + 0.001, foot_h + 0.06),
-          (-w / 2 + 0.35 * w, y0 + sd + 0.0005, h - 0.05), "#1c2430")  # a faint reflection
+          (-w / 2 + 0.35 * w, y0 + sd + 0.0005, h - 0.05), tint("#1c2430", "paint"))  # a faint reflection
     if has_foot:
         b.box((-0.04, -0.02, 0.01), (0.04, 0.0, foot_h + 0.15 * h), p.accent)
         b.box((-0.18 * w, -d / 2, 0), (0.18 * w, d / 2, 0.012), p.accent)
@@ -48,13 +50,13 @@ def sample_piano(rng, size, style):
 
 
 def _keys(b: Builder, w: float, y0: float, y1: float, z: float) -> None:
-    b.box((-w / 2, y0, z), (w / 2, y1, z + 0.02), "#f4f1ea")
+    b.box((-w / 2, y0, z), (w / 2, y1, z + 0.02), tint("#f4f1ea", "paint"))
     n = max(7, int(w / 0.023))
     xs = np.linspace(-w / 2, w / 2, n + 1)
     for i, x in enumerate(xs[1:-1]):
         if i % 7 in (2, 6):
             continue
-        b.box((x - 0.006, y0 + 0.4 * (y1 - y0), z + 0.02), (x + 0.006, y1, z + 0.032), "#151515")
+        b.box((x - 0.006, y0 + 0.4 * (y1 - y0), z + 0.02), (x + 0.006, y1, z + 0.032), tint("#151515", "paint"))
 
 
 def build_piano(p):
@@ -89,7 +91,7 @@ def build_piano(p):
     _keys(b, w - 0.1, d / 2 - 0.25, d / 2 - 0.1, body_z0 + 0.08)
     for x, y in ((-w / 2 + 0.1, d / 2 - 0.2), (w / 2 - 0.1, d / 2 - 0.2), (-w * 0.1, -0.4 * d)):
         b.cyl(x, y, 0.03, body_z0, 0.04, p.primary, r_top=0.05)
-        b.sphere((x, y, 0.03), 0.03, "#c9a54a")
+        b.sphere((x, y, 0.03), 0.03, tint("#c9a54a", "metal"))
     b.box((-0.3, d / 2 - 0.3, body_z0 + 0.08), (0.3, d / 2 - 0.27, body_z0 + 0.3), p.primary)
     return b.mesh(p.size)
 
@@ -112,10 +114,10 @@ def build_fireplace(p):
     b.box((-w / 2, -d / 2, h - mantel), (w / 2, d / 2, h), p.secondary)  # mantel shelf
     b.box((-w / 2 + 0.02, -d / 2, 0), (w / 2 - 0.02, d / 2, 0.05), darker(p.primary, 0.2))  # hearth
     for dx in (-0.1, 0.1):
-        b.rod((dx - 0.15 * ow, -0.05, 0.1), (dx + 0.15 * ow, 0.0, 0.12), 0.04, "#6b4a30")
+        b.rod((dx - 0.15 * ow, -0.05, 0.1), (dx + 0.15 * ow, 0.0, 0.12), 0.04, tint("#6b4a30", "paint"))
     if p.lit:
-        b.sphere((0, -0.05, 0.2), (0.18 * ow, 0.06, 0.12), "#f08a2a")
-        b.sphere((0, -0.05, 0.24), (0.08 * ow, 0.04, 0.1), "#ffd060")
+        b.sphere((0, -0.05, 0.2), (0.18 * ow, 0.06, 0.12), tint("#f08a2a", "paint"))
+        b.sphere((0, -0.05, 0.24), (0.08 * ow, 0.04, 0.1), tint("#ffd060", "light"))
     return b.mesh(p.size)
 
 
@@ -191,7 +193,7 @@ def build_treadmill(p):
     b.box((-w / 2 + 0.05, d / 2 - 0.2, 0), (w / 2 - 0.05, d / 2, deck + 0.05), p.primary)
     b.box((-w / 2 + 0.02, d / 2 - 0.2, h - 0.2), (w / 2 - 0.02, d / 2, h), p.primary,
           transform=about(rot_x(0.3), (0, d / 2 - 0.1, h - 0.1)))
-    b.box((-0.15, d / 2 - 0.22, h - 0.16), (0.15, d / 2 - 0.18, h - 0.04), "#2f6b8a",
+    b.box((-0.15, d / 2 - 0.22, h - 0.16), (0.15, d / 2 - 0.18, h - 0.04), tint("#2f6b8a", "paint"),
           transform=about(rot_x(0.3), (0, d / 2 - 0.1, h - 0.1)))
     return b.mesh(p.size)
 
@@ -217,7 +219,7 @@ def build_exercise_bike(p):
     b.rod((-w * 0.35, d / 2 - 0.12, h - 0.05), (w * 0.35, d / 2 - 0.12, h - 0.05), 0.018, p.accent)
     b.rod((0, d / 2 - 0.12, h - 0.1), (0, d / 2 - 0.12, h - 0.05), 0.02, p.primary)
     b.sphere((0, -0.12 * d, h * 0.65), (0.1, 0.15, 0.04), p.secondary)  # saddle
-    b.box((-0.06, d / 2 - 0.1, h - 0.2), (0.06, d / 2 - 0.06, h - 0.1), "#2f6b8a")
+    b.box((-0.06, d / 2 - 0.1, h - 0.2), (0.06, d / 2 - 0.06, h - 0.1), tint("#2f6b8a", "paint"))
     for s in (-1, 1):
         b.rod((s * 0.04, fy, 0.35), (s * 0.12, fy - 0.08, 0.25), 0.01, p.accent)
         b.box((s * 0.12 - 0.04, fy - 0.12, 0.24), (s * 0.12 + 0.04, fy - 0.04, 0.26), p.secondary)
@@ -237,7 +239,7 @@ def build_cat_tree(p):
     cube = min(w, d) * 0.5
     b.box((-w / 2 + 0.02, -d / 2 + 0.02, 0.04), (-w / 2 + 0.02 + cube, -d / 2 + 0.02 + cube, 0.04 + cube), p.primary)
     b.rod((-w / 2 + 0.02 + cube / 2, -d / 2 + 0.02 + cube + 0.001, 0.04 + cube / 2),
-          (-w / 2 + 0.02 + cube / 2, -d / 2 + 0.025 + cube, 0.04 + cube / 2), cube * 0.3, "#2a2522")
+          (-w / 2 + 0.02 + cube / 2, -d / 2 + 0.025 + cube, 0.04 + cube / 2), cube * 0.3, tint("#2a2522", "paint"))
     z_prev = 0.04 + cube
     for k in range(p.levels):
         z = z_prev + (h - z_prev) / (p.levels - k)
@@ -251,7 +253,7 @@ def build_cat_tree(p):
         b.box((cx - pw / 2, cy - pd / 2, z - 0.03), (cx + pw / 2, cy + pd / 2, z), p.primary)
         z_prev = z
     b.cyl(0, 0, h - 0.03, h, min(w, d) * 0.25, p.accent, sections=20)
-    b.sphere((w * 0.2, d * 0.2, 0.3 * h), 0.04, "#e05a47", subdivisions=1)
+    b.sphere((w * 0.2, d * 0.2, 0.3 * h), 0.04, tint("#e05a47", "paint"), subdivisions=1)
     return b.mesh(p.size)
 
 
@@ -278,12 +280,21 @@ def build_generic(p):
     return b.mesh(p.size)
 
 
+slot_roles("tv", "plastic", "screen", "metal")
 register("tv", sample_tv, build_tv)
+slot_roles("piano", "paint", "ceramic", "plastic")
 register("piano", sample_piano, build_piano)
+slot_roles("fireplace", "stone", "wood", "stone")
 register("fireplace", sample_fireplace, build_fireplace)
+slot_roles("whiteboard", "metal", "plastic", "plastic")
 register("whiteboard", sample_whiteboard, build_whiteboard)
+slot_roles("easel", "wood", "fabric", "paint")
 register("easel", sample_easel, build_easel)
+slot_roles("treadmill", "plastic", "rubber", "metal")
 register("treadmill", sample_treadmill, build_treadmill)
+slot_roles("exercise_bike", "paint", "plastic", "metal")
 register("exercise_bike", sample_exercise_bike, build_exercise_bike)
+slot_roles("cat_tree", "fabric", "fabric", "fabric")
 register("cat_tree", sample_cat_tree, build_cat_tree)
+slot_roles("generic", "wood", "fabric", "metal")
 register("generic", sample_generic, build_generic)

@@ -16,17 +16,19 @@ from anyhome.assets.procedural._parts import (
     move,
     rot_y,
     rot_z,
+    slot_roles,
     style_is,
+    tint,
     wood_tones,
 )
 from anyhome.assets.registry import register
 
-STONES = ["#c9c1b0", "#b3ab9c", "#d8d0c0", "#9d978c", "#bfb3a0"]
-WATER = ["#5f9fc0", "#6fb0c8", "#4f8fb0"]
-FOLIAGE = ["#4f7a3a", "#5d8a45", "#3f6b35", "#6b8f4e"]
-FLAME = "#f08a2a"
-FLAME_CORE = "#ffd060"
-TYRE = "#1c1c1e"
+STONES = tint(["#c9c1b0", "#b3ab9c", "#d8d0c0", "#9d978c", "#bfb3a0"], "stone")
+WATER = tint(["#5f9fc0", "#6fb0c8", "#4f8fb0"], "glass")
+FOLIAGE = tint(["#4f7a3a", "#5d8a45", "#3f6b35", "#6b8f4e"], "plant")
+FLAME = tint("#f08a2a", "light")
+FLAME_CORE = tint("#ffd060", "light")
+TYRE = tint("#1c1c1e", "rubber")
 
 
 # ----------------------------------------------------------------- fountain
@@ -133,7 +135,7 @@ def build_hot_tub(p):
                       METAL, sections=8)
                 b.rod((x + dx, d / 2 - rim - 0.1, h), (x + dx, d / 2 - rim / 2, h), 0.02, METAL, sections=8)
     if p.lid:  # a folded cover on the back edge
-        b.box((-w / 2 + 0.02, -d / 2, h), (w / 2 - 0.02, -d / 2 + 0.25 * d, h + 0.06), "#5a5550")
+        b.box((-w / 2 + 0.02, -d / 2, h), (w / 2 - 0.02, -d / 2 + 0.25 * d, h + 0.06), tint("#5a5550", "paint"))
     return b.mesh(p.size)
 
 
@@ -163,7 +165,7 @@ def build_fire_pit(p):
             b.box((0.72 * R, -0.22 * R, 0), (R, 0.22 * R, rim_h * 0.5), shade, transform=m)
             m2 = rot_z(a + np.pi / n)
             b.box((0.72 * R, -0.22 * R, rim_h * 0.5), (R, 0.22 * R, rim_h), lighter(shade, 0.08), transform=m2)
-        b.cyl(0, 0, 0, 0.15 * h, 0.8 * R, "#2a2420", sections=20)
+        b.cyl(0, 0, 0, 0.15 * h, 0.8 * R, tint("#2a2420", "paint"), sections=20)
         fire_z = 0.15 * h
     else:  # a steel bowl on three legs
         bowl_z = 0.3 * h
@@ -235,7 +237,7 @@ def build_grill(p):
         b.box((s * body / 2, -d / 2 + 0.05, top - 0.04), (s * w / 2, d / 2 - 0.05, top - 0.01), p.accent)
         b.rod((s * (w / 2 - 0.02), d / 2 - 0.07, top - 0.04), (s * (w / 2 - 0.02), d / 2 - 0.07, top - 0.1), 0.008,
               p.secondary, sections=6)
-    b.cyl(-body / 2 + 0.12, -d / 2 + 0.2, 0.12, 0.42 * h, 0.1, "#e8e6e0", sections=14)  # gas bottle
+    b.cyl(-body / 2 + 0.12, -d / 2 + 0.2, 0.12, 0.42 * h, 0.1, tint("#e8e6e0", "paint"), sections=14)  # gas bottle
     top_cap = 0.47 * h
     b.cyl(-body / 2 + 0.12, -d / 2 + 0.2, 0.42 * h, top_cap, 0.05, METAL, sections=10)
     b.box((-0.01, -d / 2 + 0.05, top), (0.01, -d / 2 + 0.1, h), p.primary)  # lid hinge stop
@@ -294,22 +296,22 @@ def build_potted_tree(p):
     pot_h = min(0.55, 0.2 * h)
     if p.square_pot:
         b.box((-pot_r, -pot_r, 0), (pot_r, pot_r, pot_h), p.primary)
-        b.box((-pot_r * 0.92, -pot_r * 0.92, pot_h), (pot_r * 0.92, pot_r * 0.92, pot_h + 0.005), "#4a3526")
+        b.box((-pot_r * 0.92, -pot_r * 0.92, pot_h), (pot_r * 0.92, pot_r * 0.92, pot_h + 0.005), tint("#4a3526", "paint"))
     else:
         b.cyl(0, 0, 0, pot_h, pot_r * 0.75, p.primary, r_top=pot_r, sections=20)
         b.cyl(0, 0, pot_h - 0.04, pot_h, pot_r * 1.05, darker(p.primary, 0.1), sections=20)
-        b.cyl(0, 0, pot_h - 0.03, pot_h + 0.005, pot_r * 0.95, "#4a3526", sections=20)
+        b.cyl(0, 0, pot_h - 0.03, pot_h + 0.005, pot_r * 0.95, tint("#4a3526", "paint"), sections=20)
     crown_z = pot_h + (0.55 if p.kind != "fig" else 0.35) * (h - pot_h)
     bark = "#6b5238" if p.kind != "olive" else "#7a7266"
     lean = rng.uniform(-0.15, 0.15, 2) * R
     mid = (lean[0] * 0.5, lean[1] * 0.5, pot_h + 0.5 * (crown_z - pot_h))
-    b.rod((0, 0, pot_h - 0.02), mid, 0.045 * R + 0.02, bark, sections=8)
-    b.rod(mid, (lean[0], lean[1], crown_z), 0.035 * R + 0.015, bark, sections=8)
+    b.rod((0, 0, pot_h - 0.02), mid, 0.045 * R + 0.02, bark, sections=8, role="wood")
+    b.rod(mid, (lean[0], lean[1], crown_z), 0.035 * R + 0.015, bark, sections=8, role="wood")
     crown_c = np.array([lean[0], lean[1], crown_z + 0.45 * (h - crown_z)])
     crown_r = np.array([R, R, 0.5 * (h - crown_z)])
     for _ in range(3):  # branches
         end = crown_c + rng.uniform(-0.6, 0.6, 3) * crown_r * np.array([1, 1, 0.5])
-        b.rod((lean[0], lean[1], crown_z), end, 0.02 * R + 0.01, bark, sections=6)
+        b.rod((lean[0], lean[1], crown_z), end, 0.02 * R + 0.01, bark, sections=6, role="wood")
     if p.kind == "ball":
         b.sphere(crown_c, crown_r * 0.98, p.secondary, subdivisions=2)
     else:
@@ -329,9 +331,15 @@ def build_potted_tree(p):
     return b.mesh(p.size)
 
 
+slot_roles("fountain", "stone", "glass", "glass")
 register("fountain", sample_fountain, build_fountain)
+slot_roles("hot_tub", "wood", "plastic", "glass")
 register("hot_tub", sample_hot_tub, build_hot_tub)
+slot_roles("fire_pit", {"": "stone", DARK_METAL: "metal"}, "wood", "light")
 register("fire_pit", sample_fire_pit, build_fire_pit)
+slot_roles("grill", {"": "paint", "#9a9da3": "metal"}, "metal", "wood")
 register("grill", sample_grill, build_grill)
+slot_roles("patio_umbrella", "fabric", "fabric", {"": "wood", METAL: "metal"})
 register("patio_umbrella", sample_patio_umbrella, build_patio_umbrella)
+slot_roles("potted_tree", "ceramic", "plant", "plant")
 register("potted_tree", sample_potted_tree, build_potted_tree)

@@ -9,19 +9,22 @@ from anyhome.assets.procedural._parts import (
     DARK_METAL,
     METAL,
     Builder,
+    Role,
     about,
     darker,
     lighter,
     make_params,
     move,
     rot_x,
+    slot_roles,
+    tint,
     wood_tones,
 )
 from anyhome.assets.registry import register
 
-BRASS = "#c9a54a"
-DRUM_SHELLS = ["#b8322a", "#2d4f8a", BLACK, "#e8e6e0", "#5c3b26", "#3f6b4a", "#7a2a5a"]
-DRUM_HEAD = "#f0ede6"
+BRASS = tint("#c9a54a", "metal")
+DRUM_SHELLS = tint(["#b8322a", "#2d4f8a", BLACK, "#e8e6e0", "#5c3b26", "#3f6b4a", "#7a2a5a"], "paint")
+DRUM_HEAD = tint("#f0ede6", "plastic")
 
 
 def _along_y(x: float, y0: float, y1: float, z: float, rx: float, rz: float) -> tuple[tuple, np.ndarray]:
@@ -30,9 +33,10 @@ def _along_y(x: float, y0: float, y1: float, z: float, rx: float, rz: float) -> 
     return (0.0, 0.0, y0, y1, rx), move((x, 0, z)) @ rot_x(-np.pi / 2) @ np.diag([1.0, rz / rx, 1.0, 1.0])
 
 
-def _disc_y(b: Builder, x: float, y0: float, y1: float, z: float, r: float, color: str, sections: int = 20) -> None:
+def _disc_y(b: Builder, x: float, y0: float, y1: float, z: float, r: float, color: str, sections: int = 20,
+            role: Role | None = None) -> None:
     """A round disc facing +y (a speaker cone, a drum head, a knob)."""
-    b.rod((x, y0, z), (x, y1, z), r, color, sections=sections)
+    b.rod((x, y0, z), (x, y1, z), r, color, sections=sections, role=role)
 
 
 # ----------------------------------------------------------------- microphone
@@ -102,7 +106,7 @@ def build_speaker(p):
         for k in range(1, 6):
             z = 0.05 + k * (0.67 * h - 0.05) / 6
             b.box((-w / 2 + 0.03, y, z - 0.002), (w / 2 - 0.03, y + 0.002, z + 0.002), darker(p.secondary, 0.4))
-        b.box((-w / 2 + 0.03, y - 0.01, 0.76 * h), (w / 2 - 0.03, y, h - 0.06), "#c9ccd0")  # control panel
+        b.box((-w / 2 + 0.03, y - 0.01, 0.76 * h), (w / 2 - 0.03, y, h - 0.06), tint("#c9ccd0", "metal"))  # control panel
         n = 6
         for i in range(n):
             _disc_y(b, -w / 2 + 0.08 + i * (w - 0.16) / (n - 1), y, y + 0.02, 0.83 * h, 0.014, BLACK, 10)
@@ -123,10 +127,10 @@ def build_speaker(p):
     if p.kind == "tower":
         zs.append(zs[0] + 2 * r + 0.03)
     for z in zs:
-        _driver(b, 0, y - 0.008, z, r, p.accent if p.accent != BRASS else "#9a9da3")
+        _driver(b, 0, y - 0.008, z, r, p.accent if p.accent != BRASS else METAL)
     zt = max(zs) + r + 0.1
-    _driver(b, 0, y - 0.008, min(zt, h - 0.08), 0.05, "#c9ccd0")
-    _disc_y(b, 0, y - 0.01, y, max(0.06, zs[0] - r - 0.02), 0.025, "#111111", 12)  # port
+    _driver(b, 0, y - 0.008, min(zt, h - 0.08), 0.05, tint("#c9ccd0", "metal"))
+    _disc_y(b, 0, y - 0.01, y, max(0.06, zs[0] - r - 0.02), 0.025, tint("#111111", "plastic"), 12)  # port
     if p.grille:  # a cloth grille over the lower half, as if half removed
         b.box((-w / 2 + 0.015, y, foot + 0.02), (w / 2 - 0.015, y + 0.012, foot + 0.45 * (h - foot)), p.secondary,
               alpha=235)
@@ -229,7 +233,7 @@ def _guitar(b: Builder, p, H: float) -> None:
     if p.kind == "electric":
         b.hull([(-0.06, t / 2, base + 0.25 * bl), (0.12, t / 2, base + 0.35 * bl), (0.1, t / 2, base + 0.75 * bl),
                 (-0.02, t / 2, base + 0.6 * bl), (-0.06, t / 2 + 0.003, base + 0.25 * bl),
-                (0.12, t / 2 + 0.003, base + 0.35 * bl), (0.1, t / 2 + 0.003, base + 0.75 * bl)], "#f0ede6")
+                (0.12, t / 2 + 0.003, base + 0.35 * bl), (0.1, t / 2 + 0.003, base + 0.75 * bl)], tint("#f0ede6", "paint"))
         for z in (0.45, 0.62):
             b.cbox((0, t / 2 + 0.004, base + z * bl), (0.08, 0.01, 0.025), BLACK)
         for i in range(3):
@@ -237,10 +241,10 @@ def _guitar(b: Builder, p, H: float) -> None:
     elif cello:
         for sx in (-1, 1):
             b.cbox((sx * 0.07, t / 2, base + 0.5 * bl), (0.012, 0.006, 0.16 * bl), BLACK)
-        b.cbox((0, t / 2 + 0.01, base + 0.38 * bl), (0.09, 0.012, 0.03), "#d9c3a0")  # bridge
+        b.cbox((0, t / 2 + 0.01, base + 0.38 * bl), (0.09, 0.012, 0.03), tint("#d9c3a0", "paint"))  # bridge
         b.cyl(0, 0, 0.0, base + 0.02, 0.008, METAL, sections=6)  # endpin
     else:
-        _disc_y(b, 0, t / 2 - 0.001, t / 2 + 0.002, base + 0.66 * bl, 0.05, "#1a1411", 20)
+        _disc_y(b, 0, t / 2 - 0.001, t / 2 + 0.002, base + 0.66 * bl, 0.05, tint("#1a1411", "wood"), 20)
         b.cbox((0, t / 2 + 0.004, base + 0.28 * bl), (0.12, 0.01, 0.02), p.secondary)
     neck_w = 0.055 if not cello else 0.07
     neck_top = H - (0.09 if not cello else 0.07) * H
@@ -254,7 +258,7 @@ def _guitar(b: Builder, p, H: float) -> None:
             for k in range(3):
                 z = neck_top + (0.2 + 0.28 * k) * (H - neck_top)
                 b.rod((sx * 0.045, t / 2 - 0.02, z), (sx * 0.065, t / 2 - 0.02, z), 0.006, METAL, sections=4)
-    b.box((-0.018, t / 2 + 0.012, base + 0.28 * bl), (0.018, t / 2 + 0.014, neck_top), "#e0e0dc")  # strings
+    b.box((-0.018, t / 2 + 0.012, base + 0.28 * bl), (0.018, t / 2 + 0.014, neck_top), tint("#e0e0dc", "paint"))  # strings
 
 
 def build_guitar(p):
@@ -270,7 +274,7 @@ def build_guitar(p):
         b.rod((sx * 0.12, -d / 2 + 0.02, 0.0), (0, -0.1 * d - 0.6 * H * np.sin(lean), 0.6 * H), 0.01, BLACK,
               sections=6)
         b.rod((sx * 0.14, d / 2 - 0.02, 0.0), (sx * 0.1, 0.02 * d, 0.06 * h), 0.01, BLACK, sections=6)
-        b.rod((sx * 0.1, 0.02 * d, 0.06 * h), (sx * 0.1, 0.12 * d, 0.08 * h), 0.012, "#3a3b3e", sections=6)
+        b.rod((sx * 0.1, 0.02 * d, 0.06 * h), (sx * 0.1, 0.12 * d, 0.08 * h), 0.012, tint("#3a3b3e", "paint"), sections=6)
     return b.mesh(p.size)
 
 
@@ -295,7 +299,7 @@ def build_stage_platform(p):
     skirt = 0.012  # pleats stand flush with the deck edge, so no part hides under the deck
     b.box((x_deck0 + skirt, -d / 2 + skirt, 0), (x_deck1 - skirt, d / 2 - skirt, h - deck), p.secondary)
     if p.edge:
-        b.box((x_deck0, d / 2 - 0.05, h - 0.002), (x_deck1, d / 2, h), "#e8e6e0")
+        b.box((x_deck0, d / 2 - 0.05, h - 0.002), (x_deck1, d / 2, h), tint("#e8e6e0", "paint"))
     pleat = 0.16
     fold = darker(p.secondary, 0.25)
     for i in range(int((x_deck1 - x_deck0) / pleat)):
@@ -315,8 +319,13 @@ def build_stage_platform(p):
     return b.mesh(p.size)
 
 
+slot_roles("microphone", "metal", "metal", "metal")
 register("microphone", sample_microphone, build_microphone)
+slot_roles("speaker", "wood", "fabric", "metal")
 register("speaker", sample_speaker, build_speaker)
+slot_roles("drum_kit", "paint", "plastic", "metal")
 register("drum_kit", sample_drum_kit, build_drum_kit)
+slot_roles("guitar", "wood", "wood", "metal")
 register("guitar", sample_guitar, build_guitar)
+slot_roles("stage_platform", "wood", "fabric", "metal")
 register("stage_platform", sample_stage_platform, build_stage_platform)

@@ -13,14 +13,16 @@ from anyhome.assets.procedural._parts import (
     darker,
     lighter,
     make_params,
+    slot_roles,
+    tint,
     wood_tones,
 )
 from anyhome.assets.registry import register
 
-FISH = ["#f08a2a", "#f1c40f", "#e74c3c", "#3498db", "#ecf0f1"]
-WATER = "#6fb8d0"
-WATER_PLANTS = ["#3f8a4a", "#5daa5a", "#2f6b3a"]
-BIRDS = ["#f1c40f", "#3fae5a", "#3498db", "#e8e6e0"]
+FISH = tint(["#f08a2a", "#f1c40f", "#e74c3c", "#3498db", "#ecf0f1"], "plastic")
+WATER = tint("#6fb8d0", "glass")
+WATER_PLANTS = tint(["#3f8a4a", "#5daa5a", "#2f6b3a"], "plant")
+BIRDS = tint(["#f1c40f", "#3fae5a", "#3498db", "#e8e6e0"], "plastic")
 HOUSE_WIDTH_M = 0.85
 """A kennel box at least this wide (and deep) is built as a wooden dog house, not a crate."""
 
@@ -75,15 +77,15 @@ def _dog_house(b: Builder, w: float, d: float, h: float, p) -> None:
                 (sx * w / 2, -d / 2, eave - 0.06), (sx * w / 2, d / 2, eave - 0.06),
                 (sx * w / 2, -d / 2, eave - 0.02), (sx * w / 2, d / 2, eave - 0.02)], p.secondary)
     dw, dh = 0.4 * w, 0.6 * eave
-    b.box((-dw / 2, d / 2 - 0.06, 0.08), (dw / 2, d / 2 - 0.045, 0.08 + dh - dw / 2), "#1c1814")  # doorway
-    b.rod((0, d / 2 - 0.06, 0.08 + dh - dw / 2), (0, d / 2 - 0.045, 0.08 + dh - dw / 2), dw / 2, "#1c1814",
+    b.box((-dw / 2, d / 2 - 0.06, 0.08), (dw / 2, d / 2 - 0.045, 0.08 + dh - dw / 2), tint("#1c1814", "paint"))  # doorway
+    b.rod((0, d / 2 - 0.06, 0.08 + dh - dw / 2), (0, d / 2 - 0.045, 0.08 + dh - dw / 2), dw / 2, tint("#1c1814", "paint"),
           sections=20)
     for k in range(1, int(eave / 0.12)):  # siding boards
         b.box((-w / 2 + 0.05, d / 2 - 0.05, k * 0.12), (w / 2 - 0.05, d / 2 - 0.046, k * 0.12 + 0.008),
               darker(p.primary, 0.15))
     b.cbox((0, d / 2 - 0.03, eave + 0.12 * (h - eave)), (0.25 * w, 0.02, 0.06), lighter(p.accent, 0.2))  # name
     if p.bed:
-        b.cyl(0.3 * w, d / 2 - 0.15 * d, 0.0, 0.04, 0.08, "#c0392b", r_top=0.07, sections=14)  # a bowl
+        b.cyl(0.3 * w, d / 2 - 0.15 * d, 0.0, 0.04, 0.08, tint("#c0392b", "paint"), r_top=0.07, sections=14)  # a bowl
 
 
 def build_kennel(p):
@@ -116,8 +118,8 @@ def build_aquarium(p):
     lid = min(0.06, 0.08 * (h - z0))
     t0, t1 = z0 + 0.02, h - lid
     inset = 0.01
-    b.box((-w / 2 + inset, -d / 2 + inset, z0), (w / 2 - inset, d / 2 - inset, t0 + 0.04), "#d9c3a0")  # gravel
-    b.box((-w / 2 + inset, -d / 2 + inset, t0 + 0.04), (w / 2 - inset, -d / 2 + inset + 0.005, t1), "#2f6b8a")
+    b.box((-w / 2 + inset, -d / 2 + inset, z0), (w / 2 - inset, d / 2 - inset, t0 + 0.04), tint("#d9c3a0", "stone"))  # gravel
+    b.box((-w / 2 + inset, -d / 2 + inset, t0 + 0.04), (w / 2 - inset, -d / 2 + inset + 0.005, t1), tint("#2f6b8a", "paint"))
     water_top = t1 - 0.04
     for _ in range(p.plants):
         x = rng.uniform(-0.42, 0.42) * w
@@ -127,7 +129,7 @@ def build_aquarium(p):
                  WATER_PLANTS[int(rng.integers(len(WATER_PLANTS)))], subdivisions=1)
     for _ in range(2):
         b.sphere((rng.uniform(-0.35, 0.35) * w, rng.uniform(-0.2, 0.2) * d, t0 + 0.05),
-                 (0.06 + 0.04 * w, 0.05, 0.05), "#8a8f94", subdivisions=1)
+                 (0.06 + 0.04 * w, 0.05, 0.05), tint("#8a8f94", "paint"), subdivisions=1)
     fl = min(0.05, 0.06 * w)
     for _ in range(p.fish):
         c = np.array([rng.uniform(-0.4, 0.4) * w, rng.uniform(-0.2, 0.35) * d, rng.uniform(0.3, 0.85) * (water_top - t0)
@@ -205,10 +207,13 @@ def build_bird_cage(p):
         b.sphere((0.15 * cr, 0, perch_z + 0.05), (0.035, 0.03, 0.045), p.accent, subdivisions=1)
         b.sphere((0.15 * cr + 0.02, 0.0, perch_z + 0.095), 0.025, p.accent, subdivisions=1)
         b.hull([(0.15 * cr + 0.04, -0.006, perch_z + 0.1), (0.15 * cr + 0.04, 0.006, perch_z + 0.1),
-                (0.15 * cr + 0.04, 0, perch_z + 0.088), (0.15 * cr + 0.06, 0, perch_z + 0.092)], "#e8a03a")
+                (0.15 * cr + 0.04, 0, perch_z + 0.088), (0.15 * cr + 0.06, 0, perch_z + 0.092)], tint("#e8a03a", "paint"))
     return b.mesh(p.size)
 
 
+slot_roles("kennel", {"": "wood", DARK_METAL: "metal", "#9a9da3": "metal"}, "paint", "fabric")
 register("kennel", sample_kennel, build_kennel)
+slot_roles("aquarium", "wood", "glass", "plastic")
 register("aquarium", sample_aquarium, build_aquarium)
+slot_roles("bird_cage", "metal", "wood", "paint")
 register("bird_cage", sample_bird_cage, build_bird_cage)

@@ -22,13 +22,15 @@ from anyhome.assets.procedural._parts import (
     lighter,
     make_params,
     rot_x,
+    slot_roles,
+    tint,
     wood_tones,
 )
 from anyhome.assets.registry import register
 
-TOY = ["#e05a47", "#f1c40f", "#2e86c1", "#27ae60", "#8e44ad", "#f08a2a", "#ec7fa9", "#4ab0c0"]
-PASTELS = ["#f4c6d0", "#c6e0f4", "#f4ecc6", "#d0f0d8", "#e8d8f4", "#f4f1ea"]
-SAND = "#e6cf98"
+TOY = tint(["#e05a47", "#f1c40f", "#2e86c1", "#27ae60", "#8e44ad", "#f08a2a", "#ec7fa9", "#4ab0c0"], "plastic")
+PASTELS = tint(["#f4c6d0", "#c6e0f4", "#f4ecc6", "#d0f0d8", "#e8d8f4", "#f4f1ea"], "paint")
+SAND = tint("#e6cf98", "stone")
 
 
 # ----------------------------------------------------------------- doll house
@@ -53,7 +55,7 @@ def build_doll_house(p):
         for k in range(p.floors):  # side windows
             z = 0.04 * h + (k + 0.35) * (eave - 0.04 * h) / p.floors
             b.box((x - 0.002, -0.15 * d, z), (x + t + 0.002, 0.15 * d, z + 0.35 * (eave - 0.04 * h) / p.floors),
-                  "#9ac4e0")
+                  tint("#9ac4e0", "paint"))
     n = p.floors
     fh = (eave - 0.04 * h) / n
     for k in range(n):
@@ -71,7 +73,7 @@ def build_doll_house(p):
             col = TOY[int(rng.integers(len(TOY)))]
             fw = 0.6 * (x1 - x0)
             if kind == 0:  # bed
-                b.box((cx - fw / 2, -d / 2 + t, z0), (cx + fw / 2, -d / 2 + t + 0.5 * d, z0 + 0.18 * fh), "#f4f1ea")
+                b.box((cx - fw / 2, -d / 2 + t, z0), (cx + fw / 2, -d / 2 + t + 0.5 * d, z0 + 0.18 * fh), tint("#f4f1ea", "paint"))
                 b.box((cx - fw / 2, -d / 2 + t + 0.15 * d, z0 + 0.18 * fh), (cx + fw / 2, -d / 2 + t + 0.5 * d,
                                                                              z0 + 0.2 * fh), col)
             elif kind == 1:  # table with a lamp
@@ -82,15 +84,15 @@ def build_doll_house(p):
                 b.box((cx - fw / 2, -d / 2 + t, z0), (cx + fw / 2, -d / 2 + t + 0.25 * d, z0 + 0.15 * fh), col)
                 b.box((cx - fw / 2, -d / 2 + t, z0), (cx + fw / 2, -d / 2 + t + 0.08 * d, z0 + 0.3 * fh), col)
             else:  # bathtub or stove
-                b.box((cx - fw / 2, -d / 2 + t, z0), (cx + fw / 2, -0.05 * d, z0 + 0.2 * fh), "#f4f4f2")
+                b.box((cx - fw / 2, -d / 2 + t, z0), (cx + fw / 2, -0.05 * d, z0 + 0.2 * fh), tint("#f4f4f2", "paint"))
                 b.box((cx - fw / 2 + 0.01, -d / 2 + t + 0.01, z0 + 0.2 * fh), (cx + fw / 2 - 0.01, -0.06 * d,
-                                                                              z0 + 0.205 * fh), "#9ac4e0")
+                                                                              z0 + 0.205 * fh), tint("#9ac4e0", "paint"))
     b.box((-w / 2 + t, -d / 2 + t, eave - 0.015), (w / 2 - t, d / 2, eave), p.accent)
     apex = h - 0.02 * h
     over = 0.04 * w
     gable = [(-w / 2 + t, eave), (w / 2 - t, eave), (0.0, apex - 0.06 * h)]
     extrude_y(b, gable, -d / 2, d / 2 - 0.02 * d, p.primary)
-    disc_y(b, 0, d / 2 - 0.02 * d, d / 2 - 0.015 * d, eave + 0.3 * (apex - eave), 0.12 * (apex - eave), "#9ac4e0",
+    disc_y(b, 0, d / 2 - 0.02 * d, d / 2 - 0.015 * d, eave + 0.3 * (apex - eave), 0.12 * (apex - eave), tint("#9ac4e0", "paint"),
            sections=14)
     for s in (-1, 1):  # roof slabs
         b.hull([(s * (w / 2 + over), -d / 2, eave - 0.03 * h), (s * (w / 2 + over), d / 2, eave - 0.03 * h),
@@ -124,12 +126,12 @@ def build_play_tent(p):
     dz = 0.55 * top
     half = 0.32 * R * sx
     b.hull([(-half, face(0, 0.004), 0.0), (half, face(0, 0.004), 0.0), (0.0, face(dz, 0.004), dz),
-            (-half, face(0, -0.01), 0.0), (half, face(0, -0.01), 0.0), (0.0, face(dz, -0.01), dz)], "#3a3230")
+            (-half, face(0, -0.01), 0.0), (half, face(0, -0.01), 0.0), (0.0, face(dz, -0.01), dz)], tint("#3a3230", "paint"))
     for s in (-1, 1):  # flaps tied back
         b.hull([(s * half, face(0, 0.006), 0.0), (s * 1.3 * half, face(0, 0.006), 0.0),
                 (s * 0.05 * half, face(dz, 0.006), dz), (s * half, face(0, 0.012), 0.0),
                 (s * 1.3 * half, face(0, 0.012), 0.0), (s * 0.05 * half, face(dz, 0.012), dz)],
-               lighter(p.primary, 0.4) if p.primary != "#f4f1ea" else "#e8dcc0")
+               lighter(p.primary, 0.4) if p.primary != tint("#f4f1ea", "paint") else tint("#e8dcc0", "paint"))
     for k in range(p.poles):
         a = 2 * np.pi * k / p.poles + 0.3
         foot = (0.95 * R * np.cos(a) * sx, 0.95 * R * np.sin(a) * sy, 0.0)
@@ -379,7 +381,7 @@ def _draw_hammock(b: Builder, L: float, B: float, H: float, p) -> None:
     for s in (-1, 1):
         b.rod((s * sb, -bw / 2 - 0.03, zb), (s * sb, bw / 2 + 0.03, zb), 0.015, p.primary, sections=6)
         for y in np.linspace(-bw / 2, bw / 2, 5):
-            b.rod((s * sb, y, zb), (s * hx, 0, hz), 0.004, "#e8dcc0", sections=4)
+            b.rod((s * sb, y, zb), (s * hx, 0, hz), 0.004, tint("#e8dcc0", "paint"), sections=4)
         b.sphere((s * hx, 0, hz), 0.02, METAL, subdivisions=0)
 
 
@@ -413,11 +415,19 @@ def build_bean_bag(p):
     return b.mesh(p.size)
 
 
+slot_roles("doll_house", "paint", "paint", "wood")
 register("doll_house", sample_doll_house, build_doll_house)
+slot_roles("play_tent", "fabric", "fabric", "wood")
 register("play_tent", sample_play_tent, build_play_tent)
+slot_roles("ball_pit", "fabric", "plastic", "plastic")
 register("ball_pit", sample_ball_pit, build_ball_pit)
+slot_roles("climbing_frame", "plastic", "plastic", "plastic")
 register("climbing_frame", sample_climbing_frame, build_climbing_frame)
+slot_roles("playground_slide", "plastic", {"": "plastic", METAL: "metal"}, "plastic")
 register("playground_slide", sample_playground_slide, build_playground_slide)
+slot_roles("sandbox", "wood", "stone", "plastic")
 register("sandbox", sample_sandbox, build_sandbox)
+slot_roles("hammock", "wood", "fabric", "fabric")
 register("hammock", sample_hammock, build_hammock)
+slot_roles("bean_bag", "fabric", "plastic", "plastic")
 register("bean_bag", sample_bean_bag, build_bean_bag)

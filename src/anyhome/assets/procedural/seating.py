@@ -18,6 +18,7 @@ from anyhome.assets.procedural._parts import (
     make_params,
     rot_x,
     rot_z,
+    slot_roles,
     wood_tones,
 )
 from anyhome.assets.registry import register
@@ -252,11 +253,19 @@ def build_weight_bench(p):
     return b.mesh(p.size)
 
 
+slot_roles("sofa", "fabric", "wood", "fabric")
 register("sofa", sample_sofa, build_sofa)
+slot_roles("armchair", "fabric", "wood", "fabric")
 register("armchair", sample_armchair, build_armchair)
+slot_roles("chair", "wood", "fabric", "fabric")
 register("chair", sample_chair, build_chair)
+slot_roles("office_chair", "fabric", "metal", "metal")
 register("office_chair", sample_office_chair, build_office_chair)
+slot_roles("stool", {"": "wood", METAL: "metal"}, "fabric", "metal")
 register("stool", sample_stool, build_stool)
+slot_roles("bench", "wood", "fabric", "metal")
 register("bench", sample_bench, build_bench)
+slot_roles("dental_chair", "leather", "plastic", "metal")
 register("dental_chair", sample_dental_chair, build_dental_chair)
+slot_roles("weight_bench", "leather", "metal", "metal")
 register("weight_bench", sample_weight_bench, build_weight_bench)

@@ -15,13 +15,15 @@ from anyhome.assets.procedural._parts import (
     leg_style,
     lighter,
     make_params,
+    slot_roles,
+    tint,
     wood_tones,
 )
 from anyhome.assets.registry import register
 
-BOOK_COLORS = ["#8b2e2e", "#2e4a8b", "#2f6b45", "#c8a24a", "#5a3a6e", "#d9d2c0", "#1f1f22",
-               "#b5562d", "#3f6f7a", "#7a1f3d"]
-HANDLE = "#b9b3a6"
+BOOK_COLORS = tint(["#8b2e2e", "#2e4a8b", "#2f6b45", "#c8a24a", "#5a3a6e", "#d9d2c0", "#1f1f22",
+               "#b5562d", "#3f6f7a", "#7a1f3d"], "paper")
+HANDLE = tint("#b9b3a6", "metal")
 
 
 def case(b: Builder, w: float, d: float, h: float, p: Params, rows: list[tuple[str, int]],
@@ -46,7 +48,7 @@ def case(b: Builder, w: float, d: float, h: float, p: Params, rows: list[tuple[s
         for i in range(n):
             x0 = -w / 2 + 0.02 + i * cw
             if kind == "open":
-                b.box((x0 + 0.02, fy - 0.01, z + 0.02), (x0 + cw - 0.02, fy + 0.001, z + rh - 0.02), "#2a2522")
+                b.box((x0 + 0.02, fy - 0.01, z + 0.02), (x0 + cw - 0.02, fy + 0.001, z + rh - 0.02), tint("#2a2522", "paint"))
                 continue
             b.box((x0 + gap, fy, z + gap), (x0 + cw - gap, fy + 0.02, z + rh - gap), p.secondary)
             if kind == "drawers":
@@ -139,7 +141,7 @@ def build_tv_stand(p):
     cw = (w - 0.04) / n
     if n >= 3:
         x0 = -w / 2 + 0.02 + cw * (n // 2)
-        b.box((x0 + 0.01, d / 2 - 0.02, base_h + 0.02), (x0 + cw - 0.01, d / 2 + 0.001, h - 0.05), "#2a2522")
+        b.box((x0 + 0.01, d / 2 - 0.02, base_h + 0.02), (x0 + cw - 0.01, d / 2 + 0.001, h - 0.05), tint("#2a2522", "paint"))
         b.box((x0 + 0.1 * cw, d / 2 - 0.15, base_h + 0.03), (x0 + 0.9 * cw, d / 2 - 0.03, base_h + 0.09), BLACK)
     return b.mesh(p.size)
 
@@ -235,9 +237,9 @@ def build_display_case(p):
             r = float(rng.uniform(0.03, 0.06))
             c = p.accent if rng.random() < 0.5 else "#e0ddd5"
             if rng.random() < 0.5:
-                b.cyl(x, 0, z + 0.01, z + 0.01 + r * 3, r, c, r_top=r * 0.6)
+                b.cyl(x, 0, z + 0.01, z + 0.01 + r * 3, r, c, r_top=r * 0.6, role="ceramic")
             else:
-                b.sphere((x, 0, z + 0.01 + r), r, c)
+                b.sphere((x, 0, z + 0.01 + r), r, c, role="ceramic")
     return b.mesh(p.size)
 
 
@@ -284,7 +286,7 @@ def build_toy_box(p):
     b.box((-w / 2 + 0.01, -d / 2 + 0.01, 0), (w / 2 - 0.01, d / 2 - 0.01, h * 0.85), p.primary)
     b.box((-w / 2, -d / 2, h * 0.85), (w / 2, d / 2, h * 0.95), p.secondary)
     for i, c in enumerate((p.accent, "#3f7fbf", "#5aa75a")):
-        b.box((-w / 2 + 0.1 + i * 0.12, -d / 2 + 0.1, h * 0.95), (-w / 2 + 0.2 + i * 0.12, -d / 2 + 0.2, h), c)
+        b.box((-w / 2 + 0.1 + i * 0.12, -d / 2 + 0.1, h * 0.95), (-w / 2 + 0.2 + i * 0.12, -d / 2 + 0.2, h), c, role="plastic")
     b.box((-w / 2 + 0.02, d / 2 - 0.01, h * 0.2), (w / 2 - 0.02, d / 2, h * 0.3), p.accent)
     b.box((-0.06, d / 2 - 0.01, h * 0.6), (0.06, d / 2 + 0.01, h * 0.7), darker(p.primary, 0.3))
     return b.mesh(p.size)
@@ -305,14 +307,25 @@ def build_box(p):
     return b.mesh(p.size)
 
 
+slot_roles("nightstand", "wood", "wood", "metal")
 register("nightstand", sample_nightstand, build_nightstand)
+slot_roles("dresser", "wood", "wood", "metal")
 register("dresser", sample_dresser, build_dresser)
+slot_roles("cabinet", "wood", "wood", "metal")
 register("cabinet", sample_cabinet, build_cabinet)
+slot_roles("wardrobe", "wood", "wood", "metal")
 register("wardrobe", sample_wardrobe, build_wardrobe)
+slot_roles("tv_stand", "wood", "wood", "metal")
 register("tv_stand", sample_tv_stand, build_tv_stand)
+slot_roles("bookshelf", "wood", "paper", "metal")
 register("bookshelf", sample_bookshelf, build_bookshelf)
+slot_roles("shelf", "wood", "paper", "metal")
 register("shelf", sample_shelf, build_shelf)
+slot_roles("display_case", "wood", "glass", {"": "paint", "#c9a54a": "metal"})
 register("display_case", sample_display_case, build_display_case)
+slot_roles("wine_rack", "wood", "glass", "glass")
 register("wine_rack", sample_wine_rack, build_wine_rack)
+slot_roles("toy_box", "paint", "paint", "paint")
 register("toy_box", sample_toy_box, build_toy_box)
+slot_roles("box", "paper", "paper", "paper")
 register("box", sample_box, build_box)

@@ -15,12 +15,14 @@ from anyhome.assets.procedural._parts import (
     leg_style,
     lighter,
     make_params,
+    slot_roles,
+    tint,
     wood_tones,
 )
 from anyhome.assets.procedural.storage import HANDLE
 from anyhome.assets.registry import register
 
-TOPS = ["#e8e6e0", "#d9d4c7", "#2b2b2b", "#c9c5bb"]
+TOPS = tint(["#e8e6e0", "#d9d4c7", "#2b2b2b", "#c9c5bb"], "stone")
 
 
 def _table_params(name, rng, size, style, **extra):
@@ -236,12 +238,21 @@ def build_bar_counter(p):
     return b.mesh(p.size)
 
 
+slot_roles("table", "wood", "wood", "metal")
 register("table", sample_table, build_table)
+slot_roles("dining_table", "wood", "wood", "metal")
 register("dining_table", sample_dining_table, build_dining_table)
+slot_roles("coffee_table", "wood", "wood", "metal")
 register("coffee_table", sample_coffee_table, build_coffee_table)
+slot_roles("side_table", "wood", "wood", "metal")
 register("side_table", sample_side_table, build_side_table)
+slot_roles("conference_table", "wood", "metal", "plastic")
 register("conference_table", sample_conference_table, build_conference_table)
+slot_roles("lab_bench", "stone", "paint", "plastic")
 register("lab_bench", sample_lab_bench, build_lab_bench)
+slot_roles("desk", "wood", "metal", "metal")
 register("desk", sample_desk, build_desk)
+slot_roles("reception_desk", "wood", "wood", "metal")
 register("reception_desk", sample_reception_desk, build_reception_desk)
+slot_roles("bar_counter", "wood", "stone", "metal")
 register("bar_counter", sample_bar_counter, build_bar_counter)

@@ -24,13 +24,15 @@ from anyhome.assets.procedural._parts import (
     lighter,
     make_params,
     rot_y,
+    slot_roles,
+    tint,
     wood_tones,
 )
 from anyhome.assets.registry import register
 
-FRAMES = [BLACK, "#2b2b2b", "#3a3b3e", "#c9ccd0", "#e8e6e0", "#b8322a"]
-PADS = [BLACK, "#2b2b2b", "#7a1f2b", "#2d4f8a", "#3a3b3e"]
-GYM_WOOD = ["#d8bf98", "#c9a77c", "#e0cfae"]
+FRAMES = tint([BLACK, "#2b2b2b", "#3a3b3e", "#c9ccd0", "#e8e6e0", "#b8322a"], "paint")
+PADS = tint([BLACK, "#2b2b2b", "#7a1f2b", "#2d4f8a", "#3a3b3e"], "leather")
+GYM_WOOD = tint(["#d8bf98", "#c9a77c", "#e0cfae"], "wood")
 
 
 # ----------------------------------------------------------------- rowing machine
@@ -49,12 +51,12 @@ def _draw_rower(b: Builder, L: float, B: float, H: float, p) -> None:
             b.box((-L / 2, y - 0.04 * B, 0.0), (0.3 * L, y + 0.04 * B, rail_z), p.primary)
         b.box((-L / 2, -0.3 * B, 0), (-0.45 * L, 0.3 * B, rail_z), p.primary)
         R = min(0.45 * B, 0.14 * L)
-        b.cyl(fx, 0, 0.05 * H, 0.5 * H, R, "#8ac4e8", sections=24, alpha=150)  # tank
+        b.cyl(fx, 0, 0.05 * H, 0.5 * H, R, tint("#8ac4e8", "paint"), sections=24, alpha=150)  # tank
         b.cyl(fx, 0, 0.05 * H, 0.3 * H, 0.97 * R, p.accent, sections=24)
         b.cyl(fx, 0, 0.0, 0.05 * H, R * 1.02, p.primary, sections=24)
         b.box((0.3 * L, -0.1 * B, 0.0), (L / 2, 0.1 * B, 0.06 * H), p.primary)
         b.box((0.26 * L, -0.35 * B, 0.0), (0.32 * L, 0.35 * B, H - 0.05 * H), p.primary)  # front posts
-        disc_x(b, 0.24 * L, 0.34 * L, 0, 0.8 * H, 0.06 * H, "#2b2b2b", sections=10)
+        disc_x(b, 0.24 * L, 0.34 * L, 0, 0.8 * H, 0.06 * H, tint("#2b2b2b", "paint"), sections=10)
         mon = (0.29 * L, 0, H)
     else:
         b.hull([(-0.46 * L, -0.1 * B, rail_z - 0.08 * H), (-0.46 * L, 0.1 * B, rail_z - 0.08 * H),
@@ -65,9 +67,9 @@ def _draw_rower(b: Builder, L: float, B: float, H: float, p) -> None:
         b.box((-0.47 * L, -0.06 * B, 0.04 * H), (-0.43 * L, 0.06 * B, rail_z - 0.06 * H), p.primary)
         R = min(0.34 * H, 0.16 * L)
         fz = max(R + 0.06 * H, 0.42 * H)
-        disc_y(b, fx, -0.3 * B, 0.3 * B, fz, R, "#2b2b2b", sections=24)  # flywheel cage
+        disc_y(b, fx, -0.3 * B, 0.3 * B, fz, R, tint("#2b2b2b", "paint"), sections=24)  # flywheel cage
         for s in (-1, 1):
-            disc_y(b, fx, s * 0.3 * B, s * 0.31 * B, fz, 0.7 * R, "#5f6b7a", sections=20)
+            disc_y(b, fx, s * 0.3 * B, s * 0.31 * B, fz, 0.7 * R, tint("#5f6b7a", "paint"), sections=20)
         b.box((fx - 0.05 * L, -0.5 * B, 0), (fx + 0.05 * L, 0.5 * B, 0.05 * H), p.primary)  # front foot
         b.box((fx - 0.02 * L, -0.06 * B, 0.04 * H), (fx + 0.02 * L, 0.06 * B, fz), p.primary)
         arm0 = (fx, 0, fz + R)
@@ -83,7 +85,7 @@ def _draw_rower(b: Builder, L: float, B: float, H: float, p) -> None:
                 (0.2 * L, y - 0.08 * B, rail_z + 0.25 * H), (0.2 * L, y + 0.08 * B, rail_z + 0.25 * H),
                 (0.17 * L, y - 0.08 * B, rail_z + 0.02 * H), (0.17 * L, y + 0.08 * B, rail_z + 0.02 * H),
                 (0.22 * L, y - 0.08 * B, rail_z + 0.25 * H), (0.22 * L, y + 0.08 * B, rail_z + 0.25 * H)],
-               darker(p.secondary, 0.1) if p.secondary != BLACK else "#3a3b3e")
+               darker(p.secondary, 0.1) if p.secondary != BLACK else tint("#3a3b3e", "paint"))
     sx = -0.12 * L
     b.box((sx - 0.05 * L, -0.2 * B, rail_z + 0.02 * H), (sx + 0.05 * L, 0.2 * B, rail_z + 0.12 * H), p.secondary)
     b.rod((0.27 * L, -0.4 * B, 0.55 * H), (0.27 * L, 0.4 * B, 0.55 * H), 0.02, p.secondary, sections=8)  # handle
@@ -453,13 +455,13 @@ def build_basketball_hoop(p):
         a = 2 * np.pi * k / n
         a2 = a + np.pi / n
         b.rod((R * np.cos(a), cy + R * np.sin(a), rz), (0.6 * R * np.cos(a2), cy + 0.6 * R * np.sin(a2), bottom),
-              0.003, "#f4f4f2", sections=3)
+              0.003, tint("#f4f4f2", "paint"), sections=3)
         b.rod((R * np.cos(a2 + np.pi / n), cy + R * np.sin(a2 + np.pi / n), rz),
-              (0.6 * R * np.cos(a2), cy + 0.6 * R * np.sin(a2), bottom), 0.003, "#f4f4f2", sections=3)
-    b.torus((0, cy, (rz + bottom) / 2), 0.8 * R, 0.004, "#f4f4f2", sections=16, minor_sections=3)
-    b.torus((0, cy, bottom), 0.6 * R, 0.004, "#f4f4f2", sections=16, minor_sections=3)
+              (0.6 * R * np.cos(a2), cy + 0.6 * R * np.sin(a2), bottom), 0.003, tint("#f4f4f2", "paint"), sections=3)
+    b.torus((0, cy, (rz + bottom) / 2), 0.8 * R, 0.004, tint("#f4f4f2", "paint"), sections=16, minor_sections=3)
+    b.torus((0, cy, bottom), 0.6 * R, 0.004, tint("#f4f4f2", "paint"), sections=16, minor_sections=3)
     if p.ball:
-        b.sphere((0.3 * w, by + 0.06 * d + 0.12, 0.12), 0.12, "#d9702a", subdivisions=2)
+        b.sphere((0.3 * w, by + 0.06 * d + 0.12, 0.12), 0.12, tint("#d9702a", "paint"), subdivisions=2)
     return b.mesh(p.size)
 
 
@@ -495,15 +497,27 @@ def build_trampoline(p):
     return b.mesh(p.size)
 
 
+slot_roles("rowing_machine", "metal", "leather", "plastic")
 register("rowing_machine", sample_rowing_machine, build_rowing_machine)
+slot_roles("stair_climber", "metal", "rubber", "plastic")
 register("stair_climber", sample_stair_climber, build_stair_climber)
+slot_roles("cable_machine", "metal", "leather", "metal")
 register("cable_machine", sample_cable_machine, build_cable_machine)
+slot_roles("leg_press", "metal", "leather", "metal")
 register("leg_press", sample_leg_press, build_leg_press)
+slot_roles("ballet_barre", "wood", "metal", "metal")
 register("ballet_barre", sample_ballet_barre, build_ballet_barre)
+slot_roles("pommel_horse", "leather", "leather", "metal")
 register("pommel_horse", sample_pommel_horse, build_pommel_horse)
+slot_roles("parallel_bars", "wood", "metal", "paint")
 register("parallel_bars", sample_parallel_bars, build_parallel_bars)
+slot_roles("wall_bars", "wood", "wood", "metal")
 register("wall_bars", sample_wall_bars, build_wall_bars)
+slot_roles("pull_up_bar", "metal", "plastic", "rubber")
 register("pull_up_bar", sample_pull_up_bar, build_pull_up_bar)
+slot_roles("dance_pole", "metal", "metal", "plastic")
 register("dance_pole", sample_dance_pole, build_dance_pole)
+slot_roles("basketball_hoop", "plastic", "paint", "rubber")
 register("basketball_hoop", sample_basketball_hoop, build_basketball_hoop)
+slot_roles("trampoline", "metal", "fabric", "metal")
 register("trampoline", sample_trampoline, build_trampoline)

@@ -33,15 +33,17 @@ from anyhome.assets.procedural._parts import (
     move,
     rot_x,
     rot_z,
+    slot_roles,
     style_is,
+    tint,
     wood_tones,
 )
 from anyhome.assets.registry import register
 
-TOWELS = ["#f4f1ea", "#c6e0f4", "#e8dcc0", "#5f6b7a", "#d9a0a0", "#7d8c74", "#2d4f8a"]
-PAPER = "#f4efe0"
-FLAME = "#ffb030"
-BULB = "#fff1c4"
+TOWELS = tint(["#f4f1ea", "#c6e0f4", "#e8dcc0", "#5f6b7a", "#d9a0a0", "#7d8c74", "#2d4f8a"], "fabric")
+PAPER = tint("#f4efe0", "paper")
+FLAME = tint("#ffb030", "light")
+BULB = tint("#fff1c4", "light")
 
 
 # ----------------------------------------------------------------- radiator
@@ -110,15 +112,15 @@ def build_water_heater(p):
     b.cyl(0, 0, 0.03 * h, 0.05 * h, 1.01 * R, darker(p.primary, 0.2), sections=24)
     b.box((-0.18 * R, 0.93 * R, 0.45 * h), (0.18 * R, R + 0.005, 0.6 * h), p.accent)  # label
     b.box((-0.2 * R, 0.9 * R, 0.1 * h), (0.2 * R, R + 0.06, 0.2 * h), BLACK)  # thermostat
-    disc_y(b, 0, R + 0.06, R + 0.08, 0.15 * h, 0.06, "#c0392b", sections=10)
+    disc_y(b, 0, R + 0.06, R + 0.08, 0.15 * h, 0.06, tint("#c0392b", "paint"), sections=10)
     for x, col in ((-0.45 * R, "#2e74c8"), (0.45 * R, "#d63a2a")):
         b.cyl(x, 0.1 * R, top + 0.02 * h, h, 0.025, p.secondary, sections=8)
-        disc_x(b, x - 0.04, x + 0.04, 0.1 * R, top + 0.12 * h, 0.03, col, sections=8)
+        disc_x(b, x - 0.04, x + 0.04, 0.1 * R, top + 0.12 * h, 0.03, col, sections=8, role="plastic")
     b.rod((0.95 * R, -0.2 * R, top - 0.05 * h), (R + 0.05, -0.2 * R, top - 0.05 * h), 0.02, CHROME, sections=6)
     b.rod((R + 0.05, -0.2 * R, top - 0.05 * h), (R + 0.05, -0.2 * R, 0.1 * h), 0.012, p.secondary, sections=6)
     if p.gas:
         b.cyl(0, -0.2 * R, top + 0.06 * h, top + 0.1 * h, 0.3 * R, DARK_METAL, r_top=0.15 * R, sections=12)
-        b.cyl(0, -0.2 * R, top + 0.1 * h, h, 0.12 * R, "#9a9da3", sections=12)
+        b.cyl(0, -0.2 * R, top + 0.1 * h, h, 0.12 * R, tint("#9a9da3", "metal"), sections=12)
     else:
         b.box((-0.25 * R, 0.92 * R, 0.68 * h), (0.25 * R, R + 0.005, 0.76 * h), lighter(p.primary, 0.2))
     return b.mesh(p.size)
@@ -142,7 +144,7 @@ def build_air_conditioner(p):
     prof = [(min(y, d / 2), max(min(z, h), 0.0)) for y, z in prof]
     b.extrude_x(prof, -w / 2, w / 2, p.primary)
     b.extrude_x(prof, -w / 2 - 0.005, -w / 2 + 0.0, darker(p.primary, 0.08))
-    b.box((-0.45 * w, -0.1 * d, 0.04 * h), (0.45 * w, 0.2 * d, 0.2 * h), "#3a3b3e")  # outlet
+    b.box((-0.45 * w, -0.1 * d, 0.04 * h), (0.45 * w, 0.2 * d, 0.2 * h), tint("#3a3b3e", "paint"))  # outlet
     hinge = (0, 0.2 * d, 0.12 * h)
     b.box((-0.44 * w, 0.2 * d, 0.1 * h), (0.44 * w, 0.45 * d, 0.13 * h), lighter(p.primary, 0.05),
           transform=about(rot_x(-p.flap), hinge))
@@ -182,17 +184,17 @@ def build_generator(p):
     disc_x(b, 0.05 * w, 0.4 * w, -0.05 * d, 0.4 * h, 0.2 * h, p.primary, sections=18)  # alternator
     b.box((0.05 * w, 0.3 * d, 0.25 * h), (0.38 * w, y1, 0.6 * h), BLACK)  # control panel
     for i in range(2):
-        disc_y(b, 0.14 * w + i * 0.14 * w, y1, y1 + 0.01, 0.38 * h, 0.035 * h, "#e8e6e0", sections=10)
-    b.box((0.12 * w, y1, 0.5 * h), (0.18 * w, y1 + 0.01, 0.55 * h), "#c0392b")
+        disc_y(b, 0.14 * w + i * 0.14 * w, y1, y1 + 0.01, 0.38 * h, 0.035 * h, tint("#e8e6e0", "paint"), sections=10)
+    b.box((0.12 * w, y1, 0.5 * h), (0.18 * w, y1 + 0.01, 0.55 * h), tint("#c0392b", "paint"))
     b.hull([(-0.42 * w, -0.38 * d, 0.64 * h), (0.42 * w, -0.38 * d, 0.64 * h), (-0.42 * w, 0.38 * d, 0.64 * h),
             (0.42 * w, 0.38 * d, 0.64 * h), (-0.38 * w, -0.34 * d, zt - r), (0.38 * w, -0.34 * d, zt - r),
             (-0.38 * w, 0.34 * d, zt - r), (0.38 * w, 0.34 * d, zt - r)], p.primary)  # fuel tank
     b.cyl(0.15 * w, 0.0, zt - r, zt + 0.3 * r, 0.05 * h, BLACK, sections=12)
-    b.rod((0.1 * w, -d / 2 + 0.05, 0.3 * h), (0.3 * w, -d / 2 + 0.05, 0.3 * h), 0.05 * h, "#9a9da3")  # muffler
+    b.rod((0.1 * w, -d / 2 + 0.05, 0.3 * h), (0.3 * w, -d / 2 + 0.05, 0.3 * h), 0.05 * h, tint("#9a9da3", "metal"))  # muffler
     if p.wheels:
         for y in (y0 - 0.01, y1 + 0.01):
             disc_y(b, x0 + 0.1 * w, y - 0.04, y + 0.04, wr, wr, BLACK, sections=16)
-            disc_y(b, x0 + 0.1 * w, y - 0.045, y + 0.045, wr, 0.5 * wr, "#9a9da3", sections=12)
+            disc_y(b, x0 + 0.1 * w, y - 0.045, y + 0.045, wr, 0.5 * wr, tint("#9a9da3", "metal"), sections=12)
     return b.mesh(p.size)
 
 
@@ -540,17 +542,17 @@ def build_wall_sconce(p):
     R = 0.45 * min(w, d)
     if p.kind == "torch":
         b.rod((0, -d / 2 + bp, 0.3 * h), (0, cy, 0.42 * h), 0.025 * w + 0.004, p.primary, sections=6)
-        b.cyl(0, cy, 0.05 * h, 0.62 * h, 0.07 * w, "#6b4330", r_top=0.11 * w, sections=8)  # the torch
+        b.cyl(0, cy, 0.05 * h, 0.62 * h, 0.07 * w, tint("#6b4330", "paint"), r_top=0.11 * w, sections=8)  # the torch
         b.cyl(0, cy, 0.45 * h, 0.62 * h, 0.2 * w, p.primary, r_top=0.26 * w, sections=8)  # iron cup
-        b.cyl(0, cy, 0.6 * h, h, 0.22 * w, "#e8602a", r_top=0.0, sections=10)  # flame
+        b.cyl(0, cy, 0.6 * h, h, 0.22 * w, tint("#e8602a", "light"), r_top=0.0, sections=10)  # flame
         b.cyl(0, cy + 0.02 * d, 0.6 * h, 0.88 * h, 0.15 * w, FLAME, r_top=0.0, sections=10)
-        b.cyl(0, cy + 0.04 * d, 0.6 * h, 0.75 * h, 0.08 * w, "#fff1a0", r_top=0.0, sections=8)
+        b.cyl(0, cy + 0.04 * d, 0.6 * h, 0.75 * h, 0.08 * w, tint("#fff1a0", "light"), r_top=0.0, sections=8)
         return b.mesh(p.size)
     if p.kind == "candle":
         path(b, [(0, -d / 2 + bp, 0.4 * h), (0, 0.0, 0.3 * h), (0, cy, 0.45 * h)], 0.02 * w + 0.003, p.primary,
              sections=6)
         b.cyl(0, cy, 0.45 * h, 0.5 * h, 0.35 * w, p.primary, r_top=0.4 * w, sections=14)
-        b.cyl(0, cy, 0.5 * h, 0.85 * h, 0.1 * w, "#f4f1e6", sections=10)
+        b.cyl(0, cy, 0.5 * h, 0.85 * h, 0.1 * w, tint("#f4f1e6", "paint"), sections=10)
         b.sphere((0, cy, 0.9 * h), (0.06 * w, 0.06 * w, 0.07 * h), FLAME, subdivisions=1)
         b.cyl(0, cy, 0.97 * h, h, 0.01 * w, FLAME, sections=4)
         return b.mesh(p.size)
@@ -670,7 +672,7 @@ def build_safe(p):
         for i in range(3):
             for j in range(3):
                 b.cbox((-0.06 * w + 0.06 * w * i, d / 2 + 0.016, cz - 0.07 * h + 0.03 * h * j),
-                       (0.035 * w, 0.004, 0.018 * h), "#9a9da3")
+                       (0.035 * w, 0.004, 0.018 * h), tint("#9a9da3", "metal"))
     hx, hz = 0.0, 0.4 * h
     disc_y(b, hx, d / 2, d / 2 + 0.05, hz, 0.04 * w, p.secondary, sections=12)
     for k in range(4 if p.lock == "dial" else 3):
@@ -732,18 +734,33 @@ def build_acoustic_panel(p):
     return b.mesh(p.size)
 
 
+slot_roles("radiator", "metal", "metal", "metal")
 register("radiator", sample_radiator, build_radiator)
+slot_roles("water_heater", "metal", "metal", "plastic")
 register("water_heater", sample_water_heater, build_water_heater)
+slot_roles("air_conditioner", {"": "plastic", "#c9ccd0": "metal"}, "metal", "light")
 register("air_conditioner", sample_air_conditioner, build_air_conditioner)
+slot_roles("generator", "paint", "plastic", "metal")
 register("generator", sample_generator, build_generator)
+slot_roles("trash_can", "metal", {"": "plastic", "#9a9da3": "metal"}, "plastic")
 register("trash_can", sample_trash_can, build_trash_can)
+slot_roles("ironing_board", "fabric", "metal", "plastic")
 register("ironing_board", sample_ironing_board, build_ironing_board)
+slot_roles("towel_rack", "metal", "fabric", "fabric")
 register("towel_rack", sample_towel_rack, build_towel_rack)
+slot_roles("urinal", "ceramic", "metal", "metal")
 register("urinal", sample_urinal, build_urinal)
+slot_roles("ladder", {"": "wood", METAL: "metal", "#b8bcc0": "metal"}, {"": "plastic", BRASS: "metal"}, "metal")
 register("ladder", sample_ladder, build_ladder)
+slot_roles("coat_hook", "wood", "metal", "fabric")
 register("coat_hook", sample_coat_hook, build_coat_hook)
+slot_roles("mailbox", "metal", "metal", "paper")
 register("mailbox", sample_mailbox, build_mailbox)
+slot_roles("wall_sconce", "metal", {"": "fabric", GLASS: "glass"}, "light")
 register("wall_sconce", sample_wall_sconce, build_wall_sconce)
+slot_roles("room_divider", "wood", "fabric", "paper")
 register("room_divider", sample_room_divider, build_room_divider)
+slot_roles("safe", {"": "paint", DARK_METAL: "metal"}, "metal", "metal")
 register("safe", sample_safe, build_safe)
+slot_roles("acoustic_panel", "fabric", "wood", "plastic")
 register("acoustic_panel", sample_acoustic_panel, build_acoustic_panel)

@@ -15,12 +15,14 @@ from anyhome.assets.procedural._parts import (
     make_params,
     move,
     rot_x,
+    slot_roles,
+    tint,
     wood_tones,
 )
 from anyhome.assets.registry import register
 
-CAR_PAINTS = ["#b8322a", "#2d4f8a", "#e8e6e0", "#2b2b2b", "#9a9da3", "#3f6b4a", "#d9a32a", "#5a6b7a"]
-TYRE = "#1c1c1e"
+CAR_PAINTS = tint(["#b8322a", "#2d4f8a", "#e8e6e0", "#2b2b2b", "#9a9da3", "#3f6b4a", "#d9a32a", "#5a6b7a"], "paint")
+TYRE = tint("#1c1c1e", "rubber")
 
 
 # ----------------------------------------------------------------- kayak / canoe / boat
@@ -57,9 +59,9 @@ def _draw_kayak(b: Builder, L: float, B: float, H: float, p) -> None:
         hull_h = 0.55 * H
         _hull(b, L, B, hull_h, p.primary, p.secondary)
         b.cyl(0, 0, hull_h - 0.04, hull_h, L / 2 * 0.995, lighter(p.primary, 0.3), ry=B / 2 * 0.995, sections=28)
-        b.box((-0.25 * L, -0.35 * B, hull_h - 0.05), (0.1 * L, 0.35 * B, 0.8 * H), "#e8e6e0")  # cabin
+        b.box((-0.25 * L, -0.35 * B, hull_h - 0.05), (0.1 * L, 0.35 * B, 0.8 * H), tint("#e8e6e0", "paint"))  # cabin
         b.box((-0.27 * L, -0.37 * B, 0.8 * H), (0.12 * L, 0.37 * B, 0.85 * H), darker(p.primary, 0.1))
-        b.box((0.1 * L, -0.3 * B, 0.62 * H), (0.101 * L + 0.01, 0.3 * B, 0.78 * H), "#4a6a80")
+        b.box((0.1 * L, -0.3 * B, 0.62 * H), (0.101 * L + 0.01, 0.3 * B, 0.78 * H), tint("#4a6a80", "paint"))
         b.rod((0.0, 0, 0.85 * H), (0.0, 0, H), 0.02, METAL, sections=6)
         return
     hull_h = 0.75 * H
@@ -128,9 +130,9 @@ def _draw_car(b: Builder, L: float, B: float, H: float, p) -> None:
             b.rod((x, y1 - s * 0.005, r), (x, y1 + s * 0.002, r), 0.6 * r, p.accent, sections=12)
     for s in (-1, 1):
         b.box((L / 2 - 0.012, s * (B / 2 - 0.2 * B) - 0.1 * B, belt - 0.12 * H),
-              (L / 2, s * (B / 2 - 0.2 * B) + 0.1 * B, belt - 0.04 * H), "#f4f1d8")
+              (L / 2, s * (B / 2 - 0.2 * B) + 0.1 * B, belt - 0.04 * H), tint("#f4f1d8", "rubber"))
         b.box((-L / 2, s * (B / 2 - 0.15 * B) - 0.1 * B, belt - 0.1 * H),
-              (-L / 2 + 0.012, s * (B / 2 - 0.15 * B) + 0.1 * B, belt - 0.03 * H), "#c0392b")
+              (-L / 2 + 0.012, s * (B / 2 - 0.15 * B) + 0.1 * B, belt - 0.03 * H), tint("#c0392b", "rubber"))
         b.box((x0 - 0.02 * L, s * B / 2 - 0.02, belt - 0.01), (x0 + 0.02, s * B / 2 + (0.0 if s > 0 else 0.0), belt + 0.05),
               p.primary)  # mirrors
 
@@ -191,7 +193,7 @@ def _draw_bicycle(b: Builder, L: float, B: float, H: float, p) -> None:
             b.box((bb[0] - 0.21, -0.14, z), (bb[0] + 0.16, 0.14, z + 0.03), METAL)
         b.rod((bb[0] + 0.1, 0.15, 0.8 * r), (xr - 0.2 * r, 0.15, 1.1 * r), 0.04, METAL, sections=10)  # exhaust
         b.box((seat[0] - 0.32, -0.13, 0.78 * H - 0.05), (seat[0] + 0.12, 0.13, 0.8 * H), BLACK)  # seat
-        b.rod((head[0] + 0.02, 0, 0.8 * H), (head[0] + 0.1, 0, 0.8 * H), 0.07, "#f4f1d8", sections=12)
+        b.rod((head[0] + 0.02, 0, 0.8 * H), (head[0] + 0.1, 0, 0.8 * H), 0.07, tint("#f4f1d8", "paint"), sections=12)
         for x in (xr, xf):  # mudguards just over the tyres
             b.box((x - 0.45 * r, -0.07, 2 * r + 0.01), (x + 0.45 * r, 0.07, 2 * r + 0.03), p.primary)
         return
@@ -203,7 +205,7 @@ def _draw_bicycle(b: Builder, L: float, B: float, H: float, p) -> None:
         b.cbox((px, s * 0.12, bb[2] - s * 0.08), (0.08, 0.05, 0.02), BLACK)
     b.rod((bb[0], 0.03, bb[2]), (bb[0], 0.04, bb[2]), 0.09, METAL, sections=16)  # chainring
     if p.basket:
-        b.box((xf - 0.14, -0.15, 0.72 * H), (xf + 0.14, 0.15, 0.88 * H), "#c9a06a")
+        b.box((xf - 0.14, -0.15, 0.72 * H), (xf + 0.14, 0.15, 0.88 * H), tint("#c9a06a", "paint"))
 
 
 def build_bicycle(p):
@@ -211,6 +213,9 @@ def build_bicycle(p):
     return lengthwise(p.size, lambda b, L, B, H: _draw_bicycle(b, L, B, H, p))
 
 
+slot_roles("kayak", "plastic", "wood", "plastic")
 register("kayak", sample_kayak, build_kayak)
+slot_roles("car", "paint", "glass", "metal")
 register("car", sample_car, build_car)
+slot_roles("bicycle", "paint", "rubber", "metal")
 register("bicycle", sample_bicycle, build_bicycle)

@@ -14,13 +14,15 @@ from anyhome.assets.procedural._parts import (
     lighter,
     make_params,
     rot_x,
+    slot_roles,
     style_is,
+    tint,
     wood_tones,
 )
 from anyhome.assets.registry import register
 
-BRASS = "#c9a54a"
-ALTAR_FRONTALS = ["#7a1f2b", "#4a2a6a", "#2f5a3a", "#c9a54a", "#e8e2d4"]
+BRASS = tint("#c9a54a", "metal")
+ALTAR_FRONTALS = tint(["#7a1f2b", "#4a2a6a", "#2f5a3a", "#c9a54a", "#e8e2d4"], "fabric")
 
 
 # ----------------------------------------------------------------- lectern / pulpit / music stand
@@ -173,21 +175,24 @@ def build_altar(p):
             continue
         b.lathe([[0, table], [0.05, table], [0.015, table + 0.05 * stick], [0.012, table + 0.55 * stick],
                  [0.03, table + 0.6 * stick], [0, table + 0.6 * stick]], BRASS, x=x, y=-0.1 * d, sections=12)
-        b.cyl(x, -0.1 * d, table + 0.6 * stick, table + stick, 0.015, "#f4f1e6", sections=10)
-        b.sphere((x, -0.1 * d, table + stick + 0.015), (0.008, 0.008, 0.018), "#ffb030", subdivisions=0)
+        b.cyl(x, -0.1 * d, table + 0.6 * stick, table + stick, 0.015, tint("#f4f1e6", "paint"), sections=10)
+        b.sphere((x, -0.1 * d, table + stick + 0.015), (0.008, 0.008, 0.018), tint("#ffb030", "light"), subdivisions=0)
     if p.cross:
         b.box((-0.015, -0.2 * d - 0.015, table), (0.015, -0.2 * d + 0.015, h), BRASS)
         b.box((-0.09, -0.2 * d - 0.015, table + 0.65 * (h - table)), (0.09, -0.2 * d + 0.015,
                                                                        table + 0.73 * (h - table)), BRASS)
         b.cbox((0, -0.2 * d, table + 0.02), (0.1, 0.08, 0.04), BRASS)
     else:
-        b.box((-0.12, -0.1 * d, table), (0.12, 0.05 * d + 0.05, table + 0.05), "#7a1f2b")  # a book
-        b.box((-0.11, -0.1 * d + 0.01, table + 0.05), (0.11, 0.05 * d + 0.04, table + 0.055), "#f4f1e6")
+        b.box((-0.12, -0.1 * d, table), (0.12, 0.05 * d + 0.05, table + 0.05), tint("#7a1f2b", "paper"))  # a book
+        b.box((-0.11, -0.1 * d + 0.01, table + 0.05), (0.11, 0.05 * d + 0.04, table + 0.055), tint("#f4f1e6", "paint"))
         b.cyl(0, -0.2 * d, table, h, 0.01, BRASS, sections=8)  # and a tall processional candle
-        b.sphere((0, -0.2 * d, h - 0.02), 0.02, "#ffb030", subdivisions=0)
+        b.sphere((0, -0.2 * d, h - 0.02), 0.02, tint("#ffb030", "light"), subdivisions=0)
     return b.mesh(p.size)
 
 
+slot_roles("lectern", "wood", {"": "fabric", BRASS: "metal"}, "metal")
 register("lectern", sample_lectern, build_lectern)
+slot_roles("pew", "wood", "fabric", "metal")
 register("pew", sample_pew, build_pew)
+slot_roles("altar", "wood", "fabric", "fabric")
 register("altar", sample_altar, build_altar)

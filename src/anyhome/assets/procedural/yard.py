@@ -24,16 +24,18 @@ from anyhome.assets.procedural._parts import (
     make_params,
     rot_x,
     rot_y,
+    slot_roles,
     style_is,
+    tint,
     wood_tones,
 )
 from anyhome.assets.registry import register
 
-LEAF = ["#3f7a3a", "#4a8a3a", "#2f6a2f", "#5a9a4a"]
-BOARD_COLORS = ["#f4f1ea", "#4ab0c0", "#f08a2a", "#e8c53a", "#2d6fb0", "#e05a47", "#7fc8a8"]
-STRAW = "#d9b870"
-HIVE_PAINT = ["#f4f1ea", "#f1e0a0", "#c6e0c6", "#c6d8f0", "#e8d8b0"]
-MOWER = ["#c0392b", "#3f8a4a", "#e8702a", "#e0b030", "#2d6fb0"]
+LEAF = tint(["#3f7a3a", "#4a8a3a", "#2f6a2f", "#5a9a4a"], "plant")
+BOARD_COLORS = tint(["#f4f1ea", "#4ab0c0", "#f08a2a", "#e8c53a", "#2d6fb0", "#e05a47", "#7fc8a8"], "plastic")
+STRAW = tint("#d9b870", "plant")
+HIVE_PAINT = tint(["#f4f1ea", "#f1e0a0", "#c6e0c6", "#c6d8f0", "#e8d8b0"], "paint")
+MOWER = tint(["#c0392b", "#3f8a4a", "#e8702a", "#e0b030", "#2d6fb0"], "paint")
 
 
 # ----------------------------------------------------------------- pergola
@@ -163,7 +165,7 @@ def build_surfboard(p):
             sub.hull(prev + ring, col)
         prev = ring
     sub.box((-0.004, th / 2 * 0.85, 0.02 * h), (0.004, th / 2 * 0.95, 0.97 * h), lighter(p.primary, 0.3)
-            if p.primary != "#f4f1ea" else "#c9a06a")  # stringer
+            if p.primary != tint("#f4f1ea", "paint") else tint("#c9a06a", "paint"))  # stringer
     sub.hull([(0, -0.3 * th, 0.04 * h), (0, -0.3 * th, 0.16 * h), (0, -d / 2 - 0.2 * d, 0.06 * h),
               (0.005, -0.3 * th, 0.1 * h), (-0.005, -0.3 * th, 0.1 * h)], p.accent)  # fin
     b.extend(sub, lean)
@@ -199,7 +201,7 @@ def build_beehive(p):
             z0 = stand + t0 * (h - stand)
             z1 = stand + t1 * (h - stand)
             b.cyl(0, 0, z0, z1, max(r0, 0.02), STRAW if k % 2 else darker(STRAW, 0.1), r_top=max(r1, 0.01), sections=20)
-        b.box((-0.12 * w, R * 0.85, stand), (0.12 * w, R * 1.02, stand + 0.06 * h), "#2a2018")
+        b.box((-0.12 * w, R * 0.85, stand), (0.12 * w, R * 1.02, stand + 0.06 * h), tint("#2a2018", "paint"))
         return b.mesh(p.size)
     y0, y1 = -0.42 * d, 0.4 * d
     b.box((-0.42 * w, y0, stand), (0.42 * w, y1 + 0.05 * d, stand + 0.03 * h), p.secondary)
@@ -213,15 +215,15 @@ def build_beehive(p):
         col = p.primary if k % 2 == 0 else lighter(p.primary, 0.2)
         b.box((-0.42 * w, y0, z), (0.42 * w, y1, z + box_h - 0.005), col)
         for x0, x1 in ((-0.43 * w, -0.42 * w), (0.42 * w, 0.43 * w)):
-            b.box((x0, -0.1 * d, z + 0.55 * box_h), (x1, 0.1 * d, z + 0.7 * box_h), "#5a4a3a")
+            b.box((x0, -0.1 * d, z + 0.55 * box_h), (x1, 0.1 * d, z + 0.7 * box_h), tint("#5a4a3a", "paint"))
         z += box_h
-    b.box((-0.25 * w, y1, stand + 0.035 * h), (0.25 * w, y1 + 0.004, stand + 0.05 * h), "#2a2018")  # entrance
+    b.box((-0.25 * w, y1, stand + 0.035 * h), (0.25 * w, y1 + 0.004, stand + 0.05 * h), tint("#2a2018", "paint"))  # entrance
     b.box((-w / 2, -d / 2, z), (w / 2, d / 2, z + 0.7 * lid), p.primary)
     b.box((-w / 2, -d / 2, z + 0.7 * lid), (w / 2, d / 2, h), p.accent)
-    b.cbox((0, y0 - 0.005, z - 0.5 * box_h), (0.1 * w, 0.01, 0.03 * h), "#5a4a3a")
+    b.cbox((0, y0 - 0.005, z - 0.5 * box_h), (0.1 * w, 0.01, 0.03 * h), tint("#5a4a3a", "paint"))
     for _ in range(6):  # bees by the entrance
         c = (rng.uniform(-0.3, 0.3) * w, d / 2 - rng.uniform(0, 0.15) * d, stand + rng.uniform(0.05, 0.2) * h)
-        b.sphere(c, (0.012, 0.008, 0.008), "#e0b030", subdivisions=0)
+        b.sphere(c, (0.012, 0.008, 0.008), tint("#e0b030", "paint"), subdivisions=0)
         b.sphere((c[0] + 0.01, c[1], c[2]), 0.006, BLACK, subdivisions=0)
     return b.mesh(p.size)
 
@@ -249,12 +251,12 @@ def build_chicken_coop(p):
         z = fz + k * (eave - fz) / 6
         b.box((hx0 - 0.003, -d / 2 + 0.017, z), (hx1 + 0.003, d / 2 - 0.017, z + 0.006), darker(p.primary, 0.15))
     dx = (hx0 + hx1) / 2
-    b.box((dx - 0.1, d / 2 - 0.02, fz + 0.02), (dx + 0.1, d / 2 - 0.01, fz + 0.25), "#2a2018")  # pop door
+    b.box((dx - 0.1, d / 2 - 0.02, fz + 0.02), (dx + 0.1, d / 2 - 0.01, fz + 0.25), tint("#2a2018", "paint"))  # pop door
     b.hull([(dx - 0.1, d / 2 - 0.01, fz), (dx + 0.1, d / 2 - 0.01, fz), (dx - 0.1, d / 2 - 0.01, fz - 0.02),
             (dx + 0.1, d / 2 - 0.01, fz - 0.02), (dx - 0.1, d / 2 + 0.0, 0.0), (dx + 0.1, d / 2, 0.0),
             (dx - 0.1, d / 2 - 0.02, 0.0), (dx + 0.1, d / 2 - 0.02, 0.0)], p.secondary)  # ramp
     b.box((hx0 + 0.1 * w, -d / 2, fz + 0.1 * h), (hx1 - 0.1 * w, -d / 2 + 0.02, eave - 0.1 * h), darker(p.primary, 0.1))
-    b.box((hx0 + 0.05 * w, d / 2 - 0.02, eave - 0.12 * h), (hx0 + 0.12 * w, d / 2, eave - 0.05 * h), "#9ac4e0")
+    b.box((hx0 + 0.05 * w, d / 2 - 0.02, eave - 0.12 * h), (hx0 + 0.12 * w, d / 2, eave - 0.05 * h), tint("#9ac4e0", "paint"))
     ridge = h
     extrude_x(b, [(-d / 2 + 0.02, eave), (d / 2 - 0.02, eave), (0.0, ridge - 0.03 * h)], hx0, hx1, p.primary)
     for s in (-1, 1):
@@ -274,18 +276,18 @@ def build_chicken_coop(p):
         b.box((rx1 - rt, -d / 2, z), (rx1, d / 2, z + rt), p.secondary)
     for lo, hi in (((rx0, d / 2 - 0.01), (rx1, d / 2 - 0.005)), ((rx1 - 0.01, -d / 2 + 0.02), (rx1 - 0.005, d / 2)),
                    ((rx0, -d / 2 + 0.02), (rx1, -d / 2 + 0.025))):  # wire mesh
-        b.box((lo[0], lo[1], rt), (hi[0], hi[1], run_h - rt), "#9a9da3", alpha=90)
-    b.box((rx0, -d / 2 + 0.02, run_h - 0.01), (rx1, d / 2, run_h), "#9a9da3", alpha=90)
+        b.box((lo[0], lo[1], rt), (hi[0], hi[1], run_h - rt), tint("#9a9da3", "metal"), alpha=90)
+    b.box((rx0, -d / 2 + 0.02, run_h - 0.01), (rx1, d / 2, run_h), tint("#9a9da3", "metal"), alpha=90)
     for k in range(p.hens):
         cx = rx0 + (k + 0.6) * (rx1 - rx0) / (p.hens + 0.5)
         cy = rng.uniform(-0.2, 0.2) * d
         col = ["#f4f1ea", "#a0643c", "#2b2b2b"][int(rng.integers(3))]
-        b.sphere((cx, cy, 0.12), (0.14, 0.09, 0.1), col, subdivisions=1)
-        b.sphere((cx + 0.12, cy, 0.24), 0.055, col, subdivisions=1)
-        b.sphere((cx + 0.12, cy, 0.3), (0.03, 0.01, 0.025), "#d63a2a", subdivisions=0)
-        b.cyl(cx + 0.18, cy, 0.23, 0.245, 0.02, "#e0b030", r_top=0.0, sections=6, transform=about(rot_y(1.4),
+        b.sphere((cx, cy, 0.12), (0.14, 0.09, 0.1), col, subdivisions=1, role="fabric")
+        b.sphere((cx + 0.12, cy, 0.24), 0.055, col, subdivisions=1, role="fabric")
+        b.sphere((cx + 0.12, cy, 0.3), (0.03, 0.01, 0.025), tint("#d63a2a", "paint"), subdivisions=0)
+        b.cyl(cx + 0.18, cy, 0.23, 0.245, 0.02, tint("#e0b030", "paint"), r_top=0.0, sections=6, transform=about(rot_y(1.4),
                                                                                                   (cx + 0.18, cy, 0.24)))
-        b.box((cx - 0.2, cy - 0.04, 0.14), (cx - 0.1, cy + 0.04, 0.24), col)  # tail
+        b.box((cx - 0.2, cy - 0.04, 0.14), (cx - 0.1, cy + 0.04, 0.24), col, role="fabric")  # tail
     return b.mesh(p.size)
 
 
@@ -305,7 +307,7 @@ def build_lawn_mower(p):
         R = 0.2 * h
         for y, r in ((-0.3 * d, R), (0.32 * d, 0.7 * R)):
             for s in (-1, 1):
-                wheel_x(b, s * (w / 2 - 0.06 * w), y, r, r, 0.12 * w, BLACK, "#e0b030")
+                wheel_x(b, s * (w / 2 - 0.06 * w), y, r, r, 0.12 * w, BLACK, tint("#e0b030", "paint"))
         b.box((-0.38 * w, -0.45 * d, 0.15 * h), (0.38 * w, 0.45 * d, 0.35 * h), p.primary)
         b.box((-0.45 * w, -0.05 * d, 0.05 * h), (0.45 * w, 0.3 * d, 0.15 * h), DARK_METAL)  # deck
         b.hull([(-0.35 * w, 0.05 * d, 0.35 * h), (0.35 * w, 0.05 * d, 0.35 * h), (-0.35 * w, 0.48 * d, 0.35 * h),
@@ -320,7 +322,7 @@ def build_lawn_mower(p):
     R = 0.12 * h
     for y in (deck_y0 + 0.05 * d, deck_y1 - 0.05 * d):
         for s in (-1, 1):
-            wheel_x(b, s * (w / 2 - 0.04 * w), y, R, R, 0.08 * w, BLACK, "#9a9da3")
+            wheel_x(b, s * (w / 2 - 0.04 * w), y, R, R, 0.08 * w, BLACK, METAL)
     b.hull([(-0.44 * w, deck_y0, 0.06 * h), (0.44 * w, deck_y0, 0.06 * h), (-0.44 * w, deck_y1 - 0.02, 0.06 * h),
             (0.44 * w, deck_y1 - 0.02, 0.06 * h), (-0.4 * w, deck_y0 + 0.02, 0.24 * h), (0.4 * w, deck_y0 + 0.02, 0.24 * h),
             (-0.4 * w, deck_y1 - 0.06, 0.22 * h), (0.4 * w, deck_y1 - 0.06, 0.22 * h)], p.primary)  # deck
@@ -333,9 +335,9 @@ def build_lawn_mower(p):
     for s in (-1, 1):  # handle
         b.rod((s * 0.4 * w, deck_y0 + 0.02, 0.2 * h), (s * 0.38 * w, hy, h - 0.02 * h), 0.012, p.secondary, sections=6)
     b.rod((-0.38 * w, hy, h - 0.02 * h), (0.38 * w, hy, h - 0.02 * h), 0.015, p.secondary, sections=8)
-    b.rod((-0.34 * w, hy + 0.05 * d, h - 0.08 * h), (0.34 * w, hy + 0.05 * d, h - 0.08 * h), 0.008, "#c9ccd0",
+    b.rod((-0.34 * w, hy + 0.05 * d, h - 0.08 * h), (0.34 * w, hy + 0.05 * d, h - 0.08 * h), 0.008, tint("#c9ccd0", "metal"),
           sections=6)  # bail lever
-    b.rod((-0.1 * w, ey, 0.36 * h), (-0.3 * w, hy + 0.2 * d, 0.6 * h), 0.004, "#c9ccd0", sections=4)  # pull cord
+    b.rod((-0.1 * w, ey, 0.36 * h), (-0.3 * w, hy + 0.2 * d, 0.6 * h), 0.004, tint("#c9ccd0", "metal"), sections=4)  # pull cord
     if p.bag:
         b.hull([(-0.35 * w, deck_y0, 0.1 * h), (0.35 * w, deck_y0, 0.1 * h), (-0.35 * w, deck_y0, 0.4 * h),
                 (0.35 * w, deck_y0, 0.4 * h), (-0.38 * w, -0.35 * d, 0.12 * h), (0.38 * w, -0.35 * d, 0.12 * h),
@@ -378,10 +380,17 @@ def build_wheelbarrow(p):
     return b.mesh(p.size)
 
 
+slot_roles("pergola", "wood", "plant", "fabric")
 register("pergola", sample_pergola, build_pergola)
+slot_roles("sun_lounger", {"": "wood", "#9a9da3": "metal"}, "fabric", "fabric")
 register("sun_lounger", sample_sun_lounger, build_sun_lounger)
+slot_roles("surfboard", "plastic", "plastic", "plastic")
 register("surfboard", sample_surfboard, build_surfboard)
+slot_roles("beehive", "wood", "wood", "metal")
 register("beehive", sample_beehive, build_beehive)
+slot_roles("chicken_coop", "wood", "wood", "fabric")
 register("chicken_coop", sample_chicken_coop, build_chicken_coop)
+slot_roles("lawn_mower", "paint", "plastic", "plastic")
 register("lawn_mower", sample_lawn_mower, build_lawn_mower)
+slot_roles("wheelbarrow", "metal", "wood", "metal")
 register("wheelbarrow", sample_wheelbarrow, build_wheelbarrow)
