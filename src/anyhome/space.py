@@ -253,7 +253,7 @@ class RoomSpace:
 
     # ------------------------------------------------------------ validity
     def valid(
-        self, corners: np.ndarray, z0: np.ndarray, z1: np.ndarray, floor: bool, doors: bool = True
+        self, corners: np.ndarray, z0: np.ndarray | float, z1: np.ndarray | float, floor: bool, doors: bool = True
     ) -> np.ndarray:
         """Mask of poses that are in bounds, collision-free and (floor/wall) clear of doors."""
         n = len(corners)
