@@ -33,8 +33,8 @@ from typing import Any, cast
 import numpy as np
 import shapely
 import trimesh
-from trimesh.visual import ColorVisuals
 from shapely.geometry import Polygon
+from trimesh.visual import ColorVisuals
 
 from anyhome.house import House
 from anyhome.scene import ROOT_NODE
