@@ -116,7 +116,7 @@ def on_boundary(poly: Polygon, segment: Sequence[Sequence[float]], tol: float = 
 
 
 def wall_interval(
-    edge: Sequence[Sequence[float]], points: np.ndarray
+    edge: Sequence[Sequence[float] | np.ndarray], points: np.ndarray
 ) -> tuple[float, float, float]:
     """Project points on an edge: (t_min, t_max) along it in meters and max distance from it."""
     a = np.asarray(edge[0], dtype=float)

@@ -12,10 +12,10 @@ import math
 import os
 import re
 import tempfile
-from collections.abc import Iterator
+from collections.abc import Iterator, Sequence
 from functools import lru_cache
 from pathlib import Path
-from typing import Any, Literal
+from typing import Any, Final, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, PrivateAttr, ValidationError, model_validator
 from shapely.geometry import Polygon
@@ -24,8 +24,8 @@ from anyhome.errors import HouseFormatError
 from anyhome.sanitize import clean_text, is_safe_id
 from anyhome.tags import Tag, tags_for
 
-FORMAT = "anyhome.house"
-VERSION = 1
+FORMAT: Final = "anyhome.house"
+VERSION: Final = 1
 HOUSE_FILE = "house.json"
 JSON_DECIMALS = 4
 """Floats in house.json are rounded to 0.1 mm so output is byte-stable across runs."""
@@ -481,10 +481,11 @@ def _problems(h: House) -> Iterator[str]:
             yield f"{name}: {len(items)} entries, more than the maximum {limit}"
     if not h.rooms:
         yield "rooms: a house needs at least one room"
-    for name, items in (("rooms", h.rooms), ("objects", h.objects), ("doors", h.doors),
-                        ("windows", h.windows)):
+    with_ids: tuple[tuple[str, Sequence[Room | HouseObject | Door | Window]], ...] = (
+        ("rooms", h.rooms), ("objects", h.objects), ("doors", h.doors), ("windows", h.windows))
+    for name, entries in with_ids:
         seen: set[str] = set()
-        for i, item in enumerate(items):
+        for i, item in enumerate(entries):
             if not is_safe_id(item.id):
                 yield (f"{name}[{i}].id: {_short(item.id)} is not a valid id (letters, digits "
                        f"and _ . : - only, at most 128 characters)")

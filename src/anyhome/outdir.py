@@ -185,7 +185,7 @@ def read_manifest(folder: Path) -> set[str] | None:
         files, dirs = (data["files"], data.get("dirs", [])) if ok else (None, None)
     except (UnicodeDecodeError, ValueError, KeyError, RecursionError):
         files = dirs = None
-    if not all(isinstance(x, list) and all(isinstance(f, str) for f in x) for x in (files, dirs)):
+    if not (isinstance(files, list) and isinstance(dirs, list) and all(isinstance(f, str) for f in files + dirs)):
         raise ExportError(f"{path} is not an AnyHome manifest; choose another --out")
     return set(files) | {d.rstrip("/") + "/" for d in dirs}
 
@@ -256,19 +256,19 @@ def _first_foreign(folder: Path, rel: str, ours) -> str | None:
             entries = sorted(it, key=lambda e: e.name)
     except OSError as e:
         raise ExportError(f"could not read {folder / rel}: {_reason(e)}") from None
-    for e in entries:
-        r = f"{rel}{e.name}"
-        if not rel and e.name == MANIFEST_FILE:
+    for entry in entries:
+        r = f"{rel}{entry.name}"
+        if not rel and entry.name == MANIFEST_FILE:
             continue
-        if is_stale_temp(e.name):
+        if is_stale_temp(entry.name):
             continue  # a file or folder left by a killed run of ours
-        if e.is_dir(follow_symlinks=False):
+        if entry.is_dir(follow_symlinks=False):
             if not ours(r, True):
                 return r + "/"
             found = _first_foreign(folder, r + "/", ours)
             if found:
                 return found
-        elif not e.is_file(follow_symlinks=False) or not ours(r, False):
+        elif not entry.is_file(follow_symlinks=False) or not ours(r, False):
             return r
     return None
 

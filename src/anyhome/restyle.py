@@ -75,6 +75,6 @@ def restyle(house: House, style: str | Sequence[str]) -> House:
 def _restyled_plan(plan: dict[str, Any], look: Any, materials: dict[str, dict[str, str]]) -> dict[str, Any]:
     """The house's plan with the new style, palette and room materials (its items keep
     their words: the objects carry the new ones)."""
-    rooms = [{**r, "style": look.describe, "styles": [], "materials": materials.get(r.get("id"), r.get("materials", {}))}
+    rooms = [{**r, "style": look.describe, "styles": [], "materials": materials.get(r.get("id", ""), r.get("materials", {}))}
              if isinstance(r, dict) else r for r in plan.get("rooms", [])]
     return {**plan, "style": look.describe, "styles": list(look.styles), "palette": list(look.palette), "rooms": rooms}

@@ -11,6 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
+import numpy.typing as npt
 import shapely
 from scipy import ndimage
 from shapely.geometry import LineString, Polygon
@@ -60,7 +61,7 @@ class Wall:
         return float(np.arctan2(-self.n[0], self.n[1]))
 
 
-def rect_corners(xy: np.ndarray, wd: np.ndarray, yaw: np.ndarray) -> np.ndarray:
+def rect_corners(xy: npt.ArrayLike, wd: npt.ArrayLike, yaw: npt.ArrayLike) -> np.ndarray:
     """Footprint corners of many boxes, as :func:`anyhome.geometry.footprint_corners`.
 
     Parameters
@@ -73,16 +74,16 @@ def rect_corners(xy: np.ndarray, wd: np.ndarray, yaw: np.ndarray) -> np.ndarray:
     -------
     corners : (n, 4, 2) float, back-left, back-right, front-right, front-left
     """
-    xy = np.atleast_2d(np.asarray(xy, dtype=float))
-    n = len(xy)
-    yaw = np.broadcast_to(np.asarray(yaw, dtype=float), (n,))
-    wd = np.broadcast_to(np.asarray(wd, dtype=float), (n, 2))
-    hw, hd = wd[:, 0] / 2.0, wd[:, 1] / 2.0
+    xy_a = np.atleast_2d(np.asarray(xy, dtype=float))
+    n = len(xy_a)
+    yaw_a = np.broadcast_to(np.asarray(yaw, dtype=float), (n,))
+    wd_a = np.broadcast_to(np.asarray(wd, dtype=float), (n, 2))
+    hw, hd = wd_a[:, 0] / 2.0, wd_a[:, 1] / 2.0
     lx = np.stack([-hw, hw, hw, -hw], 1)
     ly = np.stack([-hd, -hd, hd, hd], 1)
-    c, s = np.cos(yaw)[:, None], np.sin(yaw)[:, None]
-    x = lx * c - ly * s + xy[:, 0, None]
-    y = lx * s + ly * c + xy[:, 1, None]
+    c, s = np.cos(yaw_a)[:, None], np.sin(yaw_a)[:, None]
+    x = lx * c - ly * s + xy_a[:, 0, None]
+    y = lx * s + ly * c + xy_a[:, 1, None]
     return np.stack([x, y], -1)
 
 
@@ -252,7 +253,7 @@ class RoomSpace:
 
     # ------------------------------------------------------------ validity
     def valid(
-        self, corners: np.ndarray, z0: np.ndarray, z1: np.ndarray, floor: bool, doors: bool = True
+        self, corners: np.ndarray, z0: np.ndarray | float, z1: np.ndarray | float, floor: bool, doors: bool = True
     ) -> np.ndarray:
         """Mask of poses that are in bounds, collision-free and (floor/wall) clear of doors."""
         n = len(corners)

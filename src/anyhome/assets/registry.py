@@ -83,7 +83,7 @@ def _typical_sizes() -> dict[str, tuple[float, float, float]]:
     import yaml
 
     data = yaml.safe_load(SIZES_FILE.read_text(encoding="utf-8")) or {}
-    return {str(k): tuple(float(x) for x in v) for k, v in data.items()}
+    return {str(k): (float(v[0]), float(v[1]), float(v[2])) for k, v in data.items()}
 
 
 def typical_size(family: str) -> tuple[float, float, float]:
@@ -162,7 +162,7 @@ def assign_asset(obj: HouseObject, rng: np.random.Generator, style: str | Sequen
     """
     name = family_for(obj.category, obj.name)
     fam = get(name)
-    params = fam.sample(rng, tuple(obj.size), class_name(style))
+    params = fam.sample(rng, obj.size, class_name(style))
     color = material_color(obj.material) or material_color(obj.description)
     if color:
         params = replace(params, primary=color)
@@ -183,7 +183,7 @@ def build_object_mesh(obj: HouseObject) -> trimesh.Trimesh:
     if not record or record.get("source") != SOURCE or record.get("family") not in _loaded():
         record = assign_asset(obj, object_rng(obj), "")
     params = params_from_record(record)
-    size = tuple(float(s) for s in obj.size)
+    size = (float(obj.size[0]), float(obj.size[1]), float(obj.size[2]))
     if size != params.size:
         params = replace(params, size=size)
     return get(params.family).build(params)

@@ -107,8 +107,8 @@ def check_in_bounds(index: ObjectIndex) -> list[Violation]:
               and o.support != o.id]
     inside_sup = np.ones(n, dtype=bool)
     if on_obj:
-        sup = [index.position_of[objs[k].support] for k in on_obj]
-        buffered = shapely.buffer(fps[sup], TOL, join_style="mitre")
+        sup_at = [index.position_of[objs[k].support] for k in on_obj]
+        buffered = shapely.buffer(fps[sup_at], TOL, join_style="mitre")
         inside_sup[on_obj] = shapely.contains(buffered, fps[on_obj])
 
     out: list[Violation] = []

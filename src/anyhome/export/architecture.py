@@ -18,6 +18,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
+from typing import Any, cast
 
 import numpy as np
 import trimesh
@@ -475,13 +476,14 @@ def _cylinder(x: float, y: float, z0: float, z1: float, radius: float) -> trimes
 
 def _finished(parts: Iterable[trimesh.Trimesh], finish: Finish) -> trimesh.Trimesh:
     """Concatenate parts into one mesh wearing the finish's PBR material."""
-    mesh = trimesh.util.concatenate(list(parts))
+    # trimesh types concatenate's result as its Geometry base; of meshes it is a Trimesh
+    mesh = cast(trimesh.Trimesh, trimesh.util.concatenate(list(parts)))
     mesh.visual = trimesh.visual.TextureVisuals(material=_material(finish))
     return mesh
 
 
 def _material(finish: Finish) -> trimesh.visual.material.PBRMaterial:
-    kwargs = {}
+    kwargs: dict[str, Any] = {}
     if finish.emissive is not None:
         kwargs["emissiveFactor"] = list(finish.emissive)
     if finish.blend:

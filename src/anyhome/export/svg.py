@@ -46,6 +46,10 @@ OBJECT_FILL = "#d9d2c5"
 class _Canvas:
     def __init__(self, house: House) -> None:
         pts = np.array([p for r in house.rooms for p in r.polygon], dtype=float).reshape(-1, 2)
+        self.x0: float
+        self.y0: float
+        self.x1: float
+        self.y1: float
         self.x0, self.y0 = pts.min(axis=0) if len(pts) else (0.0, 0.0)
         self.x1, self.y1 = pts.max(axis=0) if len(pts) else (1.0, 1.0)
         self.width = (self.x1 - self.x0) * PX_PER_M + 2 * MARGIN_PX

@@ -35,30 +35,33 @@ def to_postfix(tree: Cut | int) -> list[Token]:
 def from_postfix(expr: list[Token], rect: Rect, weights: np.ndarray) -> Cut | int:
     """Tree of an expression, cuts placed by the leaves' ``weights`` (target cells)."""
     stack: list[tuple[Cut | int, float]] = []
+    fractions: dict[int, float] = {}  # id(cut): the low side's share of its area
     for tok in expr:
         if isinstance(tok, str):
             (high, wh), (low, wl) = stack.pop(), stack.pop()
-            stack.append((Cut(0 if tok == "V" else 1, wl / (wl + wh), low, high), wl + wh))
+            cut = Cut(0 if tok == "V" else 1, 0, low, high)
+            fractions[id(cut)] = wl / (wl + wh)
+            stack.append((cut, wl + wh))
         else:
             stack.append((tok, float(weights[tok])))
     tree = stack[0][0]
-    _place_cuts(tree, rect)
+    _place_cuts(tree, rect, fractions)
     return tree
 
 
-def _place_cuts(tree: Cut | int, rect: Rect) -> None:
-    """Turn each cut's area fraction (stored in ``at``) into a cell coordinate."""
+def _place_cuts(tree: Cut | int, rect: Rect, fractions: dict[int, float]) -> None:
+    """Turn each cut's area fraction (``fractions[id(cut)]``) into a cell coordinate."""
     if isinstance(tree, int):
         return
     lo, hi = (rect[0], rect[2]) if tree.axis == 0 else (rect[1], rect[3])
-    tree.at = lo + int(round(tree.at * (hi - lo)))
+    tree.at = lo + int(round(fractions[id(tree)] * (hi - lo)))
     x0, y0, x1, y1 = rect
     if tree.axis == 0:
         low, high = (x0, y0, tree.at, y1), (tree.at, y0, x1, y1)
     else:
         low, high = (x0, y0, x1, tree.at), (x0, tree.at, x1, y1)
-    _place_cuts(tree.low, low)
-    _place_cuts(tree.high, high)
+    _place_cuts(tree.low, low, fractions)
+    _place_cuts(tree.high, high, fractions)
 
 
 def anneal(tree: Cut | int, rect: Rect, rooms: TuneRooms, rng: np.random.Generator) -> Cut | int:

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Literal
 
 import numpy as np
 
@@ -35,22 +36,25 @@ OPEN_TYPES = frozenset({"living_room", "dining_room", "kitchen"})
 """Room types whose pairs are joined by a wide opening instead of a door."""
 
 
+DoorKind = Literal["door", "open"]
+
+
 @dataclass(frozen=True)
 class PlacedDoor:
     """A door between room indices ``rooms`` (the second may be OUTSIDE)."""
 
     rooms: tuple[int, int]
     opening: Opening
-    kind: str = "door"
+    kind: DoorKind = "door"
 
 
-def door_kind(type_a: str, type_b: str | None) -> str:
+def door_kind(type_a: str, type_b: str | None) -> DoorKind:
     return "open" if type_a in OPEN_TYPES and type_b in OPEN_TYPES else "door"
 
 
 def place_door(
     rooms: tuple[int, int],
-    kind: str,
+    kind: DoorKind,
     runs: list[Run],
     cell_m: float,
     placed: list[PlacedDoor],

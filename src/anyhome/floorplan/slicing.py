@@ -37,6 +37,8 @@ Ext = tuple[bool, bool, bool, bool]
 """Whether a part's (left, right, bottom, top) side is on the footprint's exterior."""
 Ports = dict[int, frozenset[int]]
 """Sides (0 left, 1 right, 2 bottom, 3 top) of its part a room must touch for a door."""
+Part = tuple[Rect, list[int], Ext, Ports]
+"""One side of a cut: its rectangle, rooms, exterior sides and ports."""
 
 
 @dataclass(frozen=True)
@@ -112,7 +114,7 @@ def _slice(rect: Rect, ids: list[int], ext: Ext, ports: Ports, rooms: SliceRooms
     )
 
 
-def _ranked_cuts(rect, ids, ext, ports, rooms: SliceRooms, rng=None) -> list:
+def _ranked_cuts(rect, ids, ext, ports, rooms: SliceRooms, rng=None) -> list[tuple[float, tuple[Part, Part, int]]]:
     """(immediate score, parts) of every candidate cut, best first."""
     out = []
     for axis, low, high in _splits(ids, rooms):
@@ -247,7 +249,7 @@ def _cut(rect: Rect, first: list[int], ids: list[int], axis: int, rooms: SliceRo
     return cut if lo < cut < hi else None
 
 
-def _parts(rect: Rect, ext: Ext, ports: Ports, axis: int, cut: int, a: list[int], b: list[int], edges):
+def _parts(rect: Rect, ext: Ext, ports: Ports, axis: int, cut: int, a: list[int], b: list[int], edges) -> tuple[Part, Part, int]:
     """The two parts of a cut: (rect, rooms, exterior sides, ports) each."""
     x0, y0, x1, y1 = rect
     left, right, bottom, top = ext
@@ -270,7 +272,7 @@ def _parts(rect: Rect, ext: Ext, ports: Ports, axis: int, cut: int, a: list[int]
     return (rects[0], a, exts[0], port_a), (rects[1], b, exts[1], port_b), broken
 
 
-def _cut_score(parts, rooms: SliceRooms) -> float:
+def _cut_score(parts: tuple[Part, Part, int], rooms: SliceRooms) -> float:
     part_a, part_b, broken = parts
     crossing = sum(len(v) for v in part_a[3].values())
     score = CUT_EDGE_COST * crossing + INFEASIBLE_COST * broken

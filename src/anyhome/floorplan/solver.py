@@ -322,10 +322,10 @@ def _to_floorplan(spec: HouseSpec, prog: Program, lay: Layout) -> Floorplan:
     heights = {r.id: r.height for r in rooms}
     doors = []
     for i, d in enumerate(lay.doors):
-        sides = spec.connections[i] if i < len(spec.connections) else tuple(map(prog.label, d.rooms))
+        sides = spec.connections[i] if i < len(spec.connections) else (prog.label(d.rooms[0]), prog.label(d.rooms[1]))
         # a door fits under the lower ceiling of the rooms it joins
         ceiling_m = min(heights.get(s, DOOR_HEIGHT_M + OPENING_HEADROOM_M) for s in sides)
-        doors.append(Door(id=f"door-{i}", rooms=tuple(sides), segment=d.opening.segment(), kind=d.kind,
+        doors.append(Door(id=f"door-{i}", rooms=sides, segment=d.opening.segment(), kind=d.kind,
                           height=min(DOOR_HEIGHT_M, ceiling_m - OPENING_HEADROOM_M)))
     windows = []
     for i, w in enumerate(lay.windows):

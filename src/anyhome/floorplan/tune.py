@@ -74,7 +74,7 @@ def layout_cost(rects: dict[int, Rect], outer: Rect, rooms: TuneRooms) -> float:
         if shared < SHARED_WALL_M:
             cost += 10.0 * (SHARED_WALL_M - shared) + 2.0 * _gap(rects[i], rects[j]) * rooms.cell_m
     for k in np.flatnonzero(rooms.exterior).tolist():
-        ext = _exterior(rects[k], outer, rects.get(rooms.void)) * rooms.cell_m
+        ext = _exterior(rects[k], outer, rects.get(rooms.void) if rooms.void is not None else None) * rooms.cell_m
         cost += 10.0 * max(0.0, EXTERIOR_WALL_M - ext)
     return cost
 

@@ -245,13 +245,14 @@ def place_beside(target, size, side: str = "both") -> Cands:
     txy = np.asarray(target.position[:2])
     r, f = right_dir(target.yaw), front_dir(target.yaw)
     back_shift = (size[1] - target.size[1]) / 2
-    xy, pref = [], []
+    pts: list[np.ndarray] = []
+    pref: list[float] = []
     sides = {"left": (-1.0,), "right": (1.0,)}.get(side, (-1.0, 1.0))
     for k, gap in enumerate(BESIDE_GAPS_M):
         for sgn in sides:
-            xy.append(txy + sgn * r * (target.size[0] / 2 + size[0] / 2 + gap) + f * back_shift)
+            pts.append(txy + sgn * r * (target.size[0] / 2 + size[0] / 2 + gap) + f * back_shift)
             pref.append(1.0 - 0.15 * k)
-    xy = np.asarray(xy)
+    xy = np.asarray(pts)
     return Cands(xy, np.full(len(xy), target.yaw), np.full(len(xy), target.position[2]), np.asarray(pref))
 
 
@@ -316,10 +317,12 @@ def place_front(space: RoomSpace, target, size, distance_m: float = 0.4, facing:
     for k, m in enumerate((1.0, 0.8, 1.25, 0.6, 1.5, 0.4, 2.0, 0.2, 0.0)):
         dists.append(distance_m * m if distance_m > 0 else 0.1 * k)
         prefs.append(1.0 - 0.08 * k)
-    xy, yaws, pref = [], [], []
+    pts: list[np.ndarray] = []
+    yaws: list[float] = []
+    pref: list[float] = []
     for dd, p in zip(dists, prefs):
         for lk, lo in enumerate((0.0, 0.1, -0.1, 0.2, -0.2, 0.3, -0.3)):
-            xy.append(txy + f * (target.size[1] / 2 + dd + size[1] / 2) + r * (lateral + lo))
+            pts.append(txy + f * (target.size[1] / 2 + dd + size[1] / 2) + r * (lateral + lo))
             yaws.append(yaw)
             pref.append(p - 0.05 * lk)
     # snap flush to a wall straight ahead (a TV stand in front of a sofa)
@@ -331,10 +334,10 @@ def place_front(space: RoomSpace, target, size, distance_m: float = 0.4, facing:
         t = float(rel @ wall.u) + lateral * float(r @ wall.u)
         gap = dist_wall - target.size[1] / 2 - size[1]
         if 0 < gap and 0.5 * distance_m <= gap <= 2.5 * max(distance_m, 0.4) and 0 <= t <= wall.length:
-            xy.append(wall.a + wall.u * t + wall.n * (size[1] / 2))
+            pts.append(wall.a + wall.u * t + wall.n * (size[1] / 2))
             yaws.append(yaw)
             pref.append(0.95)
-    xy = np.asarray(xy)
+    xy = np.asarray(pts)
     return Cands(xy, np.asarray(yaws), np.zeros(len(xy)), np.asarray(pref))
 
 
@@ -344,12 +347,13 @@ def fit_on_top(target, size) -> tuple[tuple[float, float, float], bool] | None:
     td = target.size[1] - 2 * TOP_MARGIN_M
     if tw <= 0.02 or td <= 0.02:
         return None
-    best = None
+    best: tuple[float, bool] | None = None
     for turned in (False, True):
         w, d = (size[1], size[0]) if turned else (size[0], size[1])
         s = min(1.0, tw / w, td / d)
         if best is None or s > best[0] + 1e-9:
             best = (s, turned)
+    assert best is not None  # the loop ran
     s, turned = best
     if s < 0.5:
         return None
@@ -364,8 +368,8 @@ def place_top(target, size, turned: bool, rng: np.random.Generator) -> Cands:
     fy = max(0.0, (target.size[1] - 2 * TOP_MARGIN_M - d) / 2)
     u = np.linspace(-fx, fx, max(1, int(2 * fx / 0.05) + 1))
     v = np.linspace(-fy, fy, max(1, int(2 * fy / 0.05) + 1))
-    gu, gv = np.meshgrid(u, v)
-    gu, gv = gu.ravel(), gv.ravel()
+    grid_u, grid_v = np.meshgrid(u, v)
+    gu, gv = grid_u.ravel(), grid_v.ravel()
     xy = txy[None] + gu[:, None] * r[None] + gv[:, None] * f[None]
     yaw = wrap(target.yaw + (HALF_PI if turned else 0.0))
     z = target.position[2] + target.size[2]

@@ -346,12 +346,13 @@ class RoomLayout:
                                  str(p.get("facing", "toward"))), "floor"
         if rule == "place_around":
             slots = R.around_slots(ref, size, str(p.get("sides", "all")))
-            xy, yaw = [], []
+            pts: list[np.ndarray] = []
+            yaw: list[float] = []
             for s in slots:
                 for pos, y in R.around_positions(ref, size, s, s[-1]):
-                    xy.append(pos)
+                    pts.append(pos)
                     yaw.append(y)
-            xy = np.asarray(xy).reshape(-1, 2)
+            xy = np.asarray(pts).reshape(-1, 2)
             return R.Cands(xy, np.asarray(yaw), np.zeros(len(xy)), np.ones(len(xy))), "floor"
         return R.place_center(self.space, size), "floor"
 
@@ -750,9 +751,9 @@ class RoomLayout:
             label = f"{g.name}-{placed}"
             shifts = np.array([0.0, 0.1, -0.1, 0.2, -0.2])
             xy = cell[None] + shifts[:, None] * wall.u[None]
-            c = R.Cands(xy, np.full(len(xy), yaw), np.zeros(len(xy)), 1.0 - 0.1 * np.abs(shifts))
-            order = self._rank(c, item.size_m, "floor", 0.0, spacing=False)
-            choices = self._verified(c, order, item.size_m, "floor", None, k=2)
+            cands = R.Cands(xy, np.full(len(xy), yaw), np.zeros(len(xy)), 1.0 - 0.1 * np.abs(shifts))
+            order = self._rank(cands, item.size_m, "floor", 0.0, spacing=False)
+            choices = self._verified(cands, order, item.size_m, "floor", None, k=2)
             if not choices:
                 continue
             snap = self._snapshot()

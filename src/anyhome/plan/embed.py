@@ -29,7 +29,7 @@ import os
 import re
 import time
 from pathlib import Path
-from typing import Protocol
+from typing import Callable, Protocol
 
 import numpy as np
 
@@ -188,7 +188,7 @@ class HybridEmbedder:
         return _normalize_rows(np.hstack([a, b]))
 
 
-_CLASSES = {"static": StaticEmbedder, "hybrid": HybridEmbedder, "minilm": MiniLMEmbedder, "lexical": LexicalEmbedder}
+_CLASSES: dict[str, Callable[[], Embedder]] = {"static": StaticEmbedder, "hybrid": HybridEmbedder, "minilm": MiniLMEmbedder, "lexical": LexicalEmbedder}
 
 
 def available_backends() -> list[str]:

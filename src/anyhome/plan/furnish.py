@@ -251,6 +251,7 @@ def apply_mention(m: Mention, groups: list[Group], ornaments: list[Item], unused
         item = item or g["anchor"]
         if n is None and item is g["anchor"]:
             g["repeat"] = 1 if not m.plural else g["repeat"]
+    assert item is not None  # _find gives a group and its item, or neither
     g["required"] = True
     g["priority"] = min(g["priority"], 0)
     if named:

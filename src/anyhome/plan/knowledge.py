@@ -120,10 +120,10 @@ def _merge_entries(base: dict[Any, Any], user: dict[Any, Any], prefix: tuple[Any
         if isinstance(old, dict) and isinstance(v, dict):
             base[k] = {**old, **v}
             for f in v:
-                src[(*prefix, k, f)] = path
+                src[prefix + (k, f)] = path
         else:
             base[k] = v
-            src[(*prefix, k)] = path
+            src[prefix + (k,)] = path
 
 
 def _merge(name: str, base: dict[str, Any], user: dict[str, Any], path: str,

@@ -124,8 +124,8 @@ def _furnish(parsed: Parsed, slots: list[Slot], main_key: str | None, prog: dict
     for m in parsed.objects:  # "a bedroom without a tv", "no rug": after what the text adds
         if not m.negated:
             continue
-        targets = [i for i, s in enumerate(slots) if m.room is not None and s.mention == m.room] or range(len(slots))
-        for i in targets:
+        negated_in = [i for i, s in enumerate(slots) if m.room is not None and s.mention == m.room] or range(len(slots))
+        for i in negated_in:
             groups, ornaments, _ = built[i]
             fu.remove_mention(m, groups, ornaments)
     out = []

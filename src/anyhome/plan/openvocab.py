@@ -20,7 +20,7 @@ Knowledge (nouns that are never objects, the fallback object) is in
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 
 from anyhome.plan.concepts import GENERIC_HEADS, Match, nearest, threshold
 from anyhome.plan.knowledge import load
@@ -63,7 +63,7 @@ def non_objects() -> frozenset[str]:
 
 def find_object_phrases(
     text: str, tokens: list[tuple[str, int, int]], taken: list[tuple[int, int]], is_number: Callable[[str], bool],
-    soft: list[tuple[int, int]] = (),
+    soft: Sequence[tuple[int, int]] = (),
 ) -> list[tuple[str, int, int]]:
     """Noun phrases in object lists that no known phrase covers.
 

@@ -11,6 +11,7 @@ from __future__ import annotations
 import functools
 import math
 import re
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 from anyhome.plan import openvocab as ov
@@ -492,7 +493,7 @@ def _apply_negation(text: str, mentions: list[Mention]) -> None:
         k += len(chain)
 
 
-def _building_modifiers(text: str, start: int, p: Parsed, keep_unmapped: bool = True, taken: list[tuple[int, int]] = ()) -> None:
+def _building_modifiers(text: str, start: int, p: Parsed, keep_unmapped: bool = True, taken: Sequence[tuple[int, int]] = ()) -> None:
     """Size words and the user's own style words just before the building word
     ("a Craftsman bungalow", "a neon lit retro arcade"); words that match no style are
     kept only if ``keep_unmapped`` (the head word was recognised) and the user wrote

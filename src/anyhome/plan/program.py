@@ -198,7 +198,7 @@ def _claim_mentions(parsed: Parsed, slots: list[Slot], fixed: dict[str, int]) ->
             # rooms of the catch-all type "other" are too unlike to stand in for each other
             same_type = [s for s in slots if s.mention is None and s.type == proto.type != "other"]
             same_set = [s for s in slots if s.mention is None and s.furnish == proto.furnish != "other"]
-            target = (same_name or same_set or same_type or [None])[0]
+            target = next(iter(same_name or same_set or same_type), None)
             if target is None:
                 like = first or proto
                 target = Slot(proto.name, like.type, like.furnish, like.area_range)

@@ -111,6 +111,12 @@ class _Refiner:
                 return i
         return None
 
+    def _obj(self, k: int) -> HouseObject:
+        """Object ``k``, one known to be live (not dropped)."""
+        o = self.objs[k]
+        assert o is not None, k
+        return o
+
     def _children(self, oid: str) -> list[int]:
         out = []
         for i, o in enumerate(self.objs):
@@ -183,12 +189,12 @@ class _Refiner:
                 and np.allclose(old.size, new.size, atol=1e-9)):
             return False
         kids = self._children(old.id)
-        before = self.problems(old) + sum(self.problems(self.objs[k]) for k in kids)
+        before = self.problems(old) + sum(self.problems(self._obj(k)) for k in kids)
         saved = {k: self.objs[k] for k in kids}
         self.objs[i] = new
         for k in kids:
-            self.objs[k] = _carry(self.objs[k], old, new)
-        after = self.problems(new) + sum(self.problems(self.objs[k]) for k in kids)
+            self.objs[k] = _carry(self._obj(k), old, new)
+        after = self.problems(new) + sum(self.problems(self._obj(k)) for k in kids)
         if after < before or (after == 0 and before == 0):
             self.changed_rooms.add(new.room)
             return True
@@ -207,7 +213,7 @@ class _Refiner:
             snapped = _snap_yaw(o.yaw)
             if o.support != "wall" and 1e-9 < abs(_wrap(snapped - o.yaw)) < YAW_SNAP_RAD:
                 self._try(i, o.model_copy(update={"yaw": snapped}))
-                o = self.objs[i]
+                o = self._obj(i)
             if o.support == "wall":
                 new = self._snap_wall(o)
                 if new is not None:
@@ -218,7 +224,7 @@ class _Refiner:
                     if new is not None:
                         self._try(i, new)
                 if _is_seat(o) and o.rule in FACE_TABLE_RULES:
-                    new = self._face_table(self.objs[i])
+                    new = self._face_table(self._obj(i))
                     if new is not None:
                         self._try(i, new)
             else:
@@ -288,7 +294,7 @@ class _Refiner:
         k = self._index(o.support)
         if k is None:
             return None
-        sup = self.objs[k]
+        sup = self._obj(k)
         z = sup.position[2] + sup.size[2]
         # clamp into the supporter's top, in its frame
         c, s = math.cos(sup.yaw), math.sin(sup.yaw)
@@ -320,7 +326,7 @@ class _Refiner:
             self.changed_rooms.add(o.room)
 
     def _move_out(self, i: int) -> bool:
-        o = self.objs[i]
+        o = self._obj(i)
         space = self.spaces.get(o.room)
         if space is None:
             return False
@@ -353,7 +359,7 @@ class _Refiner:
         for j in np.nonzero(ok)[0]:
             new = o.model_copy(update={"position": (float(xy[j, 0]), float(xy[j, 1]), o.position[2]),
                                        "yaw": float(yaw[j])})
-            if self._try(i, new) and self.problems(self.objs[i]) == 0:
+            if self._try(i, new) and self.problems(self._obj(i)) == 0:
                 return True
         return False
 

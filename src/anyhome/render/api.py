@@ -8,7 +8,7 @@ import os
 import re
 import time
 from pathlib import Path
-from typing import Any
+from typing import Any, cast
 
 import numpy as np
 import trimesh
@@ -53,7 +53,7 @@ def check_image_sizes(
         if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or not 1 <= value <= top:
             raise RenderError(f"{name} must be an integer from 1 to {top}, got {value!r}")
     for name, value in ((names[0], size_px), (names[1], view_size_px)):
-        if value * supersample > MAX_TARGET_PX:
+        if cast(int, value) * cast(int, supersample) > MAX_TARGET_PX:  # both checked above
             raise RenderError(f"{name} {value} x supersample {supersample} is more than {MAX_TARGET_PX} px")
 
 

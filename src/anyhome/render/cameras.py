@@ -222,5 +222,5 @@ def room_camera(house: House, room: Room, size_px: int,
     spot, corner = best
     eye = (float(spot[0]), float(spot[1]), min(EYE_HEIGHT_M, room.height - 0.3))
     target = (float(corner[0]), float(corner[1]), LOOK_AT_HEIGHT_M)
-    far = float(np.linalg.norm(np.ptp(house_points(house), axis=0))) + 80.0
-    return Camera(eye, target, VIEW_FOV_DEG, size_px, size_px, near_m=NEAR_M, far_m=far)
+    far_m = float(np.linalg.norm(np.ptp(house_points(house), axis=0))) + 80.0
+    return Camera(eye, target, VIEW_FOV_DEG, size_px, size_px, near_m=NEAR_M, far_m=far_m)

@@ -66,14 +66,15 @@ def room_lights(house: House, fixtures: dict[str, np.ndarray] | None = None) -> 
     for room in house.rooms:
         poly = Polygon(room.polygon).buffer(0)
         range_m = max(1.5, 0.6 * float(np.sqrt(poly.area)))
-        rgb = tuple(float(ROOM_LIGHT_POWER * x) for x in ROOM_LIGHT_RGB)
+        rgb = (float(ROOM_LIGHT_POWER * ROOM_LIGHT_RGB[0]), float(ROOM_LIGHT_POWER * ROOM_LIGHT_RGB[1]),
+               float(ROOM_LIGHT_POWER * ROOM_LIGHT_RGB[2]))
         if room.id in fixtures:
             lo, hi = fixtures[room.id]
             pos = ((lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, lo[2] - FIXTURE_GAP_M)
         else:
             c = poly.centroid if poly.contains(poly.centroid) else poly.representative_point()
             pos = (c.x, c.y, room.height - LIGHT_BELOW_CEILING_M)
-        out.append(RoomLight(tuple(float(x) for x in pos), range_m, rgb))
+        out.append(RoomLight((float(pos[0]), float(pos[1]), float(pos[2])), range_m, rgb))
     return out
 
 

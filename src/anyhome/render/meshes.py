@@ -28,12 +28,13 @@ from __future__ import annotations
 
 from collections import defaultdict
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, cast
 
 import numpy as np
 import shapely
 import trimesh
 from shapely.geometry import Polygon
+from trimesh.visual import ColorVisuals
 
 from anyhome.house import House
 from anyhome.scene import ROOT_NODE
@@ -141,7 +142,7 @@ def _owner(node: str, parents: dict[str, str], objects: dict[str, str]) -> str:
 def _plan_transforms(scene: trimesh.Scene) -> dict[str, np.ndarray]:
     """Node -> 4x4 transform from the geometry's frame to the plan frame."""
     graph = scene.graph
-    to_plan = np.eye(4)
+    to_plan: np.ndarray = np.eye(4)
     if ROOT_NODE in graph.nodes:
         to_plan = np.linalg.inv(graph.get(ROOT_NODE)[0])
     return {node: to_plan @ graph.get(node)[0] for node in graph.nodes_geometry}
@@ -209,9 +210,9 @@ def corner_appearance(mesh: trimesh.Trimesh) -> Appearance:
     out = Appearance(color)
     kind = getattr(visual, "kind", None)
     if kind == "vertex":
-        color = _unit_rgba(visual.vertex_colors, len(mesh.vertices))[faces.reshape(-1)]
+        color = _unit_rgba(cast(ColorVisuals, visual).vertex_colors, len(mesh.vertices))[faces.reshape(-1)]
     elif kind == "face":
-        color = np.repeat(_unit_rgba(visual.face_colors, len(faces)), 3, axis=0)
+        color = np.repeat(_unit_rgba(cast(ColorVisuals, visual).face_colors, len(faces)), 3, axis=0)
     mat = _material_of(visual)
     if mat is not None:
         factor = getattr(mat, "baseColorFactor", None)
@@ -236,7 +237,8 @@ def corner_appearance(mesh: trimesh.Trimesh) -> Appearance:
             out.metallic = float(mat.metallicFactor)
         emissive = getattr(mat, "emissiveFactor", None)
         if emissive is not None:
-            out.emissive = tuple(float(x) for x in np.asarray(emissive, dtype=np.float64).ravel()[:3])
+            e = np.asarray(emissive, dtype=np.float64).ravel()  # glTF: three numbers
+            out.emissive = (float(e[0]), float(e[1]), float(e[2]))
         out.blend = getattr(mat, "alphaMode", None) == "BLEND"
     out.color = np.asarray(color, dtype=np.float64)
     return out
@@ -358,6 +360,7 @@ def scene_meshes(house: House, scene: trimesh.Scene) -> SceneMeshes:
         if not isinstance(mesh, trimesh.Trimesh) or len(mesh.faces) == 0:
             continue
         owner = _owner(node, parents, object_rooms)
+        room_id: str | None
         if owner in object_rooms:
             category, room_id = "object", object_rooms[owner]
         else:
@@ -376,7 +379,7 @@ def scene_meshes(house: House, scene: trimesh.Scene) -> SceneMeshes:
         v = np.zeros(len(tri) * 3, dtype=VERTEX_DTYPE)
         v["pos"] = tri.reshape(-1, 3)
         v["nrm"] = normals
-        if look.normal_texture is not None:
+        if look.normal_texture is not None and look.uv is not None:  # set together
             v["tan"] = corner_tangents(verts, mesh.faces, look.uv, normals)
         v["uv"] = 0.0 if look.uv is None else look.uv
         v["col"] = look.color
@@ -385,7 +388,7 @@ def scene_meshes(house: House, scene: trimesh.Scene) -> SceneMeshes:
         if category in PROBED_PARTS or (room_id is None and category != "object"):
             v["room"] = np.repeat(_face_rooms(tri, face_n, polys), 3)
         else:
-            v["room"] = room_index.get(room_id, -1)
+            v["room"] = room_index.get(room_id, -1) if room_id is not None else -1
         v["inst"] = inst_index[owner]
         if category == "light" and room_id is not None:
             fixtures[room_id] = np.array([verts.min(axis=0), verts.max(axis=0)])

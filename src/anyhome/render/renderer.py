@@ -157,7 +157,7 @@ class Renderer:
             layout = [(vbo, VERTEX_FORMAT, *VERTEX_ATTRS)]
             vaos = [ctx.vertex_array(p, layout, skip_errors=True)
                     for p in (self._shade, self._aux, self._depth_prog)]
-            draw = _Draw(batch.layer, *vaos, self._texture(batch.texture),
+            draw = _Draw(batch.layer, vaos[0], vaos[1], vaos[2], self._texture(batch.texture),
                          self._texture(batch.mr_texture), self._texture(batch.normal_texture),
                          float(batch.normal_scale))
             draw.uniforms = {"u_has_tex": draw.base is not None, "u_has_mr": draw.mr is not None,

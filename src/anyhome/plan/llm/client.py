@@ -432,7 +432,9 @@ class LLMClient:
             t0 = time.perf_counter()
             try:
                 raw = self._client.chat.completions.with_raw_response.create(
-                    model=model, messages=sent, **sampling, **request_options(mode, schema, name),
+                    # plain role/content dicts: openai types each message as one of its TypedDicts
+                    model=model, messages=sent,  # type: ignore[arg-type]
+                    **sampling, **request_options(mode, schema, name),
                 )  # fmt: skip
                 body = raw.content
             except _TooLarge:

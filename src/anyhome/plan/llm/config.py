@@ -146,7 +146,7 @@ def _cast(key: str, value: Any, where: str) -> Any:
 
 def _from_file(path: Path) -> dict[str, Any]:
     try:
-        import tomllib
+        import tomllib  # type: ignore[import-not-found, unused-ignore]  # standard library from 3.11 on
     except ModuleNotFoundError:  # Python 3.10
         raise LLMError("reading a config file needs Python 3.11 or newer (tomllib)") from None
     try:

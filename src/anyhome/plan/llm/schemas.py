@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import copy
 from functools import lru_cache
-from typing import Annotated, Any, Literal
+from typing import TYPE_CHECKING, Annotated, Any, Literal
 
 from pydantic import BaseModel, BeforeValidator, ConfigDict, Field
 
@@ -27,9 +27,14 @@ MAX_ITEM_COUNT = 40
 NAME_CHARS = 60
 WORDS_CHARS = 80
 
-RoomType = Literal[tuple(ROOM_TYPES)]  # type: ignore[valid-type]
-RuleName = Literal[tuple(RULES)]  # type: ignore[valid-type]
-AnchorRule = Literal[tuple(r for r in RULES if r not in RELATIVE_RULES)]  # type: ignore[valid-type]
+if TYPE_CHECKING:  # Literals built from the knowledge at run time; a checker sees str
+    RoomType = str
+    RuleName = str
+    AnchorRule = str
+else:
+    RoomType = Literal[tuple(ROOM_TYPES)]
+    RuleName = Literal[tuple(RULES)]
+    AnchorRule = Literal[tuple(r for r in RULES if r not in RELATIVE_RULES)]
 OrnamentRule = Literal["place_top", "place_on_wall"]
 ArrangementName = Literal["free", "rows", "along_walls", "center", "symmetric"]
 
