@@ -10,7 +10,7 @@ from __future__ import annotations
 import io
 from dataclasses import dataclass, replace
 from functools import lru_cache
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -161,7 +161,8 @@ def pbr_material(spec: MaterialSpec, textures: bool = True) -> trimesh.visual.ma
     import trimesh
 
     blend = spec.alpha < 1.0
-    kwargs = dict(name=material_key(spec), alphaMode="BLEND" if blend else "OPAQUE", doubleSided=blend)
+    kwargs: dict[str, Any] = dict(name=material_key(spec), alphaMode="BLEND" if blend else "OPAQUE",
+                                  doubleSided=blend)
     if spec.textured and textures:
         base, mr, normal = texture_images(spec)
         rough, metal = texture_factors(spec)

@@ -20,10 +20,11 @@ Metal parts are always metallic (>= :data:`MIN_METALLIC`), whatever the words sa
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
-from typing import Any
+from typing import Any, cast
 
 import numpy as np
 import trimesh
+from trimesh.visual import ColorVisuals
 
 from anyhome.assets.colors import to_hex
 from anyhome.assets.procedural._parts import ROLES, Role, face_roles
@@ -127,7 +128,7 @@ def split_by_role(mesh: trimesh.Trimesh) -> list[tuple[Role, str, int, np.ndarra
     """(role, hex colour, alpha, face indices) per distinct (role, face colour), in
     first-seen order. The roles are those the asset builder stored per face."""
     roles = np.array([ROLES.index(r) for r in face_roles(mesh)], dtype=np.int64)
-    colors = np.asarray(mesh.visual.vertex_colors)[np.asarray(mesh.faces)[:, 0]]
+    colors = np.asarray(cast(ColorVisuals, mesh.visual).vertex_colors)[np.asarray(mesh.faces)[:, 0]]
     keys, first, inverse = np.unique(np.column_stack([roles, colors]), axis=0, return_index=True,
                                      return_inverse=True)
     out = []

@@ -110,9 +110,16 @@ def slot_role(family: str, slot: int, color: str) -> Role | None:
     return spec
 
 
+def _size3(values: Any) -> tuple[float, float, float]:
+    """A box size (width, depth, height) as three floats."""
+    w, d, h = (float(v) for v in values)
+    return (w, d, h)
+
+
 def face_roles(mesh: trimesh.Trimesh) -> list[Role]:
     """The material role of each face of a mesh built by :class:`Builder`."""
-    codes = mesh.face_attributes.get(ROLE_ATTRIBUTE) if hasattr(mesh, "face_attributes") else None
+    raw = mesh.face_attributes.get(ROLE_ATTRIBUTE) if hasattr(mesh, "face_attributes") else None
+    codes = None if raw is None else np.asarray(raw).reshape(-1)
     if codes is None or len(codes) != len(mesh.faces):
         raise ValueError("mesh has no per-face material roles")
     return [ROLES[int(c)] for c in codes]
@@ -176,7 +183,7 @@ class Params:
     def from_record(cls, family: str, record: dict[str, Any]) -> Params:
         return cls(
             family=family,
-            size=tuple(float(s) for s in record["size"]),
+            size=_size3(record["size"]),
             style=str(record.get("style", "")),
             primary=str(record.get("primary", "#a0714a")),
             secondary=str(record.get("secondary", TEXTILE_WHITE)),
@@ -216,10 +223,9 @@ def make_params(
     def pick(c: list[str] | str) -> str:
         return c if isinstance(c, str) else str(c[int(rng.integers(len(c)))])
 
-    size = tuple(float(max(s, 1e-3)) for s in size)
     return Params(
         family=family,
-        size=size,  # type: ignore[arg-type]
+        size=_size3([max(s, 1e-3) for s in size]),
         style=class_name(style),
         primary=str(pick(primary)),
         secondary=str(pick(secondary)),

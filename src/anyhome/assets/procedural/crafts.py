@@ -398,9 +398,9 @@ def build_pegboard(p):
     fy = y0 + bt
     b.box((-w / 2, y0, 0), (w / 2, fy, h), p.primary)
     frame = min(0.03, 0.04 * w)
-    for box in (((-w / 2, fy, 0), (w / 2, fy + 0.1 * d, frame)), ((-w / 2, fy, h - frame), (w / 2, fy + 0.1 * d, h)),
-                ((-w / 2, fy, 0), (-w / 2 + frame, fy + 0.1 * d, h)), ((w / 2 - frame, fy, 0), (w / 2, fy + 0.1 * d, h))):
-        b.box(*box, darker(p.primary, 0.2))
+    for lo, hi in (((-w / 2, fy, 0), (w / 2, fy + 0.1 * d, frame)), ((-w / 2, fy, h - frame), (w / 2, fy + 0.1 * d, h)),
+                   ((-w / 2, fy, 0), (-w / 2 + frame, fy + 0.1 * d, h)), ((w / 2 - frame, fy, 0), (w / 2, fy + 0.1 * d, h))):
+        b.box(lo, hi, darker(p.primary, 0.2))
     s = max(p.spacing, w / 30, h / 30)
     hole = darker(p.primary, 0.55)
     for x in np.arange(-w / 2 + frame + s / 2, w / 2 - frame, s):

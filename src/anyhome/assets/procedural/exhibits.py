@@ -448,8 +448,8 @@ def build_barber_pole(p):
         v = np.asarray(m.vertices).copy()
         v[:, 2] = zc + up * v[:, 2]
         v[:, 1] += cy
-        faces = np.asarray(m.faces) if up > 0 else np.asarray(m.faces)[:, ::-1]
-        b.add(v, faces, p.primary)
+        cap_faces = np.asarray(m.faces) if up > 0 else np.asarray(m.faces)[:, ::-1]
+        b.add(v, cap_faces, p.primary)
     b.sphere((0, cy, h - 0.03 * h), 0.3 * R, p.primary, subdivisions=1)
     b.sphere((0, cy, 0.03 * h), 0.3 * R, p.primary, subdivisions=1)
     for z in (0.2 * h, 0.8 * h):  # bracket to the wall

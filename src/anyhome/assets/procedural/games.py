@@ -220,10 +220,10 @@ def _draw_ping_pong(b: Builder, L: float, B: float, H: float, p) -> None:
             b.sphere((x, sy * (B / 2 - 0.15), 0.04), 0.04, BLACK, subdivisions=1)
         b.box((x - 0.02, -B / 2 + 0.15, 0.3 * top), (x + 0.02, B / 2 - 0.15, 0.3 * top + 0.04), DARK_METAL)
     if p.paddles:
-        for sx, sy in ((-1, 0.2), (1, -0.25)):
+        for sx, fy in ((-1, 0.2), (1, -0.25)):
             x = sx * L / 3
-            b.cyl(x, sy * B, top, top + 0.012, 0.08, p.accent, sections=16)
-            b.box((x - 0.012, sy * B + 0.07, top), (x + 0.012, sy * B + 0.17, top + 0.02), tint("#c9a06a", "paint"))
+            b.cyl(x, fy * B, top, top + 0.012, 0.08, p.accent, sections=16)
+            b.box((x - 0.012, fy * B + 0.07, top), (x + 0.012, fy * B + 0.17, top + 0.02), tint("#c9a06a", "paint"))
         b.sphere((L / 6, 0.1 * B, top + 0.02), 0.02, tint("#f4f1ea", "paint"), subdivisions=1)
 
 

@@ -27,7 +27,8 @@ DRUM_SHELLS = tint(["#b8322a", "#2d4f8a", BLACK, "#e8e6e0", "#5c3b26", "#3f6b4a"
 DRUM_HEAD = tint("#f0ede6", "plastic")
 
 
-def _along_y(x: float, y0: float, y1: float, z: float, rx: float, rz: float) -> tuple[tuple, np.ndarray]:
+def _along_y(x: float, y0: float, y1: float, z: float, rx: float, rz: float
+             ) -> tuple[tuple[float, float, float, float, float], np.ndarray]:
     """Arguments and transform that lay an elliptic ``Builder.cyl`` along y: the section
     (rx across x, rz up z) centred on (x, z), from y0 to y1."""
     return (0.0, 0.0, y0, y1, rx), move((x, 0, z)) @ rot_x(-np.pi / 2) @ np.diag([1.0, rz / rx, 1.0, 1.0])
@@ -65,7 +66,7 @@ def build_microphone(p):
         tail = np.array([0, -0.7 * d / 2, top - 0.15 * (h - top)])
         b.rod(tail, tip, 0.01, p.primary, sections=8)
         b.sphere((0, 0, top), 0.025, p.accent, subdivisions=0)
-        b.cyl(*tail[:2], tail[2] - 0.05, tail[2] + 0.03, 0.03, p.primary, sections=10)  # counterweight
+        b.cyl(tail[0], tail[1], tail[2] - 0.05, tail[2] + 0.03, 0.03, p.primary, sections=10)  # counterweight
         base_mic = tip
     else:
         base_mic = np.array([0, 0, top])
