@@ -18,7 +18,6 @@ from anyhome.materials.images import EncodedImage, encoded_images, texture_facto
 _GLB_MAGIC = b"glTF"
 _JSON = b"JSON"
 _BIN = b"BIN\x00"
-SLOTS = ("baseColorTexture", "metallicRoughnessTexture", "normalTexture")
 REPEAT = 10497
 LINEAR = 9729
 LINEAR_MIPMAP_LINEAR = 9987

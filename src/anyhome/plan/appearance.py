@@ -110,7 +110,7 @@ def room_materials(look: Look, room_type: str) -> dict[str, str]:
     types = load("rooms")["types"]
     defaults = types.get(room_type, types["other"])["materials"]
     materials = {"floor": look.floor, "walls": look.walls, "ceiling": look.ceiling}
-    keep = room_type in KEEP_DEFAULT_SURFACES or bool(defaults.get("wet")) or bool(types.get(room_type, {}).get("wet"))
+    keep = room_type in KEEP_DEFAULT_SURFACES or bool(types.get(room_type, {}).get("wet"))
     if keep:
         for surface in ("floor", "walls"):
             if surface not in look.user_surfaces:

@@ -16,13 +16,10 @@ from anyhome.assets.procedural._parts import (
     lighter,
     make_params,
     slot_roles,
-    tint,
     wood_tones,
 )
 from anyhome.assets.procedural.storage import HANDLE
 from anyhome.assets.registry import register
-
-TOPS = tint(["#e8e6e0", "#d9d4c7", "#2b2b2b", "#c9c5bb"], "stone")
 
 
 def _table_params(name, rng, size, style, **extra):
