@@ -578,26 +578,38 @@ def _problems(h: House) -> Iterator[str]:
             yield f"{bad}: must be a finite number"
 
 
+KNOB_SAMPLE_SCALES = (0.25, 0.5, 1.0, 2.0, 4.0)
+"""Sizes, times the family's typical size, at which :func:`_knob_schema` samples."""
+KNOB_SAMPLE_SEEDS = 16
+"""Seeds per size at which :func:`_knob_schema` samples (cycling through the style classes)."""
+
+
 @lru_cache(maxsize=None)
 def _knob_schema(family: str) -> dict[str, tuple[type, float, float]] | None:
     """The knobs a procedural family's records carry: name -> (type, lowest, highest
-    allowed). Learnt from the family's own sampler (several seeds, a quarter to four times
-    its typical size): a count it always makes >= 1 must be at least half its smallest, a
-    positive number at least a quarter of its smallest, a number it never makes negative
-    >= 0, and no number may exceed four times the largest it makes (at least 16 for
-    counts, 4 for other numbers). None: no such family."""
+    allowed). Learnt from the family's own sampler (:data:`KNOB_SAMPLE_SEEDS` seeds for
+    each of :data:`KNOB_SAMPLE_SCALES` times its typical size, in every asset style class):
+    a count it can make 0 or 1 may go down to that; a count it always makes >= 2 must be at
+    least half its smallest; a number it draws down to near zero (its smallest under a
+    tenth of its largest) may be 0; another positive number must be at least a quarter
+    of its smallest; a number it never makes negative >= 0; and no number may exceed four
+    times the largest it makes (at least 16 for counts, 4 for other numbers). None: no
+    such family."""
     import numpy as np
 
     from anyhome.assets.registry import _loaded, typical_size
+    from anyhome.assets.styles import asset_classes
 
     fam = _loaded().get(family)
     if fam is None:
         return None
     seen: dict[str, list] = {}
     base = np.asarray(typical_size(family), dtype=float)
-    for scale in (0.25, 1.0, 4.0):
-        for seed in range(3):
-            params = fam.sample(np.random.default_rng(seed), tuple(base * scale), "")
+    styles = ["", *sorted(asset_classes())]
+    for scale in KNOB_SAMPLE_SCALES:
+        for seed in range(KNOB_SAMPLE_SEEDS):
+            style = styles[seed % len(styles)]
+            params = fam.sample(np.random.default_rng(seed), tuple(base * scale), style)
             for k, v in params.knobs:
                 seen.setdefault(k, []).append(v)
     schema = {}
@@ -606,9 +618,11 @@ def _knob_schema(family: str) -> dict[str, tuple[type, float, float]] | None:
         if kind in (int, float):
             lo_seen, hi_seen = min(values), max(abs(v) for v in values)
             lo = 0 if lo_seen >= 0 else -math.inf
-            if kind is int and lo_seen >= 1:
+            if kind is int and lo_seen >= 2:
                 lo = max(1, math.ceil(lo_seen / 2))
-            elif kind is float and lo_seen > 0:
+            elif kind is int and lo_seen == 1:
+                lo = 1
+            elif kind is float and lo_seen > 0 and lo_seen >= 0.1 * hi_seen:
                 lo = max(lo_seen / 4, 10.0**-JSON_DECIMALS)  # stays > 0 once rounded
             hi = min(MAX_ASSET_KNOB, max(4 * hi_seen, 16 if kind is int else 4))
             schema[k] = (kind, max(lo, -hi), hi)

@@ -111,7 +111,7 @@ def build_climbing_wall(p):
     back = -d / 2
     n = p.panels
     pw = w / n
-    overhang = [0.0, 1.0, 0.5][:n]  # share of the free depth the top of each panel leans out
+    overhang = [(0.0, 1.0, 0.5)[i % 3] for i in range(n)]  # share of the free depth each panel's top leans out
     rng.shuffle(overhang)
     free = d - mat_d - 0.08
     for i in range(n):
