@@ -2,11 +2,34 @@
 
 from __future__ import annotations
 
+from functools import lru_cache
+
 import numpy as np
 import trimesh
 
 from anyhome.assets.procedural._parts import Params
 from anyhome.assets.registry import family_for, get, typical_size
+
+
+def fresh_mesh(family: str, seed: int, size, style: str = "") -> trimesh.Trimesh:
+    """The family's mesh sampled with ``seed`` in box ``size`` for ``style``, built now."""
+    fam = get(family)
+    return fam.build(fam.sample(np.random.default_rng(seed), tuple(size), style))
+
+
+@lru_cache(maxsize=None)
+def typical_mesh(family: str, seed: int, style: str = "") -> trimesh.Trimesh:
+    """The family's mesh at its typical size for ``seed`` and ``style``, built once per
+    test session and shared by every test that checks it (invariants, roles, materials).
+    Callers must not modify it."""
+    return fresh_mesh(family, seed, typical_size(family), style)
+
+
+def mesh_for(family: str, seed: int, size, style: str = "") -> trimesh.Trimesh:
+    """:func:`typical_mesh` when ``size`` is the typical box (shared), else a fresh build."""
+    if tuple(size) == typical_size(family):
+        return typical_mesh(family, seed, style)
+    return fresh_mesh(family, seed, size, style)
 
 
 def build_with(family: str, seed: int = 0, size=None, style: str = "", **knobs) -> trimesh.Trimesh:

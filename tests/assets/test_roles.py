@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import itertools
 from collections import Counter
 from pathlib import Path
 
@@ -9,6 +10,7 @@ import numpy as np
 import pytest
 import trimesh
 import yaml
+from procedural_helpers import typical_mesh
 
 from anyhome.assets import FAMILIES
 from anyhome.assets.procedural._parts import (
@@ -22,6 +24,7 @@ from anyhome.assets.procedural._parts import (
 from anyhome.assets.registry import get, typical_size
 
 STYLES = ("", "victorian", "industrial")
+SEEDS = (0, 7)
 KNOWLEDGE = Path(__file__).resolve().parents[2] / "src/anyhome/plan/knowledge/objects.yaml"
 
 
@@ -34,8 +37,8 @@ def test_every_face_of_every_family_has_a_role() -> None:
     used: Counter[str] = Counter()
     per_family: dict[str, set[str]] = {}
     for family in FAMILIES:
-        for seed, style in enumerate(STYLES):
-            mesh = _build(family, seed, style)
+        for seed, style in itertools.product(SEEDS, STYLES):
+            mesh = typical_mesh(family, seed, style)  # shared with test_invariants
             codes = mesh.face_attributes.get(ROLE_ATTRIBUTE)
             assert codes is not None and len(codes) == len(mesh.faces), family
             assert int(np.max(codes)) < len(ROLES), family

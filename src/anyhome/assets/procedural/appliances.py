@@ -272,7 +272,7 @@ def build_popcorn_machine(p):
         b.box((-0.44 * w, -0.42 * d, c0 - 0.03 * h), (0.44 * w, 0.42 * d, c0), darker(p.primary, 0.3))
         r = 0.11 * h
         for x in (-0.44 * w, 0.44 * w):
-            wheel_x(b, x + (0.03 * w if x < 0 else -0.03 * w), -0.18 * d, r, r, 0.05 * w, BLACK, p.secondary,
+            wheel_x(b, x + (0.03 * w if x < 0 else -0.03 * w), -0.18 * d, r, r, 0.05 * w, tint(BLACK, "rubber"), p.secondary,
                     spokes=4)
         for x in (-0.3 * w, 0.3 * w):
             b.box((x - 0.02, 0.28 * d, 0), (x + 0.02, 0.32 * d, 0.12 * h), DARK_METAL)

@@ -435,7 +435,7 @@ def build_golf_simulator(p):
         b.box((x, -d / 2, h - t), (x + t, d / 2, h), p.primary)
     sy = -d / 2 + t
     b.box((-w / 2 + t, sy, 0.55 * h), (w / 2 - t, sy + 0.02, h - t), p.accent)  # sky
-    b.box((-w / 2 + t, sy, 0.05), (w / 2 - t, sy + 0.02, 0.55 * h), tint("#5aa04a", "plant"))  # fairway
+    b.box((-w / 2 + t, sy, 0.05), (w / 2 - t, sy + 0.02, 0.55 * h), tint("#5aa04a", "fabric"))  # fairway
     b.hull([(-0.2 * w, sy + 0.021, 0.3 * h), (0.25 * w, sy + 0.021, 0.3 * h), (-0.05 * w, sy + 0.021, 0.55 * h),
             (0.05 * w, sy + 0.021, 0.55 * h), (-0.2 * w, sy + 0.023, 0.3 * h), (0.25 * w, sy + 0.023, 0.3 * h),
             (-0.05 * w, sy + 0.023, 0.55 * h), (0.05 * w, sy + 0.023, 0.55 * h)], tint("#8ad06a", "paint"))

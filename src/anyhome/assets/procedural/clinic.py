@@ -50,7 +50,7 @@ def build_wheelchair(p):
     tyre = min(0.035, 0.06 * w)
     for s in (-1, 1):
         x = s * (w / 2 - tyre / 2 - 0.035 * w)
-        wheel_x(b, x, wy, R, R, tyre, BLACK, p.primary if p.primary != BLACK else METAL, spokes=p.spokes // 2)
+        wheel_x(b, x, wy, R, R, tyre, tint(BLACK, "rubber"), p.primary if p.primary != BLACK else METAL, spokes=p.spokes // 2)
         ring_x(b, (s * (w / 2 - 0.012 * w), wy, R), 0.85 * R, 0.008, CHROME, sections=24)  # push rim
     seat_z = 0.5 * h
     fx = w / 2 - tyre - 0.1 * w

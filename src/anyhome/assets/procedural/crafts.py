@@ -372,7 +372,7 @@ def _draw_spinning_wheel(b: Builder, L: float, B: float, H: float, p) -> None:
         b.rod((mx - 0.08 * L, s * 0.06, fz + 0.03), (mx + 0.04 * L, s * 0.06, fz + 0.03), 0.006, p.primary,
               sections=5)
     b.rod((cx, 0, cz), (mx - 0.04 * L, 0, fz), 0.002, tint("#e8dcc0", "fabric"), sections=4)  # drive band
-    b.rod((cx, 0, cz - R), (mx - 0.04 * L, 0, fz), 0.002, tint("#e8dcc0", "paint"), sections=4)
+    b.rod((cx, 0, cz - R), (mx - 0.04 * L, 0, fz), 0.002, tint("#e8dcc0", "fabric"), sections=4)
     b.box((-0.3 * L, 0.1 * B, 0.02), (0.1 * L, 0.35 * B, 0.05), p.primary)  # treadle
     b.rod((-0.1 * L, 0.22 * B, 0.05), (cx + 0.1 * R, 0.12 * B, cz - 0.1 * R), 0.008, p.primary, sections=5)
 

@@ -108,7 +108,7 @@ def build_rug(p):
         b.box((-w / 2 + 0.04, -d / 2 + 0.04, top), (w / 2 - 0.04, d / 2 - 0.04, top + eps), lighter(p.primary, 0.08))
     if p.fringe:
         for y in (-d / 2, d / 2 - 0.03):
-            b.box((-w / 2 + 0.02, y, 0), (w / 2 - 0.02, y + 0.03, h * 0.4), tint("#eee8da", "paint"))
+            b.box((-w / 2 + 0.02, y, 0), (w / 2 - 0.02, y + 0.03, h * 0.4), tint("#eee8da", "fabric"))
     return b.mesh(p.size)
 
 
@@ -406,7 +406,7 @@ slot_roles("lamp", {"": "ceramic", METAL: "metal", "#c9a54a": "metal"}, "fabric"
 register("lamp", sample_lamp, build_lamp)
 slot_roles("floor_lamp", "metal", "fabric", "metal")
 register("floor_lamp", sample_floor_lamp, build_floor_lamp)
-slot_roles("rug", "fabric", {"": "fabric", "#c9a54a": "metal"}, "fabric")
+slot_roles("rug", "fabric", "fabric", "fabric")
 register("rug", sample_rug, build_rug)
 slot_roles("plant", "ceramic", "plant", "plant")
 register("plant", sample_plant, build_plant)

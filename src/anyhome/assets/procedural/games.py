@@ -164,11 +164,11 @@ def _draw_pool_table(b: Builder, L: float, B: float, H: float, p) -> None:
               p.primary)
     for x in (-L / 2 + rail * 0.6, 0.0, L / 2 - rail * 0.6):  # pockets
         for sy in (-1, 1):
-            b.cyl(x, sy * (B / 2 - rail * 0.6), top - 0.004, top + 0.002, 0.055, tint("#111111", "metal"), sections=12)
+            b.cyl(x, sy * (B / 2 - rail * 0.6), top - 0.004, top + 0.002, 0.055, tint("#111111", "leather"), sections=12)
     for i in range(6):  # diamonds on the rails
         x = -L / 2 + (i + 1) * L / 7
         for sy in (-1, 1):
-            b.cbox((x, sy * (B / 2 - rail / 2), top), (0.02, 0.02, 0.004), tint("#e8dcc0", "metal"))
+            b.cbox((x, sy * (B / 2 - rail / 2), top), (0.02, 0.02, 0.004), tint("#e8dcc0", "plastic"))
     if p.balls:
         r = 0.028
         x0 = L / 4
@@ -179,10 +179,10 @@ def _draw_pool_table(b: Builder, L: float, B: float, H: float, p) -> None:
                        "#f1c40f", "#2e86c1"][k % 10]
                 b.sphere((x0 + row * 2 * r * 0.87, (j - row / 2) * 2 * r, body + r), r, col, subdivisions=1, role="plastic")
                 k += 1
-        b.sphere((-L / 4, 0.0, body + r), r, tint("#f4f1ea", "paint"), subdivisions=1)
+        b.sphere((-L / 4, 0.0, body + r), r, tint("#f4f1ea", "plastic"), subdivisions=1)
         a = rng.uniform(-0.3, 0.3)
         b.rod((-L / 4 - 0.05, 0, body + 0.03), (-L / 4 - 0.05 - 1.3 * np.cos(a) * 0.6 * L / 1.3, np.sin(a) * 0.3 * B,
-                                                  body + 0.06), 0.012, tint("#c9a06a", "paint"), sections=6)
+                                                  body + 0.06), 0.012, tint("#c9a06a", "wood"), sections=6)
 
 
 def build_pool_table(p):
@@ -223,8 +223,8 @@ def _draw_ping_pong(b: Builder, L: float, B: float, H: float, p) -> None:
         for sx, fy in ((-1, 0.2), (1, -0.25)):
             x = sx * L / 3
             b.cyl(x, fy * B, top, top + 0.012, 0.08, p.accent, sections=16)
-            b.box((x - 0.012, fy * B + 0.07, top), (x + 0.012, fy * B + 0.17, top + 0.02), tint("#c9a06a", "paint"))
-        b.sphere((L / 6, 0.1 * B, top + 0.02), 0.02, tint("#f4f1ea", "paint"), subdivisions=1)
+            b.box((x - 0.012, fy * B + 0.07, top), (x + 0.012, fy * B + 0.17, top + 0.02), tint("#c9a06a", "wood"))
+        b.sphere((L / 6, 0.1 * B, top + 0.02), 0.02, tint("#f4f1ea", "plastic"), subdivisions=1)
 
 
 def build_ping_pong_table(p):

@@ -198,8 +198,8 @@ def build_forklift(p):
     Rf, Rr = 0.16 * h, 0.12 * h
     yf, yr = 0.15 * d, -0.32 * d
     for s in (-1, 1):
-        wheel_x(b, s * (w / 2 - 0.09 * w), yf, Rf, Rf, 0.18 * w, BLACK, METAL)
-        wheel_x(b, s * (w / 2 - 0.1 * w), yr, Rr, Rr, 0.15 * w, BLACK, METAL)
+        wheel_x(b, s * (w / 2 - 0.09 * w), yf, Rf, Rf, 0.18 * w, tint(BLACK, "rubber"), METAL)
+        wheel_x(b, s * (w / 2 - 0.1 * w), yr, Rr, Rr, 0.15 * w, tint(BLACK, "rubber"), METAL)
     b.box((-0.4 * w, -0.38 * d, 0.08 * h), (0.4 * w, 0.22 * d, 0.3 * h), p.primary)  # chassis
     b.box((-0.48 * w, 0.02 * d, 0.2 * h), (0.48 * w, 0.25 * d, 0.26 * h), p.primary)  # fenders
     b.box((-0.48 * w, -0.42 * d, 0.2 * h), (0.48 * w, -0.2 * d, 0.27 * h), p.primary)

@@ -136,8 +136,8 @@ def _draw_marimba(b: Builder, L: float, B: float, H: float, p) -> None:
         b.box((x0, y - 0.01, top - 0.09 * H), (x1, y + 0.01, top - 0.06 * H), p.secondary)
     for s in (-1, 1):  # mallets lying on the bars
         b.rod((0.1 * L * s, 0.3 * B, top - 0.02 * H), (0.1 * L * s + 0.12 * L, 0.4 * B, top - 0.02 * H), 0.006,
-              tint("#c9a06a", "paint"), sections=5)
-        b.sphere((0.1 * L * s, 0.3 * B, top - 0.02 * H), 0.02, tint("#e8dcc0", "paint"), subdivisions=1)
+              tint("#c9a06a", "wood"), sections=5)
+        b.sphere((0.1 * L * s, 0.3 * B, top - 0.02 * H), 0.02, tint("#e8dcc0", "fabric"), subdivisions=1)
 
 
 def build_marimba(p):
@@ -252,9 +252,9 @@ def build_gong(p):
     else:
         disc_y(b, 0, 0.0, 0.004, cz, 0.3 * R, lighter(p.secondary, 0.15), sections=20)
     for s in (-1, 1):
-        b.rod((s * 0.5 * R, -0.015, cz + 0.86 * R), (s * 0.3 * w, 0, h - 0.1 * h), 0.006, tint("#c0392b", "paint"), sections=4)
-    b.rod((0.38 * w, 0.4 * d, 0.05 * h), (0.36 * w, 0.1 * d, 0.55 * h), 0.012, tint("#c9a06a", "paint"), sections=6)  # mallet
-    b.sphere((0.36 * w, 0.1 * d, 0.55 * h), (0.06 * w, 0.06 * w, 0.05 * h), tint("#e8dcc0", "paint"), subdivisions=1)
+        b.rod((s * 0.5 * R, -0.015, cz + 0.86 * R), (s * 0.3 * w, 0, h - 0.1 * h), 0.006, tint("#c0392b", "fabric"), sections=4)
+    b.rod((0.38 * w, 0.4 * d, 0.05 * h), (0.36 * w, 0.1 * d, 0.55 * h), 0.012, tint("#c9a06a", "wood"), sections=6)  # mallet
+    b.sphere((0.36 * w, 0.1 * d, 0.55 * h), (0.06 * w, 0.06 * w, 0.05 * h), tint("#e8dcc0", "fabric"), subdivisions=1)
     return b.mesh(p.size)
 
 

@@ -38,6 +38,7 @@ def _base_cabinet(b: Builder, p, w, d, h, top_t=0.04) -> None:
     body = p.primary
     n = max(1, min(6, int(round(w / 0.6))))
     sec = replace(p, secondary=body)
+    object.__setattr__(sec, "secondary", body)  # the fronts are the body's material, not the worktop's
     case(b, w, d - 0.02, h - top_t, sec, [("doors", n), ("drawers", n)], "plinth", 0.1)
     b.box((-w / 2, -d / 2, h - top_t), (w / 2, d / 2, h), p.secondary)
 
@@ -95,6 +96,7 @@ def build_vanity(p):
     t = 0.04
     n = max(1, min(4, int(round(w / 0.5))))
     q = replace(p, secondary=p.primary, knobs=(("legs", "tapered" if p.on_legs else "straight"),))
+    object.__setattr__(q, "secondary", p.primary)  # the fronts are the body's material, not the top's
     case(b, w, d - 0.02, h - t, q, [("doors", n), ("drawers", 1)], "legs" if p.on_legs else "plinth",
          0.18 * h if p.on_legs else 0.08)
     b.box((-w / 2, -d / 2, h - t), (w / 2, d / 2, h), PORCELAIN if p.secondary in WORKTOPS[:1] else p.secondary)
@@ -244,7 +246,7 @@ def build_toilet(p):
     b.cyl(0, by - 0.03, 0, seat * 0.6, w * 0.22, p.primary, r_top=w * 0.3, ry=(d - tank_d) * 0.3)
     b.cyl(0, by, seat * 0.55, seat - 0.03, w * 0.33, p.primary, r_top=w * 0.48, ry=(d - tank_d) * 0.44, sections=24)
     b.cyl(0, by, seat - 0.03, seat, w * 0.48, p.secondary, ry=(d - tank_d) * 0.48, sections=24)
-    b.cyl(0, by, seat, seat + 0.003, w * 0.32, tint("#9fb4c0", "paint"), ry=(d - tank_d) * 0.3, sections=20)
+    b.cyl(0, by, seat, seat + 0.003, w * 0.32, tint("#9fb4c0", "glass"), ry=(d - tank_d) * 0.3, sections=20)
     if p.lid_open:
         b.box((-w * 0.42, -d / 2 + tank_d + 0.01, seat), (w * 0.42, -d / 2 + tank_d + 0.03, seat + 0.4),
               p.secondary)
@@ -306,9 +308,9 @@ def build_shower(p):
 
 slot_roles("counter", "wood", "stone", "metal")
 register("counter", sample_counter, build_counter)
-slot_roles("sink", "ceramic", "metal", "metal")
+slot_roles("sink", "wood", "stone", "metal")
 register("sink", sample_sink, build_sink)
-slot_roles("vanity", "wood", "ceramic", "metal")
+slot_roles("vanity", "wood", "stone", "metal")
 register("vanity", sample_vanity, build_vanity)
 slot_roles("refrigerator", "metal", "metal", "metal")
 register("refrigerator", sample_refrigerator, build_refrigerator)

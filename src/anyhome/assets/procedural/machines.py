@@ -87,7 +87,7 @@ def _draw_lathe(b: Builder, L: float, B: float, H: float, p) -> None:
                DARK_METAL)
     tx0 = L / 2 - 0.2 * L
     work_r = 0.045 * H if p.work == "wood" else 0.03 * H
-    disc_x(b, hx1 + 0.04 * L, tx0 - 0.03 * L, 0, zc, work_r, tint("#c9a06a", "metal") if p.work == "wood" else CHROME,
+    disc_x(b, hx1 + 0.04 * L, tx0 - 0.03 * L, 0, zc, work_r, tint("#c9a06a", "wood") if p.work == "wood" else CHROME,
            sections=14)
     b.box((tx0, -0.18 * B, bed_z), (tx0 + 0.09 * L, 0.15 * B, zc + 0.05 * H), p.primary)  # tailstock
     disc_x(b, tx0 - 0.03 * L, tx0, 0, zc, 0.025 * H, p.secondary, sections=10)

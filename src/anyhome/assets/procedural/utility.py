@@ -542,7 +542,7 @@ def build_wall_sconce(p):
     R = 0.45 * min(w, d)
     if p.kind == "torch":
         b.rod((0, -d / 2 + bp, 0.3 * h), (0, cy, 0.42 * h), 0.025 * w + 0.004, p.primary, sections=6)
-        b.cyl(0, cy, 0.05 * h, 0.62 * h, 0.07 * w, tint("#6b4330", "paint"), r_top=0.11 * w, sections=8)  # the torch
+        b.cyl(0, cy, 0.05 * h, 0.62 * h, 0.07 * w, tint("#6b4330", "wood"), r_top=0.11 * w, sections=8)  # the torch
         b.cyl(0, cy, 0.45 * h, 0.62 * h, 0.2 * w, p.primary, r_top=0.26 * w, sections=8)  # iron cup
         b.cyl(0, cy, 0.6 * h, h, 0.22 * w, tint("#e8602a", "light"), r_top=0.0, sections=10)  # flame
         b.cyl(0, cy + 0.02 * d, 0.6 * h, 0.88 * h, 0.15 * w, FLAME, r_top=0.0, sections=10)

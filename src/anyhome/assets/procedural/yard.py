@@ -256,7 +256,7 @@ def build_chicken_coop(p):
             (dx + 0.1, d / 2 - 0.01, fz - 0.02), (dx - 0.1, d / 2 + 0.0, 0.0), (dx + 0.1, d / 2, 0.0),
             (dx - 0.1, d / 2 - 0.02, 0.0), (dx + 0.1, d / 2 - 0.02, 0.0)], p.secondary)  # ramp
     b.box((hx0 + 0.1 * w, -d / 2, fz + 0.1 * h), (hx1 - 0.1 * w, -d / 2 + 0.02, eave - 0.1 * h), darker(p.primary, 0.1))
-    b.box((hx0 + 0.05 * w, d / 2 - 0.02, eave - 0.12 * h), (hx0 + 0.12 * w, d / 2, eave - 0.05 * h), tint("#9ac4e0", "paint"))
+    b.box((hx0 + 0.05 * w, d / 2 - 0.02, eave - 0.12 * h), (hx0 + 0.12 * w, d / 2, eave - 0.05 * h), tint("#9ac4e0", "glass"))
     ridge = h
     extrude_x(b, [(-d / 2 + 0.02, eave), (d / 2 - 0.02, eave), (0.0, ridge - 0.03 * h)], hx0, hx1, p.primary)
     for s in (-1, 1):
@@ -282,12 +282,12 @@ def build_chicken_coop(p):
         cx = rx0 + (k + 0.6) * (rx1 - rx0) / (p.hens + 0.5)
         cy = rng.uniform(-0.2, 0.2) * d
         col = ["#f4f1ea", "#a0643c", "#2b2b2b"][int(rng.integers(3))]
-        b.sphere((cx, cy, 0.12), (0.14, 0.09, 0.1), col, subdivisions=1, role="fabric")
-        b.sphere((cx + 0.12, cy, 0.24), 0.055, col, subdivisions=1, role="fabric")
+        b.sphere((cx, cy, 0.12), (0.14, 0.09, 0.1), col, subdivisions=1, role="paint")
+        b.sphere((cx + 0.12, cy, 0.24), 0.055, col, subdivisions=1, role="paint")
         b.sphere((cx + 0.12, cy, 0.3), (0.03, 0.01, 0.025), tint("#d63a2a", "paint"), subdivisions=0)
         b.cyl(cx + 0.18, cy, 0.23, 0.245, 0.02, tint("#e0b030", "paint"), r_top=0.0, sections=6, transform=about(rot_y(1.4),
                                                                                                   (cx + 0.18, cy, 0.24)))
-        b.box((cx - 0.2, cy - 0.04, 0.14), (cx - 0.1, cy + 0.04, 0.24), col, role="fabric")  # tail
+        b.box((cx - 0.2, cy - 0.04, 0.14), (cx - 0.1, cy + 0.04, 0.24), col, role="paint")  # tail
     return b.mesh(p.size)
 
 
@@ -307,7 +307,7 @@ def build_lawn_mower(p):
         R = 0.2 * h
         for y, r in ((-0.3 * d, R), (0.32 * d, 0.7 * R)):
             for s in (-1, 1):
-                wheel_x(b, s * (w / 2 - 0.06 * w), y, r, r, 0.12 * w, BLACK, tint("#e0b030", "paint"))
+                wheel_x(b, s * (w / 2 - 0.06 * w), y, r, r, 0.12 * w, tint(BLACK, "rubber"), tint("#e0b030", "paint"))
         b.box((-0.38 * w, -0.45 * d, 0.15 * h), (0.38 * w, 0.45 * d, 0.35 * h), p.primary)
         b.box((-0.45 * w, -0.05 * d, 0.05 * h), (0.45 * w, 0.3 * d, 0.15 * h), DARK_METAL)  # deck
         b.hull([(-0.35 * w, 0.05 * d, 0.35 * h), (0.35 * w, 0.05 * d, 0.35 * h), (-0.35 * w, 0.48 * d, 0.35 * h),
@@ -322,7 +322,7 @@ def build_lawn_mower(p):
     R = 0.12 * h
     for y in (deck_y0 + 0.05 * d, deck_y1 - 0.05 * d):
         for s in (-1, 1):
-            wheel_x(b, s * (w / 2 - 0.04 * w), y, R, R, 0.08 * w, BLACK, METAL)
+            wheel_x(b, s * (w / 2 - 0.04 * w), y, R, R, 0.08 * w, tint(BLACK, "rubber"), METAL)
     b.hull([(-0.44 * w, deck_y0, 0.06 * h), (0.44 * w, deck_y0, 0.06 * h), (-0.44 * w, deck_y1 - 0.02, 0.06 * h),
             (0.44 * w, deck_y1 - 0.02, 0.06 * h), (-0.4 * w, deck_y0 + 0.02, 0.24 * h), (0.4 * w, deck_y0 + 0.02, 0.24 * h),
             (-0.4 * w, deck_y1 - 0.06, 0.22 * h), (0.4 * w, deck_y1 - 0.06, 0.22 * h)], p.primary)  # deck
@@ -359,7 +359,7 @@ def build_wheelbarrow(p):
     b = Builder()
     R = 0.28 * h
     wy = d / 2 - R
-    wheel_x(b, 0, wy, R, R, 0.1 * w, BLACK, METAL, spokes=0)
+    wheel_x(b, 0, wy, R, R, 0.1 * w, tint(BLACK, "rubber"), METAL, spokes=0)
     tz0, tz1 = 0.35 * h, h
     pts = [(-0.2 * w, -0.05 * d, tz0), (0.2 * w, -0.05 * d, tz0), (-0.2 * w, 0.25 * d, tz0), (0.2 * w, 0.25 * d, tz0),
            (-w / 2, -0.28 * d, tz1), (w / 2, -0.28 * d, tz1), (-0.35 * w, 0.42 * d, tz1), (0.35 * w, 0.42 * d, tz1)]
