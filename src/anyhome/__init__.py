@@ -29,11 +29,12 @@ def generate_from_spec(spec: Any, seed: int = 0, stages: Stages | None = None, *
     return _generate_from_spec(spec, seed=seed, stages=stages, **options)
 
 
-def relayout(house: House, rooms: Any = None, seed: int = 0, stages: Stages | None = None) -> House:
-    """Lay out some rooms of a house again, keeping the others. See ``anyhome.pipeline.relayout``."""
+def relayout(house: House, rooms: Any = None, seed: int = 0, stages: Stages | None = None, **options: Any) -> House:
+    """Lay out some rooms of a house again, keeping the others. See ``anyhome.pipeline.relayout``
+    (``knowledge=kb``: the run's knowledge base)."""
     from anyhome.pipeline import relayout as _relayout
 
-    return _relayout(house, rooms=rooms, seed=seed, stages=stages)
+    return _relayout(house, rooms=rooms, seed=seed, stages=stages, **options)
 
 
 def __getattr__(name: str) -> Any:

@@ -10,8 +10,12 @@ import sys
 import time
 from collections import Counter
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from shapely.geometry import Polygon
+
+if TYPE_CHECKING:
+    from anyhome.plan.kb import KnowledgeBase
 
 from anyhome import __version__
 from anyhome.errors import AnyHomeError
@@ -92,11 +96,11 @@ def cmd_generate(args: argparse.Namespace) -> int:
     from anyhome.plan.knowledge import knowledge_base, use_knowledge
 
     use_knowledge(args.knowledge)
-    knowledge_base()  # a bad knowledge file (shipped or the user's) is one line, before any work
-    planner = _planner(args)
+    kb = knowledge_base()  # a bad knowledge file (shipped or the user's) is one line, before any work
+    planner = _planner(args, kb)
     t0 = time.perf_counter()
     progress = _StageProgress(not args.quiet)
-    house = generate(args.text, seed=args.seed, planner=planner, progress=progress)
+    house = generate(args.text, seed=args.seed, planner=planner, progress=progress, knowledge=kb)
     timings = dict(house.timings_s)
     extra = (lambda folder: _render(house, folder, args)) if args.render else None
     files = write_outputs(house, out, glb=not args.no_glb, svg=not args.no_svg, timings=timings,
@@ -117,12 +121,13 @@ def cmd_generate(args: argparse.Namespace) -> int:
     return 0
 
 
-def _planner(args: argparse.Namespace):
-    """The planner object of ``generate``; the LLM one from options, env and config file."""
+def _planner(args: argparse.Namespace, kb: KnowledgeBase):
+    """The planner object of ``generate`` reading ``kb``; the LLM one from options, env
+    and config file."""
     from anyhome.plan import get_planner
 
     if args.planner != "llm":
-        return get_planner(args.planner)  # an unknown name raises the one-line error
+        return get_planner(args.planner, kb)  # an unknown name raises the one-line error
     from anyhome.floorplan import floorplan_errors
     from anyhome.plan.llm import LLMPlanner, load_config
 
@@ -131,7 +136,7 @@ def _planner(args: argparse.Namespace):
         "top_p": args.llm_top_p, "max_tokens": args.llm_max_tokens, "timeout_s": args.llm_timeout,
         "concurrency": args.llm_concurrency, **({"cache": False} if args.no_cache else {}),
     }  # fmt: skip
-    return LLMPlanner(load_config(options, config_file=args.config), floorplan_check=floorplan_errors)
+    return LLMPlanner(load_config(options, config_file=args.config), floorplan_check=floorplan_errors, kb=kb)
 
 
 def _llm_usage(planner, house) -> dict:

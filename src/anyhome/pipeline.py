@@ -26,6 +26,7 @@ from anyhome.sanitize import clean_text, is_safe_id
 
 if TYPE_CHECKING:
     from anyhome.plan import HouseSpec, Planner
+    from anyhome.plan.kb import KnowledgeBase
     from anyhome.stages import Stages
 
 log = logging.getLogger(__name__)
@@ -75,6 +76,7 @@ def generate(
     planner: str | Planner = "offline",
     progress: Progress | None = None,
     stages: Stages | None = None,
+    knowledge: KnowledgeBase | None = None,
 ) -> House:
     """Generate a house from text: the plan stage, then :func:`generate_from_spec`.
 
@@ -86,6 +88,9 @@ def generate(
         the config file, see anyhome.plan.llm.config), or a Planner instance
     progress : optional callback, see :data:`Progress`
     stages : the stage functions (:class:`anyhome.stages.Stages`); None: the defaults
+    knowledge : the run's knowledge base (:class:`anyhome.plan.kb.KnowledgeBase`), passed
+        to the planner (a planner named by a string) and the assets stage; None: the one
+        in force (shipped files, ``$ANYHOME_KNOWLEDGE_PATH``, ``--knowledge``), loaded once
 
     Returns
     -------
@@ -98,11 +103,12 @@ def generate(
     check_text(text)
     seed = _check_seed(seed)
     stages = stages or Stages()
-    planner = get_planner(planner) if isinstance(planner, str) else planner
+    kb = _knowledge(knowledge)
+    planner = get_planner(planner, kb) if isinstance(planner, str) else planner
     timings: dict[str, float] = {}
     with _stage("plan", timings, progress):
         spec = stages.plan(text, stage_rngs(seed)["plan"], planner)
-    house = generate_from_spec(spec, seed, stages, planner=planner.name, progress=progress)
+    house = generate_from_spec(spec, seed, stages, planner=planner.name, progress=progress, knowledge=kb)
     later = dict(house._timings_s)
     house._timings_s.clear()
     house._timings_s.update({**timings, **later})
@@ -116,6 +122,7 @@ def generate_from_spec(
     *,
     planner: str | None = None,
     progress: Progress | None = None,
+    knowledge: KnowledgeBase | None = None,
 ) -> House:
     """Run every stage after planning (floorplan, layout, refine, assets) on ``spec``.
 
@@ -132,6 +139,7 @@ def generate_from_spec(
     planner : the name recorded as the house's planner; None: the spec's provenance
         ``planner`` if it has one, else "offline"
     progress : optional callback, see :data:`Progress`
+    knowledge : the knowledge base the assets stage reads; None: the one in force
     """
     from anyhome.plan import HouseSpec
     from anyhome.stages import Stages, stage_rngs
@@ -141,6 +149,7 @@ def generate_from_spec(
     if not isinstance(spec, HouseSpec):
         spec = _spec_from_json(spec, "the spec")
     stages = stages or Stages()
+    kb = _knowledge(knowledge)
     rngs = stage_rngs(seed)
     timings: dict[str, float] = {}
     with _stage("floorplan", timings, progress):
@@ -150,7 +159,7 @@ def generate_from_spec(
     with _stage("refine", timings, progress):
         objects = stages.refine(floorplan, result.objects, rngs["refine"])
     with _stage("assets", timings, progress):
-        objects = stages.assets(objects, rngs["assets"], spec)
+        objects = stages.assets(objects, rngs["assets"], spec, kb)
     if planner is None:
         named = (spec.provenance or {}).get("planner")
         planner = named if isinstance(named, str) else "offline"
@@ -176,6 +185,20 @@ def generate_from_spec(
     return house
 
 
+def _knowledge(knowledge: object) -> KnowledgeBase:
+    """The run's knowledge base: the caller's, else the one in force (loaded and
+    validated once per overlay)."""
+    from anyhome.plan.kb import KnowledgeBase
+    from anyhome.plan.knowledge import knowledge_base
+
+    if knowledge is None:
+        return knowledge_base()
+    if not isinstance(knowledge, KnowledgeBase):
+        raise AnyHomeError(f"knowledge must be a KnowledgeBase (anyhome.plan.knowledge.knowledge_base()), "
+                           f"got {type(knowledge).__name__}")
+    return knowledge
+
+
 def _spec_from_json(data: object, what: str) -> HouseSpec:
     from pydantic import ValidationError
 
@@ -196,6 +219,7 @@ def relayout(
     rooms: Iterable[str] | str | None = None,
     seed: int = 0,
     stages: Stages | None = None,
+    knowledge: KnowledgeBase | None = None,
 ) -> House:
     """Lay out, refine and furnish the named rooms of ``house`` again.
 
@@ -210,6 +234,7 @@ def relayout(
     seed : seeds the layout, refine and asset stages (as ``generate`` with that seed:
         relayout of every room with the house's own seed gives the house back)
     stages : the stage functions (layout, refine, assets are used); None: the defaults
+    knowledge : the knowledge base the assets stage reads; None: the one in force
 
     Returns
     -------
@@ -224,6 +249,7 @@ def relayout(
 
     seed = _check_seed(seed)
     stages = stages or Stages()
+    kb = _knowledge(knowledge)
     chosen = _chosen_rooms(house, rooms)
     if house.plan is None:
         raise AnyHomeError("this house holds no plan (house.json has no 'plan'), so its rooms cannot be "
@@ -246,7 +272,7 @@ def relayout(
         refined = stages.refine(floorplan, [o.model_copy(deep=True) for o in kept] + new, rngs["refine"])
     new = _unique_ids([o for o in refined if o.room in chosen], {o.id for o in kept})
     with _stage("assets", timings, _quiet):
-        new = stages.assets(new, rngs["assets"], spec)
+        new = stages.assets(new, rngs["assets"], spec, kb)
     rank = {rid: i for i, rid in enumerate([rs.id for rs in spec.rooms] + [r.id for r in house.rooms])}
 
     def order(items: list) -> list:  # grouped by room in plan order, stable inside a room

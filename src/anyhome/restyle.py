@@ -10,25 +10,27 @@ they were.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from anyhome.errors import AnyHomeError
 from anyhome.house import House
 
+if TYPE_CHECKING:
+    from anyhome.plan.kb import KnowledgeBase
+
 RESTYLE_STREAM = 7
 """Child stream of the house seed the new material words draw from; assets draw from
 the pipeline's own assets stream, so restyling a house twice gives the same house."""
 
 
-def _keys(style: str | Sequence[str]) -> list[str]:
+def _keys(style: str | Sequence[str], kb: KnowledgeBase) -> list[str]:
     from anyhome.plan.appearance import style_keys
-    from anyhome.plan.knowledge import load
 
-    known = load("styles")["styles"]
+    known = kb.raw("styles")["styles"]
     if isinstance(style, str):
-        keys = style_keys(style, open_vocab=True) if style.strip() else []
+        keys = style_keys(style, open_vocab=True, kb=kb) if style.strip() else []
     else:
         keys = [str(k).strip().lower().replace(" ", "_").replace("-", "_") for k in style]
         if any(k not in known for k in keys):
@@ -39,30 +41,32 @@ def _keys(style: str | Sequence[str]) -> list[str]:
     return list(dict.fromkeys(keys))
 
 
-def restyle(house: House, style: str | Sequence[str]) -> House:
+def restyle(house: House, style: str | Sequence[str], knowledge: KnowledgeBase | None = None) -> House:
     """A copy of ``house`` in another style.
 
     ``style`` is a style key of plan/knowledge/styles.yaml ("gothic"), a list of keys
     (the first leads), or free text the planner understands ("a dark gothic look",
     "craftsman"). Room materials, object materials and asset records are derived
     again; the palette and the style fields follow. An unknown style raises
-    :class:`AnyHomeError`.
+    :class:`AnyHomeError`. ``knowledge``: the knowledge base the styles come from
+    (None: the one in force).
     """
     from anyhome.assets import assign_asset
-    from anyhome.pipeline import STAGES
+    from anyhome.pipeline import STAGES, _knowledge
     from anyhome.plan.appearance import item_material, look_for, room_materials
 
-    keys = _keys(style)
-    look = look_for(keys)
+    kb = _knowledge(knowledge)
+    keys = _keys(style, kb)
+    look = look_for(keys, kb=kb)
     streams = np.random.SeedSequence(int(house.seed)).spawn(len(STAGES))
     asset_rng = np.random.default_rng(streams[STAGES.index("assets")])
     material_rng = np.random.default_rng([int(house.seed), RESTYLE_STREAM])
-    rooms = [r.model_copy(update={"style": look.describe, "materials": {**r.materials, **room_materials(look, r.type)}})
+    rooms = [r.model_copy(update={"style": look.describe, "materials": {**r.materials, **room_materials(look, r.type, kb)}})
              for r in house.rooms]
     objects = []
     for obj in house.objects:
-        new = obj.model_copy(update={"material": item_material(obj.category, look, look.furniture, material_rng)})
-        new.asset = assign_asset(new, asset_rng, keys)
+        new = obj.model_copy(update={"material": item_material(obj.category, look, look.furniture, material_rng, kb)})
+        new.asset = assign_asset(new, asset_rng, keys, kb)
         objects.append(new)
     data = house.model_dump()
     data.update(style=look.describe, styles=keys, palette=look.palette,

@@ -29,10 +29,12 @@ from anyhome.house import Floorplan, HouseObject
 from anyhome.layout import LayoutResult, layout_house
 from anyhome.pipeline import STAGES
 from anyhome.plan import HouseSpec, Planner
+from anyhome.plan.kb import KnowledgeBase
 from anyhome.refine import refine_objects
 
 PlanStage = Callable[[str, np.random.Generator, Planner], HouseSpec]
-"""plan(text, rng, planner) -> HouseSpec."""
+"""plan(text, rng, planner) -> HouseSpec. The planner holds the run's knowledge base
+(``get_planner(name, kb)``, ``OfflinePlanner(kb)``)."""
 FloorplanStage = Callable[[HouseSpec, np.random.Generator], Floorplan]
 """floorplan(spec, rng) -> Floorplan (rooms, doors, windows)."""
 LayoutStage = Callable[[HouseSpec, Floorplan, np.random.Generator], LayoutResult]
@@ -41,8 +43,9 @@ those: relayout passes a spec holding just the rooms it lays out again) and what
 dropped."""
 RefineStage = Callable[[Floorplan, list[HouseObject], np.random.Generator], list[HouseObject]]
 """refine(floorplan, objects, rng) -> the refined objects (the input is not modified)."""
-AssetsStage = Callable[[list[HouseObject], np.random.Generator, HouseSpec], list[HouseObject]]
-"""assets(objects, rng, spec) -> the objects with their asset records."""
+AssetsStage = Callable[[list[HouseObject], np.random.Generator, HouseSpec, KnowledgeBase], list[HouseObject]]
+"""assets(objects, rng, spec, kb) -> the objects with their asset records; ``kb`` is the
+run's knowledge base (its styles' asset classes shape the assets)."""
 
 
 def plan_text(text: str, rng: np.random.Generator, planner: Planner) -> HouseSpec:
@@ -50,10 +53,11 @@ def plan_text(text: str, rng: np.random.Generator, planner: Planner) -> HouseSpe
     return planner.plan(text, rng)
 
 
-def assign_assets(objects: list[HouseObject], rng: np.random.Generator, spec: HouseSpec) -> list[HouseObject]:
+def assign_assets(objects: list[HouseObject], rng: np.random.Generator, spec: HouseSpec,
+                  kb: KnowledgeBase) -> list[HouseObject]:
     """The default assets stage: an asset record per object, drawn in order from ``rng``."""
     for obj in objects:
-        obj.asset = assign_asset(obj, rng, spec.styles_for(obj.room))
+        obj.asset = assign_asset(obj, rng, spec.styles_for(obj.room), kb)
     return objects
 
 

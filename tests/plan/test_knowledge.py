@@ -5,7 +5,7 @@ import pytest
 
 from anyhome.house import ROOM_TYPES
 from anyhome.plan import furnish
-from anyhome.plan.knowledge import KNOWLEDGE_FILES, load, vocabulary
+from anyhome.plan.knowledge import KNOWLEDGE_FILES, knowledge_base, load, vocabulary
 from anyhome.plan.spec import RULES, GroupSpec, ItemSpec
 
 OBJECTS = load("objects")
@@ -51,7 +51,7 @@ def test_sets_build_valid_specs(key):
         for name in entry.get("one_of", [entry.get("group")]):
             assert name in GROUPS, name
     for _ in range(3):
-        groups, ornaments, _ = furnish.furnish_room(key, "other", 20.0, rng)
+        groups, ornaments, _ = furnish.furnish_room(knowledge_base(), key, "other", 20.0, rng)
         for g in groups:
             g = dict(g)
             GroupSpec(**{**g, "anchor": ItemSpec(**g["anchor"]), "members": [ItemSpec(**m) for m in g["members"]]})

@@ -6,7 +6,7 @@ import pytest
 from pydantic import ValidationError
 
 from anyhome.plan.appearance import look_for, room_materials, style_keys
-from anyhome.plan.knowledge import load
+from anyhome.plan.knowledge import knowledge_base, load
 from anyhome.plan.offline import OfflinePlanner
 from anyhome.plan.spec import HouseSpec, RoomSpec
 
@@ -58,7 +58,7 @@ def test_look_for_matches_the_planner() -> None:
     from anyhome.plan.appearance import choose_look
     from anyhome.plan.parse import parse
 
-    look = choose_look(parse("a cottage"), [], "home", np.random.default_rng(0))
+    look = choose_look(knowledge_base(), parse("a cottage"), [], "home", np.random.default_rng(0))
     same = look_for(look.styles)
     assert (same.describe, same.palette, same.floor, same.walls, same.furniture) == \
         (look.describe, look.palette, look.floor, look.walls, look.furniture)

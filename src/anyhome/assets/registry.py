@@ -13,7 +13,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
 from functools import lru_cache
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 import trimesh
@@ -22,6 +22,9 @@ from anyhome.assets.colors import material_color
 from anyhome.assets.procedural._parts import Params, Size
 from anyhome.assets.styles import class_name
 from anyhome.house import HouseObject
+
+if TYPE_CHECKING:
+    from anyhome.plan.kb import KnowledgeBase
 
 SYNONYMS_FILE = Path(__file__).with_name("synonyms.yaml")
 SIZES_FILE = Path(__file__).with_name("typical_sizes.yaml")
@@ -150,7 +153,8 @@ def object_rng(obj: HouseObject) -> np.random.Generator:
     return np.random.default_rng(zlib.crc32(obj.id.encode("utf-8")))
 
 
-def assign_asset(obj: HouseObject, rng: np.random.Generator, style: str | Sequence[str] = "") -> dict[str, Any]:
+def assign_asset(obj: HouseObject, rng: np.random.Generator, style: str | Sequence[str] = "",
+                 kb: KnowledgeBase | None = None) -> dict[str, Any]:
     """Choose and parametrise the procedural asset for an object.
 
     ``style`` is the house's (or room's) style keys of plan/knowledge/styles.yaml, the
@@ -162,7 +166,7 @@ def assign_asset(obj: HouseObject, rng: np.random.Generator, style: str | Sequen
     """
     name = family_for(obj.category, obj.name)
     fam = get(name)
-    params = fam.sample(rng, obj.size, class_name(style))
+    params = fam.sample(rng, obj.size, class_name(style, kb))
     color = material_color(obj.material) or material_color(obj.description)
     if color:
         params = replace(params, primary=color)

@@ -13,9 +13,12 @@ import re
 from collections.abc import Sequence
 from dataclasses import dataclass
 from functools import lru_cache
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from anyhome.errors import PlanError
+
+if TYPE_CHECKING:
+    from anyhome.plan.kb import KnowledgeBase
 
 DEFAULT_CLASS = "plain"
 """The class of no style: random leg shapes, every wood tone."""
@@ -65,11 +68,9 @@ def _parse_class(name: str, entry: Any) -> StyleClass:
                       _colours(f"{where}.fabrics", entry.get("fabrics")))
 
 
-@lru_cache(maxsize=None)
-def _tables() -> tuple[dict[str, StyleClass], dict[str, str]]:
-    from anyhome.plan.knowledge import load
-
-    data = load("styles")
+@lru_cache(maxsize=8)
+def _tables(kb: KnowledgeBase) -> tuple[dict[str, StyleClass], dict[str, str]]:
+    data = kb.raw("styles")
     raw = data.get("asset_classes")
     if not isinstance(raw, dict) or DEFAULT_CLASS not in raw:
         raise _bad("asset_classes", f"must be a mapping that holds the {DEFAULT_CLASS!r} class")
@@ -87,15 +88,15 @@ def _tables() -> tuple[dict[str, StyleClass], dict[str, str]]:
     return classes, of_style
 
 
-def asset_classes() -> dict[str, StyleClass]:
-    """Every asset style class by name."""
-    return dict(_tables()[0])
+def asset_classes(kb: KnowledgeBase | None = None) -> dict[str, StyleClass]:
+    """Every asset style class by name (of ``kb``; None: the knowledge base in force)."""
+    return dict(_tables(_kb(kb))[0])
 
 
-def class_name(style: str | Sequence[str]) -> str:
+def class_name(style: str | Sequence[str], kb: KnowledgeBase | None = None) -> str:
     """The asset class name of a style key, an asset class name, or a list of style keys
     (the first one known leads); :data:`DEFAULT_CLASS` when none is known."""
-    classes, of_style = _tables()
+    classes, of_style = _tables(_kb(kb))
     for key in [style] if isinstance(style, str) else style:
         k = str(key).strip().lower().replace(" ", "_").replace("-", "_")
         if k in of_style:
@@ -105,6 +106,15 @@ def class_name(style: str | Sequence[str]) -> str:
     return DEFAULT_CLASS
 
 
-def style_class(style: str | Sequence[str]) -> StyleClass:
+def style_class(style: str | Sequence[str], kb: KnowledgeBase | None = None) -> StyleClass:
     """The :class:`StyleClass` of a style (see :func:`class_name`)."""
-    return _tables()[0][class_name(style)]
+    kb = _kb(kb)
+    return _tables(kb)[0][class_name(style, kb)]
+
+
+def _kb(kb: KnowledgeBase | None) -> KnowledgeBase:
+    """``kb``, else the knowledge base in force: the asset factories look a style class
+    up by its name (``Params.style``) without a knowledge base."""
+    from anyhome.plan.kbview import default
+
+    return kb if kb is not None else default()

@@ -13,15 +13,9 @@ import math
 
 import numpy as np
 
+from anyhome.floorplan.options import FloorplanOptions
 from anyhome.floorplan.slicing import Cut, Rect, tree_rects
 from anyhome.floorplan.tune import TuneRooms, layout_cost
-
-ANNEAL_STEPS_PER_ROOM = 150
-"""Annealing moves per room of the program."""
-T_START = 4.0
-"""Initial temperature (cost units)."""
-T_END = 0.05
-"""Final temperature."""
 
 Token = int | str
 
@@ -64,18 +58,21 @@ def _place_cuts(tree: Cut | int, rect: Rect, fractions: dict[int, float]) -> Non
     _place_cuts(tree.high, high, fractions)
 
 
-def anneal(tree: Cut | int, rect: Rect, rooms: TuneRooms, rng: np.random.Generator) -> Cut | int:
-    """Best tree found by annealing from ``tree``."""
+def anneal(tree: Cut | int, rect: Rect, rooms: TuneRooms, rng: np.random.Generator,
+           options: FloorplanOptions | None = None) -> Cut | int:
+    """Best tree found by annealing from ``tree`` (schedule: ``options``)."""
+    opts = options or FloorplanOptions()
     expr = to_postfix(tree)
     if len(expr) < 3:
         return tree
     cost = _cost(expr, rect, rooms)
     best, best_cost = list(expr), cost
-    steps = ANNEAL_STEPS_PER_ROOM * (len(expr) + 1) // 2
+    steps = opts.anneal_steps_per_room * (len(expr) + 1) // 2
     for step in range(steps):
         if best_cost < 1e-9:
             break
-        temp = T_START * (T_END / T_START) ** (step / steps)
+        t0, t1 = opts.anneal_start_temperature, opts.anneal_end_temperature
+        temp = t0 * (t1 / t0) ** (step / steps)
         cand = _move(expr, rng)
         if cand is None:
             continue

@@ -23,6 +23,7 @@ from anyhome.errors import FloorplanError
 from anyhome.floorplan.anneal import anneal
 from anyhome.floorplan.doors import PlacedDoor, door_kind, place_door
 from anyhome.floorplan.grid import FREE, OUTSIDE, Grid, make_footprint, min_side_cells
+from anyhome.floorplan.options import FloorplanOptions
 from anyhome.floorplan.program import CORRIDOR_TYPES, Program
 from anyhome.floorplan.seeds import seed_positions
 from anyhome.floorplan.slicing import SliceRooms, slice_footprint, tree_rects
@@ -43,22 +44,6 @@ from anyhome.plan.spec import HouseSpec
 
 log = logging.getLogger(__name__)
 
-MAX_ATTEMPTS = 40
-"""Attempts before giving up with a FloorplanError."""
-SLICING_MAX_ROOMS = 6
-"""Programs up to this size try the slicing search first; larger ones go to the spine."""
-SLICING_ATTEMPTS = 10
-"""Slicing attempts before falling back to the constructive spine layout."""
-WANTED_CANDIDATES = 3
-"""Valid layouts to collect before keeping the best one."""
-AREA_TOLERANCE = 0.25
-"""Allowed relative deviation of a room's area from its target."""
-MAX_ROOM_ASPECT = 2.5
-"""Longest/shortest bounding-box side of a room (hallways excepted)."""
-MAX_NARROW_SHARE = 0.08
-"""Share of a room's floor allowed in arms narrower than its minimum side."""
-
-
 @dataclass(frozen=True)
 class Layout:
     """One valid attempt."""
@@ -70,36 +55,38 @@ class Layout:
     score: float
 
 
-def solve_floorplan(spec: HouseSpec, rng: np.random.Generator) -> Floorplan:
+def solve_floorplan(spec: HouseSpec, rng: np.random.Generator, options: FloorplanOptions | None = None) -> Floorplan:
     """Lay out ``spec``'s rooms, doors and windows.
 
     Parameters
     ----------
     spec : the planned house
     rng : the only source of randomness; the same seed gives the same floorplan
+    options : the solver's tunable numbers; None: ``FloorplanOptions()``
 
     Raises
     ------
     FloorplanError
-        if no attempt within :data:`MAX_ATTEMPTS` satisfies the hard constraints.
+        if no attempt within ``options.max_attempts`` satisfies the hard constraints.
     """
+    opts = options or FloorplanOptions()
     prog = Program.from_spec(spec)
-    _precheck(prog)
+    _precheck(prog, opts)
     failures: Counter[str] = Counter()
     found: list[Layout] = []
-    slicing_attempts = SLICING_ATTEMPTS if prog.n <= SLICING_MAX_ROOMS else 0
-    for attempt in range(MAX_ATTEMPTS):
-        result = _attempt(prog, rng) if attempt < slicing_attempts else _spine_attempt(prog, rng)
+    slicing_attempts = opts.slicing_attempts if prog.n <= opts.slicing_max_rooms else 0
+    for attempt in range(opts.max_attempts):
+        result = _attempt(prog, rng, opts) if attempt < slicing_attempts else _spine_attempt(prog, rng, opts)
         if isinstance(result, str):
             failures[result] += 1
             continue
         found.append(result)
-        if len(found) >= WANTED_CANDIDATES:
+        if len(found) >= opts.wanted_candidates:
             break
     if not found:
         reason, count = failures.most_common(1)[0]
         raise FloorplanError(
-            f"could not lay out the {prog.n}-room program in {MAX_ATTEMPTS} attempts "
+            f"could not lay out the {prog.n}-room program in {opts.max_attempts} attempts "
             f"(most often: {reason}, {count}x)"
         )
     log.debug("floorplan: %d attempts, failures %s", attempt + 1, dict(failures))
@@ -117,23 +104,23 @@ def floorplan_errors(spec: HouseSpec) -> list[str]:
         return [str(e)]
     return []
 
-def _precheck(prog: Program) -> None:
+def _precheck(prog: Program, opts: FloorplanOptions) -> None:
     """Reject programs whose rooms cannot have enough wall for their doors."""
     degree = Counter(k for link in prog.links for k in link if k != OUTSIDE)
     for k, deg in degree.items():
-        area = prog.areas_m2[k] * (1 + AREA_TOLERANCE)
-        perimeter = 2 * (np.sqrt(MAX_ROOM_ASPECT * area) + np.sqrt(area / MAX_ROOM_ASPECT))
+        area = prog.areas_m2[k] * (1 + opts.area_tolerance_frac)
+        perimeter = 2 * (np.sqrt(opts.max_room_aspect_ratio * area) + np.sqrt(area / opts.max_room_aspect_ratio))
         if prog.types[k] not in CORRIDOR_TYPES and deg * 1.2 + 1.4 > perimeter:
             raise FloorplanError(
                 f"room {prog.ids[k]!r} ({prog.areas_m2[k]:.1f} m2) is too small for its {deg} doors"
             )
 
 
-def _attempt(prog: Program, rng: np.random.Generator) -> Layout | str:
+def _attempt(prog: Program, rng: np.random.Generator, opts: FloorplanOptions) -> Layout | str:
     """One try: a Layout, or a short reason it failed."""
     grid = make_footprint(float(prog.areas_m2.sum()), prog.n, rng)
-    owner = _slice_rooms(prog, grid, rng)
-    reason, score = _check_rooms(prog, owner, grid.cell_m)
+    owner = _slice_rooms(prog, grid, rng, opts)
+    reason, score = _check_rooms(prog, owner, grid.cell_m, opts)
     if reason:
         return reason
     if _has_courtyard(owner):
@@ -148,7 +135,7 @@ def _attempt(prog: Program, rng: np.random.Generator) -> Layout | str:
     return Layout(owner, grid.cell_m, doors, windows, score)
 
 
-def _spine_attempt(prog: Program, rng: np.random.Generator) -> Layout | str:
+def _spine_attempt(prog: Program, rng: np.random.Generator, opts: FloorplanOptions) -> Layout | str:
     """One constructive spine layout (see :mod:`anyhome.floorplan.spine`)."""
     owner = spine_owner(prog, rng)
     if isinstance(owner, str):
@@ -165,7 +152,7 @@ def _spine_attempt(prog: Program, rng: np.random.Generator) -> Layout | str:
     return Layout(owner, SPINE_CELL_M, doors, windows, score)
 
 
-def _slice_rooms(prog: Program, grid: Grid, rng: np.random.Generator) -> np.ndarray:
+def _slice_rooms(prog: Program, grid: Grid, rng: np.random.Generator, opts: FloorplanOptions) -> np.ndarray:
     """Owner array of the footprint sliced into one rectangle per room (void = outside)."""
     exterior = prog.needs_exterior()
     pos = seed_positions(grid, prog.areas_m2, prog.edges, exterior, prog.hubs(), rng) - 1.0
@@ -187,7 +174,7 @@ def _slice_rooms(prog: Program, grid: Grid, rng: np.random.Generator) -> np.ndar
     if void_id is not None:
         targets[void_id] = 1.0
     tune_rooms = TuneRooms(targets, min_side, corridor, exterior, void_id, tuple(prog.edges), cell)
-    tree = anneal(tree, (0, 0, nx, ny), tune_rooms, rng)
+    tree = anneal(tree, (0, 0, nx, ny), tune_rooms, rng, opts)
     tune_tree(tree, (0, 0, nx, ny), tune_rooms)
     owner = np.full((nx + 2, ny + 2), OUTSIDE, dtype=np.int32)
     owner[1:-1, 1:-1] = FREE
@@ -203,7 +190,7 @@ def _has_courtyard(owner: np.ndarray) -> bool:
     return any(k not in border for k in range(1, n + 1))
 
 
-def _check_rooms(prog: Program, owner: np.ndarray, cell_m: float) -> tuple[str, float]:
+def _check_rooms(prog: Program, owner: np.ndarray, cell_m: float, opts: FloorplanOptions) -> tuple[str, float]:
     """('', score) if every room has a usable shape and area, else (reason, inf)."""
     score = 0.0
     for k in range(prog.n):
@@ -213,12 +200,12 @@ def _check_rooms(prog: Program, owner: np.ndarray, cell_m: float) -> tuple[str, 
             return f"room {prog.ids[k]!r} did not grow into one simple shape", np.inf
         min_side = prog.min_side_m(k)
         ratio = cells * cell_m**2 / max(prog.areas_m2[k], min_side**2)
-        if abs(ratio - 1) > AREA_TOLERANCE and not (ratio > 1 and cells * cell_m**2 <= (1 + AREA_TOLERANCE) * min_side**2):
+        if abs(ratio - 1) > opts.area_tolerance_frac and not (ratio > 1 and cells * cell_m**2 <= (1 + opts.area_tolerance_frac) * min_side**2):
             return f"room {prog.ids[k]!r} area off target", np.inf
         aspect = bbox_aspect(mask)
-        if prog.types[k] not in CORRIDOR_TYPES and aspect > MAX_ROOM_ASPECT:
+        if prog.types[k] not in CORRIDOR_TYPES and aspect > opts.max_room_aspect_ratio:
             return f"room {prog.ids[k]!r} too elongated", np.inf
-        if narrow_share(mask, min_side_cells(min_side, cell_m)) > MAX_NARROW_SHARE:
+        if narrow_share(mask, min_side_cells(min_side, cell_m)) > opts.max_narrow_share_frac:
             return f"room {prog.ids[k]!r} too narrow", np.inf
         score += abs(ratio - 1) + 0.1 * max(0.0, aspect - 1.6)
     return "", score

@@ -2,12 +2,15 @@
 
 from __future__ import annotations
 
-from typing import Protocol
+from typing import TYPE_CHECKING, Protocol
 
 import numpy as np
 
 from anyhome.errors import PlanError
 from anyhome.plan.spec import GroupSpec, HouseSpec, ItemSpec, RoomSpec
+
+if TYPE_CHECKING:
+    from anyhome.plan.kb import KnowledgeBase
 
 __all__ = ["GroupSpec", "HouseSpec", "ItemSpec", "Planner", "RoomSpec", "get_planner", "plan_house"]
 
@@ -23,19 +26,20 @@ class Planner(Protocol):
 PLANNERS = ("offline", "llm")
 
 
-def get_planner(name: str = "offline") -> Planner:
-    """A planner by name; "llm" takes its settings from the environment and config file."""
+def get_planner(name: str = "offline", kb: KnowledgeBase | None = None) -> Planner:
+    """A planner by name, reading the knowledge base ``kb`` (None: the one in force);
+    "llm" takes its settings from the environment and config file."""
     if name == "offline":
         from anyhome.plan.offline import OfflinePlanner
 
-        return OfflinePlanner()
+        return OfflinePlanner(kb)
     if name == "llm":
         from anyhome.floorplan import floorplan_errors
         from anyhome.plan.llm import LLMPlanner, load_config
 
-        return LLMPlanner(load_config(), floorplan_check=floorplan_errors)
+        return LLMPlanner(load_config(), floorplan_check=floorplan_errors, kb=kb)
     raise PlanError(f"unknown planner {name!r} (available: {', '.join(PLANNERS)})")
 
 
-def plan_house(text: str, rng: np.random.Generator, planner: str = "offline") -> HouseSpec:
-    return get_planner(planner).plan(text, rng)
+def plan_house(text: str, rng: np.random.Generator, planner: str = "offline", kb: KnowledgeBase | None = None) -> HouseSpec:
+    return get_planner(planner, kb).plan(text, rng)

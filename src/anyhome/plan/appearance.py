@@ -11,7 +11,9 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from anyhome.plan.knowledge import load, normalize, vocabulary
+from anyhome.plan.kb import KnowledgeBase
+from anyhome.plan.kbview import resolve, vocabulary
+from anyhome.plan.knowledge import normalize
 from anyhome.plan.parse import Parsed
 
 WOOD_WORDS = ("wood", "wooden", "oak", "walnut", "pine", "bamboo", "teak", "mahogany", "birch", "ebony")
@@ -37,15 +39,15 @@ class Look:
     user_surfaces: set[str] = field(default_factory=set)  # house-wide surfaces the text set
 
 
-def choose_look(parsed: Parsed, implied: list[str], building: str, rng: np.random.Generator) -> Look:
-    data = load("styles")
+def choose_look(kb: KnowledgeBase, parsed: Parsed, implied: list[str], building: str, rng: np.random.Generator) -> Look:
+    data = kb.raw("styles")
     styles = data["styles"]
     keys = [k for k in [*parsed.styles, *implied] if k in styles]
     keys = list(dict.fromkeys(keys))
     if not keys:
         pool = data["defaults"].get(building) or data["defaults"]["*"]
         keys = [str(pool[int(rng.integers(len(pool)))])]
-    look = look_for(keys, parsed.colours)
+    look = look_for(keys, parsed.colours, kb)
     own = [w for w in parsed.style_words if w not in look.describe]
     if own:  # the user's own words lead ("moroccan: mediterranean, terracotta...")
         look.describe = ", ".join(own) + ": " + look.describe
@@ -73,41 +75,42 @@ def choose_look(parsed: Parsed, implied: list[str], building: str, rng: np.rando
     return look
 
 
-def style_keys(text: str, open_vocab: bool = False) -> list[str]:
+def style_keys(text: str, open_vocab: bool = False, kb: KnowledgeBase | None = None) -> list[str]:
     """The style keys ``text`` names, in order: a key itself ("art_deco"), the words of
     the styles ("gothic revival", "scandi"), and with ``open_vocab`` the nearest style by
     meaning of each other word ("craftsman", "spooky")."""
-    styles = load("styles")["styles"]
+    kb = resolve(kb)
+    styles = kb.raw("styles")["styles"]
     norm = normalize(text)
     if norm.replace(" ", "_") in styles:
         return [norm.replace(" ", "_")]
-    voc = vocabulary()
+    voc = vocabulary(kb)
     keys = [voc.style_forms[m.group()] for m in voc.style_regex.finditer(norm)]
     if open_vocab and not keys:
         from anyhome.plan import openvocab as ov
 
         for word in norm.split():
-            match = ov.map_style(word)
+            match = ov.map_style(word, kb)
             if match is not None:
                 keys.append(match.key)
     return list(dict.fromkeys(keys))
 
 
-def look_for(keys: list[str], palette: list[str] | None = None) -> Look:
+def look_for(keys: list[str], palette: list[str] | None = None, kb: KnowledgeBase | None = None) -> Look:
     """The look of the style ``keys`` (the first leads), as :func:`choose_look` makes it
     for a text naming just these styles; ``palette`` leads the palette when given."""
-    styles = load("styles")["styles"]
+    styles = resolve(kb).raw("styles")["styles"]
     lead = styles[keys[0]]
     palette = list(dict.fromkeys([*(palette or []), *lead["palette"], *(styles[k]["palette"][0] for k in keys[1:])]))
     describe = "; ".join(styles[k]["describe"] for k in keys)
     return Look(list(keys), describe, palette, lead["floor"], lead["walls"], lead["ceiling"], lead["furniture"])
 
 
-def room_materials(look: Look, room_type: str) -> dict[str, str]:
+def room_materials(look: Look, room_type: str, kb: KnowledgeBase | None = None) -> dict[str, str]:
     """Floor, walls and ceiling words of a room of ``room_type`` in ``look``: wet rooms and
     the types of :data:`KEEP_DEFAULT_SURFACES` keep their own floor and walls unless the
     text named them (``look.user_surfaces``)."""
-    types = load("rooms")["types"]
+    types = resolve(kb).raw("rooms")["types"]
     defaults = types.get(room_type, types["other"])["materials"]
     materials = {"floor": look.floor, "walls": look.walls, "ceiling": look.ceiling}
     keep = room_type in KEEP_DEFAULT_SURFACES or bool(types.get(room_type, {}).get("wet"))
@@ -120,7 +123,8 @@ def room_materials(look: Look, room_type: str) -> dict[str, str]:
     return materials
 
 
-def item_material(category: str, look: Look, furniture: str, rng: np.random.Generator) -> str:
-    pattern = load("styles")["category_materials"].get(category, "{furniture}")
+def item_material(category: str, look: Look, furniture: str, rng: np.random.Generator,
+                  kb: KnowledgeBase | None = None) -> str:
+    pattern = resolve(kb).raw("styles")["category_materials"].get(category, "{furniture}")
     colour = look.palette[int(rng.integers(len(look.palette)))] if look.palette else "neutral"
     return str(pattern).format(furniture=furniture, colour=colour)

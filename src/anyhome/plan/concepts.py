@@ -25,7 +25,9 @@ import numpy as np
 
 from anyhome.house import ROOM_TYPES
 from anyhome.plan.embed import Embedder, get_embedder
-from anyhome.plan.knowledge import load, normalize
+from anyhome.plan.kb import KnowledgeBase
+from anyhome.plan.kbview import resolve
+from anyhome.plan.knowledge import normalize
 
 KINDS = ("rooms", "objects", "buildings", "styles")
 
@@ -55,19 +57,19 @@ class Match:
     via: str  # the concept phrase that matched best
 
 
-def _room_phrases() -> dict[str, list[str]]:
-    sets = load("furniture")["sets"]
+def _room_phrases(kb: KnowledgeBase) -> dict[str, list[str]]:
+    sets = kb.raw("furniture")["sets"]
     out: dict[str, list[str]] = {k: [k.replace("_", " ")] for k in sets if k != "other"}
-    for name, info in load("rooms")["names"].items():
+    for name, info in kb.raw("rooms")["names"].items():
         furnish = info.get("furnish") or info.get("type")
         if furnish in out:
             out[furnish].append(normalize(name))
     return out
 
 
-def _object_phrases() -> dict[str, list[str]]:
+def _object_phrases(kb: KnowledgeBase) -> dict[str, list[str]]:
     out: dict[str, list[str]] = {}
-    for key, proto in load("objects").items():
+    for key, proto in kb.raw("objects").items():
         out[key] = [normalize(key), *(normalize(s) for s in proto.get("synonyms", []))]
         cat = proto.get("category", "").replace("_", " ")
         if cat and cat not in out[key]:
@@ -75,17 +77,17 @@ def _object_phrases() -> dict[str, list[str]]:
     return out
 
 
-def _building_phrases() -> dict[str, list[str]]:
+def _building_phrases(kb: KnowledgeBase) -> dict[str, list[str]]:
     out: dict[str, list[str]] = {}
-    for b in load("programs")["buildings"]:
+    for b in kb.raw("programs")["buildings"]:
         out.setdefault(b["program"], [b["program"].replace("_", " ")])
         out[b["program"]].extend(normalize(w) for w in b["words"])
     return out
 
 
-def _style_phrases() -> dict[str, list[str]]:
+def _style_phrases(kb: KnowledgeBase) -> dict[str, list[str]]:
     out: dict[str, list[str]] = {}
-    for key, st in load("styles")["styles"].items():
+    for key, st in kb.raw("styles")["styles"].items():
         out[key] = [normalize(w) for w in st["words"]] + [normalize(st["describe"])]
     return out
 
@@ -93,11 +95,12 @@ def _style_phrases() -> dict[str, list[str]]:
 _PHRASES = {"rooms": _room_phrases, "objects": _object_phrases, "buildings": _building_phrases, "styles": _style_phrases}
 
 
-def concept_phrases(kind: str) -> dict[str, list[str]]:
+def concept_phrases(kind: str, kb: KnowledgeBase | None = None) -> dict[str, list[str]]:
     """Every concept of ``kind`` with its phrases: from the knowledge files, plus those
     that ``concepts.yaml`` adds for existing concepts."""
-    out = _PHRASES[kind]()
-    for key, phrases in (load("concepts").get(kind) or {}).items():
+    kb = resolve(kb)
+    out = _PHRASES[kind](kb)
+    for key, phrases in (kb.raw("concepts").get(kind) or {}).items():
         if key in out:
             out[key].extend(normalize(p) for p in phrases)
     return out
@@ -106,10 +109,10 @@ def concept_phrases(kind: str) -> dict[str, list[str]]:
 class ConceptIndex:
     """Embedded concept phrases of one table, for one backend."""
 
-    def __init__(self, kind: str, embedder: Embedder) -> None:
+    def __init__(self, kind: str, embedder: Embedder, kb: KnowledgeBase) -> None:
         self.kind = kind
         self.embedder = embedder
-        table = concept_phrases(kind)
+        table = concept_phrases(kind, kb)
         self.keys = list(table)
         self.phrases: list[str] = []
         owner: list[int] = []
@@ -157,39 +160,40 @@ def query_forms(phrase: str, kind: str) -> list[str]:
     return forms
 
 
-def index(kind: str, backend: str | None = None) -> ConceptIndex:
-    """The cached concept index of ``kind`` for the backend (default: ``get_embedder()``)."""
-    return _index(kind, get_embedder(backend).name)
+def index(kind: str, backend: str | None = None, kb: KnowledgeBase | None = None) -> ConceptIndex:
+    """The cached concept index of ``kind`` in ``kb`` for the backend (default: ``get_embedder()``)."""
+    return _index(kind, get_embedder(backend).name, resolve(kb))
 
 
-@functools.lru_cache(maxsize=None)
-def _index(kind: str, backend: str) -> ConceptIndex:
-    return ConceptIndex(kind, get_embedder(backend))
+@functools.lru_cache(maxsize=32)
+def _index(kind: str, backend: str, kb: KnowledgeBase) -> ConceptIndex:
+    return ConceptIndex(kind, get_embedder(backend), kb)
 
 
-def threshold(kind: str, backend: str | None = None) -> float:
+def threshold(kind: str, backend: str | None = None, kb: KnowledgeBase | None = None) -> float:
     """The least score a match of ``kind`` needs with this backend."""
-    name = index(kind, backend).embedder.name
+    name = index(kind, backend, kb).embedder.name
     return THRESHOLDS.get(name, THRESHOLDS["lexical"])[kind]
 
 
-def nearest(kind: str, phrase: str, backend: str | None = None, with_score: bool = False) -> Match | None:
+def nearest(kind: str, phrase: str, backend: str | None = None, with_score: bool = False,
+            kb: KnowledgeBase | None = None) -> Match | None:
     """Best concept for ``phrase`` if it clears the backend's threshold, else None
     (``with_score``: the best concept whatever its score)."""
     if not re.search(r"[a-z]", normalize(phrase)) or len(phrase) > MAX_PHRASE_CHARS:
         return None  # the packaged concepts are English; other scripts match nothing
-    idx = index(kind, backend)
+    idx = index(kind, backend, kb)
     best = idx.rank(phrase, k=1)
     if not best:
         return None
-    return best[0] if with_score or best[0].score >= threshold(kind, backend) else None
+    return best[0] if with_score or best[0].score >= threshold(kind, backend, kb) else None
 
 
-def furnish_type(furnish: str) -> str:
+def furnish_type(furnish: str, kb: KnowledgeBase | None = None) -> str:
     """The functional room type of a furnishing set (``other`` when none says)."""
     if furnish in ROOM_TYPES:
         return furnish
-    for info in load("rooms")["names"].values():
+    for info in resolve(kb).raw("rooms")["names"].values():
         if info.get("furnish") == furnish and info.get("type") in ROOM_TYPES:
             return str(info["type"])
     return "other"

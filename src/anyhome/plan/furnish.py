@@ -13,7 +13,7 @@ from typing import Any
 
 import numpy as np
 
-from anyhome.plan.knowledge import load
+from anyhome.plan.kb import KnowledgeBase
 from anyhome.plan.openvocab import fallback_object
 from anyhome.plan.parse import Mention
 from anyhome.plan.spec import MAX_COUNT
@@ -35,8 +35,8 @@ Item = dict[str, Any]
 Group = dict[str, Any]
 
 
-def _proto(use: str | None) -> dict[str, Any]:
-    return load("objects").get(use, {}) if use else {}
+def _proto(kb: KnowledgeBase, use: str | None) -> dict[str, Any]:
+    return kb.raw("objects").get(use, {}) if use else {}
 
 
 def _sample(spec: Any, rng: np.random.Generator) -> int:
@@ -49,9 +49,9 @@ def _slug(text: str) -> str:
     return re.sub(r"[^a-z0-9]+", "_", text.lower()).strip("_") or "object"
 
 
-def make_item(entry: dict[str, Any], rng: np.random.Generator, ornament: bool = False) -> Item:
+def make_item(kb: KnowledgeBase, entry: dict[str, Any], rng: np.random.Generator, ornament: bool = False) -> Item:
     """An ItemSpec dict from a knowledge entry (``use`` prototype plus overrides)."""
-    proto = _proto(entry.get("use"))
+    proto = _proto(kb, entry.get("use"))
     if entry.get("names"):
         name = str(entry["names"][int(rng.integers(len(entry["names"])))])
     else:
@@ -101,21 +101,21 @@ def _merge(base: dict[str, Any], over: dict[str, Any]) -> dict[str, Any]:
     return out
 
 
-def group_def(entry: dict[str, Any]) -> dict[str, Any]:
+def group_def(kb: KnowledgeBase, entry: dict[str, Any]) -> dict[str, Any]:
     """The group template named by ``entry['group']`` with the entry's overrides."""
-    template = load("furniture")["groups"].get(entry.get("group", ""), {})
+    template = kb.raw("furniture")["groups"].get(entry.get("group", ""), {})
     d = _merge(template, entry)
     d.setdefault("key", entry.get("group", "group"))
     return d
 
 
-def build_group(d: dict[str, Any], area_m2: float, rng: np.random.Generator) -> Group:
-    anchor = make_item(d["anchor"], rng)
+def build_group(kb: KnowledgeBase, d: dict[str, Any], area_m2: float, rng: np.random.Generator) -> Group:
+    anchor = make_item(kb, d["anchor"], rng)
     members = []
     for m in d.get("members", []):
         p = float(m.get("prob", 1.0))
         if p >= 1.0 or rng.random() < p:
-            members.append(make_item(m, rng))
+            members.append(make_item(kb, m, rng))
     repeat = _sample(d.get("repeat", 1), rng)
     if d.get("per_m2"):
         lo, hi = d["repeat"] if isinstance(d.get("repeat"), list) else (1, max(1, repeat))
@@ -133,24 +133,24 @@ def build_group(d: dict[str, Any], area_m2: float, rng: np.random.Generator) -> 
     return g
 
 
-def furniture_set(furnish: str, room_type: str) -> dict[str, Any]:
-    sets = load("furniture")["sets"]
+def furniture_set(kb: KnowledgeBase, furnish: str, room_type: str) -> dict[str, Any]:
+    sets = kb.raw("furniture")["sets"]
     return sets.get(furnish) or sets.get(room_type) or sets["other"]
 
 
-def furnish_room(furnish: str, room_type: str, area_m2: float, rng: np.random.Generator, beds: int | None = None) -> tuple[list[Group], list[Item], list[dict[str, Any]]]:
+def furnish_room(kb: KnowledgeBase, furnish: str, room_type: str, area_m2: float, rng: np.random.Generator, beds: int | None = None) -> tuple[list[Group], list[Item], list[dict[str, Any]]]:
     """Sampled groups and ornaments of one room, and the group templates left out."""
-    s = furniture_set(furnish, room_type)
+    s = furniture_set(kb, furnish, room_type)
     groups: list[Group] = []
     unused: list[dict[str, Any]] = []
     for entry in s.get("groups", []):
         if entry.get("one_of"):
             choices = entry["one_of"]
             entry = {**entry, "group": choices[int(rng.integers(len(choices)))]}
-        d = group_def(entry)
+        d = group_def(kb, entry)
         p = float(entry.get("prob", 1.0))
         if p >= 1.0 or rng.random() < p:
-            groups.append(build_group(d, area_m2, rng))
+            groups.append(build_group(kb, d, area_m2, rng))
         else:
             unused.append(d)
     if beds:
@@ -162,7 +162,7 @@ def furnish_room(furnish: str, room_type: str, area_m2: float, rng: np.random.Ge
     for entry in s.get("ornaments", []):
         p = float(entry.get("prob", 1.0))
         if p >= 1.0 or rng.random() < p:
-            ornaments.append(make_item(entry, rng, ornament=True))
+            ornaments.append(make_item(kb, entry, rng, ornament=True))
     return groups, ornaments, unused
 
 
@@ -221,9 +221,9 @@ def mention_count(m: Mention, proto: dict[str, Any], rng: np.random.Generator) -
     return None
 
 
-def apply_mention(m: Mention, groups: list[Group], ornaments: list[Item], unused: list[dict[str, Any]], area_m2: float, rng: np.random.Generator) -> None:
+def apply_mention(kb: KnowledgeBase, m: Mention, groups: list[Group], ornaments: list[Item], unused: list[dict[str, Any]], area_m2: float, rng: np.random.Generator) -> None:
     """Make a room hold what the text asks for (adjusting or adding groups)."""
-    proto = _proto(m.key) if m.key else fallback_object()
+    proto = _proto(kb, m.key) if m.key else fallback_object(kb)
     category = proto.get("category", _slug(m.key or m.name.split()[-1]))
     head = (m.key or m.name).split()[-1]
     n = mention_count(m, proto, rng)
@@ -233,19 +233,19 @@ def apply_mention(m: Mention, groups: list[Group], ornaments: list[Item], unused
         return
     named = m.name != m.key
     if proto.get("ornament"):
-        _apply_ornament(m, proto, category, head, n, groups, ornaments, unused, area_m2, rng)
+        _apply_ornament(kb, m, proto, category, head, n, groups, ornaments, unused, area_m2, rng)
         return
     # a one-word name ("table") may stand for any table; "bunk bed" only for bunk beds
     g, item = _find(groups, category, head, loose=" " not in (m.key or m.name))
     if g is None:
-        d = next((u for u in unused if _matches(u_anchor(u), category, head)), None)
+        d = next((u for u in unused if _matches(u_anchor(kb, u), category, head)), None)
         if d is None and proto.get("group"):
-            d = group_def({"group": proto["group"]})
+            d = group_def(kb, {"group": proto["group"]})
         if d is None and m.key:
             d = {"key": _slug(m.key), "anchor": {"use": m.key}}
         if d is None:
             d = {"key": _slug(m.name), "anchor": {**proto, "name": m.name, "category": category}}
-        g = build_group(d, area_m2, rng)
+        g = build_group(kb, d, area_m2, rng)
         groups.append(g)
         g2, item = _find([g], category, head)
         item = item or g["anchor"]
@@ -272,10 +272,10 @@ def apply_mention(m: Mention, groups: list[Group], ornaments: list[Item], unused
     _fit_table(g)
 
 
-def remove_mention(m: Mention, groups: list[Group], ornaments: list[Item]) -> bool:
+def remove_mention(kb: KnowledgeBase, m: Mention, groups: list[Group], ornaments: list[Item]) -> bool:
     """Take out of a room what the text rules out ("no tv", "without a rug"): groups
     whose anchor it names, members and ornaments it names. True if anything went."""
-    proto = _proto(m.key) if m.key else {}
+    proto = _proto(kb, m.key) if m.key else {}
     category = proto.get("category", _slug(m.key or m.name.split()[-1]))
     head = (m.key or m.name).split()[-1]
     level = 1 if " " not in (m.key or m.name) else 2  # "no lamp": any lamp; "no floor lamp": that one
@@ -355,9 +355,9 @@ def cap_objects(rooms: list[tuple[list[Group], list[Item]]], budget: int) -> dic
     return {k: (n, after.get(k, 0)) for k, n in before.items() if after.get(k, 0) < n}
 
 
-def u_anchor(d: dict[str, Any]) -> Item:
+def u_anchor(kb: KnowledgeBase, d: dict[str, Any]) -> Item:
     a = d.get("anchor", {})
-    proto = _proto(a.get("use"))
+    proto = _proto(kb, a.get("use"))
     name = a.get("name") or (a.get("names") or [a.get("use", "")])[0]
     return {"name": name, "category": a.get("category") or proto.get("category", "")}
 
@@ -386,12 +386,12 @@ WALL_MOUNT_FROM = 3
 the walls instead of on top of furniture."""
 
 
-def _apply_ornament(m: Mention, proto: dict[str, Any], category: str, head: str, n: int | None, groups: list[Group], ornaments: list[Item], unused: list[dict[str, Any]], area_m2: float, rng: np.random.Generator) -> None:
+def _apply_ornament(kb: KnowledgeBase, m: Mention, proto: dict[str, Any], category: str, head: str, n: int | None, groups: list[Group], ornaments: list[Item], unused: list[dict[str, Any]], area_m2: float, rng: np.random.Generator) -> None:
     found = next((o for o in ornaments if _matches(o, category, head) == 2), None)
     if found is None:
         found = next((o for o in ornaments if _matches(o, category, head) == 1), None)
     if found is None:
-        found = make_item({"use": m.key}, rng, ornament=True)
+        found = make_item(kb, {"use": m.key}, rng, ornament=True)
         ornaments.insert(0, found)
     if m.name != m.key:
         found["name"] = m.name
@@ -404,7 +404,7 @@ def _apply_ornament(m: Mention, proto: dict[str, Any], category: str, head: str,
     target = found.get("target")
     if target and not any(_matches(it, target, target.split("_")[-1]) for g in groups for it in [g["anchor"], *g["members"]]):
         if proto.get("group"):
-            g = build_group(group_def({"group": proto["group"]}), area_m2, rng)
+            g = build_group(kb, group_def(kb, {"group": proto["group"]}), area_m2, rng)
             g["required"] = True
             groups.append(g)
             ornaments.remove(found)

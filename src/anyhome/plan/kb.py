@@ -363,6 +363,7 @@ class KnowledgeBase:
 
     def __init__(self, raw: Mapping[str, Any], source: Source) -> None:
         self.source = source
+        self._raw = raw
         self.programs: ProgramsFile = validate_file("programs", raw["programs"], source)  # type: ignore[assignment]
         self.rooms: RoomsFile = validate_file("rooms", raw["rooms"], source)  # type: ignore[assignment]
         objects: ObjectsFile = validate_file("objects", raw["objects"], source)  # type: ignore[assignment]
@@ -372,6 +373,10 @@ class KnowledgeBase:
         self.concepts: ConceptsFile = validate_file("concepts", raw["concepts"], source)  # type: ignore[assignment]
         self.surfaces: SurfacesFile = validate_file("surfaces", raw["surfaces"], source)  # type: ignore[assignment]
         self._check_references()
+
+    def raw(self, name: str) -> dict[str, Any]:
+        """The merged content of ``<name>.yaml`` as plain mappings (what the planner reads)."""
+        return self._raw[name]
 
     def _bad(self, name: str, loc: tuple[Any, ...], msg: str) -> KnowledgeError:
         return _fail(self.source, name, loc, msg)

@@ -179,9 +179,13 @@ def _knowledge_base(key: tuple[str, ...]) -> KnowledgeBase:
     return KnowledgeBase(data, _source(sources))
 
 
-def knowledge_base() -> KnowledgeBase:
+def knowledge_base(dirs: list[str] | tuple[str, ...] | None = None) -> KnowledgeBase:
     """The validated knowledge (shipped files and the user's overlay), built once per
-    overlay; a bad entry raises :class:`KnowledgeError` (``FILE: KEY: what is wrong``)."""
+    overlay; a bad entry raises :class:`KnowledgeError` (``FILE: KEY: what is wrong``).
+    ``dirs``: exactly these user folders on top of the shipped files (no
+    :data:`ENV_VAR`, no ``--knowledge``); None: the overlay in force."""
+    if dirs is not None:
+        return _knowledge_base(tuple(str(d) for d in dirs))
     return _knowledge_base(_sync())
 
 
@@ -243,8 +247,19 @@ def vocabulary() -> Vocabulary:
     return _vocabulary(_sync())
 
 
-@functools.lru_cache(maxsize=8)
 def _vocabulary(overlay_key: tuple[str, ...]) -> Vocabulary:
+    from anyhome.plan.kbview import vocabulary as kb_vocabulary
+
+    return kb_vocabulary(_knowledge_base(overlay_key))
+
+
+def compile_vocabulary(kb: KnowledgeBase) -> Vocabulary:
+    """Every phrase of ``kb`` compiled into lookup tables (use
+    :func:`anyhome.plan.kbview.vocabulary`: cached per knowledge base)."""
+
+    def load(name: str) -> dict[str, Any]:
+        return kb.raw(name)
+
     forms: dict[str, tuple[Entry, bool]] = {}
     for key, proto in load("objects").items():
         for phrase in [key, *proto.get("synonyms", [])]:

@@ -20,7 +20,8 @@ from anyhome.errors import PlanError
 from anyhome.house import is_habitable
 from anyhome.plan import furnish as fu
 from anyhome.plan.appearance import Look, choose_look, item_material, room_materials
-from anyhome.plan.knowledge import load
+from anyhome.plan.kb import KnowledgeBase
+from anyhome.plan.kbview import resolve
 from anyhome.plan.parse import Mention, Parsed, parse, plural
 from anyhome.plan.program import Slot, choose_program, connect, plan_rooms, sample_areas
 from anyhome.plan.spec import GroupSpec, HouseSpec, ItemSpec, RoomSpec
@@ -57,35 +58,40 @@ about 180), so that generation stays within seconds."""
 
 
 class OfflinePlanner:
-    """Plans a house from text with the packaged knowledge base."""
+    """Plans a house from text with the knowledge base ``kb`` (None: the one in force
+    when the planner is made: shipped files, ``$ANYHOME_KNOWLEDGE_PATH``, ``--knowledge``)."""
 
     name = "offline"
 
+    def __init__(self, kb: KnowledgeBase | None = None) -> None:
+        self.kb = resolve(kb)
+
     def plan(self, text: str, rng: np.random.Generator) -> HouseSpec:
+        kb = self.kb
         if not isinstance(text, str) or not text.strip():
             raise PlanError("the text is empty: describe a house, e.g. 'a two-bedroom apartment'")
-        parsed = parse(text)
+        parsed = parse(text, kb)
         warnings = list(parsed.warnings)
         if not _mostly_latin(text):
             warnings.append("the offline planner reads English; most of this text is in another script")
         if not parsed.recognized:
             warnings.append("no building, room or object in the text was recognised; planned a default home")
-        program, implied = choose_program(parsed)
+        program, implied = choose_program(kb, parsed)
         if parsed.one_room:  # "a one-room cabin": only the rooms the text names
             program = None
-        slots, main_key = plan_rooms(parsed, program, rng, warnings)
+        slots, main_key = plan_rooms(kb, parsed, program, rng, warnings)
         if parsed.one_room and len(slots) > 1:
             warnings.append(
                 f"the text asks for a one-room building but names {len(slots)} rooms; planned the named rooms"
             )
         sample_areas(slots, parsed.building_size, rng)
-        prog = load("programs")["programs"].get(program or "", {})
-        connections = connect(slots, prog.get("entrance", []))
+        prog = kb.raw("programs")["programs"].get(program or "", {})
+        connections = connect(kb, slots, prog.get("entrance", []))
         building = prog.get("building") or (slots[0].type.replace("_", " ") if program is None else "home")
-        rooms = _furnish(parsed, slots, main_key, prog, rng, warnings)
-        look = choose_look(parsed, implied, building, rng)
+        rooms = _furnish(kb, parsed, slots, main_key, prog, rng, warnings)
+        look = choose_look(kb, parsed, implied, building, rng)
         building = parsed.building_word or building
-        specs = [_room_spec(s, g, o, look, rng) for s, (g, o) in zip(slots, rooms)]
+        specs = [_room_spec(kb, s, g, o, look, rng) for s, (g, o) in zip(slots, rooms)]
         log.debug("planned %d rooms for %r", len(specs), text[:60])
         return HouseSpec(
             prompt=text,
@@ -104,30 +110,30 @@ def _mostly_latin(text: str) -> bool:
     return not letters or sum(c.isascii() for c in letters) >= len(letters) / 2
 
 
-def _furnish(parsed: Parsed, slots: list[Slot], main_key: str | None, prog: dict[str, Any], rng: np.random.Generator, warnings: list[str]) -> list[tuple[list[fu.Group], list[fu.Item]]]:
+def _furnish(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], main_key: str | None, prog: dict[str, Any], rng: np.random.Generator, warnings: list[str]) -> list[tuple[list[fu.Group], list[fu.Item]]]:
     built = []
     for s in slots:
-        groups, ornaments, unused = fu.furnish_room(s.furnish, s.type, s.area, rng, beds=s.beds)
+        groups, ornaments, unused = fu.furnish_room(kb, s.furnish, s.type, s.area, rng, beds=s.beds)
         for key in prog.get("extra", {}).get(s.key, []):
-            d = fu.group_def({"group": key})
-            groups.append(fu.build_group(d, s.area, rng))
+            d = fu.group_def(kb, {"group": key})
+            groups.append(fu.build_group(kb, d, s.area, rng))
         built.append((groups, ornaments, unused))
     for m in parsed.objects:
         if m.negated:
             continue
-        targets = [_room_for(m, slots, main_key)]
+        targets = [_room_for(kb, m, slots, main_key)]
         if m.each and m.room is not None:  # "three bedrooms, each with a desk"
             targets = [i for i, s in enumerate(slots) if s.mention == m.room] or targets
         for i in targets:
             groups, ornaments, unused = built[i]
-            fu.apply_mention(m, groups, ornaments, unused, slots[i].area, rng)
+            fu.apply_mention(kb, m, groups, ornaments, unused, slots[i].area, rng)
     for m in parsed.objects:  # "a bedroom without a tv", "no rug": after what the text adds
         if not m.negated:
             continue
         negated_in = [i for i, s in enumerate(slots) if m.room is not None and s.mention == m.room] or range(len(slots))
         for i in negated_in:
             groups, ornaments, _ = built[i]
-            fu.remove_mention(m, groups, ornaments)
+            fu.remove_mention(kb, m, groups, ornaments)
     out = []
     for s, (groups, ornaments, _) in zip(slots, built):
         out.append((groups, fu.finalize_ornaments(groups, ornaments)))
@@ -179,12 +185,12 @@ def _cuts(cut: dict[str, tuple[int, int]], most: int = 4) -> str:
     return ", ".join(f"{a} {plural(name)} -> {b}" for name, (a, b) in items)
 
 
-def _room_for(m: Mention, slots: list[Slot], main_key: str | None) -> int:
+def _room_for(kb: KnowledgeBase, m: Mention, slots: list[Slot], main_key: str | None) -> int:
     if m.room is not None:
         for i, s in enumerate(slots):
             if s.mention == m.room:
                 return i
-    prefs = load("objects").get(m.key, {}).get("rooms", [])
+    prefs = kb.raw("objects").get(m.key, {}).get("rooms", [])
     for pref in prefs:
         for i, s in enumerate(slots):
             if s.furnish == pref or s.type == pref:
@@ -240,8 +246,8 @@ def _rows_cell_m2(g: fu.Group) -> float:
     return (width + ROW_AISLE_M) * (depth + ROW_AISLE_M)
 
 
-def _room_spec(s: Slot, groups: list[fu.Group], ornaments: list[fu.Item], look: Look, rng: np.random.Generator) -> RoomSpec:
-    materials = room_materials(look, s.type)
+def _room_spec(kb: KnowledgeBase, s: Slot, groups: list[fu.Group], ornaments: list[fu.Item], look: Look, rng: np.random.Generator) -> RoomSpec:
+    materials = room_materials(look, s.type, kb)
     furniture = look.furniture
     if s.mention is not None:
         for surface, words in look.room_overrides.get(s.mention, {}).items():
@@ -254,7 +260,7 @@ def _room_spec(s: Slot, groups: list[fu.Group], ornaments: list[fu.Item], look: 
     for g in sorted(groups, key=lambda g: (not g["required"], g["priority"])):
         used[g["name"]] = used.get(g["name"], 0) + 1
         name = g["name"] if used[g["name"]] == 1 else f"{g['name']}_{used[g['name']]}"
-        items = [_item(it, look, furniture, rng) for it in [g["anchor"], *g["members"]]]
+        items = [_item(kb, it, look, furniture, rng) for it in [g["anchor"], *g["members"]]]
         group_specs.append(
             GroupSpec(
                 name=name, anchor=items[0], members=items[1:], arrangement=g["arrangement"],
@@ -269,14 +275,14 @@ def _room_spec(s: Slot, groups: list[fu.Group], ornaments: list[fu.Item], look: 
         style=look.describe,
         materials=materials,
         groups=group_specs,
-        ornaments=[_item(o, look, furniture, rng) for o in ornaments],
+        ornaments=[_item(kb, o, look, furniture, rng) for o in ornaments],
     )
 
 
-def _item(it: fu.Item, look: Look, furniture: str, rng: np.random.Generator) -> ItemSpec:
+def _item(kb: KnowledgeBase, it: fu.Item, look: Look, furniture: str, rng: np.random.Generator) -> ItemSpec:
     data = dict(it)
     if not data.get("material"):
-        data["material"] = item_material(data["category"], look, furniture, rng)
+        data["material"] = item_material(data["category"], look, furniture, rng, kb)
     return ItemSpec(**data)
 
 
@@ -285,33 +291,33 @@ def _item(it: fu.Item, look: Look, furniture: str, rng: np.random.Generator) -> 
 # model could not plan: the look of the house, and the furniture of one room.
 
 
-def offline_look(text: str, rng: np.random.Generator) -> Look:
+def offline_look(kb: KnowledgeBase, text: str, rng: np.random.Generator) -> Look:
     """The style, palette and materials the offline planner reads from ``text``."""
-    parsed = parse(text)
-    program, implied = choose_program(parsed)
-    prog = load("programs")["programs"].get(program or "", {})
-    return choose_look(parsed, implied, parsed.building_word or prog.get("building") or "home", rng)
+    parsed = parse(text, kb)
+    program, implied = choose_program(kb, parsed)
+    prog = kb.raw("programs")["programs"].get(program or "", {})
+    return choose_look(kb, parsed, implied, parsed.building_word or prog.get("building") or "home", rng)
 
 
-def furnish_key(name: str, room_type: str) -> str:
+def furnish_key(kb: KnowledgeBase, name: str, room_type: str) -> str:
     """The furnishing set of a room known by name: the knowledge base's own entry, else
     the nearest set by meaning, else the room type's set."""
-    info = load("rooms")["names"].get(name.strip().lower())
+    info = kb.raw("rooms")["names"].get(name.strip().lower())
     if info:
         return str(info.get("furnish", info["type"]))
     from anyhome.plan.openvocab import map_room
 
-    match = map_room(name)
+    match = map_room(name, kb)
     return match.key if match is not None else room_type
 
 
-def fallback_room(name: str, room_type: str, area_m2: float, room_id: str, look: Look, rng: np.random.Generator) -> RoomSpec:
+def fallback_room(kb: KnowledgeBase, name: str, room_type: str, area_m2: float, room_id: str, look: Look, rng: np.random.Generator) -> RoomSpec:
     """A room of the given name, type and area, furnished and dressed offline."""
-    slot = Slot(name, room_type, furnish_key(name, room_type), (area_m2, area_m2), id=room_id, area=area_m2)
-    groups, ornaments, _ = fu.furnish_room(slot.furnish, room_type, area_m2, rng)
-    return _room_spec(slot, groups, fu.finalize_ornaments(groups, ornaments), look, rng)
+    slot = Slot(name, room_type, furnish_key(kb, name, room_type), (area_m2, area_m2), id=room_id, area=area_m2)
+    groups, ornaments, _ = fu.furnish_room(kb, slot.furnish, room_type, area_m2, rng)
+    return _room_spec(kb, slot, groups, fu.finalize_ornaments(groups, ornaments), look, rng)
 
 
-def item_spec(data: dict[str, Any], look: Look, rng: np.random.Generator) -> ItemSpec:
+def item_spec(kb: KnowledgeBase, data: dict[str, Any], look: Look, rng: np.random.Generator) -> ItemSpec:
     """An item with the look's material when it names none."""
-    return _item(data, look, look.furniture, rng)
+    return _item(kb, data, look, look.furniture, rng)

@@ -23,7 +23,8 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 
 from anyhome.plan.concepts import GENERIC_HEADS, Match, nearest, threshold
-from anyhome.plan.knowledge import load
+from anyhome.plan.kb import KnowledgeBase
+from anyhome.plan.kbview import resolve
 
 DETERMINERS = frozenset("a an the one two three four five six seven eight nine ten eleven twelve dozen several some many few multiple lots plenty pair couple".split())
 """Words that start a noun phrase in an object list."""
@@ -57,13 +58,13 @@ MAX_OPEN_OBJECTS = 12
 """Most open-vocabulary object mentions taken from one text."""
 
 
-def non_objects() -> frozenset[str]:
-    return frozenset(load("concepts").get("non_objects", []))
+def non_objects(kb: KnowledgeBase | None = None) -> frozenset[str]:
+    return frozenset(resolve(kb).raw("concepts").get("non_objects", []))
 
 
 def find_object_phrases(
     text: str, tokens: list[tuple[str, int, int]], taken: list[tuple[int, int]], is_number: Callable[[str], bool],
-    soft: Sequence[tuple[int, int]] = (),
+    soft: Sequence[tuple[int, int]] = (), kb: KnowledgeBase | None = None,
 ) -> list[tuple[str, int, int]]:
     """Noun phrases in object lists that no known phrase covers.
 
@@ -73,7 +74,7 @@ def find_object_phrases(
     materials, styles) may modify a phrase ("a tufted pink ottoman", "six steel
     fermentation tanks") but never end it.
     """
-    non_objects_ = non_objects()
+    non_objects_ = non_objects(kb)
 
     def is_taken(s: int, e: int) -> bool:
         return any(a < e and s < b for a, b in taken)
@@ -137,23 +138,23 @@ def first_noun_phrase(text: str, tokens: list[tuple[str, int, int]]) -> tuple[st
     return " ".join(w for w, _, _ in words), words[0][1], words[-1][2]
 
 
-def classify(phrase: str) -> tuple[str, Match | None]:
+def classify(phrase: str, kb: KnowledgeBase | None = None) -> tuple[str, Match | None]:
     """Whether an unknown list phrase names a room or an object, and its concept.
 
     A phrase is a room when its room match clears the threshold and beats its object
     match by ``ROOM_MARGIN`` ("a home theater", "a sauna"); otherwise an object.
     """
-    mo = _best(nearest("objects", phrase, with_score=True), None)
-    mr = _best(nearest("rooms", phrase, with_score=True), None)
+    mo = _best(nearest("objects", phrase, with_score=True, kb=kb), None)
+    mr = _best(nearest("rooms", phrase, with_score=True, kb=kb), None)
     head = phrase.split()[-1]
     if head != phrase and head not in GENERIC_HEADS:  # "front porch": the head decides too
-        hr = nearest("rooms", head, with_score=True)
-        ho = nearest("objects", head, with_score=True)
+        hr = nearest("rooms", head, with_score=True, kb=kb)
+        ho = nearest("objects", head, with_score=True, kb=kb)
         mr = _best(mr, hr)
         mo = _best(mo, ho)
-    if mr is not None and mr.score >= max(threshold("rooms"), LIST_ROOM_MIN) and (mo is None or mr.score > mo.score + ROOM_MARGIN):
+    if mr is not None and mr.score >= max(threshold("rooms", kb=kb), LIST_ROOM_MIN) and (mo is None or mr.score > mo.score + ROOM_MARGIN):
         return "room", mr
-    return "object", mo if mo is not None and mo.score >= threshold("objects") else None
+    return "object", mo if mo is not None and mo.score >= threshold("objects", kb=kb) else None
 
 
 def _best(a: Match | None, b: Match | None) -> Match | None:
@@ -162,30 +163,30 @@ def _best(a: Match | None, b: Match | None) -> Match | None:
     return a
 
 
-def map_room(phrase: str) -> Match | None:
+def map_room(phrase: str, kb: KnowledgeBase | None = None) -> Match | None:
     """The furnishing set for an unknown room phrase."""
-    return nearest("rooms", phrase)
+    return nearest("rooms", phrase, kb=kb)
 
 
-def map_modified_room(head: str, words: list[str]) -> Match | None:
+def map_modified_room(head: str, words: list[str], kb: KnowledgeBase | None = None) -> Match | None:
     """A better furnishing for a known generic head with unknown modifiers ("recital hall")."""
     if head not in GENERIC_HEADS or not words:  # "eucalyptus steam room" stays a steam room
         return None
-    return nearest("rooms", " ".join([*words, head]))
+    return nearest("rooms", " ".join([*words, head]), kb=kb)
 
 
-def map_building(phrase: str) -> Match | None:
+def map_building(phrase: str, kb: KnowledgeBase | None = None) -> Match | None:
     """The building program for an unknown building word."""
-    return nearest("buildings", phrase)
+    return nearest("buildings", phrase, kb=kb)
 
 
-def map_style(word: str) -> Match | None:
+def map_style(word: str, kb: KnowledgeBase | None = None) -> Match | None:
     """The style for an unknown style word before the building ("craftsman", "neon");
     words under ``MIN_STYLE_CHARS`` letters ("mid" of "mid-size") are not mapped."""
-    return nearest("styles", word) if len(word) >= MIN_STYLE_CHARS else None
+    return nearest("styles", word, kb=kb) if len(word) >= MIN_STYLE_CHARS else None
 
 
-def fallback_object() -> dict:
+def fallback_object(kb: KnowledgeBase | None = None) -> dict:
     """Prototype fields for an object no concept matches (``concepts.yaml``)."""
-    return dict(load("concepts").get("fallback_object") or {"size": [0.6, 0.6, 0.8], "rule": "place_wall"})
+    return dict(resolve(kb).raw("concepts").get("fallback_object") or {"size": [0.6, 0.6, 0.8], "rule": "place_wall"})
 

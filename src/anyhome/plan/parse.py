@@ -15,7 +15,9 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 from anyhome.plan import openvocab as ov
-from anyhome.plan.knowledge import load, normalize, vocabulary
+from anyhome.plan.kb import KnowledgeBase
+from anyhome.plan.kbview import resolve, vocabulary
+from anyhome.plan.knowledge import normalize
 from anyhome.plan.spec import MAX_COUNT
 from anyhome.sanitize import clean_text
 
@@ -88,15 +90,15 @@ FORWARD_ARRANGEMENTS: list[tuple[re.Pattern[str], str]] = [
 ]
 """Arrangement phrases that apply to the object named right after them ("two rows of pews")."""
 
-@functools.lru_cache(maxsize=1)
-def _surface_words() -> dict[str, str]:
+@functools.lru_cache(maxsize=8)
+def _surface_words(kb: KnowledgeBase) -> dict[str, str]:
     """Word after a material phrase -> the room surface it dresses (knowledge/surfaces.yaml)."""
-    return {w: surface for surface, words in load("surfaces").items() for w in words}
+    return {w: surface for surface, words in kb.raw("surfaces").items() for w in words}
 
 
-def surface_of_word(word: str) -> str | None:
+def surface_of_word(word: str, kb: KnowledgeBase | None = None) -> str | None:
     """The room surface (walls, floor, ceiling, furniture) a word names, or None."""
-    return _surface_words().get(word)
+    return _surface_words(resolve(kb)).get(word)
 
 _TOKEN = re.compile(r"[^\W_]+(?:'[^\W_]+)*|[.,;:!?()]")
 _BED_BATH = re.compile(
@@ -372,8 +374,8 @@ def _look_back(m: Mention, text: str, tokens: list[tuple[str, int, int]], taken:
         m.plural = True
 
 
-def _parse_building(text: str, p: Parsed, taken: list[tuple[int, int]]) -> tuple[int, int] | None:
-    voc = vocabulary()
+def _parse_building(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[int, int]]) -> tuple[int, int] | None:
+    voc = vocabulary(kb)
     longer = [mt.span() for mt in voc.regex.finditer(text)]
     matches = [
         b for b in voc.building_regex.finditer(text)
@@ -386,23 +388,23 @@ def _parse_building(text: str, p: Parsed, taken: list[tuple[int, int]]) -> tuple
         if text[best.end() : nxt.start()].strip():
             break
         best = nxt
-    opening = _opening_building(text, best.start(), taken)
+    opening = _opening_building(kb, text, best.start(), taken)
     if opening is not None:  # "a steakhouse with ... a bar": the text's subject is the building
         program, span, head = opening
-        p.building = next(i for i, b in enumerate(load("programs")["buildings"]) if b["program"] == program)
+        p.building = next(i for i, b in enumerate(kb.raw("programs")["buildings"]) if b["program"] == program)
         p.building_word = head
-        _building_modifiers(text, span[0], p, taken=taken)
-        p.building_phrase = _with_modifier(text, span[0], head, taken)
+        _building_modifiers(kb, text, span[0], p, taken=taken)
+        p.building_phrase = _with_modifier(kb, text, span[0], head, taken)
         return span
     p.building = voc.building_forms[best.group()]
-    _building_modifiers(text, best.start(), p, taken=taken)
-    p.building_phrase = _with_modifier(text, best.start(), best.group(), taken)
+    _building_modifiers(kb, text, best.start(), p, taken=taken)
+    p.building_phrase = _with_modifier(kb, text, best.start(), best.group(), taken)
     return best.start(), best.end()
 
 
-def _with_modifier(text: str, start: int, phrase: str, taken: list[tuple[int, int]]) -> str:
+def _with_modifier(kb: KnowledgeBase, text: str, start: int, phrase: str, taken: list[tuple[int, int]]) -> str:
     """The building word with the one plain word before it ("sushi" restaurant), if any."""
-    voc = vocabulary()
+    voc = vocabulary(kb)
     before = _tokens(text[:start])[-1:]
     for tok, s, _ in before:
         if (
@@ -415,7 +417,7 @@ def _with_modifier(text: str, start: int, phrase: str, taken: list[tuple[int, in
     return phrase
 
 
-def _opening_building(text: str, known_start: int, taken: list[tuple[int, int]]) -> tuple[str, tuple[int, int], str] | None:
+def _opening_building(kb: KnowledgeBase, text: str, known_start: int, taken: list[tuple[int, int]]) -> tuple[str, tuple[int, int], str] | None:
     """The program for the head of the text's opening noun phrase when the first known
     building word only comes after it; None when the head maps to no building."""
     tokens = _tokens(text)
@@ -424,9 +426,9 @@ def _opening_building(text: str, known_start: int, taken: list[tuple[int, int]])
         return None
     head = fnp[0].split()[-1]
     s = fnp[2] - len(head)
-    if any(a < fnp[2] and s < b for a, b in taken) or head in ov.non_objects() or head in vocabulary().forms:
+    if any(a < fnp[2] and s < b for a, b in taken) or head in ov.non_objects(kb) or head in vocabulary(kb).forms:
         return None
-    mb = ov.map_building(head)
+    mb = ov.map_building(head, kb)
     return (mb.key, (s, fnp[2]), head) if mb is not None else None
 
 
@@ -493,13 +495,13 @@ def _apply_negation(text: str, mentions: list[Mention]) -> None:
         k += len(chain)
 
 
-def _building_modifiers(text: str, start: int, p: Parsed, keep_unmapped: bool = True, taken: Sequence[tuple[int, int]] = ()) -> None:
+def _building_modifiers(kb: KnowledgeBase, text: str, start: int, p: Parsed, keep_unmapped: bool = True, taken: Sequence[tuple[int, int]] = ()) -> None:
     """Size words and the user's own style words just before the building word
     ("a Craftsman bungalow", "a neon lit retro arcade"); words that match no style are
     kept only if ``keep_unmapped`` (the head word was recognised) and the user wrote
     them capitalised mid-sentence, as names of styles are ("a Craftsman bungalow", not "a
     day spa")."""
-    voc = vocabulary()
+    voc = vocabulary(kb)
     for tok, s, _ in reversed(_tokens(text[:start])[-3:]):
         if any(a <= s < b for a, b in taken):
             break
@@ -508,9 +510,9 @@ def _building_modifiers(text: str, start: int, p: Parsed, keep_unmapped: bool = 
             continue
         if tok in STOP_WORDS or not tok.isalpha() or parse_number(tok) is not None or tok in MANY_WORDS:
             break
-        if tok in voc.forms or tok in voc.style_forms or voc.colour_regex.fullmatch(tok) or tok in ov.non_objects() or tok in voc.building_forms:
+        if tok in voc.forms or tok in voc.style_forms or voc.colour_regex.fullmatch(tok) or tok in ov.non_objects(kb) or tok in voc.building_forms:
             continue
-        ms = ov.map_style(tok)
+        ms = ov.map_style(tok, kb)
         if ms is None and not (keep_unmapped and tok in p.proper_words):
             continue
         p.style_words.insert(0, tok)
@@ -518,8 +520,8 @@ def _building_modifiers(text: str, start: int, p: Parsed, keep_unmapped: bool = 
             p.styles.append(ms.key)
 
 
-def _find_mentions(text: str, p: Parsed, taken: list[tuple[int, int]]) -> list[Mention]:
-    voc = vocabulary()
+def _find_mentions(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[int, int]]) -> list[Mention]:
+    voc = vocabulary(kb)
     found: list[Mention] = []
     for mt in voc.regex.finditer(text):
         if any(a < mt.end() and mt.start() < b for a, b in taken):
@@ -653,8 +655,8 @@ def _apply_arrangements(text: str, mentions: list[Mention]) -> None:
                 x.arrangement = x.arrangement or kind
 
 
-def _find_styles(text: str, p: Parsed) -> None:
-    voc = vocabulary()
+def _find_styles(kb: KnowledgeBase, text: str, p: Parsed) -> None:
+    voc = vocabulary(kb)
     for mt in voc.style_regex.finditer(text):
         key = voc.style_forms[mt.group()]
         if key not in p.styles:
@@ -667,19 +669,19 @@ def _find_styles(text: str, p: Parsed) -> None:
             p.colours.append(c)
 
 
-def _find_materials(text: str, p: Parsed, rooms: list[Mention]) -> None:
-    voc = vocabulary()
-    defaults = load("styles")["materials"]
+def _find_materials(kb: KnowledgeBase, text: str, p: Parsed, rooms: list[Mention]) -> None:
+    voc = vocabulary(kb)
+    defaults = kb.raw("styles")["materials"]
     for mt in voc.material_regex.finditer(text):
         material = mt.group()
         words = [t for t, _, _ in _tokens(text[max(0, mt.start() - 30) : mt.start()])][-2:]
-        colour = [w for w in words if vocabulary().colour_regex.fullmatch(w)]
+        colour = [w for w in words if vocabulary(kb).colour_regex.fullmatch(w)]
         after = _tokens(text[mt.end() : mt.end() + 30])[:2]
         surfaces: list[str] = []
         explicit = False
         phrase = " ".join(colour + [material])
         for tok, _, _ in after:
-            surface = surface_of_word(tok)
+            surface = surface_of_word(tok, kb)
             if surface is not None:
                 surfaces.append(surface)
                 explicit = True
@@ -710,12 +712,12 @@ def _singular(word: str) -> tuple[str, bool]:
     return word, False
 
 
-def _known_spans(text: str, taken: list[tuple[int, int]], mentions: list[Mention]) -> tuple[list[tuple[int, int]], list[tuple[int, int]]]:
+def _known_spans(kb: KnowledgeBase, text: str, taken: list[tuple[int, int]], mentions: list[Mention]) -> tuple[list[tuple[int, int]], list[tuple[int, int]]]:
     """Spans of what the lexical pass found: (mentions and codes, modifier words).
 
     Modifier words (styles, materials, colours) may stand inside an open-vocabulary
     object phrase; mentions may not."""
-    voc = vocabulary()
+    voc = vocabulary(kb)
     spans = list(taken)
     for m in mentions:
         spans.append((m.start - len(" ".join(m.words)) - (1 if m.words else 0), m.end))
@@ -723,42 +725,42 @@ def _known_spans(text: str, taken: list[tuple[int, int]], mentions: list[Mention
     return spans, soft
 
 
-def _open_vocabulary(text: str, p: Parsed, taken: list[tuple[int, int]], mentions: list[Mention], tokens: list[tuple[str, int, int]]) -> list[Mention]:
+def _open_vocabulary(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[int, int]], mentions: list[Mention], tokens: list[tuple[str, int, int]]) -> list[Mention]:
     """Add what the knowledge base does not list, mapped by the embedding matcher."""
-    hard, soft = _known_spans(text, taken, mentions)
+    hard, soft = _known_spans(kb, text, taken, mentions)
     spans = hard + soft
     if p.building is None:
         fnp = ov.first_noun_phrase(text, tokens)
         if fnp is not None:  # only the head counts ("a Moroccan riad" -> "riad")
             head = fnp[0].split()[-1]
             fnp = (head, fnp[2] - len(head), fnp[2])
-        if fnp and not any(a < fnp[2] and fnp[1] < b for a, b in spans) and fnp[0] not in ov.non_objects():
+        if fnp and not any(a < fnp[2] and fnp[1] < b for a, b in spans) and fnp[0] not in ov.non_objects(kb):
             phrase = fnp[0]
-            mb = ov.map_building(phrase)
+            mb = ov.map_building(phrase, kb)
             if mb is not None:
-                p.building = next(i for i, b in enumerate(load("programs")["buildings"]) if b["program"] == mb.key)
+                p.building = next(i for i, b in enumerate(kb.raw("programs")["buildings"]) if b["program"] == mb.key)
                 p.building_word = phrase
                 spans.append((fnp[1], fnp[2]))
                 head_start = fnp[2] - len(phrase.split()[-1])
-                _building_modifiers(text, head_start, p, taken=spans)
-            elif (mr := ov.map_room(phrase)) is not None:
+                _building_modifiers(kb, text, head_start, p, taken=spans)
+            elif (mr := ov.map_room(phrase, kb)) is not None:
                 m = Mention("room", "", phrase, fnp[1], fnp[2], concept=mr.key, open_vocab=True)
                 mentions.append(m)
                 spans.append((fnp[1], fnp[2]))
             if mb is None:  # "a French patisserie": the opening phrase's modifiers are style words
-                _building_modifiers(text, fnp[1], p, keep_unmapped=False, taken=spans)
+                _building_modifiers(kb, text, fnp[1], p, keep_unmapped=False, taken=spans)
     for m in mentions:
         if m.kind != "room":
             continue
         if not m.key:
-            mr = ov.map_room(m.name)
+            mr = ov.map_room(m.name, kb)
             m.concept = mr.key if mr else None
         elif m.words:
-            mr = ov.map_modified_room(m.key, m.words)
+            mr = ov.map_modified_room(m.key, m.words, kb)
             m.concept = mr.key if mr else None
     hard += spans[len(hard) + len(soft) :]  # what the building step above added
-    _room_compounds(text, tokens, mentions, hard)
-    found = ov.find_object_phrases(text, tokens, hard, lambda t: parse_number(t) is not None, soft=soft)
+    _room_compounds(kb, text, tokens, mentions, hard)
+    found = ov.find_object_phrases(text, tokens, hard, lambda t: parse_number(t) is not None, soft=soft, kb=kb)
     unknown: list[str] = []
     for phrase, s, e in found:
         words = phrase.split()
@@ -768,7 +770,7 @@ def _open_vocabulary(text: str, p: Parsed, taken: list[tuple[int, int]], mention
             continue
         head, plural = _singular(words[-1])
         name = " ".join([*words[:-1], head])
-        kind, mo = ov.classify(name)
+        kind, mo = ov.classify(name, kb)
         if kind == "room" and mo is not None:
             m = Mention("room", "", name, s, e, plural=plural, concept=mo.key, open_vocab=True)
             _look_back(m, text, tokens, spans, keep_words=False)
@@ -796,7 +798,7 @@ ROOM_SUFFIXES = frozenset("area corner bay zone space nook wing section suite en
 """Words that, right after a room word, make a larger room name ("kennel area", "café corner")."""
 
 
-def _room_compounds(text: str, tokens: list[tuple[str, int, int]], mentions: list[Mention], hard: list[tuple[int, int]]) -> None:
+def _room_compounds(kb: KnowledgeBase, text: str, tokens: list[tuple[str, int, int]], mentions: list[Mention], hard: list[tuple[int, int]]) -> None:
     """A room word followed by one more noun: "a kennel area" extends the room's name;
     "a courtyard fountain" adds a fountain in the courtyard."""
     starts = {s: k for k, (_, s, _) in enumerate(tokens)}
@@ -823,9 +825,9 @@ def _room_compounds(text: str, tokens: list[tuple[str, int, int]], mentions: lis
             m.name, m.end = f"{m.name} {head}", e
             hard.append((s, e))
             continue
-        if head in ov.non_objects() or len(head) < 3:
+        if head in ov.non_objects(kb) or len(head) < 3:
             continue
-        kind, mo = ov.classify(head)
+        kind, mo = ov.classify(head, kb)
         if kind != "object":
             continue
         obj = Mention("object", mo.key if mo else "", head, s, e, plural=plural, open_vocab=True, host=m)
@@ -894,8 +896,10 @@ def _proper_words(text: str) -> frozenset[str]:
     return frozenset(out)
 
 
-def parse(text: str) -> Parsed:
-    """Parse ``text`` into a :class:`Parsed`; never raises on odd input."""
+def parse(text: str, kb: KnowledgeBase | None = None) -> Parsed:
+    """Parse ``text`` into a :class:`Parsed` with the knowledge base ``kb`` (None: the
+    one in force); never raises on odd input."""
+    kb = resolve(kb)
     text = _NO_COMPOUND.sub(r"\1", clean_text(text))  # escape sequences never reach a name
     norm = normalize(text)
     p = Parsed(text=norm, proper_words=_proper_words(text))
@@ -906,10 +910,10 @@ def parse(text: str) -> Parsed:
     p.text = norm
     taken: list[tuple[int, int]] = []
     _apply_codes(norm, p, taken)
-    span = _parse_building(norm, p, taken)
+    span = _parse_building(kb, norm, p, taken)
     if span:
         taken.append(span)
-    mentions = _find_mentions(norm, p, taken)
+    mentions = _find_mentions(kb, norm, p, taken)
     tokens = _tokens(norm)
     spans = taken + [(m.start, m.end) for m in mentions]
     for m in mentions:
@@ -917,13 +921,13 @@ def parse(text: str) -> Parsed:
         if m.kind == "room":
             kept = []
             for w in m.words:
-                if w in vocabulary().style_forms or vocabulary().colour_regex.fullmatch(w):
+                if w in vocabulary(kb).style_forms or vocabulary(kb).colour_regex.fullmatch(w):
                     continue
                 kept.append(w)
             m.words = kept
         if m.words:
             m.name = " ".join(m.words + [m.name])
-    mentions = _open_vocabulary(norm, p, taken, mentions, tokens)
+    mentions = _open_vocabulary(kb, norm, p, taken, mentions, tokens)
     _apply_negation(norm, mentions)
     _check_counts(p, mentions)
     _total_rooms(norm, p, mentions)
@@ -933,6 +937,6 @@ def parse(text: str) -> Parsed:
     _apply_arrangements(norm, mentions)
     p.rooms = [m for m in mentions if m.kind == "room"]
     p.objects = [m for m in mentions if m.kind == "object"]
-    _find_styles(norm, p)
-    _find_materials(norm, p, p.rooms)
+    _find_styles(kb, norm, p)
+    _find_materials(kb, norm, p, p.rooms)
     return p

@@ -15,7 +15,7 @@ import numpy as np
 
 from anyhome.house import ROOM_TYPES
 from anyhome.plan.concepts import furnish_type
-from anyhome.plan.knowledge import load
+from anyhome.plan.kb import KnowledgeBase
 from anyhome.plan.parse import Mention, Parsed, format_count, plural
 from anyhome.plan.spec import MAX_COUNT, MAX_ROOMS
 
@@ -56,35 +56,35 @@ class Slot:
     extra_groups: list[str] = field(default_factory=list)
 
 
-def _type_info(room_type: str) -> dict:
-    types = load("rooms")["types"]
+def _type_info(kb: KnowledgeBase, room_type: str) -> dict:
+    types = kb.raw("rooms")["types"]
     return types.get(room_type, types["other"])
 
 
-def _slot_from_entry(e: dict) -> Slot:
+def _slot_from_entry(kb: KnowledgeBase, e: dict) -> Slot:
     t = e["type"] if e["type"] in ROOM_TYPES else "other"
-    area = e.get("area") or _type_info(t)["area"]
+    area = e.get("area") or _type_info(kb, t)["area"]
     return Slot(e.get("name", t.replace("_", " ")), t, e.get("furnish", t), tuple(area), key=e.get("key", ""))
 
 
-def _concept_info(furnish: str) -> dict:
+def _concept_info(kb: KnowledgeBase, furnish: str) -> dict:
     """Type and area of a furnishing set chosen by the embedding matcher."""
-    for info in load("rooms")["names"].values():
+    for info in kb.raw("rooms")["names"].values():
         if info.get("furnish", info.get("type")) == furnish:
             return {"type": info["type"], "furnish": furnish, **({"area": info["area"]} if "area" in info else {})}
-    return {"type": furnish_type(furnish), "furnish": furnish}
+    return {"type": furnish_type(furnish, kb), "furnish": furnish}
 
 
-def _slot_from_mention(m: Mention, idx: int) -> Slot:
-    info = load("rooms")["names"].get(m.key) if m.key else None
+def _slot_from_mention(kb: KnowledgeBase, m: Mention, idx: int) -> Slot:
+    info = kb.raw("rooms")["names"].get(m.key) if m.key else None
     if m.concept:
-        info = {**_concept_info(m.concept), **({"name": info["name"]} if info and "name" in info else {})}
+        info = {**_concept_info(kb, m.concept), **({"name": info["name"]} if info and "name" in info else {})}
     if info is None:
         t = "other"
         info = {}
     else:
         t = info["type"] if info["type"] in ROOM_TYPES else "other"
-    area = info.get("area") or _type_info(t)["area"]
+    area = info.get("area") or _type_info(kb, t)["area"]
     name = m.name if m.words or m.concept or not info.get("name") else info["name"]
     s = Slot(name, t, info.get("furnish", t), tuple(area), mention=idx, generic_name=False, size=m.size)
     return s
@@ -96,22 +96,22 @@ def _sample_count(spec, rng: np.random.Generator) -> int:
     return int(spec if spec is not None else 1)
 
 
-def choose_program(parsed: Parsed) -> tuple[str | None, list[str]]:
+def choose_program(kb: KnowledgeBase, parsed: Parsed) -> tuple[str | None, list[str]]:
     """Program key (None: only the named rooms) and the styles the building implies."""
     if parsed.building is not None:
-        b = load("programs")["buildings"][parsed.building]
+        b = kb.raw("programs")["buildings"][parsed.building]
         return b["program"], list(b.get("styles", []))
     if any(not m.negated for m in parsed.rooms):
-        types = {_slot_from_mention(m, i).type for i, m in enumerate(parsed.rooms) if not m.negated}
+        types = {_slot_from_mention(kb, m, i).type for i, m in enumerate(parsed.rooms) if not m.negated}
         if parsed.bedrooms or parsed.people or (len(types) >= 3 and types & HOME_TYPES):
             return DEFAULT_PROGRAM, []
         return None, []
     return DEFAULT_PROGRAM, []
 
 
-def plan_rooms(parsed: Parsed, program: str | None, rng: np.random.Generator, warnings: list[str]) -> tuple[list[Slot], str | None]:
+def plan_rooms(kb: KnowledgeBase, parsed: Parsed, program: str | None, rng: np.random.Generator, warnings: list[str]) -> tuple[list[Slot], str | None]:
     """Rooms of the house; returns the slots and the key of the program's main room."""
-    prog = load("programs")["programs"].get(program) if program else None
+    prog = kb.raw("programs")["programs"].get(program) if program else None
     slots: list[Slot] = []
     if prog is not None:
         for e in prog["rooms"]:
@@ -120,28 +120,28 @@ def plan_rooms(parsed: Parsed, program: str | None, rng: np.random.Generator, wa
             if opt is not None and rng.random() >= float(opt):
                 n = 0
             for _ in range(n):
-                s = _slot_from_entry(e)
+                s = _slot_from_entry(kb, e)
                 s.optional = opt is not None
                 slots.append(s)
-    fixed = _fixed_counts(parsed)
-    _claim_mentions(parsed, slots, fixed)
+    fixed = _fixed_counts(kb, parsed)
+    _claim_mentions(kb, parsed, slots, fixed)
     _drop_replaced(parsed, slots)
     totals = frozenset(t for t, n in (("bedroom", parsed.bedrooms), ("bathroom", parsed.bathrooms)) if n is not None)
-    _apply_fixed(slots, fixed, prog, totals)
-    _apply_people(parsed, slots, fixed)
-    _add_hallway(slots, prog)
+    _apply_fixed(kb, slots, fixed, prog, totals)
+    _apply_people(kb, parsed, slots, fixed)
+    _add_hallway(kb, slots, prog)
     if parsed.rooms and all(m.negated for m in parsed.rooms) and parsed.building is None and prog is not None:
         warnings.append(
             f"the text only rules out rooms ({', '.join(m.name for m in parsed.rooms)}); planned a {prog.get('building', 'home')} without them"
         )
-    asked = _asked_per_type(parsed, fixed)
-    total = _fill_total(parsed, slots, prog, fixed, asked)
-    _drop_negated(parsed, slots)
-    _cap(slots, warnings, fixed, asked, total)
+    asked = _asked_per_type(kb, parsed, fixed)
+    total = _fill_total(kb, parsed, slots, prog, fixed, asked)
+    _drop_negated(kb, parsed, slots)
+    _cap(kb, slots, warnings, fixed, asked, total)
     if not slots:
         ruled_out = [m.name for m in parsed.rooms if m.negated]
-        keep = next((e for e in (prog or {}).get("rooms", []) if not _ruled_out(parsed, _slot_from_entry(e))), None)
-        s = _slot_from_entry(keep or {"type": "living_room", "name": "living room"})
+        keep = next((e for e in (prog or {}).get("rooms", []) if not _ruled_out(kb, parsed, _slot_from_entry(kb, e))), None)
+        s = _slot_from_entry(kb, keep or {"type": "living_room", "name": "living room"})
         slots.append(s)
         if ruled_out:
             warnings.append(
@@ -169,9 +169,9 @@ def _name_main_room(parsed: Parsed, slots: list[Slot], prog: dict | None) -> Non
     main.name = phrase
 
 
-def _fixed_counts(parsed: Parsed) -> dict[str, int]:
+def _fixed_counts(kb: KnowledgeBase, parsed: Parsed) -> dict[str, int]:
     fixed: dict[str, int] = {}
-    names = load("rooms")["names"]
+    names = kb.raw("rooms")["names"]
     for m in parsed.rooms:
         info = names.get(m.key) or {}
         if info.get("generic") and m.count is not None:
@@ -183,12 +183,12 @@ def _fixed_counts(parsed: Parsed) -> dict[str, int]:
     return fixed
 
 
-def _claim_mentions(parsed: Parsed, slots: list[Slot], fixed: dict[str, int]) -> None:
-    names = load("rooms")["names"]
+def _claim_mentions(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], fixed: dict[str, int]) -> None:
+    names = kb.raw("rooms")["names"]
     for i, m in enumerate(parsed.rooms):
         if m.count == 0:
             continue
-        proto = _slot_from_mention(m, i)
+        proto = _slot_from_mention(kb, m, i)
         generic = bool((names.get(m.key) or {}).get("generic"))
         n = max(1, m.count or 1) if (generic or m.count) else (2 if m.plural else 1)  # "tatami rooms"
         n = min(n, MAX_COUNT)
@@ -227,7 +227,7 @@ def _drop_replaced(parsed: Parsed, slots: list[Slot]) -> None:
         slots.remove(s)
 
 
-def _apply_fixed(slots: list[Slot], fixed: dict[str, int], prog: dict | None, totals: frozenset[str] = frozenset()) -> None:
+def _apply_fixed(kb: KnowledgeBase, slots: list[Slot], fixed: dict[str, int], prog: dict | None, totals: frozenset[str] = frozenset()) -> None:
     for t, n in fixed.items():
         # a count of plain rooms ("three kids' bedrooms") leaves the rooms the text names
         # otherwise ("a master suite") on top; a total ("a 2B1B") counts every room
@@ -241,12 +241,12 @@ def _apply_fixed(slots: list[Slot], fixed: dict[str, int], prog: dict | None, to
             of_type.remove(victim)
         entry = next((e for e in (prog or {}).get("rooms", []) if e["type"] == t), None)
         while len(of_type) < min(n, MAX_ROOMS):
-            s = _slot_from_entry(entry or {"type": t, "name": t.replace("_", " ")})
+            s = _slot_from_entry(kb, entry or {"type": t, "name": t.replace("_", " ")})
             slots.append(s)
             of_type.append(s)
 
 
-def _apply_people(parsed: Parsed, slots: list[Slot], fixed: dict[str, int]) -> None:
+def _apply_people(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], fixed: dict[str, int]) -> None:
     if not parsed.people or "bedroom" in fixed:
         return
     people = min(parsed.people, 40)
@@ -259,7 +259,7 @@ def _apply_people(parsed: Parsed, slots: list[Slot], fixed: dict[str, int]) -> N
         bedrooms.remove(victim)
         slots.remove(victim)
     while len(bedrooms) < want:
-        s = _slot_from_entry({"type": "bedroom", "name": "bedroom"})
+        s = _slot_from_entry(kb, {"type": "bedroom", "name": "bedroom"})
         slots.append(s)
         bedrooms.append(s)
     for s, beds in zip(bedrooms[1:], beds_per_room):
@@ -269,24 +269,24 @@ def _apply_people(parsed: Parsed, slots: list[Slot], fixed: dict[str, int]) -> N
         if s.generic_name:
             s.name = "kids' bedroom"
     if people >= 4 and "bathroom" not in fixed and sum(s.type == "bathroom" for s in slots) < 2:
-        slots.append(_slot_from_entry({"type": "bathroom", "name": "bathroom"}))
+        slots.append(_slot_from_entry(kb, {"type": "bathroom", "name": "bathroom"}))
 
 
-def _asked_per_type(parsed: Parsed, fixed: dict[str, int]) -> dict[str, int]:
+def _asked_per_type(kb: KnowledgeBase, parsed: Parsed, fixed: dict[str, int]) -> dict[str, int]:
     """Rooms of each type the text asked for, as written (before any cap)."""
     asked: dict[str, int] = {}
     for i, m in enumerate(parsed.rooms):
         if m.negated:
             continue
         if m.asked is not None and m.asked > 0:  # repeated mentions of one room are one room
-            t = _slot_from_mention(m, i).type
+            t = _slot_from_mention(kb, m, i).type
             asked[t] = max(asked.get(t, 0), m.asked)
     for t, n in fixed.items():
         asked[t] = max(asked.get(t, 0), n)
     return asked
 
 
-def _fill_total(parsed: Parsed, slots: list[Slot], prog: dict | None, fixed: dict[str, int], asked: dict[str, int]) -> int:
+def _fill_total(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], prog: dict | None, fixed: dict[str, int], asked: dict[str, int]) -> int:
     """"A hotel with 40 rooms": add copies of the program's most repeated room (guest
     rooms, bedrooms) until the house has the rooms asked for, or the most it can hold.
     Returns the number of rooms the text asked for in all."""
@@ -297,29 +297,29 @@ def _fill_total(parsed: Parsed, slots: list[Slot], prog: dict | None, fixed: dic
         (e for e in prog["rooms"] if isinstance(e.get("count"), list)),
         key=lambda e: e["count"][1], default=None,
     )  # fmt: skip
-    if unit is None or _ruled_out(parsed, _slot_from_entry(unit)):
+    if unit is None or _ruled_out(kb, parsed, _slot_from_entry(kb, unit)):
         return want
     added = 0
     while len(slots) < min(want, MAX_ROOMS):
-        slots.append(_slot_from_entry(unit))
+        slots.append(_slot_from_entry(kb, unit))
         added += 1
-    t = _slot_from_entry(unit).type
+    t = _slot_from_entry(kb, unit).type
     n = sum(s.type == t for s in slots)
     fixed[t] = max(fixed.get(t, 0), n)
     asked[t] = max(asked.get(t, 0), n)
     return want
 
 
-def _ruled_out(parsed: Parsed, s: Slot) -> bool:
+def _ruled_out(kb: KnowledgeBase, parsed: Parsed, s: Slot) -> bool:
     """Whether the text rules out a room like ``s`` ("without a kitchen", "no garage",
     "0 bathrooms"): a plain room word rules out its whole type; a named room ("no wine
     cellar", "no guest bedroom") rules out rooms of that name or furnishing."""
-    names = load("rooms")["names"]
+    names = kb.raw("rooms")["names"]
     for i, m in enumerate(parsed.rooms):
         if not m.negated:
             continue
         info = names.get(m.key) or {}
-        proto = _slot_from_mention(m, i)
+        proto = _slot_from_mention(kb, m, i)
         if info.get("generic") and not m.words and s.type == info["type"]:
             return True
         if s.name in (m.name, m.key) or s.key == m.key or (proto.furnish == s.furnish and proto.furnish not in ("other", s.type)):
@@ -329,14 +329,14 @@ def _ruled_out(parsed: Parsed, s: Slot) -> bool:
     return False
 
 
-def _drop_negated(parsed: Parsed, slots: list[Slot]) -> None:
+def _drop_negated(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot]) -> None:
     """Remove every room the text rules out; the user's word wins over the program (a
     house with no bathroom is still a valid house)."""
-    for s in [s for s in slots if _ruled_out(parsed, s)]:
+    for s in [s for s in slots if _ruled_out(kb, parsed, s)]:
         slots.remove(s)
 
 
-def _cap(slots: list[Slot], warnings: list[str], fixed: dict[str, int] | None = None, asked: dict[str, int] | None = None, total: int = 0) -> None:
+def _cap(kb: KnowledgeBase, slots: list[Slot], warnings: list[str], fixed: dict[str, int] | None = None, asked: dict[str, int] | None = None, total: int = 0) -> None:
     """Bound rooms per type (the rooms the text names may pass a type's usual maximum)
     and rooms per plan; what the text did not ask for goes first. Each cap that bites
     says what was asked and what is planned."""
@@ -347,7 +347,7 @@ def _cap(slots: list[Slot], warnings: list[str], fixed: dict[str, int] | None = 
         by_type.setdefault(s.type, []).append(s)
     for t, group in by_type.items():
         want = max(asked.get(t, 0), fixed.get(t, 0), sum(s.mention is not None for s in group))
-        cap = max(int(_type_info(t).get("max", 6)), min(want, MAX_ROOMS))
+        cap = max(int(_type_info(kb, t).get("max", 6)), min(want, MAX_ROOMS))
         if len(group) > cap:
             for s in sorted(group, key=lambda s: s.mention is not None)[: len(group) - cap]:
                 slots.remove(s)
@@ -360,7 +360,7 @@ def _cap(slots: list[Slot], warnings: list[str], fixed: dict[str, int] | None = 
             room = t.replace("_", " ")
             why = (
                 f"a house has at most {MAX_ROOMS} rooms" if want > MAX_ROOMS or asked_all > MAX_ROOMS
-                else f"a house holds at most {max(int(_type_info(t).get('max', 6)), planned)} of them"
+                else f"a house holds at most {max(int(_type_info(kb, t).get('max', 6)), planned)} of them"
             )  # fmt: skip
             warnings.append(f"asked for {format_count(want)} {plural(room)}; {why}, planned {planned}")
     if asked_all > MAX_ROOMS and not any(f"at most {MAX_ROOMS} rooms" in w for w in warnings):
@@ -388,12 +388,12 @@ def _trim(slots: list[Slot], fixed: dict[str, int]) -> None:
         slots.remove(next(s for s in reversed(slots) if s.type == t))
 
 
-def _add_hallway(slots: list[Slot], prog: dict | None) -> None:
+def _add_hallway(kb: KnowledgeBase, slots: list[Slot], prog: dict | None) -> None:
     if prog is None or any(s.type == "hallway" for s in slots):
         return
     private = sum(s.type in ("bedroom", "bathroom", "study", "closet") for s in slots)
     if private >= 4:
-        slots.append(_slot_from_entry({"type": "hallway", "name": "hallway"}))
+        slots.append(_slot_from_entry(kb, {"type": "hallway", "name": "hallway"}))
 
 
 def _slug(text: str) -> str:
@@ -429,12 +429,12 @@ def sample_areas(slots: list[Slot], building_size: float, rng: np.random.Generat
         s.area = float(np.clip(a, *AREA_LIMITS_M2))
 
 
-def connect(slots: list[Slot], entrance_types: list[str]) -> list[tuple[str, str]]:
+def connect(kb: KnowledgeBase, slots: list[Slot], entrance_types: list[str]) -> list[tuple[str, str]]:
     """A tree over the rooms (hubs first) plus one (room, "outside") entrance edge."""
-    types = load("rooms")["types"]
+    types = kb.raw("rooms")["types"]
 
     def is_hub(s: Slot) -> bool:
-        return bool(_type_info(s.type).get("hub"))
+        return bool(_type_info(kb, s.type).get("hub"))
 
     root = None
     for t in [*entrance_types, "entry", "reception", "hallway", "living_room", "waiting_room"]:
@@ -448,7 +448,7 @@ def connect(slots: list[Slot], entrance_types: list[str]) -> list[tuple[str, str
     placed = [root]
     order = sorted((s for s in slots if s is not root), key=lambda s: (types.get(s.type, types["other"])["tier"], slots.index(s)))
     for s in order:
-        attach = _type_info(s.type).get("attach", [])
+        attach = _type_info(kb, s.type).get("attach", [])
 
         def cap(p: Slot) -> int:
             return HUB_MAX_DEGREE if is_hub(p) else ROOM_MAX_DEGREE

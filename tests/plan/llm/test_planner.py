@@ -6,6 +6,7 @@ from pathlib import Path
 
 import numpy as np
 
+from anyhome.plan.knowledge import knowledge_base
 from anyhome.plan.llm import LLMPlanner
 from anyhome.plan.llm.cache import ReplyCache
 from anyhome.plan.llm.client import LLMClient
@@ -83,14 +84,14 @@ def test_a_server_that_hangs_times_out_and_falls_back(silent_server, tmp_path: P
 
 
 def test_replies_become_groups_and_ornaments(tmp_path: Path) -> None:
-    look = offline_look(CAT, np.random.default_rng(0))
-    room = fallback_room("guest bedroom", "bedroom", 14.0, "guest", look, np.random.default_rng(0))
+    look = offline_look(knowledge_base(), CAT, np.random.default_rng(0))
+    room = fallback_room(knowledge_base(), "guest bedroom", "bedroom", 14.0, "guest", look, np.random.default_rng(0))
     fur = FurnitureReply.model_validate(examples()["furniture"])
-    got = replace_groups(room, fur, look, np.random.default_rng(0))
+    got = replace_groups(knowledge_base(), room, fur, look, np.random.default_rng(0))
     assert [g.anchor.name for g in got.groups] == [g.anchor.name for g in fur.groups]
     assert got.groups[0].members[0].rule == "place_beside" and got.groups[0].members[0].target is None  # the anchor
     assert all(it.material for g in got.groups for it in [g.anchor, *g.members])
     orn = OrnamentsReply.model_validate(examples()["ornaments"])
-    got = replace_ornaments(got, orn, look, np.random.default_rng(0))
+    got = replace_ornaments(knowledge_base(), got, orn, look, np.random.default_rng(0))
     assert [o.name for o in got.ornaments] == [o.name for o in orn.ornaments]
     assert got.ornaments[2].rule == "place_on_wall" and got.ornaments[2].target == "sofa"

@@ -36,6 +36,8 @@ from pydantic import BaseModel, ValidationError
 
 from anyhome.house import ROOM_TYPES
 from anyhome.plan.appearance import style_keys
+from anyhome.plan.kb import KnowledgeBase
+from anyhome.plan.kbview import resolve
 from anyhome.plan.llm import checks, prompts
 from anyhome.plan.llm.cache import ReplyCache
 from anyhome.plan.llm.client import LLMClient, Unavailable, parse_json
@@ -147,12 +149,15 @@ class LLMPlanner:
 
     name = "llm"
 
-    def __init__(self, config: LLMConfig, floorplan_check: FloorplanCheck | None = None) -> None:
+    def __init__(self, config: LLMConfig, floorplan_check: FloorplanCheck | None = None,
+                 kb: KnowledgeBase | None = None) -> None:
         """``floorplan_check(spec)`` lists why a program's rooms and connections cannot be
         laid out ([] when they can); the program reply is checked with it too. None skips
         that check: whoever builds the planner passes the floorplan stage's check (see
-        ``anyhome.plan.get_planner`` and ``anyhome.floorplan.floorplan_errors``)."""
+        ``anyhome.plan.get_planner`` and ``anyhome.floorplan.floorplan_errors``). ``kb``:
+        the knowledge base the offline fallbacks read (None: the one in force)."""
         self.config = config
+        self.kb = resolve(kb)
         self.floorplan_check = floorplan_check
         self.client: LLMClient | None = None  # of the last run: usage for the summary
 
@@ -206,9 +211,9 @@ class LLMPlanner:
 
     # ------------------------------------------------------------------ the plan
     def plan(self, text: str, rng: np.random.Generator) -> HouseSpec:
-        offline = OfflinePlanner().plan(text, rng)  # the fallback of every stage (raises on empty text)
+        offline = OfflinePlanner(self.kb).plan(text, rng)  # the fallback of every stage (raises on empty text)
         seed = int(rng.integers(2**31 - 1))
-        look = offline_look(text, np.random.default_rng(seed))
+        look = offline_look(self.kb, text, np.random.default_rng(seed))
         self.client = LLMClient(self.config, ReplyCache(self.config.cache_dir, enabled=self.config.cache))
         warnings: list[str] = []
         records: list[StageRecord] = []
@@ -233,7 +238,7 @@ class LLMPlanner:
             warnings[:0] = offline.warnings
         else:
             building = program.building.strip().lower()
-            rooms = [fallback_room(r.name, r.type, round(r.area_m2, 2), r.id, look, np.random.default_rng([seed, i]))
+            rooms = [fallback_room(self.kb, r.name, r.type, round(r.area_m2, 2), r.id, look, np.random.default_rng([seed, i]))
                      for i, r in enumerate(program.rooms)]  # fmt: skip
             connections = _connections(program)
 
@@ -254,7 +259,7 @@ class LLMPlanner:
         for r_i, (obj, rec) in enumerate(results[:-1]):
             records.append(rec)
             if obj is not None:
-                rooms[r_i] = replace_groups(rooms[r_i], obj, look, np.random.default_rng([seed, 100 + r_i]))
+                rooms[r_i] = replace_groups(self.kb, rooms[r_i], obj, look, np.random.default_rng([seed, 100 + r_i]))
         records.append(appearance_rec)
 
         # 3. ornaments per room, once the furniture is known
@@ -269,13 +274,13 @@ class LLMPlanner:
         for r_i, (obj, rec) in enumerate(self._run_all(jobs, seed, warnings)):
             records.append(rec)
             if obj is not None:
-                rooms[r_i] = replace_ornaments(rooms[r_i], obj, look, np.random.default_rng([seed, 200 + r_i]))
+                rooms[r_i] = replace_ornaments(self.kb, rooms[r_i], obj, look, np.random.default_rng([seed, 200 + r_i]))
         if appearance is not None:
             rooms = [_dress(r, appearance) for r in rooms]
         spec = HouseSpec(
             prompt=text, building=building or offline.building,
             style=appearance.style if appearance is not None else offline.style,
-            styles=(style_keys(appearance.style) or offline.styles) if appearance is not None else offline.styles,
+            styles=(style_keys(appearance.style, kb=self.kb) or offline.styles) if appearance is not None else offline.styles,
             palette=list(appearance.palette) if appearance is not None else offline.palette,
             rooms=rooms, connections=connections, warnings=warnings,
         )  # fmt: skip
@@ -340,7 +345,7 @@ def _connections(program: ProgramReply) -> list[tuple[str, str]]:
     return [*out, (program.entrance, "outside")]
 
 
-def replace_groups(room: RoomSpec, reply: FurnitureReply, look: Any, rng: np.random.Generator) -> RoomSpec:
+def replace_groups(kb: KnowledgeBase, room: RoomSpec, reply: FurnitureReply, look: Any, rng: np.random.Generator) -> RoomSpec:
     """The room with the model's furniture groups (and its ornaments loosened to match)."""
     groups: list[GroupSpec] = []
     used: dict[str, int] = {}
@@ -352,14 +357,14 @@ def replace_groups(room: RoomSpec, reply: FurnitureReply, look: Any, rng: np.ran
             target = None
             if m.rule in RELATIVE_RULES and m.target and by_key.get(m.target.lower(), anchor.name) != anchor.name:
                 target = by_key[m.target.lower()]
-            members.append(item_spec(_item_data(m, target), look, rng))
+            members.append(item_spec(kb, _item_data(m, target), look, rng))
             by_key.setdefault(m.name.lower(), m.name)
             by_key.setdefault(m.category.lower(), m.name)
         base = _slug(g.name)
         used[base] = used.get(base, 0) + 1
         groups.append(GroupSpec(
             name=base if used[base] == 1 else f"{base}_{used[base]}",
-            anchor=item_spec(_item_data(anchor, None), look, rng), members=members,
+            anchor=item_spec(kb, _item_data(anchor, None), look, rng), members=members,
             arrangement=g.arrangement, repeat=g.repeat, priority=priority,
         ))  # fmt: skip
     names = _furniture_names(groups)
@@ -374,8 +379,8 @@ def _item_data(it: Any, target: str | None) -> dict[str, Any]:
     }  # fmt: skip
 
 
-def replace_ornaments(room: RoomSpec, reply: OrnamentsReply, look: Any, rng: np.random.Generator) -> RoomSpec:
-    ornaments = [item_spec(_item_data(o, o.target.strip() or None), look, rng) for o in reply.ornaments]
+def replace_ornaments(kb: KnowledgeBase, room: RoomSpec, reply: OrnamentsReply, look: Any, rng: np.random.Generator) -> RoomSpec:
+    ornaments = [item_spec(kb, _item_data(o, o.target.strip() or None), look, rng) for o in reply.ornaments]
     return room.model_copy(update={"ornaments": ornaments})
 
 

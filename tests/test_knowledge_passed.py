@@ -1,0 +1,84 @@
+"""The knowledge base is passed explicitly to the stages (issue 12): two knowledge bases
+in one process give different houses for the same text, with no environment variable and
+no ``use_knowledge``; the default still honours ``$ANYHOME_KNOWLEDGE_PATH``."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+import anyhome
+from anyhome.plan.knowledge import ENV_VAR, knowledge_base, overlay, use_knowledge
+
+TREEHOUSE = {
+    "objects.yaml": "hammock stand: {category: hammock, size: [1.0, 3.2, 1.2], rule: place_center, "
+    "rooms: [hammock_deck, balcony], synonyms: [hammock frame], group: hammock}\n",
+    "furniture.yaml": "groups:\n  hammock: {anchor: {use: hammock stand}}\n"
+    "sets:\n  hammock_deck: {groups: [{group: hammock}]}\n",
+    "rooms.yaml": "names:\n  hammock deck: {type: balcony, furnish: hammock_deck, area: [6, 9]}\n",
+    "programs.yaml": "buildings:\n  - {words: [treehouse, tree house], program: treehouse, styles: [rustic]}\n"
+    "programs:\n  treehouse:\n    building: treehouse\n    main: cabin\n    entrance: [living_room]\n"
+    "    rooms:\n      - {key: cabin, type: living_room, name: cabin}\n"
+    "      - {key: deck, type: balcony, name: hammock deck, furnish: hammock_deck}\n",
+    # the haunted style's assets look futuristic in this knowledge base
+    "styles.yaml": "styles:\n  haunted: {asset_class: futuristic}\n",
+}
+TEXT = "a haunted treehouse with a hammock stand"
+
+
+def _folder(root: Path) -> Path:
+    root.mkdir(parents=True, exist_ok=True)
+    for name, text in TREEHOUSE.items():
+        (root / name).write_text(text, encoding="utf-8")
+    return root
+
+
+@pytest.fixture(autouse=True)
+def _no_overlay(monkeypatch):
+    monkeypatch.delenv(ENV_VAR, raising=False)
+    use_knowledge(None)
+    yield
+    use_knowledge(None)
+
+
+def _classes(house: anyhome.House) -> set[str]:
+    return {o.asset["params"]["style"] for o in house.objects if o.asset}
+
+
+def test_two_knowledge_bases_in_one_process_give_different_houses(tmp_path):
+    shipped = knowledge_base([])
+    user = knowledge_base([str(_folder(tmp_path / "kb"))])
+    assert overlay() == ()  # nothing in force: the knowledge travels only as an argument
+    a = anyhome.generate(TEXT, seed=0, knowledge=user)
+    b = anyhome.generate(TEXT, seed=0, knowledge=shipped)
+    a2 = anyhome.generate(TEXT, seed=0, knowledge=user)  # no table of one leaks into the other
+    assert a.to_json() == a2.to_json()
+    assert a.to_json() != b.to_json()
+    assert "hammock deck" in {r.name for r in a.rooms} and "hammock deck" not in {r.name for r in b.rooms}
+    # the default (nothing passed, nothing in force) is the shipped knowledge
+    assert anyhome.generate(TEXT, seed=0).to_json() == b.to_json()
+
+
+def test_the_assets_stage_reads_the_knowledge_base_passed_in(tmp_path):
+    user = knowledge_base([str(_folder(tmp_path / "kb"))])
+    house = anyhome.generate("a haunted bedroom", seed=0, knowledge=knowledge_base([]))
+    assert house.styles[0] == "haunted" and _classes(house) == {"gothic"}
+    again = anyhome.generate_from_spec(house.plan, seed=0, knowledge=user)
+    assert _classes(again) == {"futuristic"}
+    assert [o.position for o in again.objects] == [o.position for o in house.objects]
+    assert _classes(anyhome.relayout(house, seed=0, knowledge=user)) == {"futuristic"}
+    assert _classes(anyhome.restyle(house, "haunted", knowledge=user)) == {"futuristic"}
+    assert _classes(anyhome.restyle(house, "haunted")) == {"gothic"}
+
+
+def test_default_knowledge_honours_the_environment_variable(tmp_path, monkeypatch):
+    monkeypatch.setenv(ENV_VAR, str(_folder(tmp_path / "kb")))
+    house = anyhome.generate(TEXT, seed=0)
+    assert "hammock deck" in {r["name"] for r in json.loads(house.to_json())["rooms"]}
+
+
+def test_knowledge_must_be_a_knowledge_base():
+    with pytest.raises(anyhome.AnyHomeError, match="knowledge must be a KnowledgeBase"):
+        anyhome.generate("a kitchen", knowledge="kb")  # type: ignore[arg-type]
