@@ -18,7 +18,6 @@ from anyhome.layout import LayoutOptions, layout_house
 from anyhome.layout.rules import REGISTRY, RELATIVE_RULES, RULES, WALL_RULES, RuleParams
 from anyhome.plan import spec as spec_module
 from anyhome.plan.llm import schemas
-from anyhome.plan.spec import ItemSpec
 
 from .helpers import check_valid, group, house_spec, item, rect, single_room
 
