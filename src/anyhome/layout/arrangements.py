@@ -12,6 +12,7 @@ import numpy as np
 from anyhome.house import HouseObject
 from anyhome.layout import groups, placement, scoring
 from anyhome.layout.rules import REGISTRY, Cands, Kind, front_dir, yaw_facing
+from anyhome.layout.rules import place_center as center_rule
 from anyhome.layout.rules.place_center import place_center
 from anyhome.layout.state import RoomState
 from anyhome.plan.spec import GroupSpec
@@ -31,8 +32,9 @@ def anchor_candidates(st: RoomState, g: GroupSpec, prev: HouseObject | None) -> 
         c, kind = placement.candidates(st, item, rule, size, None, prev, prev)
         return c, kind, rule, None
     if g.arrangement == "center":
-        facing = REGISTRY["place_center"].parse(item.params, lenient=True).facing  # type: ignore[attr-defined]
-        c = place_center(st.space, size, facing)
+        params = REGISTRY["place_center"].parse(item.params, lenient=True)
+        assert isinstance(params, center_rule.Params)
+        c = place_center(st.space, size, params.facing)
         c.pref = c.pref * st.options.center_pref_scale
         return c, "floor", "place_center", None
     ref = None

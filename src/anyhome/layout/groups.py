@@ -6,6 +6,7 @@ from __future__ import annotations
 from anyhome.house import Dropped, HouseObject
 from anyhome.layout import arrangements, placement, scoring
 from anyhome.layout.rules import REGISTRY
+from anyhome.layout.rules import place_around as around_rule
 from anyhome.layout.rules.place_around import (
     around_allocation,
     around_positions,
@@ -137,7 +138,7 @@ def place_around(st: RoomState, m: ItemSpec, refs: list[HouseObject], label: str
     """Copies of ``m`` spread over the sides of ``refs`` (long sides first), then anywhere free."""
     objs: list[HouseObject] = []
     size = m.size_m
-    sides = REGISTRY[m.rule].parse(m.params).sides  # type: ignore[attr-defined]
+    sides = around_rule.Params.model_validate(m.params).sides
     counts = [m.count // len(refs) + (1 if i < m.count % len(refs) else 0) for i in range(len(refs))]
     missing = 0
     for ref, n in zip(refs, counts):

@@ -13,7 +13,7 @@ from typing import Any
 
 import numpy as np
 
-from anyhome.layout.rules import REGISTRY
+from anyhome.layout.rules import REGISTRY, place_around
 from anyhome.plan.knowledge import load
 from anyhome.plan.openvocab import fallback_object
 from anyhome.plan.parse import Mention
@@ -216,7 +216,7 @@ def _fit_table(g: Group) -> None:
         if m["rule"] != "place_around":
             continue
         w, d, h = g["anchor"]["size_m"]
-        sides = m["params"].get("sides", "all")
+        sides = place_around.Params.model_validate(m["params"]).sides
 
         def capacity(w: float, d: float = d, sides: str = sides) -> int:
             n = 2 * math.floor(w / CHAIR_PITCH_M)
