@@ -15,7 +15,7 @@ from hypothesis import strategies as st
 
 from anyhome import geometry
 from anyhome.house import HouseObject
-from anyhome.layout.solver import _front_item
+from anyhome.layout.placement import front_item as _front_item
 from anyhome.plan.knowledge import load
 from anyhome.plan.parse import surface_of_word
 from anyhome.plan.spec import ItemSpec

@@ -7,6 +7,7 @@ check. Meters everywhere.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 
@@ -42,6 +43,11 @@ coarser one (e.g. a 1 km room) is not checked (``NavResult.checked`` is False)."
 
 
 # --------------------------------------------------------------------- boxes
+def wrap_yaw(yaw: float) -> float:
+    """``yaw`` in radians brought into [-pi, pi): the one yaw wrap of the project."""
+    return float((yaw + math.pi) % (2 * math.pi) - math.pi)
+
+
 def footprint_corners(position: Sequence[float], size: Sequence[float], yaw: float) -> np.ndarray:
     """Corners of an object's rotated footprint.
 

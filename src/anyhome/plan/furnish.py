@@ -13,6 +13,7 @@ from typing import Any
 
 import numpy as np
 
+from anyhome.layout.rules import REGISTRY, place_around
 from anyhome.plan.kb import KnowledgeBase
 from anyhome.plan.openvocab import fallback_object
 from anyhome.plan.parse import Mention
@@ -63,7 +64,8 @@ def make_item(kb: KnowledgeBase, entry: dict[str, Any], rng: np.random.Generator
     rule = entry.get("rule") or proto.get("rule") or "place_center"
     if ornament and rule not in ORNAMENT_RULES:
         rule = "place_top"
-    params = {**proto.get("params", {}), **entry.get("params", {})}
+    # the prototype's params for its own rule, kept where the item's rule takes them too
+    params = {**_params_for(rule, proto.get("params", {})), **entry.get("params", {})}
     target = entry.get("target", proto.get("target") if ornament else None)
     return {
         "name": name,
@@ -88,16 +90,30 @@ def _merge(base: dict[str, Any], over: dict[str, Any]) -> dict[str, Any]:
             members = out.get("members", [])
             for i, mv in enumerate(v):
                 if i < len(members):
-                    members[i] = {**members[i], **mv}
+                    members[i] = _override(members[i], mv)
                 else:
                     members.append(mv)
             out["members"] = members
         elif k == "anchor":
-            out["anchor"] = {**out.get("anchor", {}), **v}
+            out["anchor"] = _override(out.get("anchor", {}), v)
             if "name" in v:
                 out["anchor"].pop("names", None)
         elif k != "group":
             out[k] = v
+    return out
+
+
+def _params_for(rule: Any, params: dict[str, Any]) -> dict[str, Any]:
+    """The ``params`` a rule takes (those written for another rule are left behind)."""
+    taken = REGISTRY[rule].params.model_fields if rule in REGISTRY else {}
+    return {k: v for k, v in params.items() if k in taken}
+
+
+def _override(item: dict[str, Any], over: dict[str, Any]) -> dict[str, Any]:
+    """A template's item with a set's overrides; a new rule keeps only the params it takes."""
+    out = {**item, **over}
+    if "rule" in over and "params" not in over and "params" in item:
+        out["params"] = _params_for(over["rule"], item["params"])
     return out
 
 
@@ -200,7 +216,7 @@ def _fit_table(g: Group) -> None:
         if m["rule"] != "place_around":
             continue
         w, d, h = g["anchor"]["size_m"]
-        sides = m["params"].get("sides", "all")
+        sides = place_around.Params.model_validate(m["params"]).sides
 
         def capacity(w: float, d: float = d, sides: str = sides) -> int:
             n = 2 * math.floor(w / CHAIR_PITCH_M)

@@ -5,36 +5,17 @@ diagram (connections), and per room the furniture groups (an anchor and its memb
 each with a placement rule), ornaments, style and material words. The floorplan and
 layout stages turn it into geometry.
 
-Placement rules (the ten rules of the AnyHome paper) and their parameters
-------------------------------------------------------------------------
-Absolute rules (need no other object; usable by anchors, members and ornaments):
-
-``place_corner``     back against a wall and one side against the adjacent wall.
-``place_wall``       back against a wall, facing into the room.
-                     params: ``wall`` = ``"any"`` (default) | ``"longest"`` | ``"opposite_door"``
-``place_next_wall``  back against a wall, directly next to (side by side with) the
-                     previously placed wall object of the same group (a run of kitchen
-                     counters, cases "along the walls"); falls back to ``place_wall``.
-``place_center``     in the middle region of the room, clear of the walls.
-                     params: ``facing`` = ``"door"`` | ``"wall"`` | ``"any"`` (default)
-``place_next``       next to (side by side with, same facing) the previously placed copy
-                     of this item or, for the first one, like ``place_center``.
-
-Relative rules (``x`` is ``ItemSpec.target``: the name of another item of the same group,
-default the group's anchor; for ornaments, the name or category of any object already in
-the room, ``None`` meaning "any suitable one"):
-
-``place_beside``   left and/or right of x, backs aligned, same facing.
-                   params: ``side`` = ``"left"`` | ``"right"`` | ``"both"`` (default both,
-                   copies alternate sides)
-``place_around``   around x, each copy facing x (chairs around a table).
-                   params: ``sides`` = ``"all"`` (default) | ``"long"`` | ``"front"``
-``place_front``    in front of x (x's +y side), facing x.
-                   params: ``distance_m`` (gap, default 0.4), ``facing`` = ``"toward"``
-                   (default) | ``"same"`` | ``"away"``
-``place_top``      on x's top surface (z = top of x; support = x's id).
-``place_on_wall``  on the wall behind x, above it; with no target, on any free wall.
-                   params: ``elevation_m`` (bottom of the object above the floor)
+Placement rules (the ten rules of the AnyHome paper)
+----------------------------------------------------
+Each rule is one module of :mod:`anyhome.layout.rules` (``place_wall``, ``place_front``,
+...) holding its parameters model, whose fields and defaults are the only statement of
+what ``ItemSpec.params`` may hold for it: an unknown key or a bad value is refused when
+the item is built. :data:`RULES`, :data:`RELATIVE_RULES` and :data:`WALL_RULES` derive
+from the registry. Absolute rules (``place_corner``, ``place_wall``, ``place_next_wall``,
+``place_center``, ``place_next``) need no other object; relative rules place an object
+against ``x`` = ``ItemSpec.target``: the name of another item of the same group (default
+the group's anchor) or, for ornaments, the name or category of any object already in the
+room, ``None`` meaning "any suitable one".
 
 Group ``arrangement`` (how ``repeat`` copies of a group are laid out):
 ``"free"`` each copy placed by the anchor's rule; ``"rows"`` anchors on a regular grid
@@ -49,31 +30,29 @@ depth front-to-back (local y, front faces +y), height along z.
 from __future__ import annotations
 
 import re
-from typing import Annotated, Any, Literal
+from typing import TYPE_CHECKING, Annotated, Any, Literal
 
-from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, field_validator, model_validator
+from pydantic import (
+    BaseModel,
+    BeforeValidator,
+    ConfigDict,
+    Field,
+    ValidationError,
+    field_validator,
+    model_validator,
+)
 
+from anyhome.layout.rules import REGISTRY, RULES
+from anyhome.layout.rules import RELATIVE_RULES as RELATIVE_RULES  # re-exported
+from anyhome.layout.rules import WALL_RULES as WALL_RULES  # re-exported
 from anyhome.sanitize import clean_text, is_safe_id
 from anyhome.tags import Tag, tags_for
 
-Rule = Literal[
-    "place_corner",
-    "place_next_wall",
-    "place_wall",
-    "place_center",
-    "place_next",
-    "place_beside",
-    "place_around",
-    "place_front",
-    "place_top",
-    "place_on_wall",
-]
-RULES: tuple[str, ...] = Rule.__args__  # type: ignore[attr-defined]
-RELATIVE_RULES: frozenset[str] = frozenset(
-    {"place_beside", "place_around", "place_front", "place_top", "place_on_wall"}
-)
-WALL_RULES: frozenset[str] = frozenset({"place_wall", "place_corner", "place_next_wall", "place_on_wall"})
-"""Rules that put an object against (or on) a wall."""
+if TYPE_CHECKING:  # a Literal built from the rule registry at run time; a checker sees str
+    Rule = str
+else:
+    Rule = Literal[RULES]
+"""A placement rule's name: a key of :data:`anyhome.layout.rules.REGISTRY`."""
 Arrangement = Literal["free", "rows", "along_walls", "center", "symmetric"]
 
 MAX_COUNT = 120
@@ -159,6 +138,19 @@ class ItemSpec(_Model):
             if isinstance(name, str) and isinstance(category, str):
                 data = {**data, "tags": list(tags_for(name, category))}
         return data
+
+    @model_validator(mode="after")
+    def _check_params(self) -> ItemSpec:
+        """``params`` as the rule's parameters model takes them (anyhome.layout.rules)."""
+        try:
+            REGISTRY[self.rule].parse(self.params)
+        except ValidationError as e:
+            err = e.errors()[0]
+            where = ".".join(str(x) for x in err["loc"])
+            what = "unknown parameter" if err["type"] == "extra_forbidden" else err["msg"]
+            known = ", ".join(REGISTRY[self.rule].params.model_fields) or "none"
+            raise ValueError(f"{self.rule} params: {where}: {what} (parameters: {known})") from None
+        return self
 
     @field_validator("size_m")
     @classmethod

@@ -25,6 +25,7 @@ from anyhome.geometry import (
     navigability,
     opening_zone,
 )
+from anyhome.geometry import wrap_yaw as _wrap
 from anyhome.house import Floorplan, HouseObject
 from anyhome.plan.spec import WALL_RULES
 from anyhome.space import (
@@ -83,10 +84,6 @@ def _is_seat(o: HouseObject) -> bool:
 def _is_table(o: HouseObject) -> bool:
     """A table or work surface (tags ``table``, ``work_surface``) that is not a seat."""
     return is_table(o.tags)
-
-
-def _wrap(yaw: float) -> float:
-    return float((yaw + math.pi) % (2 * math.pi) - math.pi)
 
 
 class _Refiner:

@@ -14,7 +14,8 @@ from typing import TYPE_CHECKING, Annotated, Any, Literal
 from pydantic import BaseModel, BeforeValidator, ConfigDict, Field
 
 from anyhome.house import ROOM_TYPES
-from anyhome.plan.spec import MAX_COUNT, MAX_ROOMS, RELATIVE_RULES, RULES
+from anyhome.layout.rules import REGISTRY
+from anyhome.plan.spec import MAX_COUNT, MAX_ROOMS, RULES
 from anyhome.sanitize import clean_text
 
 MAX_GROUPS = 5
@@ -27,15 +28,17 @@ MAX_ITEM_COUNT = 40
 NAME_CHARS = 60
 WORDS_CHARS = 80
 
-if TYPE_CHECKING:  # Literals built from the knowledge at run time; a checker sees str
+if TYPE_CHECKING:  # Literals built from the knowledge and the rule registry at run time; a checker sees str
     RoomType = str
     RuleName = str
     AnchorRule = str
+    OrnamentRule = str
 else:
     RoomType = Literal[tuple(ROOM_TYPES)]
-    RuleName = Literal[tuple(RULES)]
-    AnchorRule = Literal[tuple(r for r in RULES if r not in RELATIVE_RULES)]
-OrnamentRule = Literal["place_top", "place_on_wall"]
+    RuleName = Literal[RULES]
+    # an anchor is placed by an absolute rule; an ornament on a top or a wall
+    AnchorRule = Literal[tuple(n for n, r in REGISTRY.items() if not r.relative)]
+    OrnamentRule = Literal[tuple(n for n, r in REGISTRY.items() if r.kind != "floor")]
 ArrangementName = Literal["free", "rows", "along_walls", "center", "symmetric"]
 
 
@@ -156,10 +159,27 @@ def _strict(node: Any) -> Any:
     return node
 
 
+def _self_contained(model: type[BaseModel]) -> dict[str, Any]:
+    raw = model.model_json_schema()
+    return _strict(_inline(raw, raw.get("$defs", {})))
+
+
 @lru_cache(maxsize=None)
 def _schema(stage: str) -> dict[str, Any]:
-    raw = STAGES[stage].model_json_schema()
-    return _strict(_inline(raw, raw.get("$defs", {})))
+    return _self_contained(STAGES[stage])
+
+
+@lru_cache(maxsize=None)
+def _params_schema(rule: str) -> dict[str, Any]:
+    return _self_contained(REGISTRY[rule].params)
+
+
+def params_schema(rule: str) -> dict[str, Any]:
+    """The JSON Schema of a placement rule's ``params`` (a fresh copy), derived from the
+    rule's parameters model (:mod:`anyhome.layout.rules`), so what a reply may set and what
+    ``ItemSpec`` accepts are one statement. Defaults are kept (``"default"``), every field
+    required as strict structured output wants."""
+    return copy.deepcopy(_params_schema(rule))
 
 
 def json_schema(stage: str, room_ids: list[str] | None = None, targets: list[str] | None = None) -> dict[str, Any]:

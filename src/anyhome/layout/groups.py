@@ -1,0 +1,178 @@
+"""Group placement: an anchor by its rule (or its arrangement's), then every member
+relative to it; a few anchor poses are tried when members do not fit."""
+
+from __future__ import annotations
+
+from anyhome.house import Dropped, HouseObject
+from anyhome.layout import arrangements, placement, scoring
+from anyhome.layout.rules import REGISTRY
+from anyhome.layout.rules import place_around as around_rule
+from anyhome.layout.rules.place_around import (
+    around_allocation,
+    around_positions,
+    around_slots,
+    seat_candidates,
+)
+from anyhome.layout.state import Choice, RoomState
+from anyhome.plan.spec import GroupSpec, ItemSpec
+
+
+def place_group_copy(st: RoomState, g: GroupSpec, copy: int, prev: HouseObject | None) -> HouseObject | None:
+    """Copy ``copy`` of group ``g`` (``prev``: the previous copy's anchor); its anchor or None."""
+    label = f"{g.name}-{copy}"
+    item = g.anchor
+    size = item.size_m
+    if REGISTRY[item.rule].placement == "top" and g.arrangement not in ("along_walls", "center"):
+        obj = placement.place_on_some_top(st, item, None, label, None)
+        if obj is None:
+            drop_group(st, g, "no surface to stand on")
+            return None
+        st.dropped.extend(place_members(st, g, label, obj))
+        return obj
+    c, kind, rule, _ = arrangements.anchor_candidates(st, g, prev)
+    o = st.options
+    tries = o.anchor_tries_required if g.required else o.anchor_tries
+    if kind == "floor" and g.members and len(c):
+        c = scoring.group_room_bonus(st, g, c)
+    order = scoring.rank(st, c, size, kind, o.noise, spacing=True)
+    choices = scoring.verified(st, c, order, size, kind, None, k=tries, min_sep_m=o.anchor_min_sep_m)
+    return try_choices(st, g, label, choices, kind, rule)
+
+
+def try_choices(st: RoomState, g: GroupSpec, label: str, choices: list[Choice], kind: str,
+                rule: str) -> HouseObject | None:
+    """The anchor at the first of ``choices`` where every member fits, else where the fewest
+    are dropped; None (all dropped) when no choice keeps the walkways open."""
+    item = g.anchor
+    if not choices:
+        drop_group(st, g, scoring.no_fit_reason(st, item.size_m))
+        return None
+    support = "wall" if kind == "wall" else "floor"
+    snap = st.snapshot()
+    best: tuple[int, int] | None = None  # (number of drops, choice index)
+    for k, ch in enumerate(choices):
+        anchor = st.commit(item, item.size_m, ch, support, rule, label, None)
+        if kind != "top" and not st.nav.ok():
+            st.restore(snap)
+            continue
+        drops = place_members(st, g, label, anchor)
+        if not drops:
+            return anchor
+        if best is None or len(drops) < best[0]:
+            best = (len(drops), k)
+        st.restore(snap)
+    if best is None:
+        drop_group(st, g, "would block a walkway or a door")
+        return None
+    anchor = st.commit(item, item.size_m, choices[best[1]], support, rule, label, None)
+    st.dropped.extend(place_members(st, g, label, anchor))
+    return anchor
+
+
+def drop_group(st: RoomState, g: GroupSpec, reason: str) -> None:
+    st.drop(g.anchor.name, reason)
+    for m in g.members:
+        st.drop(m.name, f"its anchor {g.anchor.name!r} was not placed", m.count)
+
+
+def place_members(st: RoomState, g: GroupSpec, label: str, anchor: HouseObject) -> list[Dropped]:
+    """Every member of ``g`` around ``anchor``, each after its target; what was dropped."""
+    placed: dict[str, list[HouseObject]] = {g.anchor.name: [anchor]}
+    drops: list[Dropped] = []
+    pending = list(g.members)
+    prev_wall = anchor if REGISTRY[anchor.rule].against_wall else None
+    names = {m.name for m in g.members} | {g.anchor.name}
+    while pending:
+        ready = [m for m in pending if (m.target or g.anchor.name) in placed or (m.target or "") not in names]
+        if not ready:
+            for m in pending:
+                drops += [st.dropped_entry(m.name, f"target {m.target!r} was not placed")] * m.count
+            break
+        m = ready[0]
+        pending.remove(m)
+        tname = m.target or g.anchor.name
+        refs = placed.get(tname)
+        if refs is None:  # target names something outside the group
+            refs = st.match(tname) or [anchor]
+        objs, d = place_item_copies(st, m, refs, label, anchor.id, prev_wall)
+        placed.setdefault(m.name, []).extend(objs)
+        for o in objs:
+            if REGISTRY[o.rule].runs_along_wall:
+                prev_wall = o
+        drops += d
+    return drops
+
+
+def place_item_copies(st: RoomState, m: ItemSpec, refs: list[HouseObject], label: str | None,
+                      anchor_id: str | None, prev_wall: HouseObject | None) -> tuple[list[HouseObject], list[Dropped]]:
+    """The ``count`` copies of member ``m`` against ``refs`` (its target's copies, in turn)."""
+    rule = REGISTRY[m.rule]
+    objs: list[HouseObject] = []
+    drops: list[Dropped] = []
+    if not refs and rule.relative:
+        return [], [st.dropped_entry(m.name, f"target {m.target!r} was not placed")] * m.count
+    if rule.placement == "around":
+        return place_around(st, m, refs, label, anchor_id)
+    prev_same = None
+    for i in range(m.count):
+        ref = refs[i % len(refs)] if refs else None
+        if rule.placement == "top":
+            obj = placement.place_on_some_top(st, m, [ref] if ref is not None else None, label, anchor_id)
+            reason = "does not fit on top of its target"
+        else:
+            params = rule.copy_params(dict(m.params), i, m.count)
+            obj = placement.place_single(st, m, params, ref, prev_same, prev_wall, label, anchor_id, i)
+            reason = scoring.no_fit_reason(st, m.size_m)
+        if obj is None:
+            drops.append(st.dropped_entry(m.name, reason))
+            continue
+        objs.append(obj)
+        prev_same = obj
+        if REGISTRY[obj.rule].runs_along_wall:
+            prev_wall = obj
+    return objs, drops
+
+
+def place_around(st: RoomState, m: ItemSpec, refs: list[HouseObject], label: str | None,
+                 anchor_id: str | None) -> tuple[list[HouseObject], list[Dropped]]:
+    """Copies of ``m`` spread over the sides of ``refs`` (long sides first), then anywhere free."""
+    objs: list[HouseObject] = []
+    size = m.size_m
+    sides = around_rule.Params.model_validate(m.params).sides
+    counts = [m.count // len(refs) + (1 if i < m.count % len(refs) else 0) for i in range(len(refs))]
+    missing = 0
+    for ref, n in zip(refs, counts):
+        slots = around_slots(ref, size, sides)
+        alloc = around_allocation(slots, n)
+        left = n - sum(alloc)
+        for s, k in zip(slots, alloc):
+            if k == 0:
+                continue
+            for pos, yaw in around_positions(ref, size, s, k):
+                obj = _around_one(st, m, [(pos, yaw)], label, anchor_id)
+                if obj is None:
+                    left += 1
+                else:
+                    objs.append(obj)
+        # leftovers: any slot at capacity on any side
+        if left:
+            spare = []
+            for s in slots:
+                spare += around_positions(ref, size, s, s[-1])
+            while left:
+                obj = _around_one(st, m, spare, label, anchor_id)
+                if obj is None:
+                    break
+                objs.append(obj)
+                left -= 1
+        missing += left
+    drops = [st.dropped_entry(m.name, "no free seat around its target")] * missing
+    return objs, drops
+
+
+def _around_one(st: RoomState, m: ItemSpec, slots: list, label: str | None, anchor_id: str | None) -> HouseObject | None:
+    size = m.size_m
+    c = seat_candidates(slots)
+    order = scoring.rank(st, c, size, "floor", st.options.member_noise, spacing=False)
+    choices = scoring.verified(st, c, order, size, "floor", None, k=st.options.member_nav_retries)
+    return st.commit_if_walkable(m, size, choices, "floor", "place_around", label, anchor_id)

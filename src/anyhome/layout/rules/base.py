@@ -1,0 +1,189 @@
+"""What every placement rule is made of: candidate poses, a parameters model, a context.
+
+A rule (:class:`PlacementRule`) is one module of this package: a pydantic parameters
+model (:class:`RuleParams`, its defaults stated there once) and a candidate generator
+``candidates(ctx) -> (Cands, kind)`` returning every pose the rule allows (on a ~0.1 m
+grid) with a preference (higher is better). Validity is not checked here; the layout
+filters with :meth:`anyhome.space.RoomSpace.valid` and picks among what is left.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any, Literal
+
+import numpy as np
+from pydantic import BaseModel, ConfigDict
+
+from anyhome.geometry import wrap_yaw
+from anyhome.space import RoomSpace, Wall
+
+if TYPE_CHECKING:
+    from anyhome.house import HouseObject
+    from anyhome.layout.options import LayoutOptions
+
+GRID_STEP_M = 0.1
+"""Spacing of candidate positions along walls and over the room."""
+HALF_PI = np.pi / 2
+
+Kind = Literal["floor", "wall", "top"]
+"""Where a rule puts an object: standing on the floor, hung on a wall, on another's top."""
+Placement = Literal["pose", "around", "top"]
+"""How a group member's copies are placed: each by its own candidate poses, spread over
+the sides of the target (chairs around a table), or on a supporting top."""
+Extent = tuple[float, float, float, float]
+"""(x0, x1, y0, y1) of a group copy in its anchor's frame (front is +y)."""
+
+
+class RuleParams(BaseModel):
+    """Parameters of a rule: unknown keys are refused, defaults are stated once, here."""
+
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+
+class NoParams(RuleParams):
+    """The rule takes no parameters."""
+
+
+@dataclass
+class Cands:
+    """Candidate poses: centre of the bottom face (x, y), yaw, z and preference."""
+
+    xy: np.ndarray
+    yaw: np.ndarray
+    z: np.ndarray
+    pref: np.ndarray
+
+    @staticmethod
+    def empty() -> Cands:
+        return Cands(np.zeros((0, 2)), np.zeros(0), np.zeros(0), np.zeros(0))
+
+    def __len__(self) -> int:
+        return len(self.xy)
+
+    def __add__(self, other: Cands) -> Cands:
+        return Cands(
+            np.concatenate([self.xy, other.xy]),
+            np.concatenate([self.yaw, other.yaw]),
+            np.concatenate([self.z, other.z]),
+            np.concatenate([self.pref, other.pref]),
+        )
+
+    def shifted_pref(self, delta: float) -> Cands:
+        return Cands(self.xy, self.yaw, self.z, self.pref + delta)
+
+
+@dataclass
+class RuleContext:
+    """Everything a rule's candidate generator may read for one object copy.
+
+    ``ref`` is the object a relative rule places against (None: there is none),
+    ``prev_same`` the previous copy of the same item, ``prev_wall`` the last object the
+    group stood against a wall; ``copy``/``count`` number the copy among its item's.
+    """
+
+    space: RoomSpace
+    size: Sequence[float]
+    params: RuleParams
+    options: LayoutOptions
+    ref: HouseObject | None = None
+    prev_same: HouseObject | None = None
+    prev_wall: HouseObject | None = None
+    copy: int = 0
+    count: int = 1
+    rng: np.random.Generator | None = None
+
+
+Candidates = Callable[[RuleContext], tuple[Cands, Kind]]
+
+
+def _no_extent(box: Extent, anchor_size: Sequence[float], size: Sequence[float], params: Any,
+               count: int, near_m: float | None) -> Extent:
+    return box
+
+
+def _same_params(params: dict[str, Any], copy: int, count: int) -> dict[str, Any]:
+    return params
+
+
+@dataclass(frozen=True)
+class PlacementRule:
+    """One placement rule of the AnyHome paper.
+
+    name : the rule's name in plans (``ItemSpec.rule``)
+    params : its parameters model
+    candidates : pose generator for an anchor, member or ornament copy
+    copy_candidates : the generator for a member's or ornament's copy, when it differs
+        (alternate sides, copies side by side); None: ``candidates``
+    relative : placed relative to a target object (``ItemSpec.target``)
+    needs_target : without a target it falls back to the room centre
+    against_wall : the object's back is on a wall (standing or hung)
+    kind : standing on the floor, hung on a wall, or on a top
+    placement : how a member's copies are placed (see :data:`Placement`)
+    copy_params : the parameters of copy ``i`` of ``count`` (beside alternates sides)
+    extent : grows a group copy's extent (anchor frame) by a member placed by this rule;
+        ``near_m`` not None leaves out members placed further than that (a TV)
+    faces_anchor : whether a member by this rule (with these params) faces the anchor
+    """
+
+    name: str
+    params: type[RuleParams]
+    candidates: Candidates
+    doc: str
+    relative: bool = False
+    needs_target: bool = False
+    against_wall: bool = False
+    kind: Kind = "floor"
+    placement: Placement = "pose"
+    copy_candidates: Candidates | None = None
+    copy_params: Callable[[dict[str, Any], int, int], dict[str, Any]] = _same_params
+    extent: Callable[[Extent, Sequence[float], Sequence[float], Any, int, float | None], Extent] = _no_extent
+    faces_anchor: Callable[[Any], bool] = lambda params: False
+
+    @property
+    def runs_along_wall(self) -> bool:
+        """Stands on the floor against a wall: the next object of a run goes beside it."""
+        return self.against_wall and self.kind == "floor"
+
+    def parse(self, raw: dict[str, Any], lenient: bool = False) -> RuleParams:
+        """``raw`` (``ItemSpec.params``) as this rule's typed parameters, defaults filled.
+
+        With ``lenient``, keys this rule does not take are left out (an item placed by
+        another rule than its own, as an arrangement does)."""
+        if lenient:
+            raw = {k: v for k, v in raw.items() if k in self.params.model_fields}
+        return self.params.model_validate(raw)
+
+
+# ------------------------------------------------------------------ geometry helpers
+def front_dir(yaw: float) -> np.ndarray:
+    return np.array([-np.sin(yaw), np.cos(yaw)])
+
+
+def right_dir(yaw: float) -> np.ndarray:
+    return np.array([np.cos(yaw), np.sin(yaw)])
+
+
+def yaw_facing(direction: np.ndarray) -> float:
+    """Yaw whose front (+y local) points along ``direction``."""
+    return float(np.arctan2(-direction[0], direction[1]))
+
+
+wrap = wrap_yaw
+
+
+def wall_positions(wall: Wall, width: float, step: float = GRID_STEP_M) -> np.ndarray:
+    """Positions along ``wall`` where an object ``width`` wide fits, ``step`` apart."""
+    if wall.length < width - 1e-9:
+        return np.zeros(0)
+    lo, hi = width / 2, wall.length - width / 2
+    t = np.arange(lo, hi + 1e-9, step)
+    if hi - t[-1] > 1e-6:
+        t = np.append(t, hi)
+    return t
+
+
+def on_wall(wall: Wall, t: np.ndarray, depth: float) -> np.ndarray:
+    """Centres of objects ``depth`` deep with their backs on ``wall`` at positions ``t``."""
+    return wall.a[None] + wall.u[None] * t[:, None] + wall.n[None] * (depth / 2)

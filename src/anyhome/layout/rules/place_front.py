@@ -1,0 +1,105 @@
+"""``place_front``: in front of the target (its +y side), facing it (a coffee table
+before a sofa, a TV stand across the room from it)."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import Any, Literal
+
+import numpy as np
+from pydantic import Field
+
+from anyhome.house import HouseObject
+from anyhome.layout.rules.base import (
+    Cands,
+    Extent,
+    Kind,
+    PlacementRule,
+    RuleContext,
+    RuleParams,
+    front_dir,
+    right_dir,
+    wrap,
+)
+from anyhome.space import RoomSpace
+
+DISTANCE_FACTORS = (1.0, 0.8, 1.25, 0.6, 1.5, 0.4, 2.0, 0.2, 0.0)
+"""Multiples of ``distance_m`` tried, the first preferred."""
+LATERAL_SHIFTS_M = (0.0, 0.1, -0.1, 0.2, -0.2, 0.3, -0.3)
+"""Sideways shifts tried at each distance, the first preferred."""
+COPY_GAP_M = 0.1
+"""Gap between copies standing side by side in front of one target (chairs at a desk)."""
+WALL_SNAP_PREF = 0.95
+"""Preference of the pose flush with a wall straight ahead (a TV stand)."""
+WALL_SNAP_MIN_M = 0.4
+"""The wall snap reaches at least 2.5 times this far (a short ``distance_m`` still snaps)."""
+
+
+class Params(RuleParams):
+    distance_m: float = Field(default=0.4, ge=0.0, le=20.0)
+    """Gap between the target's front and the object, in metres."""
+    facing: Literal["toward", "same", "away"] = "toward"
+    """Face the target, or look the way it looks."""
+
+
+def place_front(space: RoomSpace, target: HouseObject, size: Sequence[float], distance_m: float = 0.4,
+                facing: str = "toward", lateral: float = 0.0) -> Cands:
+    txy = np.asarray(target.position[:2])
+    f, r = front_dir(target.yaw), right_dir(target.yaw)
+    yaw = wrap(target.yaw + np.pi) if facing == "toward" else target.yaw
+    dists, prefs = [], []
+    for k, m in enumerate(DISTANCE_FACTORS):
+        dists.append(distance_m * m if distance_m > 0 else 0.1 * k)
+        prefs.append(1.0 - 0.08 * k)
+    pts: list[np.ndarray] = []
+    yaws: list[float] = []
+    pref: list[float] = []
+    for dd, p in zip(dists, prefs):
+        for lk, lo in enumerate(LATERAL_SHIFTS_M):
+            pts.append(txy + f * (target.size[1] / 2 + dd + size[1] / 2) + r * (lateral + lo))
+            yaws.append(yaw)
+            pref.append(p - 0.05 * lk)
+    # snap flush to a wall straight ahead (a TV stand in front of a sofa)
+    for wall in space.walls:
+        if float(f @ wall.n) > -0.999:
+            continue
+        rel = txy - wall.a
+        dist_wall = float(rel @ wall.n)
+        t = float(rel @ wall.u) + lateral * float(r @ wall.u)
+        gap = dist_wall - target.size[1] / 2 - size[1]
+        if 0 < gap and 0.5 * distance_m <= gap <= 2.5 * max(distance_m, WALL_SNAP_MIN_M) and 0 <= t <= wall.length:
+            pts.append(wall.a + wall.u * t + wall.n * (size[1] / 2))
+            yaws.append(yaw)
+            pref.append(WALL_SNAP_PREF)
+    xy = np.asarray(pts)
+    return Cands(xy, np.asarray(yaws), np.zeros(len(xy)), np.asarray(pref))
+
+
+def candidates(ctx: RuleContext) -> tuple[Cands, Kind]:
+    assert isinstance(ctx.params, Params) and ctx.ref is not None
+    return place_front(ctx.space, ctx.ref, ctx.size, ctx.params.distance_m, ctx.params.facing), "floor"
+
+
+def copy_candidates(ctx: RuleContext) -> tuple[Cands, Kind]:
+    """Several copies stand side by side, centred on the target."""
+    if ctx.count <= 1:
+        return candidates(ctx)
+    assert isinstance(ctx.params, Params) and ctx.ref is not None
+    lat = (ctx.copy - (ctx.count - 1) / 2) * (ctx.size[0] + COPY_GAP_M)
+    return place_front(ctx.space, ctx.ref, ctx.size, ctx.params.distance_m, ctx.params.facing, lateral=lat), "floor"
+
+
+def extent(box: Extent, anchor_size: Sequence[float], size: Sequence[float], params: Any, count: int,
+           near_m: float | None) -> Extent:
+    x0, x1, y0, y1 = box
+    dist = params.distance_m
+    if near_m is not None and dist > near_m:
+        return box
+    y1 = max(y1, anchor_size[1] / 2 + dist + size[1])
+    half = max(size[0], count * (size[0] + COPY_GAP_M)) / 2
+    return min(x0, -half), max(x1, half), y0, y1
+
+
+RULE = PlacementRule("place_front", Params, candidates, __doc__ or "", relative=True, needs_target=True,
+                     copy_candidates=copy_candidates, extent=extent,
+                     faces_anchor=lambda params: params.facing == "toward")

@@ -1,0 +1,70 @@
+"""``place_next_wall``: back against a wall, side by side with the group's previous wall
+object (a run of kitchen counters, cases "along the walls"); falls back to ``place_wall``."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+import numpy as np
+
+from anyhome.geometry import footprint_corners
+from anyhome.house import HouseObject
+from anyhome.layout.rules.base import (
+    Cands,
+    Kind,
+    NoParams,
+    PlacementRule,
+    RuleContext,
+    front_dir,
+    on_wall,
+)
+from anyhome.layout.rules.place_wall import place_wall
+from anyhome.space import RoomSpace
+
+
+def place_next_wall(space: RoomSpace, size: Sequence[float], prev: HouseObject | None) -> Cands:
+    """Side by side with ``prev`` (a placed wall object) on its wall, or around the corner."""
+    if prev is None:
+        return Cands.empty()
+    w, d = size[0], size[1]
+    pw, pd = prev.size[0], prev.size[1]
+    pxy = np.asarray(prev.position[:2])
+    back = pxy - front_dir(prev.yaw) * pd / 2
+    out = Cands.empty()
+    for wall in space.walls:
+        t_prev = float((back - wall.a) @ wall.u)
+        dist = abs(float((back - wall.a) @ wall.n))
+        along = abs(abs(float(np.cos(prev.yaw - wall.yaw))) - 1.0) < 1e-3
+        if dist < 0.02 and along:
+            ts = np.array([t_prev - pw / 2 - w / 2, t_prev + pw / 2 + w / 2])
+            ts = np.concatenate([ts, ts + [-0.02, 0.02]])
+            pref = np.array([1.0, 1.0, 0.9, 0.9])
+            out = out + Cands(on_wall(wall, ts, d), np.full(4, wall.yaw), np.zeros(4), pref)
+        else:
+            # perpendicular wall: continue the run around a corner
+            corners = footprint_corners(prev.position, prev.size, prev.yaw)
+            tmin = min(float((c - wall.a) @ wall.u) for c in corners)
+            tmax = max(float((c - wall.a) @ wall.u) for c in corners)
+            dmin = min(float((c - wall.a) @ wall.n) for c in corners)
+            if dmin > 0.02:
+                continue
+            ts = np.array([tmax + w / 2, tmin - w / 2])
+            ok = (ts >= w / 2 - 1e-9) & (ts <= wall.length - w / 2 + 1e-9)
+            ts = ts[ok]
+            if ts.size:
+                out = out + Cands(on_wall(wall, ts, d), np.full(len(ts), wall.yaw), np.zeros(len(ts)),
+                                  np.full(len(ts), 0.8))
+    return out
+
+
+def candidates(ctx: RuleContext) -> tuple[Cands, Kind]:
+    """Beside the previous wall object; any wall pose, the nearer the better, after it."""
+    near = place_next_wall(ctx.space, ctx.size, ctx.prev_wall)
+    fb = place_wall(ctx.space, ctx.size)
+    if ctx.prev_wall is not None and len(fb):
+        d = np.linalg.norm(fb.xy - np.asarray(ctx.prev_wall.position[:2])[None], axis=1)
+        fb.pref = ctx.options.next_wall_fallback_pref - ctx.options.next_wall_fallback_per_m * d
+    return near + fb, "floor"
+
+
+RULE = PlacementRule("place_next_wall", NoParams, candidates, __doc__ or "", against_wall=True)

@@ -1,0 +1,60 @@
+"""``place_wall``: back against a wall, facing into the room."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import Literal
+
+import numpy as np
+
+from anyhome.layout.rules.base import (
+    Cands,
+    Kind,
+    PlacementRule,
+    RuleContext,
+    RuleParams,
+    on_wall,
+    wall_positions,
+)
+from anyhome.space import RoomSpace
+
+CENTRED_PREF = 0.2
+"""Preference added at the middle of a wall (none at its ends), over a base of 0.5."""
+LONGEST_PREF = 0.5
+"""Preference added on the longest wall(s) with ``wall: longest``."""
+AWAY_FROM_DOOR_PREF = 0.6
+"""Preference added per room diagonal of distance from the doors with ``wall: opposite_door``."""
+
+
+class Params(RuleParams):
+    wall: Literal["any", "longest", "opposite_door"] = "any"
+    """Which wall: any, the longest, or the one furthest from the doors."""
+
+
+def place_wall(space: RoomSpace, size: Sequence[float], which: str = "any") -> Cands:
+    w, d = size[0], size[1]
+    longest = max((wl.length for wl in space.walls), default=0.0)
+    out = Cands.empty()
+    diag = float(np.linalg.norm(space.bmax - space.bmin)) or 1.0
+    for wall in space.walls:
+        t = wall_positions(wall, w)
+        if not t.size:
+            continue
+        xy = on_wall(wall, t, d)
+        centred = 1.0 - np.abs(t - wall.length / 2) / max(wall.length / 2, 1e-6)
+        pref = 0.5 + CENTRED_PREF * centred
+        if which == "longest":
+            pref = pref + (LONGEST_PREF if wall.length >= longest - 0.05 else 0.0)
+        elif which == "opposite_door" and len(space.door_points):
+            dist = np.min(np.linalg.norm(xy[:, None] - space.door_points[None], axis=-1), 1)
+            pref = pref + AWAY_FROM_DOOR_PREF * dist / diag
+        out = out + Cands(xy, np.full(len(t), wall.yaw), np.zeros(len(t)), pref)
+    return out
+
+
+def candidates(ctx: RuleContext) -> tuple[Cands, Kind]:
+    assert isinstance(ctx.params, Params)
+    return place_wall(ctx.space, ctx.size, ctx.params.wall), "floor"
+
+
+RULE = PlacementRule("place_wall", Params, candidates, __doc__ or "", against_wall=True)

@@ -1,0 +1,131 @@
+"""A room being furnished: its free space, walkways, placed objects and bookkeeping."""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from anyhome.house import Dropped, Floorplan, HouseObject, Room
+from anyhome.layout.options import LayoutOptions
+from anyhome.layout.rules import wrap
+from anyhome.plan.spec import ItemSpec, RoomSpec
+from anyhome.space import NavGrid, Placed, RoomSpace, Wall, nav_blocks, rect_corners
+
+SLUG_MAX_CHARS = 40
+"""Longest name part of an object id (ids are at most 128 characters, see anyhome.sanitize)."""
+
+
+def slugify(text: str) -> str:
+    return re.sub(r"[^a-z0-9]+", "_", text.lower())[:SLUG_MAX_CHARS].strip("_") or "object"
+
+
+@dataclass
+class Choice:
+    """A chosen pose for one object."""
+
+    xy: np.ndarray
+    yaw: float
+    z: float
+
+
+@dataclass
+class Snapshot:
+    n_placed: int
+    counters: dict[str, int]
+    n_dropped: int
+
+
+@dataclass
+class RoomState:
+    """One room being furnished; ``space.objects`` and ``dropped`` hold the outcome."""
+
+    floorplan: Floorplan
+    room: Room
+    spec: RoomSpec
+    rng: np.random.Generator
+    options: LayoutOptions
+    space: RoomSpace = field(init=False)
+    nav: NavGrid = field(init=False)
+    dropped: list[Dropped] = field(default_factory=list)
+    counters: dict[str, int] = field(default_factory=dict)
+    rows_wall: Wall | None = None
+    """The wall a ``rows`` arrangement faces, once one is laid out."""
+
+    def __post_init__(self) -> None:
+        self.space = RoomSpace(self.floorplan, self.room)
+        self.nav = NavGrid(self.floorplan, self.space)
+
+    # ------------------------------------------------------------ bookkeeping
+    def snapshot(self) -> Snapshot:
+        return Snapshot(len(self.space.placed), dict(self.counters), len(self.dropped))
+
+    def restore(self, snap: Snapshot) -> None:
+        del self.space.placed[snap.n_placed:]
+        del self.dropped[snap.n_dropped:]
+        self.counters = dict(snap.counters)
+        self.nav.set_blocked(self.space.placed)
+
+    def drop(self, name: str, reason: str, copies: int = 1) -> None:
+        self.dropped.extend(self.dropped_entry(name, reason) for _ in range(copies))
+
+    def dropped_entry(self, name: str, reason: str) -> Dropped:
+        return Dropped(room=self.room.id, name=name, reason=reason)
+
+    def new_id(self, name: str) -> str:
+        slug = slugify(name)
+        k = self.counters.get(slug, 0)
+        self.counters[slug] = k + 1
+        return f"{self.room.id}-{slug}-{k}"
+
+    def commit(self, item: ItemSpec, size: Sequence[float], ch: Choice, support: str, rule: str,
+               group: str | None, anchor: str | None) -> HouseObject:
+        """Place ``item`` at ``ch``: it joins the room's objects and blocks walkways."""
+        obj = HouseObject(
+            id=self.new_id(item.name), room=self.room.id, name=item.name, category=item.category,
+            description=item.description,
+            position=(float(ch.xy[0]), float(ch.xy[1]), float(ch.z)),
+            size=(float(size[0]), float(size[1]), float(size[2])), yaw=wrap(ch.yaw),
+            support=support, group=group, anchor=anchor, rule=rule, material=item.material,
+            tags=list(item.tags),
+        )
+        corners = rect_corners(ch.xy[None], size[:2], [obj.yaw])[0]
+        mask = self.nav.obstacle_mask(corners) if nav_blocks(obj) else None
+        self.space.placed.append(Placed(obj, corners, ch.z, ch.z + size[2], support == "floor", mask))
+        if mask is not None:
+            self.nav.blocked |= mask
+        return obj
+
+    def commit_if_walkable(self, item: ItemSpec, size: Sequence[float], choices: list[Choice], support: str,
+                           rule: str, group: str | None, anchor: str | None) -> HouseObject | None:
+        """The first of ``choices`` that keeps every walkway open, committed; None if none does."""
+        for ch in choices:
+            snap = self.snapshot()
+            obj = self.commit(item, size, ch, support, rule, group, anchor)
+            if not nav_blocks(obj) or self.nav.ok():
+                return obj
+            self.restore(snap)
+        return None
+
+    # ------------------------------------------------------------ lookup
+    def match(self, target: str | None, exclude: str | None = None) -> list[HouseObject]:
+        """Objects of this room named or categorised as ``target``, best match first."""
+        if not target:
+            return []
+        t = target.lower().strip()
+        objs = [o for o in self.space.objects if o.id != exclude]
+        tiers = [
+            [o for o in objs if o.name.lower() == t],
+            [o for o in objs if t in o.name.lower()],
+            [o for o in objs if o.category.lower() == t or t in o.category.lower()],
+            [o for o in objs if o.category.lower() in t],
+        ]
+        seen, out = set(), []
+        for tier in tiers:
+            for o in tier:
+                if o.id not in seen:
+                    seen.add(o.id)
+                    out.append(o)
+        return out
