@@ -118,6 +118,7 @@ class SurfaceMaterials(_Model):
 
 
 class RoomType(_Model):
+    habitable: bool = Field(description="a room people stay in (gets windows); anyhome.house.ROOM_TYPES reads it")
     area: AreaRange
     tier: NonNeg
     hub: bool = False
@@ -413,7 +414,10 @@ class KnowledgeBase:
                     need(g in groups, "programs", ("programs", key, "extra", room), lambda: known(g, groups, "group"))
         # rooms.yaml
         for t, rt in self.rooms.types.items():
-            need(t in types, "rooms", ("types", t), lambda: known(t, types, "room type (anyhome.house.ROOM_TYPES)"))
+            need(t in types, "rooms", ("types", t),
+                 lambda: known(t, types, "room type (the types are those of the shipped rooms.yaml)"))
+            need(rt.habitable == ROOM_TYPES[t], "rooms", ("types", t, "habitable"),
+                 f"is {str(ROOM_TYPES[t]).lower()} in the shipped rooms.yaml; an overlay may not change it")
             for a in rt.attach:
                 need(a in types, "rooms", ("types", t, "attach"), lambda: known(a, types, "room type"))
         for n, rn in self.rooms.names.items():
