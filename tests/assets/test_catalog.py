@@ -5,7 +5,6 @@ from __future__ import annotations
 import json
 
 import pytest
-import yaml
 
 from anyhome.assets import FAMILIES, family_for
 from anyhome.assets.catalog import (
@@ -15,7 +14,8 @@ from anyhome.assets.catalog import (
     knowledge_map,
     triangle_range,
 )
-from anyhome.assets.registry import GENERIC, SIZES_FILE, synonyms
+from anyhome.assets.registry import GENERIC, _tables, synonyms
+from anyhome.plan.knowledge import knowledge_base
 from anyhome.plan.knowledge import load
 
 
@@ -46,7 +46,7 @@ def test_triangle_range_is_measured() -> None:
 
 
 def test_every_family_has_its_own_typical_size() -> None:
-    sizes = yaml.safe_load(SIZES_FILE.read_text(encoding="utf-8"))
+    sizes = _tables(knowledge_base()).sizes
     assert sorted(set(FAMILIES) - set(sizes)) == []
 
 

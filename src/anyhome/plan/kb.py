@@ -16,6 +16,7 @@ contract those mappings satisfy, and what later stages take as ``KnowledgeBase``
 from __future__ import annotations
 
 import difflib
+import re
 from collections.abc import Callable, Mapping
 from typing import Annotated, Any, Literal
 
@@ -285,6 +286,24 @@ class ConceptsFile(_Model):
     fallback_object: FallbackObject | None = None
 
 
+# ------------------------------------------------------------------ assets.yaml
+def word_key(text: str) -> str:
+    """An object word as the asset tables key it: lower case, runs of other characters
+    as one ``_`` ("Teacher's desk" -> ``teacher_s_desk``)."""
+    return "_".join(re.findall(r"[a-z0-9]+", text.lower()))
+
+
+class AssetsFile(_Model):
+    """assets.yaml: what the asset side knows that no object prototype holds."""
+
+    categories: dict[Category, Category] = Field(
+        default_factory=dict, description="object category that is no family -> the family it is built as")
+    words: dict[Category, Category] = Field(
+        default_factory=dict, description="object word no prototype names -> family")
+    sizes: dict[Category, Size] = Field(
+        default_factory=dict, description="typical box of a family no prototype covers")
+
+
 class SurfacesFile(RootModel[dict[Surface, list[Word]]]):
     """surfaces.yaml: the words naming each room surface a material phrase can dress."""
 
@@ -297,6 +316,7 @@ FILE_MODELS: dict[str, type[BaseModel]] = {
     "styles": StylesFile,
     "concepts": ConceptsFile,
     "surfaces": SurfacesFile,
+    "assets": AssetsFile,
 }
 """The model of each knowledge file, by file name (without ``.yaml``)."""
 
@@ -372,6 +392,7 @@ class KnowledgeBase:
         self.styles: StylesFile = validate_file("styles", raw["styles"], source)  # type: ignore[assignment]
         self.concepts: ConceptsFile = validate_file("concepts", raw["concepts"], source)  # type: ignore[assignment]
         self.surfaces: SurfacesFile = validate_file("surfaces", raw["surfaces"], source)  # type: ignore[assignment]
+        self.assets: AssetsFile = validate_file("assets", raw["assets"], source)  # type: ignore[assignment]
         self._check_references()
 
     def _bad(self, name: str, loc: tuple[Any, ...], msg: str) -> KnowledgeError:
@@ -458,6 +479,16 @@ class KnowledgeBase:
         for prog, keys in self.styles.defaults.items():
             for s in keys:
                 need(s in styles, "styles", ("defaults", prog), lambda: known(s, styles, "style"))
+        # assets.yaml: nothing a prototype already says
+        proto_words = {word_key(w): k for k, o in objects.items() for w in (k, *o.synonyms)}
+        for w in self.assets.words:
+            need(w not in proto_words, "assets", ("words", w),
+                 lambda: f"is a word of the object prototype {proto_words[w]!r} (objects.yaml), which gives its family; "
+                         "keep it in one place")
+        covers = {word_key(k): k for k in objects} | {o.category: k for k, o in objects.items()}
+        for f in self.assets.sizes:
+            need(f not in covers, "assets", ("sizes", f),
+                 lambda: f"the object prototype {covers[f]!r} (objects.yaml) gives this family's size; keep it in one place")
         # concepts.yaml
         for kind, pool, what in (("rooms", sets, "furnishing set"), ("objects", objects, "object"), ("buildings", programs, "program")):
             for k in getattr(self.concepts, kind):

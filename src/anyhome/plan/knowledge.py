@@ -24,7 +24,7 @@ KNOWLEDGE_DIR = Path(__file__).with_name("knowledge")
 """Folder holding the shipped programs.yaml, rooms.yaml, objects.yaml, furniture.yaml,
 styles.yaml and concepts.yaml."""
 
-KNOWLEDGE_FILES = ("programs", "rooms", "objects", "furniture", "styles", "concepts", "surfaces")
+KNOWLEDGE_FILES = ("programs", "rooms", "objects", "furniture", "styles", "concepts", "surfaces", "assets")
 
 
 def normalize(text: str) -> str:
