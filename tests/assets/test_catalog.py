@@ -15,8 +15,7 @@ from anyhome.assets.catalog import (
     triangle_range,
 )
 from anyhome.assets.registry import GENERIC, _tables, synonyms
-from anyhome.plan.knowledge import knowledge_base
-from anyhome.plan.knowledge import load
+from anyhome.plan.knowledge import knowledge_base, load
 
 
 @pytest.fixture(scope="module")
