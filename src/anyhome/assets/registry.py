@@ -156,6 +156,8 @@ def _specific_name(name: str, category: str) -> str | None:
         return None
     if "_" in key:
         hit = _lookup(key)
+        if hit in BROAD_FAMILIES and key in _tables(_kb()).protos and _lookup(_norm(category)) not in (None, GENERIC, hit):
+            return None  # a loose prototype word ("long table") never overrules a specific category
         return hit if hit != GENERIC else None  # a known fallback never overrules a category
     hit = _lookup(key, use_synonyms=False)
     return hit if hit and _lookup(_norm(category)) in BROAD_FAMILIES else None

@@ -257,7 +257,6 @@ class StylesFile(_Model):
     styles: dict[str, Style] = Field(min_length=1)
     asset_classes: dict[str, AssetClass]
     defaults: dict[str, list[str]] = Field(description="program -> style keys drawn when the text names none")
-    colours: list[Word]
     materials: dict[str, list[Surface]] = Field(description="material word -> surfaces it goes to")
     category_materials: dict[str, str]
 
@@ -284,6 +283,19 @@ class ConceptsFile(_Model):
     buildings: dict[str, list[Word]] = Field(default_factory=dict)
     non_objects: list[Word] = Field(default_factory=list)
     fallback_object: FallbackObject | None = None
+
+
+# ------------------------------------------------------------------ colours.yaml
+RGB = tuple[Annotated[int, Field(ge=0, le=255)], Annotated[int, Field(ge=0, le=255)], Annotated[int, Field(ge=0, le=255)]]
+
+
+class ColoursFile(_Model):
+    """colours.yaml: every colour word with its base colour, and the words that shade
+    (``modifiers``) or mute (``muting``) the colour after them."""
+
+    colours: dict[Word, RGB] = Field(min_length=1, description="colour word or phrase -> [r, g, b] (sRGB 0-255)")
+    modifiers: dict[Word, Annotated[float, Field(gt=0, le=2)]] = Field(default_factory=dict)
+    muting: dict[Word, Annotated[float, Field(ge=0, le=1)]] = Field(default_factory=dict)
 
 
 # ------------------------------------------------------------------ assets.yaml
@@ -317,6 +329,7 @@ FILE_MODELS: dict[str, type[BaseModel]] = {
     "concepts": ConceptsFile,
     "surfaces": SurfacesFile,
     "assets": AssetsFile,
+    "colours": ColoursFile,
 }
 """The model of each knowledge file, by file name (without ``.yaml``)."""
 
@@ -393,6 +406,7 @@ class KnowledgeBase:
         self.concepts: ConceptsFile = validate_file("concepts", raw["concepts"], source)  # type: ignore[assignment]
         self.surfaces: SurfacesFile = validate_file("surfaces", raw["surfaces"], source)  # type: ignore[assignment]
         self.assets: AssetsFile = validate_file("assets", raw["assets"], source)  # type: ignore[assignment]
+        self.colours: ColoursFile = validate_file("colours", raw["colours"], source)  # type: ignore[assignment]
         self._check_references()
 
     def _bad(self, name: str, loc: tuple[Any, ...], msg: str) -> KnowledgeError:
@@ -489,6 +503,10 @@ class KnowledgeBase:
         for f in self.assets.sizes:
             need(f not in covers, "assets", ("sizes", f),
                  lambda: f"the object prototype {covers[f]!r} (objects.yaml) gives this family's size; keep it in one place")
+        # colours.yaml: a word is a colour or a shading word, not both
+        for w in self.colours.colours:
+            need(w not in self.colours.modifiers and w not in self.colours.muting, "colours", ("colours", w),
+                 "is also a modifier or muting word; keep it in one place")
         # concepts.yaml
         for kind, pool, what in (("rooms", sets, "furnishing set"), ("objects", objects, "object"), ("buildings", programs, "program")):
             for k in getattr(self.concepts, kind):
