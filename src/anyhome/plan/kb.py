@@ -499,7 +499,7 @@ class KnowledgeBase:
             need(w not in proto_words, "assets", ("words", w),
                  lambda: f"is a word of the object prototype {proto_words[w]!r} (objects.yaml), which gives its family; "
                          "keep it in one place")
-        covers = {word_key(k): k for k in objects} | {o.category: k for k, o in objects.items()}
+        covers = {o.category: k for k, o in objects.items()} | {word_key(k): k for k in objects}
         for f in self.assets.sizes:
             need(f not in covers, "assets", ("sizes", f),
                  lambda: f"the object prototype {covers[f]!r} (objects.yaml) gives this family's size; keep it in one place")
