@@ -69,46 +69,21 @@ OUTSIDE = "outside"
 _COLOR_RE = re.compile(r"#[0-9a-fA-F]{6}")
 _SURROGATE_RE = re.compile("[\ud800-\udfff]")
 
-ROOM_TYPES: dict[str, bool] = {
-    # functional type -> habitable (needs a window)
-    "bedroom": True,
-    "bathroom": False,
-    "kitchen": True,
-    "living_room": True,
-    "dining_room": True,
-    "hallway": False,
-    "entry": False,
-    "office": True,
-    "study": True,
-    "meeting_room": True,
-    "classroom": True,
-    "library": True,
-    "playroom": True,
-    "studio": True,
-    "gym": True,
-    "cafe": True,
-    "restaurant": True,
-    "bar": True,
-    "shop": True,
-    "waiting_room": True,
-    "reception": True,
-    "treatment_room": True,
-    "lab": True,
-    "gallery": True,
-    "hall": True,
-    "sunroom": True,
-    "laundry": False,
-    "storage": False,
-    "closet": False,
-    "pantry": False,
-    "utility": False,
-    "cellar": False,
-    "changing_room": False,
-    "garage": False,
-    "balcony": False,
-    "other": True,
-}
-"""The documented functional room types. ``True`` marks a habitable room (gets windows)."""
+ROOMS_FILE: Final = Path(__file__).parent / "plan" / "knowledge" / "rooms.yaml"
+"""The shipped room knowledge; its ``types:`` section is the one list of room types."""
+
+
+def _room_types(path: Path) -> dict[str, bool]:
+    import yaml
+
+    data = yaml.load(path.read_text(encoding="utf-8"), Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader))
+    return {str(t): bool(v.get("habitable", True)) for t, v in data["types"].items()}
+
+
+ROOM_TYPES: Final[dict[str, bool]] = _room_types(ROOMS_FILE)
+"""The functional room types -> habitable (a room people stay in, which gets windows),
+read once from the shipped ``plan/knowledge/rooms.yaml`` (``types:``, ``habitable:``);
+the knowledge base's checks keep the two one list."""
 
 
 def is_habitable(room_type: str) -> bool:

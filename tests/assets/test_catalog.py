@@ -5,7 +5,6 @@ from __future__ import annotations
 import json
 
 import pytest
-import yaml
 
 from anyhome.assets import FAMILIES, family_for
 from anyhome.assets.catalog import (
@@ -15,8 +14,8 @@ from anyhome.assets.catalog import (
     knowledge_map,
     triangle_range,
 )
-from anyhome.assets.registry import GENERIC, SIZES_FILE, synonyms
-from anyhome.plan.knowledge import load
+from anyhome.assets.registry import GENERIC, _tables, synonyms
+from anyhome.plan.knowledge import knowledge_base, load
 
 
 @pytest.fixture(scope="module")
@@ -46,7 +45,7 @@ def test_triangle_range_is_measured() -> None:
 
 
 def test_every_family_has_its_own_typical_size() -> None:
-    sizes = yaml.safe_load(SIZES_FILE.read_text(encoding="utf-8"))
+    sizes = _tables(knowledge_base()).sizes
     assert sorted(set(FAMILIES) - set(sizes)) == []
 
 

@@ -144,13 +144,17 @@ def test_later_folders_win_and_cli_folders_come_last(tmp_path, monkeypatch):
 
 def test_lists_and_buildings(tmp_path, monkeypatch):
     kdir = _folder(tmp_path / "kb", {
-        "styles.yaml": "colours: [white, ultramarine]\n",
+        "colours.yaml": "colours: {white: [255, 255, 255], ultramarine: [18, 10, 143]}\n",
         "programs.yaml": "buildings:\n  - {words: [cottage], program: apartment}\n",
         "concepts.yaml": "non_objects: [widget]\n",
     })
     monkeypatch.setenv(ENV_VAR, str(kdir))
-    cols = load("styles")["colours"]
-    assert cols.count("white") == 1 and cols[-1] == "ultramarine"
+    cols = load("colours")["colours"]
+    assert cols["white"] == [255, 255, 255] and list(cols)[-1] == "ultramarine"
+    assert vocabulary().colour_regex.fullmatch("ultramarine")
+    from anyhome.assets.colors import material_color  # the overlay reaches the assets too
+
+    assert material_color("ultramarine velvet") == "#120a8f"
     assert load("concepts")["non_objects"][-1] == "widget"
     # the user's building words come first, so they win over the shipped ones
     assert load("programs")["buildings"][0]["program"] == "apartment"

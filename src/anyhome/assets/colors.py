@@ -9,20 +9,38 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
 _COLORS_FILE = Path(__file__).with_name("colors.yaml")
+"""Material words -> base colour (the colour words live in ``plan/knowledge/colours.yaml``)."""
+
+RGB = tuple[int, int, int]
 
 
 @lru_cache(maxsize=1)
-def _tables() -> tuple[dict[str, tuple[int, int, int]], dict[str, tuple[int, int, int]], dict[str, float], dict[str, float]]:
+def _material_rgb() -> dict[str, RGB]:
     import yaml
 
     data = yaml.safe_load(_COLORS_FILE.read_text(encoding="utf-8"))
-    colors = {k: tuple(v) for k, v in data["colors"].items()}
-    materials = {k: tuple(v) for k, v in data["materials"].items()}
-    return colors, materials, dict(data["modifiers"]), dict(data.get("muting") or {})
+    return {str(k): (int(v[0]), int(v[1]), int(v[2])) for k, v in data["materials"].items()}
+
+
+@lru_cache(maxsize=8)
+def _colour_tables(kb: Any) -> tuple[dict[tuple[str, ...], RGB], int, dict[str, float], dict[str, float]]:
+    """(colour phrase as words -> RGB, most words in a phrase, modifiers, muting) of a
+    knowledge base's colours.yaml."""
+    c = kb.colours
+    phrases = {tuple(_words(k)): (int(v[0]), int(v[1]), int(v[2])) for k, v in c.colours.items()}
+    return phrases, max(len(p) for p in phrases), dict(c.modifiers), dict(c.muting)
+
+
+def _tables() -> tuple[dict[tuple[str, ...], RGB], int, dict[str, RGB], dict[str, float], dict[str, float]]:
+    from anyhome.plan.knowledge import knowledge_base
+
+    phrases, longest, modifiers, muting = _colour_tables(knowledge_base())
+    return phrases, longest, _material_rgb(), modifiers, muting
 
 
 def _words(text: str) -> list[str]:
@@ -32,14 +50,15 @@ def _words(text: str) -> list[str]:
 def material_color(text: str) -> str | None:
     """Base colour named by a material phrase, or None if it names none.
 
-    Colour words win over material words ("pink velvet" is pink); a two-word material
+    Colour words (``plan/knowledge/colours.yaml``; the longest phrase: "sky blue") win
+    over material words ("pink velvet" is pink); a two-word material
     ("white oak") wins over its parts; the modifiers right before the match shade it
     ("dark") or mute it ("faded": greyer).
 
     >>> material_color("dark walnut")
     '#392518'
     """
-    colors, materials, modifiers, muting = _tables()
+    colors, longest, materials, modifiers, muting = _tables()
     words = _words(text)
     found: tuple[int, int, int] | None = None
     at = -1
@@ -49,9 +68,10 @@ def material_color(text: str) -> str | None:
             found, at = materials[pair], i
             break
     if found is None:
-        for i, w in enumerate(words):
-            if w in colors:
-                found, at = colors[w], i
+        for i in range(len(words)):  # the first colour, its longest phrase ("sky blue")
+            n = next((n for n in range(min(longest, len(words) - i), 0, -1) if tuple(words[i:i + n]) in colors), 0)
+            if n:
+                found, at = colors[tuple(words[i:i + n])], i
                 break
     if found is None:
         for i, w in enumerate(words):

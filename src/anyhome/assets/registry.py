@@ -12,7 +12,6 @@ import zlib
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
 from functools import lru_cache
-from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -26,8 +25,6 @@ from anyhome.house import HouseObject
 if TYPE_CHECKING:
     from anyhome.plan.kb import KnowledgeBase
 
-SYNONYMS_FILE = Path(__file__).with_name("synonyms.yaml")
-SIZES_FILE = Path(__file__).with_name("typical_sizes.yaml")
 GENERIC = "generic"
 """Family of objects whose name matches nothing: a composed block that still reads as a thing."""
 SOURCE = "procedural"
@@ -73,41 +70,82 @@ def get(name: str) -> Family:
     return fams[name]
 
 
-@lru_cache(maxsize=1)
+@dataclass(frozen=True)
+class _Words:
+    """The word tables of one knowledge base (see :func:`_words`)."""
+
+    protos: dict[str, str]  # prototype word (key or synonym) -> the prototype's family, or "" if none
+    categories: dict[str, str]  # assets.yaml categories: category -> family
+    words: dict[str, str]  # assets.yaml words: word -> family
+    sizes: dict[str, tuple[float, float, float]]  # family -> typical box
+
+
+def _kb() -> Any:
+    from anyhome.plan.knowledge import knowledge_base
+
+    return knowledge_base()
+
+
+@lru_cache(maxsize=8)
+def _tables(kb: Any) -> _Words:
+    """The knowledge base's object words and sizes as the asset side reads them: a word a
+    prototype names (its key or a synonym) is built as the prototype's family (its key
+    when that is a family, else its category, through assets.yaml ``categories:``);
+    other words come from assets.yaml ``words:``. A family's typical size is the size of
+    the prototype whose key, else whose category, is the family; else assets.yaml
+    ``sizes:``."""
+    from anyhome.plan.kb import word_key
+
+    fams = _loaded()
+    cats = dict(kb.assets.categories)
+    protos: dict[str, str] = {}
+    sizes: dict[str, tuple[float, float, float]] = {}
+    for key, o in kb.objects.items():
+        k = word_key(key)
+        fam = k if k in fams else o.category if o.category in fams else cats.get(o.category, "")
+        for w in (key, *o.synonyms):
+            protos.setdefault(word_key(w), fam)
+        if k in fams:
+            sizes[k] = tuple(o.size)
+    for o in kb.objects.values():
+        sizes.setdefault(o.category, tuple(o.size))
+    for f, size in kb.assets.sizes.items():
+        sizes.setdefault(f, tuple(size))
+    return _Words(protos, cats, dict(kb.assets.words), sizes)
+
+
 def synonyms() -> dict[str, str]:
-    import yaml
-
-    data = yaml.safe_load(SYNONYMS_FILE.read_text(encoding="utf-8")) or {}
-    return {str(k): str(v) for k, v in data.items()}
-
-
-@lru_cache(maxsize=1)
-def _typical_sizes() -> dict[str, tuple[float, float, float]]:
-    import yaml
-
-    data = yaml.safe_load(SIZES_FILE.read_text(encoding="utf-8")) or {}
-    return {str(k): (float(v[0]), float(v[1]), float(v[2])) for k, v in data.items()}
+    """Every object word -> the family it names: the prototypes' words (objects.yaml) and
+    assets.yaml ``words:`` (the family names themselves are not listed)."""
+    t = _tables(_kb())
+    return {**{w: f for w, f in t.protos.items() if f}, **t.words}
 
 
 def typical_size(family: str) -> tuple[float, float, float]:
-    """A typical box (width, depth, height) in meters for a family."""
-    return _typical_sizes().get(family, _typical_sizes()[GENERIC])
+    """A typical box (width, depth, height) in meters for a family: the size of the object
+    prototype that is the family (its key, else its category), else assets.yaml
+    ``sizes:``, else the generic block's."""
+    sizes = _tables(_kb()).sizes
+    return sizes.get(family) or sizes[GENERIC]
 
 
 def _norm(text: str) -> str:
     return "_".join(re.findall(r"[a-z0-9]+", text.lower()))
 
 
-def _lookup(key: str, use_synonyms: bool = True) -> str | None:
+def _lookup(key: str, use_synonyms: bool = True, tables: _Words | None = None) -> str | None:
     fams = _loaded()
-    syn = synonyms() if use_synonyms else {}
+    t = tables or _tables(_kb())
     for k in (key, key[:-1] if key.endswith("s") else None, key[:-2] if key.endswith("es") else None):
         if not k:
             continue
         if k in fams:
             return k
-        if k in syn and syn[k] in fams:
-            return syn[k]
+        if not use_synonyms:
+            continue
+        for table in (t.protos, t.categories, t.words):
+            if table.get(k) in fams:
+                return table[k]
     return None
 
 
@@ -121,6 +159,8 @@ def _specific_name(name: str, category: str) -> str | None:
         return None
     if "_" in key:
         hit = _lookup(key)
+        if hit in BROAD_FAMILIES and key in _tables(_kb()).protos and _lookup(_norm(category)) not in (None, GENERIC, hit):
+            return None  # a loose prototype word ("long table") never overrules a specific category
         return hit if hit != GENERIC else None  # a known fallback never overrules a category
     hit = _lookup(key, use_synonyms=False)
     return hit if hit and _lookup(_norm(category)) in BROAD_FAMILIES else None
@@ -129,8 +169,8 @@ def _specific_name(name: str, category: str) -> str | None:
 def family_for(category: str, name: str = "") -> str:
     """The family to build an object as: the family a name asks for by itself (see
     ``_specific_name``), else the category if it is a family, else the best match of the
-    category or name (whole, word pairs, then single words, last word first, through
-    ``synonyms.yaml``), else ``"generic"``."""
+    category or name (whole, word pairs, then single words, last word first, through the
+    prototypes' words and assets.yaml, see :func:`_tables`), else ``"generic"``."""
     if hit := _specific_name(name, category):
         return hit
     for text in (category, name):

@@ -16,6 +16,7 @@ contract those mappings satisfy, and what later stages take as ``KnowledgeBase``
 from __future__ import annotations
 
 import difflib
+import re
 from collections.abc import Callable, Mapping
 from typing import Annotated, Any, Literal
 
@@ -118,6 +119,7 @@ class SurfaceMaterials(_Model):
 
 
 class RoomType(_Model):
+    habitable: bool = Field(description="a room people stay in (gets windows); anyhome.house.ROOM_TYPES reads it")
     area: AreaRange
     tier: NonNeg
     hub: bool = False
@@ -255,7 +257,6 @@ class StylesFile(_Model):
     styles: dict[str, Style] = Field(min_length=1)
     asset_classes: dict[str, AssetClass]
     defaults: dict[str, list[str]] = Field(description="program -> style keys drawn when the text names none")
-    colours: list[Word]
     materials: dict[str, list[Surface]] = Field(description="material word -> surfaces it goes to")
     category_materials: dict[str, str]
 
@@ -284,6 +285,37 @@ class ConceptsFile(_Model):
     fallback_object: FallbackObject | None = None
 
 
+# ------------------------------------------------------------------ colours.yaml
+RGB = tuple[Annotated[int, Field(ge=0, le=255)], Annotated[int, Field(ge=0, le=255)], Annotated[int, Field(ge=0, le=255)]]
+
+
+class ColoursFile(_Model):
+    """colours.yaml: every colour word with its base colour, and the words that shade
+    (``modifiers``) or mute (``muting``) the colour after them."""
+
+    colours: dict[Word, RGB] = Field(min_length=1, description="colour word or phrase -> [r, g, b] (sRGB 0-255)")
+    modifiers: dict[Word, Annotated[float, Field(gt=0, le=2)]] = Field(default_factory=dict)
+    muting: dict[Word, Annotated[float, Field(ge=0, le=1)]] = Field(default_factory=dict)
+
+
+# ------------------------------------------------------------------ assets.yaml
+def word_key(text: str) -> str:
+    """An object word as the asset tables key it: lower case, runs of other characters
+    as one ``_`` ("Teacher's desk" -> ``teacher_s_desk``)."""
+    return "_".join(re.findall(r"[a-z0-9]+", text.lower()))
+
+
+class AssetsFile(_Model):
+    """assets.yaml: what the asset side knows that no object prototype holds."""
+
+    categories: dict[Category, Category] = Field(
+        default_factory=dict, description="object category that is no family -> the family it is built as")
+    words: dict[Category, Category] = Field(
+        default_factory=dict, description="object word no prototype names -> family")
+    sizes: dict[Category, Size] = Field(
+        default_factory=dict, description="typical box of a family no prototype covers")
+
+
 class SurfacesFile(RootModel[dict[Surface, list[Word]]]):
     """surfaces.yaml: the words naming each room surface a material phrase can dress."""
 
@@ -296,6 +328,8 @@ FILE_MODELS: dict[str, type[BaseModel]] = {
     "styles": StylesFile,
     "concepts": ConceptsFile,
     "surfaces": SurfacesFile,
+    "assets": AssetsFile,
+    "colours": ColoursFile,
 }
 """The model of each knowledge file, by file name (without ``.yaml``)."""
 
@@ -372,6 +406,8 @@ class KnowledgeBase:
         self.styles: StylesFile = validate_file("styles", raw["styles"], source)  # type: ignore[assignment]
         self.concepts: ConceptsFile = validate_file("concepts", raw["concepts"], source)  # type: ignore[assignment]
         self.surfaces: SurfacesFile = validate_file("surfaces", raw["surfaces"], source)  # type: ignore[assignment]
+        self.assets: AssetsFile = validate_file("assets", raw["assets"], source)  # type: ignore[assignment]
+        self.colours: ColoursFile = validate_file("colours", raw["colours"], source)  # type: ignore[assignment]
         self._check_references()
 
     def raw(self, name: str) -> dict[str, Any]:
@@ -418,7 +454,10 @@ class KnowledgeBase:
                     need(g in groups, "programs", ("programs", key, "extra", room), lambda: known(g, groups, "group"))
         # rooms.yaml
         for t, rt in self.rooms.types.items():
-            need(t in types, "rooms", ("types", t), lambda: known(t, types, "room type (anyhome.house.ROOM_TYPES)"))
+            need(t in types, "rooms", ("types", t),
+                 lambda: known(t, types, "room type (the types are those of the shipped rooms.yaml)"))
+            need(rt.habitable == ROOM_TYPES[t], "rooms", ("types", t, "habitable"),
+                 f"is {str(ROOM_TYPES[t]).lower()} in the shipped rooms.yaml; an overlay may not change it")
             for a in rt.attach:
                 need(a in types, "rooms", ("types", t, "attach"), lambda: known(a, types, "room type"))
         for n, rn in self.rooms.names.items():
@@ -459,6 +498,20 @@ class KnowledgeBase:
         for prog, keys in self.styles.defaults.items():
             for s in keys:
                 need(s in styles, "styles", ("defaults", prog), lambda: known(s, styles, "style"))
+        # assets.yaml: nothing a prototype already says
+        proto_words = {word_key(w): k for k, o in objects.items() for w in (k, *o.synonyms)}
+        for w in self.assets.words:
+            need(w not in proto_words, "assets", ("words", w),
+                 lambda: f"is a word of the object prototype {proto_words[w]!r} (objects.yaml), which gives its family; "
+                         "keep it in one place")
+        covers = {o.category: k for k, o in objects.items()} | {word_key(k): k for k in objects}
+        for f in self.assets.sizes:
+            need(f not in covers, "assets", ("sizes", f),
+                 lambda: f"the object prototype {covers[f]!r} (objects.yaml) gives this family's size; keep it in one place")
+        # colours.yaml: a word is a colour or a shading word, not both
+        for w in self.colours.colours:
+            need(w not in self.colours.modifiers and w not in self.colours.muting, "colours", ("colours", w),
+                 "is also a modifier or muting word; keep it in one place")
         # concepts.yaml
         for kind, pool, what in (("rooms", sets, "furnishing set"), ("objects", objects, "object"), ("buildings", programs, "program")):
             for k in getattr(self.concepts, kind):

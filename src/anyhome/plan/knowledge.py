@@ -24,7 +24,7 @@ KNOWLEDGE_DIR = Path(__file__).with_name("knowledge")
 """Folder holding the shipped programs.yaml, rooms.yaml, objects.yaml, furniture.yaml,
 styles.yaml and concepts.yaml."""
 
-KNOWLEDGE_FILES = ("programs", "rooms", "objects", "furniture", "styles", "concepts", "surfaces")
+KNOWLEDGE_FILES = ("programs", "rooms", "objects", "furniture", "styles", "concepts", "surfaces", "assets", "colours")
 
 
 def normalize(text: str) -> str:
@@ -279,7 +279,8 @@ def compile_vocabulary(kb: KnowledgeBase) -> Vocabulary:
     styles = load("styles")
     style_forms = {normalize(w): k for k, s in styles["styles"].items() for w in s["words"]}
     mats = [normalize(m) for m in styles["materials"]]
-    cols = [normalize(c) for c in styles["colours"]]
+    colours = load("colours")
+    cols = [normalize(c) for c in [*colours["colours"], *colours.get("modifiers", {})]]
     return Vocabulary(
         forms=forms,
         regex=_alternation(list(forms)),
