@@ -87,6 +87,10 @@ BROKEN = {
     "invalid yaml": ({"objects.yaml": "bed: {size: [1, 2, 3]\nsofa: {}\n"}, "objects.yaml: line 2: invalid YAML"),
     "top level not a mapping": ({"rooms.yaml": "- kitchen\n- bedroom\n"}, "rooms.yaml: top level: must be a mapping"),
     "unknown field": ({"objects.yaml": "bed: {colour: red}\n"}, "objects.yaml: bed: colour: unknown field"),
+    "unknown rule parameter": ({"objects.yaml": "bed: {params: {distnce_m: 0.4}}\n"},
+                               "objects.yaml: bed: params: distnce_m: unknown parameter for place_wall"),
+    "bad rule parameter value": ({"furniture.yaml": "groups:\n  bed:\n    anchor: {use: bed, params: {wall: sideways}}\n"},
+                                 "furniture.yaml: groups.bed: anchor.params: wall: Input should be"),
     "unknown file": ({"object.yaml": "bed: {size: [1, 2, 1]}\n"}, "object.yaml: top level: not a knowledge file"),
 }
 

@@ -361,6 +361,21 @@ def _fail(source: Source, name: str, loc: tuple[Any, ...], msg: str) -> Knowledg
     return KnowledgeError(f"{source(name, loc)}: {_dotted(key) or 'top level'}: {what}")
 
 
+def _params_problem(rule: str, params: dict[str, Any]) -> str | None:
+    """What is wrong with ``params`` for ``rule`` (its model in anyhome.layout.rules), or None."""
+    from anyhome.layout.rules import REGISTRY
+
+    try:
+        REGISTRY[rule].parse(params)
+    except ValidationError as e:
+        err = e.errors()[0]
+        where = ".".join(str(x) for x in err["loc"])
+        what = "unknown parameter" if err["type"] == "extra_forbidden" else err["msg"]
+        known = ", ".join(REGISTRY[rule].params.model_fields) or "none"
+        return f"{where}: {what} for {rule} (its parameters: {known})"
+    return None
+
+
 def validate_file(name: str, data: Any, source: Source) -> BaseModel:
     """The model of one knowledge file's (merged) content, or a :class:`KnowledgeError`
     naming the first bad entry."""
@@ -417,6 +432,14 @@ class KnowledgeBase:
     def _bad(self, name: str, loc: tuple[Any, ...], msg: str) -> KnowledgeError:
         return _fail(self.source, name, loc, msg)
 
+    def _check_item_params(self, it: GroupItem, name: str, loc: tuple[Any, ...]) -> None:
+        """A group item's ``params`` against the rule it is placed by (its own, else its
+        prototype's)."""
+        proto = self.objects.get(it.use or "")
+        rule = it.rule or (proto.rule if proto is not None else None)
+        if it.params and rule is not None and (bad := _params_problem(rule, it.params)) is not None:
+            raise self._bad(name, loc, bad)
+
     def _check_references(self) -> None:  # noqa: C901 - one check per reference, in file order
         from anyhome.house import ROOM_TYPES
 
@@ -470,12 +493,15 @@ class KnowledgeBase:
                 need(o.group in groups, "objects", (k, "group"), lambda: known(str(o.group), groups, "group"))
             for ref in o.rooms:
                 need(ref in room_refs, "objects", (k, "rooms"), lambda: known(ref, room_refs, "room type or furnishing"))
+            if (bad := _params_problem(o.rule, o.params)) is not None:
+                raise self._bad("objects", (k, "params"), bad)
         # furniture.yaml
         for g, grp in groups.items():
             for j, it in enumerate([grp.anchor, *grp.members]):
                 loc = ("groups", g, "anchor") if j == 0 else ("groups", g, "members", j - 1)
                 need(it.use is not None, "furniture", loc, "missing use (the object prototype)")
                 need(it.use in objects, "furniture", (*loc, "use"), lambda: known(str(it.use), objects, "object"))
+                self._check_item_params(it, "furniture", (*loc, "params"))
         need("other" in sets, "furniture", ("sets",), "needs a set named 'other' (rooms with no set of their own)")
         for s, fs in sets.items():
             for j, e in enumerate(fs.groups):
@@ -485,9 +511,13 @@ class KnowledgeBase:
                     if part is not None and part.use is not None:
                         use = part.use
                         need(use in objects, "furniture", ("sets", s, "groups", j, "use"), lambda: known(use, objects, "object"))
+                for part in [e.anchor, *(e.members or [])]:
+                    if part is not None:
+                        self._check_item_params(part, "furniture", ("sets", s, "groups", j, "params"))
             for j, it in enumerate(fs.ornaments):
                 need(it.use is not None, "furniture", ("sets", s, "ornaments", j), "missing use (the object prototype)")
                 need(it.use in objects, "furniture", ("sets", s, "ornaments", j, "use"), lambda: known(str(it.use), objects, "object"))
+                self._check_item_params(it, "furniture", ("sets", s, "ornaments", j, "params"))
         # styles.yaml
         classes = self.styles.asset_classes
         need("plain" in classes, "styles", ("asset_classes",), "needs the 'plain' class (no particular look)")
