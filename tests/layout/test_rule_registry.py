@@ -244,3 +244,19 @@ def test_random_valid_params_validate_and_lay_out_validly(case):
     dropped = [d for d in res.dropped if d.name == "thing"]
     assert len(placed) + len(dropped) == count
     assert all(o.rule in REGISTRY for o in res.objects)
+
+
+def test_house_format_documents_every_rule_and_parameter():
+    """docs/house_format.md's rule table names every rule of the registry and each of its
+    parameters with its default, so the format document follows the models."""
+    from pathlib import Path
+
+    from anyhome.layout.rules import REGISTRY
+
+    doc = (Path(__file__).resolve().parents[2] / "docs" / "house_format.md").read_text(encoding="utf-8")
+    rows = {line.split("|")[1].strip().strip("`"): line for line in doc.splitlines() if line.startswith("| `place_")}
+    assert set(rows) == set(REGISTRY)
+    for name, rule in REGISTRY.items():
+        for key, field in rule.params.model_fields.items():
+            assert f"`{key}`" in rows[name], (name, key)
+            assert f"({field.default})" in rows[name] or f"(`{field.default}`)" in rows[name], (name, key, field.default)
