@@ -51,8 +51,8 @@ def knowledge_map() -> dict[str, dict[str, list[str]]]:
 
 
 def documented_fallbacks() -> list[str]:
-    """Words that ``synonyms.yaml`` sends on purpose to the generic block (things with no
-    family of their own yet)."""
+    """Words sent on purpose to the generic block (things with no family of their own
+    yet): :func:`anyhome.assets.registry.synonyms`, from objects.yaml and assets.yaml."""
     return sorted(k for k, v in synonyms().items() if v == GENERIC)
 
 
@@ -62,7 +62,8 @@ def describe() -> list[dict[str, Any]]:
     Keys: ``name``; ``typical_size_m`` (width, depth, height); ``triangles`` ([fewest,
     most] over a few seeds and styles at the typical size); ``categories`` and
     ``objects`` (the ``objects.yaml`` categories and prototypes built as this family);
-    ``synonyms`` (the words of ``synonyms.yaml`` that name it).
+    ``synonyms`` (the object words that name it: objects.yaml prototypes and
+    plan/knowledge/assets.yaml ``words:``).
     """
     known = knowledge_map()
     syn: dict[str, list[str]] = {}
