@@ -15,6 +15,7 @@ import numpy as np
 
 from anyhome.floorplan.grid import OUTSIDE
 from anyhome.floorplan.openings import Opening, run_bounds_m, snap_down_m, snap_m
+from anyhome.floorplan.options import FloorplanOptions
 from anyhome.floorplan.walls import Run, runs_between
 from anyhome.geometry import DOOR_CLEARANCE_M
 
@@ -22,16 +23,6 @@ DOOR_WIDTH_M = 0.9
 """Width of an interior door."""
 ENTRANCE_WIDTH_M = 1.0
 """Width of the entrance door."""
-OPEN_MIN_WIDTH_M = 1.2
-"""Narrowest wall opening (kind "open"); below this an open pair gets a plain door."""
-OPEN_MAX_WIDTH_M = 1.8
-"""Widest wall opening (kind "open")."""
-DOOR_END_MARGIN_M = 0.15
-"""Least distance from a door to the ends of its shared wall run."""
-DOOR_GAP_M = 0.3
-"""Least distance between two openings on the same wall line."""
-CENTER_PENALTY = 0.3
-"""Score added to a door in the middle of a wall (it splits the wall for furniture)."""
 OPEN_TYPES = frozenset({"living_room", "dining_room", "kitchen"})
 """Room types whose pairs are joined by a wide opening instead of a door."""
 
@@ -59,15 +50,17 @@ def place_door(
     cell_m: float,
     placed: list[PlacedDoor],
     rng: np.random.Generator,
+    opts: FloorplanOptions,
     penalty: Callable[[Opening], float] | None = None,
 ) -> PlacedDoor | None:
-    """Best door for ``rooms`` on a run they share, or None if no run fits one."""
+    """Best door for ``rooms`` on a run they share, or None if no run fits one
+    (margins, gaps and scores from ``opts``)."""
     best, best_score = None, float("inf")
     for run in runs_between(runs, *rooms):
-        for opening, this_kind, extra in _candidates(run, kind, rooms[1] == OUTSIDE, cell_m):
-            if any(opening.gap_to(d.opening) < DOOR_GAP_M for d in placed):
+        for opening, this_kind, extra in _candidates(run, kind, rooms[1] == OUTSIDE, cell_m, opts):
+            if any(opening.gap_to(d.opening) < opts.door_gap_m for d in placed):
                 continue
-            score = extra + _zone_score(opening, rooms, placed) + 0.05 * rng.random()
+            score = extra + _zone_score(opening, rooms, placed) + opts.door_noise * rng.random()
             if penalty is not None:
                 score += penalty(opening)
             if score < best_score:
@@ -75,22 +68,23 @@ def place_door(
     return best
 
 
-def _candidates(run: Run, kind: str, entrance: bool, cell_m: float):
+def _candidates(run: Run, kind: str, entrance: bool, cell_m: float, opts: FloorplanOptions):
     """(opening, kind, score) candidates on one run: near either end and centred."""
     line, start, end = run_bounds_m(run, cell_m)
-    free = end - start - 2 * DOOR_END_MARGIN_M
+    margin = opts.door_end_margin_m
+    free = end - start - 2 * margin
     width = ENTRANCE_WIDTH_M if entrance else DOOR_WIDTH_M
-    if kind == "open" and free >= OPEN_MIN_WIDTH_M - 1e-9:
-        width = min(OPEN_MAX_WIDTH_M, snap_down_m(free))
+    if kind == "open" and free >= opts.open_min_width_m - 1e-9:
+        width = min(opts.open_max_width_m, snap_down_m(free))
         lo = snap_m(start + (end - start - width) / 2)
         return [(Opening(run.axis, line, lo, round(lo + width, 4)), "open", 0.0)]
     if free < width - 1e-9:
         return []
     out = []
     for lo, extra in (
-        (start + DOOR_END_MARGIN_M, 0.0),
-        (end - DOOR_END_MARGIN_M - width, 0.0),
-        (snap_m(start + (end - start - width) / 2), 0.0 if entrance else CENTER_PENALTY),
+        (start + margin, 0.0),
+        (end - margin - width, 0.0),
+        (snap_m(start + (end - start - width) / 2), 0.0 if entrance else opts.door_center_penalty),
     ):
         lo = round(lo, 4)
         out.append((Opening(run.axis, line, lo, round(lo + width, 4)), "door", extra))

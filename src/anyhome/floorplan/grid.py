@@ -12,22 +12,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from anyhome.floorplan.options import FloorplanOptions
+
 SNAP_M = 0.05
 """Every coordinate of the floorplan is a multiple of this."""
-TARGET_CELLS = 600
-"""Roughly how many cells the footprint is cut into (sets the cell size)."""
-MIN_CELL_M = 0.3
-"""Smallest cell side."""
-MAX_CELL_M = 1.0
-"""Largest cell side."""
-ASPECT_RANGE = (1.0, 1.6)
-"""Range the footprint's long/short side ratio is drawn from."""
-L_SHAPE_PROB = 0.35
-"""Chance of an L-shaped footprint (a corner cut away) for programs of 4+ rooms."""
-L_CUT_FRACTION = (0.12, 0.25)
-"""Share of the bounding rectangle the L-shape's missing corner takes."""
-L_MIN_ROOMS = 4
-"""Programs with fewer rooms always get a rectangular footprint."""
 
 OUTSIDE = -1
 """Owner value of a cell outside the footprint."""
@@ -56,20 +44,20 @@ class Grid:
         return self.owner.shape[0] - 2, self.owner.shape[1] - 2
 
 
-def cell_size_m(total_area_m2: float) -> float:
-    """Cell side for a footprint of ``total_area_m2``: about :data:`TARGET_CELLS` cells."""
-    raw = math.sqrt(total_area_m2 / TARGET_CELLS)
+def cell_size_m(total_area_m2: float, opts: FloorplanOptions) -> float:
+    """Cell side for a footprint of ``total_area_m2``: about ``opts.footprint_target_cells`` cells."""
+    raw = math.sqrt(total_area_m2 / opts.footprint_target_cells)
     snapped = round(raw / SNAP_M) * SNAP_M
-    return round(min(MAX_CELL_M, max(MIN_CELL_M, snapped)), 4)
+    return round(min(opts.cell_max_m, max(opts.cell_min_m, snapped)), 4)
 
 
-def make_footprint(total_area_m2: float, n_rooms: int, rng: np.random.Generator) -> Grid:
+def make_footprint(total_area_m2: float, n_rooms: int, rng: np.random.Generator, opts: FloorplanOptions) -> Grid:
     """Draw a rectangular or L-shaped footprint holding ``total_area_m2``."""
-    cell = cell_size_m(total_area_m2)
+    cell = cell_size_m(total_area_m2, opts)
     n_cells = total_area_m2 / cell**2
-    l_shape = n_rooms >= L_MIN_ROOMS and rng.random() < L_SHAPE_PROB
-    cut = rng.uniform(*L_CUT_FRACTION) if l_shape else 0.0
-    aspect = rng.uniform(*ASPECT_RANGE)
+    l_shape = n_rooms >= opts.l_shape_min_rooms and rng.random() < opts.l_shape_probability
+    cut = rng.uniform(opts.l_cut_min_frac, opts.l_cut_max_frac) if l_shape else 0.0
+    aspect = rng.uniform(opts.footprint_aspect_min, opts.footprint_aspect_max)
     long_side = math.sqrt(n_cells / (1.0 - cut) * aspect)
     nx = max(1, round(long_side))
     ny = max(1, round(n_cells / (1.0 - cut) / nx))
@@ -78,13 +66,13 @@ def make_footprint(total_area_m2: float, n_rooms: int, rng: np.random.Generator)
     owner = np.full((nx + 2, ny + 2), OUTSIDE, dtype=np.int32)
     owner[1:-1, 1:-1] = FREE
     if l_shape:
-        _cut_corner(owner, nx, ny, cut, rng)
+        _cut_corner(owner, nx, ny, cut, rng, opts)
     return Grid(cell_m=cell, owner=owner)
 
 
-def _cut_corner(owner: np.ndarray, nx: int, ny: int, cut: float, rng: np.random.Generator) -> None:
+def _cut_corner(owner: np.ndarray, nx: int, ny: int, cut: float, rng: np.random.Generator, opts: FloorplanOptions) -> None:
     """Mark one corner block of about ``cut`` of the rectangle as outside."""
-    fx = rng.uniform(0.35, 0.6)
+    fx = rng.uniform(opts.l_corner_x_min_frac, opts.l_corner_x_max_frac)
     cx = max(1, round(nx * fx))
     cy = max(1, round(ny * cut / fx))
     cx, cy = min(cx, nx - 2), min(cy, ny - 2)
@@ -95,6 +83,6 @@ def _cut_corner(owner: np.ndarray, nx: int, ny: int, cut: float, rng: np.random.
     owner[xs, ys] = OUTSIDE
 
 
-def min_side_cells(min_side_m: float, cell_m: float) -> int:
-    """Cells a room must span to be about ``min_side_m`` wide (a little leeway)."""
-    return max(2, math.ceil(min_side_m / cell_m - 0.2))
+def min_side_cells(min_side_m: float, cell_m: float, opts: FloorplanOptions) -> int:
+    """Cells a room must span to be about ``min_side_m`` wide (``opts.min_side_leeway_cells`` leeway)."""
+    return max(2, math.ceil(min_side_m / cell_m - opts.min_side_leeway_cells))

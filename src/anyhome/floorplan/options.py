@@ -1,45 +1,254 @@
-"""The floorplan solver's tunable numbers, as one frozen set of named options.
+"""The floorplan search's tunable numbers, as one frozen set of named options.
 
-``solve_floorplan(spec, rng, options=FloorplanOptions())``: every try count, tolerance
-and annealing schedule value the solver uses is a field here (units in the names); the
-defaults are AnyHome's own, so the default options give the same floorplans as always.
+``solve_floorplan(spec, rng, options=FloorplanOptions())``: every try count, tolerance,
+scoring weight and design preference the search uses is a field here (units in the
+names: ``_m`` meters, ``_frac`` a share of 1, ``_cells`` grid cells; weights and costs
+are in units of the score they add to). The defaults are AnyHome's own, so the default
+options give the same floorplans as always. Each field has a valid range; a value out
+of it (or of the wrong type) is refused with one :class:`FloorplanOptionsError` line.
+
+Physical standards and the format's own values are not options and stay constants:
+door and entrance widths (``doors.DOOR_WIDTH_M``, ``ENTRANCE_WIDTH_M``), door height and
+headroom (``solver.DOOR_HEIGHT_M``, ``OPENING_HEADROOM_M``), window and bathroom-window
+sill, height and width (``windows.WINDOW_SILL_M`` ...), the 5 cm snapping grid
+(``grid.SNAP_M``, part of the house format) and the door keep-clear depth
+(``geometry.DOOR_CLEARANCE_M``, shared with layout and evaluation).
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass, fields
+from dataclasses import dataclass, field, fields
+from typing import Any
 
 from anyhome.errors import AnyHomeError
+
+
+class FloorplanOptionsError(AnyHomeError):
+    """A FloorplanOptions value is out of its range or of the wrong type."""
+
+
+def _opt(default: float, lo: float, hi: float) -> Any:
+    """A field with its default and its valid range ``[lo, hi]``."""
+    return field(default=default, metadata={"range": (lo, hi)})
+
+
+# pairs (low, high) that must be ordered: low <= high
+_ORDERED = (
+    ("cell_min_m", "cell_max_m"),
+    ("footprint_aspect_min", "footprint_aspect_max"),
+    ("l_cut_min_frac", "l_cut_max_frac"),
+    ("l_corner_x_min_frac", "l_corner_x_max_frac"),
+    ("spine_block_depth_min_m", "spine_block_depth_max_m"),
+    ("spine_depth_jitter_min", "spine_depth_jitter_max"),
+    ("spine_aspect_min", "spine_aspect_max"),
+    ("open_min_width_m", "open_max_width_m"),
+    ("window_min_width_m", "window_max_width_m"),
+    ("anneal_end_temperature", "anneal_start_temperature"),
+)
 
 
 @dataclass(frozen=True)
 class FloorplanOptions:
     """Tunable numbers of :func:`anyhome.floorplan.solve_floorplan`."""
 
-    max_attempts: int = 40
+    # ---------------------------------------------------------------- the search
+    max_attempts: int = _opt(40, 1, 10_000)
     """Attempts before giving up with a FloorplanError."""
-    slicing_max_rooms: int = 6
+    slicing_max_rooms: int = _opt(6, 1, 1_000)
     """Programs up to this many rooms try the slicing search first; larger ones go to the spine."""
-    slicing_attempts: int = 10
+    slicing_attempts: int = _opt(10, 0, 10_000)
     """Slicing attempts before falling back to the constructive spine layout."""
-    wanted_candidates: int = 3
+    wanted_candidates: int = _opt(3, 1, 1_000)
     """Valid layouts to collect before keeping the best one (lowest score)."""
-    area_tolerance_frac: float = 0.25
+
+    # ------------------------------------------------- hard checks of a layout
+    area_tolerance_frac: float = _opt(0.25, 0.0, 1.0)
     """Allowed relative deviation of a room's area from its target (0.25: 25 %)."""
-    max_room_aspect_ratio: float = 2.5
-    """Longest/shortest bounding-box side of a room (hallways excepted)."""
-    max_narrow_share_frac: float = 0.08
+    max_room_aspect_ratio: float = _opt(2.5, 1.0, 20.0)
+    """Longest/shortest side of a room (hallways excepted): checked, and penalised in slicing and tuning."""
+    max_narrow_share_frac: float = _opt(0.08, 0.0, 1.0)
     """Share of a room's floor allowed in arms narrower than its minimum side."""
-    anneal_steps_per_room: int = 150
+    precheck_wall_per_door_m: float = _opt(1.2, 0.0, 10.0)
+    """Perimeter a room needs per door, when a program is checked before any attempt."""
+    precheck_wall_spare_m: float = _opt(1.4, 0.0, 100.0)
+    """Perimeter a room needs beyond its doors, when a program is checked before any attempt."""
+    min_side_habitable_m: float = _opt(2.4, 0.5, 20.0)
+    """Narrowest side of a habitable room."""
+    min_side_service_m: float = _opt(1.6, 0.5, 20.0)
+    """Narrowest side of a small service room (bathroom, closet...)."""
+    corridor_width_m: float = _opt(1.2, 0.5, 20.0)
+    """Narrowest hallway."""
+    min_side_leeway_cells: float = _opt(0.2, 0.0, 1.0)
+    """Cells a room's span may fall short of its minimum side (grid rounding leeway)."""
+    shared_wall_min_m: float = _opt(1.3, 0.5, 10.0)
+    """Shared wall a connection should get (door width plus margins, a little spare)."""
+    exterior_wall_min_m: float = _opt(1.5, 0.5, 10.0)
+    """Exterior wall a room needing a window or entrance should get (tuning cost)."""
+
+    # ------------------------------------------------- the score of a valid layout
+    score_aspect_free_ratio: float = _opt(1.6, 1.0, 20.0)
+    """A room's bounding-box aspect up to which its shape adds nothing to a layout's score."""
+    score_aspect_weight: float = _opt(0.1, 0.0, 100.0)
+    """Score per unit of aspect above ``score_aspect_free_ratio``."""
+    spine_score_handicap: float = _opt(1.0, 0.0, 1_000.0)
+    """Added to a spine layout's score, so a slicing layout wins ties."""
+
+    # ---------------------------------------------------------------- the footprint
+    footprint_target_cells: int = _opt(600, 10, 1_000_000)
+    """Roughly how many cells the footprint is cut into (sets the cell size)."""
+    cell_min_m: float = _opt(0.3, 0.05, 5.0)
+    """Smallest cell side of the slicing grid."""
+    cell_max_m: float = _opt(1.0, 0.05, 5.0)
+    """Largest cell side of the slicing grid."""
+    footprint_aspect_min: float = _opt(1.0, 1.0, 10.0)
+    """Least long/short side ratio the footprint's is drawn from."""
+    footprint_aspect_max: float = _opt(1.6, 1.0, 10.0)
+    """Greatest long/short side ratio the footprint's is drawn from."""
+    l_shape_probability: float = _opt(0.35, 0.0, 1.0)
+    """Chance of an L-shaped footprint (a corner cut away) for programs of ``l_shape_min_rooms``+ rooms."""
+    l_shape_min_rooms: int = _opt(4, 1, 1_000)
+    """Programs with fewer rooms always get a rectangular footprint."""
+    l_cut_min_frac: float = _opt(0.12, 0.0, 0.5)
+    """Least share of the bounding rectangle the L-shape's missing corner takes."""
+    l_cut_max_frac: float = _opt(0.25, 0.0, 0.5)
+    """Greatest share of the bounding rectangle the L-shape's missing corner takes."""
+    l_corner_x_min_frac: float = _opt(0.35, 0.05, 0.95)
+    """Least share of the footprint's x side the missing corner spans."""
+    l_corner_x_max_frac: float = _opt(0.6, 0.05, 0.95)
+    """Greatest share of the footprint's x side the missing corner spans."""
+
+    # -------------------------------------------------- seeds (force layout)
+    seed_force_iterations: int = _opt(60, 0, 10_000)
+    """Relaxation steps of the force layout of the room seeds."""
+    seed_jitter_cells: float = _opt(0.4, 0.0, 0.5)
+    """Largest random offset of a seed from its drawn cell centre."""
+    seed_attract_gain: float = _opt(0.3, 0.0, 1.0)
+    """Share of the excess distance a connected pair of seeds closes per step."""
+    seed_rest_distance_frac: float = _opt(0.9, 0.0, 5.0)
+    """Connected seeds attract beyond this share of the sum of their radii."""
+    seed_repel_gain: float = _opt(0.5, 0.0, 1.0)
+    """Share of the overlap of two rooms' discs removed per step."""
+    seed_edge_gain: float = _opt(0.3, 0.0, 1.0)
+    """Share of the distance to the footprint edge an exterior room closes per step."""
+    seed_edge_reach_frac: float = _opt(0.6, 0.0, 5.0)
+    """An exterior room stops being pulled when the edge is within this share of its radius."""
+    seed_center_gain: float = _opt(0.08, 0.0, 1.0)
+    """Share of the distance to the centre a hub room closes per step."""
+
+    # ---------------------------------------------------------------- slicing
+    slice_cut_edge_cost: float = _opt(1.5, 0.0, 1_000.0)
+    """Score per bubble-diagram edge crossing a cut."""
+    slice_infeasible_cost: float = _opt(10.0, 0.0, 1_000_000.0)
+    """Score of a part that breaks a hard rule (too thin, no exterior wall...)."""
+    slice_exterior_per_room_m: float = _opt(2.2, 0.1, 100.0)
+    """Exterior wall a part needs per room that must touch the outside."""
+    slice_exterior_deficit_weight: float = _opt(2.0, 0.0, 1_000.0)
+    """Score per room's worth of exterior wall a part lacks."""
+    slice_wall_deficit_weight: float = _opt(4.0, 0.0, 1_000.0)
+    """Score per meter a door wall falls short of ``shared_wall_min_m``."""
+    slice_noise: float = _opt(0.35, 0.0, 1_000.0)
+    """Scale of the random score noise that varies layouts across seeds."""
+    slice_lookahead: int = _opt(6, 1, 1_000)
+    """Best immediate cuts completed greedily before choosing one."""
+    slice_room_aspect_soft: float = _opt(1.5, 1.0, 20.0)
+    """Aspect above which a single room's shape starts to cost (1 per unit of aspect)."""
+    slice_part_aspect_soft: float = _opt(3.0, 1.0, 20.0)
+    """Aspect above which a multi-room part starts to cost."""
+    slice_part_aspect_weight: float = _opt(0.3, 0.0, 1_000.0)
+    """Score per unit of a multi-room part's aspect above ``slice_part_aspect_soft``."""
+    slice_opposite_ports_cost: float = _opt(0.5, 0.0, 1_000.0)
+    """Score of a room that must touch two opposite sides of its part."""
+    slice_crowded_side_ports: int = _opt(2, 0, 1_000)
+    """Rooms that may need a door on the same side of a part before it costs."""
+    slice_crowded_side_cost: float = _opt(0.2, 0.0, 1_000.0)
+    """Score per room beyond ``slice_crowded_side_ports`` on one side of a part."""
+
+    # ---------------------------------------------------------------- annealing
+    anneal_steps_per_room: int = _opt(150, 0, 1_000_000)
     """Annealing steps of the slicing tree per room of the program."""
-    anneal_start_temperature: float = 4.0
+    anneal_start_temperature: float = _opt(4.0, 1e-6, 1_000_000.0)
     """Starting temperature of the annealing (in units of the layout cost)."""
-    anneal_end_temperature: float = 0.05
+    anneal_end_temperature: float = _opt(0.05, 1e-6, 1_000_000.0)
     """Final temperature of the annealing (geometric schedule from the start)."""
+
+    # ---------------------------------------------------------------- tuning
+    tune_rounds: int = _opt(30, 0, 100_000)
+    """Most hill-climbing rounds per layout."""
+    tune_nudge_max_cells: int = _opt(2, 1, 100)
+    """Cut moves tried per round: every nonzero shift up to this many cells either way."""
+    tune_area_slack_frac: float = _opt(0.2, 0.0, 1.0)
+    """Relative area error tolerated before the tuning cost rises steeply."""
+    tune_violation_weight: float = _opt(10.0, 0.0, 1_000_000.0)
+    """Tuning cost per meter (or unit of area error) of a hard-rule shortfall."""
+    tune_gap_weight: float = _opt(2.0, 0.0, 1_000_000.0)
+    """Tuning cost per meter of gap between two connected rooms that do not touch."""
+    tune_aspect_weight: float = _opt(5.0, 0.0, 1_000_000.0)
+    """Tuning cost per unit of aspect above ``max_room_aspect_ratio``."""
+
+    # ------------------------------------------------------- spine (constructive)
+    spine_cell_m: float = _opt(0.1, 0.05, 1.0)
+    """Cell side of the owner grid the spine layout is drawn on."""
+    spine_block_depth_min_m: float = _opt(3.2, 0.5, 100.0)
+    """Least depth of the room blocks beside the spine."""
+    spine_block_depth_max_m: float = _opt(8.0, 0.5, 100.0)
+    """Greatest depth of the room blocks beside the spine (large rooms excepted)."""
+    spine_depth_jitter_min: float = _opt(0.9, 0.1, 10.0)
+    """Least random factor on the block depth derived from the room areas."""
+    spine_depth_jitter_max: float = _opt(1.15, 0.1, 10.0)
+    """Greatest random factor on the block depth derived from the room areas."""
+    spine_hallway_min_m: float = _opt(1.3, 0.5, 20.0)
+    """Narrowest spine hallway (a 0.9 m door plus margins fits its end wall)."""
+    spine_window_gap_m: float = _opt(1.9, 0.0, 100.0)
+    """Outside stretch kept free beside a habitable spine room whose both sides hold blocks."""
+    spine_big_room_aspect: float = _opt(1.8, 1.0, 20.0)
+    """Long/short ratio a large room in a block column is held to (its side grows deeper)."""
+    spine_big_depth_max_m: float = _opt(16.0, 0.5, 1_000.0)
+    """Deepest a side of the spine may grow for a large room."""
+    spine_aspect_min: float = _opt(1.0, 1.0, 20.0)
+    """Least long/short side ratio of a spine room that has no blocks to size it."""
+    spine_aspect_max: float = _opt(1.5, 1.0, 20.0)
+    """Greatest long/short side ratio of a spine room that has no blocks to size it."""
+
+    # ---------------------------------------------------------------- doors
+    door_end_margin_m: float = _opt(0.15, 0.0, 10.0)
+    """Least distance from a door to the ends of its shared wall run."""
+    door_gap_m: float = _opt(0.3, 0.0, 10.0)
+    """Least distance between two openings on the same wall line."""
+    door_center_penalty: float = _opt(0.3, 0.0, 1_000.0)
+    """Score added to a door in the middle of a wall (it splits the wall for furniture)."""
+    door_noise: float = _opt(0.05, 0.0, 1_000.0)
+    """Scale of the random score noise between equally good door positions."""
+    door_entrance_window_penalty: float = _opt(100.0, 0.0, 1_000_000.0)
+    """Score of an entrance door that leaves its habitable room no wall for a window."""
+    open_min_width_m: float = _opt(1.2, 0.5, 20.0)
+    """Narrowest wall opening (kind "open"); below this an open pair gets a plain door."""
+    open_max_width_m: float = _opt(1.8, 0.5, 20.0)
+    """Widest wall opening (kind "open")."""
+
+    # ---------------------------------------------------------------- windows
+    window_min_width_m: float = _opt(0.8, 0.3, 20.0)
+    """Narrowest window (a habitable room needs a free exterior stretch this wide)."""
+    window_max_width_m: float = _opt(1.8, 0.3, 20.0)
+    """Widest window."""
+    window_wall_share_frac: float = _opt(0.45, 0.0, 1.0)
+    """A window's width as a share of its wall run (before clamping)."""
+    window_corner_margin_m: float = _opt(0.3, 0.0, 10.0)
+    """Least distance from a window to a corner (run end) and to a door on the same wall."""
+    second_window_run_m: float = _opt(2.5, 0.0, 100.0)
+    """Exterior runs at least this long get a window of their own (after the first)."""
+    max_windows_per_room: int = _opt(3, 1, 100)
+    """Most windows in one room."""
 
     def __post_init__(self) -> None:
         for f in fields(self):
             v = getattr(self, f.name)
-            least = 0 if f.name == "slicing_attempts" else 1 if f.type == "int" else 0.0
-            if isinstance(v, bool) or not isinstance(v, (int, float)) or v < least or (f.type == "int" and not isinstance(v, int)):
-                raise AnyHomeError(f"FloorplanOptions.{f.name} must be a number >= {least}, got {v!r}")
+            lo, hi = f.metadata["range"]
+            is_int = isinstance(f.default, int)
+            kind = "an integer" if is_int else "a number"
+            if isinstance(v, bool) or not isinstance(v, int if is_int else (int, float)) or not lo <= v <= hi:
+                raise FloorplanOptionsError(f"FloorplanOptions.{f.name} must be {kind} in [{lo}, {hi}], got {v!r}")
+        for low, high in _ORDERED:
+            if getattr(self, low) > getattr(self, high):
+                raise FloorplanOptionsError(
+                    f"FloorplanOptions.{low} ({getattr(self, low)!r}) must not exceed {high} ({getattr(self, high)!r})"
+                )

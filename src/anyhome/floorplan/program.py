@@ -7,15 +7,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from anyhome.floorplan.grid import OUTSIDE
+from anyhome.floorplan.options import FloorplanOptions
 from anyhome.house import is_habitable
 from anyhome.plan.spec import HouseSpec
 
-MIN_SIDE_HABITABLE_M = 2.4
-"""Narrowest side of a habitable room."""
-MIN_SIDE_SERVICE_M = 1.6
-"""Narrowest side of a small service room (bathroom, closet...)."""
-CORRIDOR_WIDTH_M = 1.2
-"""Narrowest hallway."""
 CORRIDOR_TYPES = frozenset({"hallway"})
 """Types grown as long, narrow corridors."""
 HUB_TYPES = frozenset({"hallway", "entry"})
@@ -24,15 +19,17 @@ HUB_TYPES = frozenset({"hallway", "entry"})
 
 @dataclass(frozen=True)
 class Program:
-    """Rooms by index; ``links`` holds (a, b or OUTSIDE) per spec connection, in order."""
+    """Rooms by index; ``links`` holds (a, b or OUTSIDE) per spec connection, in order;
+    ``options`` are the search's tunables (the minimum room sides among them)."""
 
     ids: tuple[str, ...]
     types: tuple[str, ...]
     areas_m2: np.ndarray
     links: tuple[tuple[int, int], ...]
+    options: FloorplanOptions
 
     @classmethod
-    def from_spec(cls, spec: HouseSpec) -> Program:
+    def from_spec(cls, spec: HouseSpec, options: FloorplanOptions) -> Program:
         ids = tuple(r.id for r in spec.rooms)
         index = {rid: k for k, rid in enumerate(ids)} | {"outside": OUTSIDE}
         return cls(
@@ -40,6 +37,7 @@ class Program:
             types=tuple(r.type for r in spec.rooms),
             areas_m2=np.array([r.area_m2 for r in spec.rooms], dtype=float),
             links=tuple((index[a], index[b]) for a, b in spec.connections),
+            options=options,
         )
 
     @property
@@ -62,9 +60,10 @@ class Program:
         return np.array([self.types[k] in HUB_TYPES or not ext[k] for k in range(self.n)])
 
     def min_side_m(self, k: int) -> float:
+        opts = self.options
         if self.types[k] in CORRIDOR_TYPES:
-            return CORRIDOR_WIDTH_M
-        return MIN_SIDE_HABITABLE_M if self.habitable(k) else MIN_SIDE_SERVICE_M
+            return opts.corridor_width_m
+        return opts.min_side_habitable_m if self.habitable(k) else opts.min_side_service_m
 
     def label(self, k: int) -> str:
         return "outside" if k == OUTSIDE else self.ids[k]

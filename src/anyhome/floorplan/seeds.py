@@ -10,17 +10,7 @@ from __future__ import annotations
 import numpy as np
 
 from anyhome.floorplan.grid import FREE, Grid
-
-FORCE_ITERATIONS = 60
-"""Relaxation steps of the force layout."""
-ATTRACT_GAIN = 0.3
-"""Share of the excess distance a connected pair closes per step."""
-REPEL_GAIN = 0.5
-"""Share of the overlap of two rooms' discs removed per step."""
-EDGE_GAIN = 0.3
-"""Share of the distance to the footprint edge an exterior room closes per step."""
-CENTER_GAIN = 0.08
-"""Share of the distance to the centre a hub room closes per step."""
+from anyhome.floorplan.options import FloorplanOptions
 
 
 def seed_positions(
@@ -30,6 +20,7 @@ def seed_positions(
     exterior: np.ndarray,
     hub: np.ndarray,
     rng: np.random.Generator,
+    opts: FloorplanOptions,
 ) -> np.ndarray:
     """Position per room, in padded cell units, inside the footprint.
 
@@ -39,48 +30,50 @@ def seed_positions(
     edges : index pairs of connected rooms
     exterior : (n,) bool, rooms that need an exterior wall
     hub : (n,) bool, rooms pulled to the middle
+    opts : the force layout's gains and step count
     """
     free = np.argwhere(grid.owner == FREE).astype(float) + 0.5  # padded cell centres
     radius = np.sqrt(areas_m2) / grid.cell_m / 2.0
     pos = free[rng.choice(len(free), size=len(areas_m2), replace=len(free) < len(areas_m2))]
-    pos = pos + rng.uniform(-0.4, 0.4, size=pos.shape)
+    pos = pos + rng.uniform(-opts.seed_jitter_cells, opts.seed_jitter_cells, size=pos.shape)
     border = _border_cells(grid)
     center = free.mean(axis=0)
-    for _ in range(FORCE_ITERATIONS):
-        pos = pos + _repel(pos, radius) + _attract(pos, radius, edges)
-        pos = pos + _to_edge(pos, radius, exterior, border) + hub[:, None] * CENTER_GAIN * (center - pos)
+    for _ in range(opts.seed_force_iterations):
+        pos = pos + _repel(pos, radius, opts) + _attract(pos, radius, edges, opts)
+        pos = pos + _to_edge(pos, radius, exterior, border, opts) + hub[:, None] * opts.seed_center_gain * (center - pos)
         pos = _snap_inside(pos, free, grid.owner == FREE)
     return pos
 
 
-def _repel(pos: np.ndarray, radius: np.ndarray) -> np.ndarray:
+def _repel(pos: np.ndarray, radius: np.ndarray, opts: FloorplanOptions) -> np.ndarray:
     delta = pos[:, None, :] - pos[None, :, :]
     dist = np.linalg.norm(delta, axis=2) + 1e-6
     overlap = np.clip(radius[:, None] + radius[None, :] - dist, 0.0, None)
     np.fill_diagonal(overlap, 0.0)
-    return REPEL_GAIN * 0.5 * np.sum((overlap / dist)[:, :, None] * delta, axis=1)
+    return opts.seed_repel_gain * 0.5 * np.sum((overlap / dist)[:, :, None] * delta, axis=1)
 
 
-def _attract(pos: np.ndarray, radius: np.ndarray, edges: list[tuple[int, int]]) -> np.ndarray:
+def _attract(pos: np.ndarray, radius: np.ndarray, edges: list[tuple[int, int]], opts: FloorplanOptions) -> np.ndarray:
     move = np.zeros_like(pos)
     for i, j in edges:
         delta = pos[j] - pos[i]
         dist = float(np.linalg.norm(delta)) + 1e-6
-        excess = dist - 0.9 * (radius[i] + radius[j])
+        excess = dist - opts.seed_rest_distance_frac * (radius[i] + radius[j])
         if excess > 0:
-            step = ATTRACT_GAIN * 0.5 * excess * delta / dist
+            step = opts.seed_attract_gain * 0.5 * excess * delta / dist
             move[i] += step
             move[j] -= step
     return move
 
 
-def _to_edge(pos: np.ndarray, radius: np.ndarray, exterior: np.ndarray, border: np.ndarray) -> np.ndarray:
+def _to_edge(pos: np.ndarray, radius: np.ndarray, exterior: np.ndarray, border: np.ndarray, opts: FloorplanOptions) -> np.ndarray:
     move = np.zeros_like(pos)
     for i in np.flatnonzero(exterior):
         d = np.linalg.norm(border - pos[i], axis=1)
         k = int(np.argmin(d))
-        if d[k] > 0.6 * radius[i]:
-            move[i] = EDGE_GAIN * (border[k] - pos[i]) * (1.0 - 0.6 * radius[i] / d[k])
+        reach = opts.seed_edge_reach_frac
+        if d[k] > reach * radius[i]:
+            move[i] = opts.seed_edge_gain * (border[k] - pos[i]) * (1.0 - reach * radius[i] / d[k])
     return move
 
 

@@ -14,22 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-CUT_EDGE_COST = 1.5
-"""Score per bubble-diagram edge crossing a cut."""
-INFEASIBLE_COST = 10.0
-"""Score of a part that breaks a hard rule (too thin, no exterior wall...)."""
-EXTERIOR_PER_ROOM_M = 2.2
-"""Exterior wall a part needs per room that must touch the outside."""
-SPLIT_NOISE = 0.35
-"""Scale of the random score noise that varies layouts across seeds."""
-LOOKAHEAD = 6
-"""Best immediate cuts completed greedily before choosing one."""
-ROOM_ASPECT_SOFT = 1.5
-"""Aspect above which a single room's shape starts to cost."""
-ROOM_ASPECT_MAX = 2.5
-"""Aspect above which a room (not a corridor) is infeasible."""
-PART_ASPECT_SOFT = 3.0
-"""Aspect above which a multi-room part starts to cost."""
+from anyhome.floorplan.options import FloorplanOptions
 
 Rect = tuple[int, int, int, int]
 """(x0, y0, x1, y1) in cells, unpadded."""
@@ -43,7 +28,8 @@ Part = tuple[Rect, list[int], Ext, Ports]
 
 @dataclass(frozen=True)
 class SliceRooms:
-    """What the slicer knows about the rooms (index ``n`` may be the void)."""
+    """What the slicer knows about the rooms (index ``n`` may be the void), and the
+    search's options (the score's weights)."""
 
     cells: np.ndarray
     min_side: np.ndarray
@@ -53,6 +39,7 @@ class SliceRooms:
     pos: np.ndarray
     edges: frozenset[tuple[int, int]]
     cell_m: float
+    opts: FloorplanOptions
 
 
 @dataclass
@@ -92,7 +79,7 @@ def tree_cuts(tree: Cut | int) -> list[Cut]:
 def _slice(rect: Rect, ids: list[int], ext: Ext, ports: Ports, rooms: SliceRooms, rng) -> Cut | int:
     """Cut ``rect`` recursively; ``ports`` maps a room to the sides it must touch.
 
-    The :data:`LOOKAHEAD` best cuts by their immediate score are completed greedily and
+    The ``opts.slice_lookahead`` best cuts by their immediate score are completed greedily and
     the one whose completed layout scores best (plus noise) is taken.
     """
     if len(ids) == 1:
@@ -100,9 +87,10 @@ def _slice(rect: Rect, ids: list[int], ext: Ext, ports: Ports, rooms: SliceRooms
     ranked = _ranked_cuts(rect, ids, ext, ports, rooms, rng)
     if not ranked:  # a part too small to cut: let the room checks reject it
         ranked = [(0.0, _parts(rect, ext, ports, 0, rect[0] + 1, ids[:1], ids[1:], rooms.edges))]
+    opts = rooms.opts
     best = min(
-        ranked[:LOOKAHEAD],
-        key=lambda c: _completed_cost(c[1], rooms) + SPLIT_NOISE * rng.random(),
+        ranked[:opts.slice_lookahead],
+        key=lambda c: _completed_cost(c[1], rooms) + opts.slice_noise * rng.random(),
     )[1]
     (rect_a, ids_a, ext_a, ports_a), (rect_b, ids_b, ext_b, ports_b), _ = best
     axis = 0 if rect_a[1] == rect_b[1] and rect_a[3] == rect_b[3] else 1
@@ -122,7 +110,7 @@ def _ranked_cuts(rect, ids, ext, ports, rooms: SliceRooms, rng=None) -> list[tup
         if cut is None:
             continue
         parts = _parts(rect, ext, ports, axis, cut, low, high, rooms.edges)
-        noise = SPLIT_NOISE * rng.random() if rng is not None else 0.0
+        noise = rooms.opts.slice_noise * rng.random() if rng is not None else 0.0
         out.append((_cut_score(parts, rooms) + noise, parts))
     out.sort(key=lambda c: c[0])
     return out
@@ -177,7 +165,8 @@ def _component(start: int, edges: list[tuple[int, int]]) -> set[int]:
 
 def _completed_cost(parts, rooms: SliceRooms) -> float:
     """Cost of a cut when both parts are then sliced greedily to single rooms."""
-    cost = INFEASIBLE_COST * parts[2]
+    opts = rooms.opts
+    cost = opts.slice_infeasible_cost * parts[2]
     leaves: dict[int, Rect] = {}
     for rect, ids, ext, ports in parts[:2]:
         part: dict[int, Rect] = {}
@@ -186,7 +175,7 @@ def _completed_cost(parts, rooms: SliceRooms) -> float:
         leaves.update(part)
     for i, j in rooms.edges:
         if i in leaves and j in leaves:
-            cost += 4.0 * max(0.0, 1.3 - _shared(leaves[i], leaves[j]) * rooms.cell_m)
+            cost += opts.slice_wall_deficit_weight * max(0.0, opts.shared_wall_min_m - _shared(leaves[i], leaves[j]) * rooms.cell_m)
     return cost
 
 
@@ -206,16 +195,17 @@ def _greedy_rects(rect, ids, ext, ports, rooms: SliceRooms, out: dict[int, Rect]
 def _leaves_cost(leaves: dict[int, Rect], rect: Rect, ext: Ext, ports: Ports, rooms: SliceRooms) -> float:
     """Hard-rule violations of a completed part: shapes, ports, exterior walls."""
     cell = rooms.cell_m
+    opts = rooms.opts
     cost = 0.0
     for k, r in leaves.items():
         w, h = (r[2] - r[0]) * cell, (r[3] - r[1]) * cell
         if w <= 0 or h <= 0:
-            cost += INFEASIBLE_COST
+            cost += opts.slice_infeasible_cost
             continue
         cost += _room_shape_score(k, min(w, h), max(w, h), _leaf_ext(r, rect, ext), rooms)
-        cost += sum(_side_deficit(r, rect, side, cell) for side in ports.get(k, ()))
+        cost += sum(_side_deficit(r, rect, side, cell, opts) for side in ports.get(k, ()))
         if rooms.exterior[k]:
-            cost += min((_side_deficit(r, rect, side, cell) for side in range(4) if ext[side]), default=INFEASIBLE_COST)
+            cost += min((_side_deficit(r, rect, side, cell, opts) for side in range(4) if ext[side]), default=opts.slice_infeasible_cost)
     return cost
 
 
@@ -226,11 +216,11 @@ def _leaf_ext(r: Rect, rect: Rect, ext: Ext) -> Ext:
     )
 
 
-def _side_deficit(r: Rect, rect: Rect, side: int, cell: float) -> float:
-    """Cost of a leaf having less than 1.3 m of wall on its part's ``side``."""
+def _side_deficit(r: Rect, rect: Rect, side: int, cell: float, opts: FloorplanOptions) -> float:
+    """Cost of a leaf having less than ``opts.shared_wall_min_m`` of wall on its part's ``side``."""
     on = (r[0] == rect[0], r[2] == rect[2], r[1] == rect[1], r[3] == rect[3])[side]
     length = (r[3] - r[1]) if side < 2 else (r[2] - r[0])
-    return 4.0 * max(0.0, 1.3 - (length * cell if on else 0.0))
+    return opts.slice_wall_deficit_weight * max(0.0, opts.shared_wall_min_m - (length * cell if on else 0.0))
 
 
 def _shared(a: Rect, b: Rect) -> int:
@@ -275,7 +265,8 @@ def _parts(rect: Rect, ext: Ext, ports: Ports, axis: int, cut: int, a: list[int]
 def _cut_score(parts: tuple[Part, Part, int], rooms: SliceRooms) -> float:
     part_a, part_b, broken = parts
     crossing = sum(len(v) for v in part_a[3].values())
-    score = CUT_EDGE_COST * crossing + INFEASIBLE_COST * broken
+    opts = rooms.opts
+    score = opts.slice_cut_edge_cost * crossing + opts.slice_infeasible_cost * broken
     return score + sum(_part_score(*part, rooms) for part in (part_a, part_b))
 
 
@@ -283,45 +274,50 @@ def _part_score(rect: Rect, ids: list[int], ext: Ext, ports: Ports, rooms: Slice
     w_m = (rect[2] - rect[0]) * rooms.cell_m
     h_m = (rect[3] - rect[1]) * rooms.cell_m
     short, long_ = min(w_m, h_m), max(w_m, h_m)
-    score = _exterior_score(ids, ext, w_m, h_m, rooms) + _port_score(ids, ports)
+    opts = rooms.opts
+    score = _exterior_score(ids, ext, w_m, h_m, rooms) + _port_score(ids, ports, opts)
     if len(ids) == 1:
         return score + _room_shape_score(ids[0], short, long_, ext, rooms)
     if short < rooms.min_side[ids].min() - 1e-6:
-        score += INFEASIBLE_COST
-    return score + 0.3 * max(0.0, long_ / short - PART_ASPECT_SOFT)
+        score += opts.slice_infeasible_cost
+    return score + opts.slice_part_aspect_weight * max(0.0, long_ / short - opts.slice_part_aspect_soft)
 
 
 def _room_shape_score(k: int, short: float, long_: float, ext: Ext, rooms: SliceRooms) -> float:
+    opts = rooms.opts
     if k == rooms.void:
         corner = (ext[0] or ext[1]) and (ext[2] or ext[3])
-        return 0.0 if corner else INFEASIBLE_COST
-    score = INFEASIBLE_COST if short < rooms.min_side[k] - 1e-6 else 0.0
+        return 0.0 if corner else opts.slice_infeasible_cost
+    score = opts.slice_infeasible_cost if short < rooms.min_side[k] - 1e-6 else 0.0
     if rooms.corridor[k]:
         return score
     aspect = long_ / short
-    if aspect > ROOM_ASPECT_MAX:
-        score += INFEASIBLE_COST
-    return score + max(0.0, aspect - ROOM_ASPECT_SOFT)
+    if aspect > opts.max_room_aspect_ratio:
+        score += opts.slice_infeasible_cost
+    return score + max(0.0, aspect - opts.slice_room_aspect_soft)
 
 
 def _exterior_score(ids: list[int], ext: Ext, w_m: float, h_m: float, rooms: SliceRooms) -> float:
+    opts = rooms.opts
     need = int(rooms.exterior[ids].sum())
     if need == 0:
         return 0.0
     have = (ext[0] + ext[1]) * h_m + (ext[2] + ext[3]) * w_m
     if have == 0:
-        return INFEASIBLE_COST * need
-    return 2.0 * max(0.0, need * EXTERIOR_PER_ROOM_M - have) / EXTERIOR_PER_ROOM_M
+        return opts.slice_infeasible_cost * need
+    per_room = opts.slice_exterior_per_room_m
+    return opts.slice_exterior_deficit_weight * max(0.0, need * per_room - have) / per_room
 
 
-def _port_score(ids: list[int], ports: Ports) -> float:
+def _port_score(ids: list[int], ports: Ports, opts: FloorplanOptions) -> float:
     """Cost of rooms that must touch opposite sides or crowd one side of a part."""
     score = 0.0
     per_side = [0, 0, 0, 0]
     for k in ids:
         sides = ports.get(k, frozenset())
         if {0, 1} <= sides or {2, 3} <= sides:
-            score += 0.5
+            score += opts.slice_opposite_ports_cost
         for side in sides:
             per_side[side] += 1
-    return score + 0.2 * sum(max(0, c - 2) for c in per_side)
+    crowd = opts.slice_crowded_side_ports
+    return score + opts.slice_crowded_side_cost * sum(max(0, c - crowd) for c in per_side)

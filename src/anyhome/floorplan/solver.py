@@ -27,7 +27,7 @@ from anyhome.floorplan.options import FloorplanOptions
 from anyhome.floorplan.program import CORRIDOR_TYPES, Program
 from anyhome.floorplan.seeds import seed_positions
 from anyhome.floorplan.slicing import SliceRooms, slice_footprint, tree_rects
-from anyhome.floorplan.spine import SPINE_CELL_M, spine_owner
+from anyhome.floorplan.spine import spine_owner
 from anyhome.floorplan.tune import TuneRooms, tune_tree
 from anyhome.floorplan.walls import (
     Run,
@@ -70,7 +70,7 @@ def solve_floorplan(spec: HouseSpec, rng: np.random.Generator, options: Floorpla
         if no attempt within ``options.max_attempts`` satisfies the hard constraints.
     """
     opts = options or FloorplanOptions()
-    prog = Program.from_spec(spec)
+    prog = Program.from_spec(spec, opts)
     _precheck(prog, opts)
     failures: Counter[str] = Counter()
     found: list[Layout] = []
@@ -110,7 +110,7 @@ def _precheck(prog: Program, opts: FloorplanOptions) -> None:
     for k, deg in degree.items():
         area = prog.areas_m2[k] * (1 + opts.area_tolerance_frac)
         perimeter = 2 * (np.sqrt(opts.max_room_aspect_ratio * area) + np.sqrt(area / opts.max_room_aspect_ratio))
-        if prog.types[k] not in CORRIDOR_TYPES and deg * 1.2 + 1.4 > perimeter:
+        if prog.types[k] not in CORRIDOR_TYPES and deg * opts.precheck_wall_per_door_m + opts.precheck_wall_spare_m > perimeter:
             raise FloorplanError(
                 f"room {prog.ids[k]!r} ({prog.areas_m2[k]:.1f} m2) is too small for its {deg} doors"
             )
@@ -118,7 +118,7 @@ def _precheck(prog: Program, opts: FloorplanOptions) -> None:
 
 def _attempt(prog: Program, rng: np.random.Generator, opts: FloorplanOptions) -> Layout | str:
     """One try: a Layout, or a short reason it failed."""
-    grid = make_footprint(float(prog.areas_m2.sum()), prog.n, rng)
+    grid = make_footprint(float(prog.areas_m2.sum()), prog.n, rng, opts)
     owner = _slice_rooms(prog, grid, rng, opts)
     reason, score = _check_rooms(prog, owner, grid.cell_m, opts)
     if reason:
@@ -140,27 +140,28 @@ def _spine_attempt(prog: Program, rng: np.random.Generator, opts: FloorplanOptio
     owner = spine_owner(prog, rng)
     if isinstance(owner, str):
         return owner
+    cell_m = opts.spine_cell_m
     runs = wall_runs(owner)
-    doors = _place_doors(prog, runs, SPINE_CELL_M, rng)
+    doors = _place_doors(prog, runs, cell_m, rng)
     if isinstance(doors, str):
         return doors
-    windows = _place_windows(prog, runs, doors, SPINE_CELL_M)
+    windows = _place_windows(prog, runs, doors, cell_m)
     if isinstance(windows, str):
         return windows
-    area = np.array([(owner == k).sum() for k in range(prog.n)]) * SPINE_CELL_M**2
-    score = float(np.abs(area / prog.areas_m2 - 1).sum()) + 1.0  # slicing wins ties
-    return Layout(owner, SPINE_CELL_M, doors, windows, score)
+    area = np.array([(owner == k).sum() for k in range(prog.n)]) * cell_m**2
+    score = float(np.abs(area / prog.areas_m2 - 1).sum()) + opts.spine_score_handicap  # slicing wins ties
+    return Layout(owner, cell_m, doors, windows, score)
 
 
 def _slice_rooms(prog: Program, grid: Grid, rng: np.random.Generator, opts: FloorplanOptions) -> np.ndarray:
     """Owner array of the footprint sliced into one rectangle per room (void = outside)."""
     exterior = prog.needs_exterior()
-    pos = seed_positions(grid, prog.areas_m2, prog.edges, exterior, prog.hubs(), rng) - 1.0
+    pos = seed_positions(grid, prog.areas_m2, prog.edges, exterior, prog.hubs(), rng, opts) - 1.0
     cell = grid.cell_m
     nx, ny = grid.shape
     void = np.argwhere(grid.owner[1:-1, 1:-1] == OUTSIDE)
     cells = prog.areas_m2 / cell**2
-    min_side = np.array([min_side_cells(prog.min_side_m(k), cell) * cell for k in range(prog.n)])
+    min_side = np.array([min_side_cells(prog.min_side_m(k), cell, opts) * cell for k in range(prog.n)])
     corridor = np.array([t in CORRIDOR_TYPES for t in prog.types])
     void_id = None
     if len(void):
@@ -168,12 +169,12 @@ def _slice_rooms(prog: Program, grid: Grid, rng: np.random.Generator, opts: Floo
         cells = np.append(cells, len(void) * cells.sum() / (nx * ny - len(void)))
         min_side, corridor = np.append(min_side, 2 * cell), np.append(corridor, True)
         exterior, pos = np.append(exterior, False), np.vstack([pos, void.mean(axis=0) + 0.5])
-    rooms = SliceRooms(cells, min_side, corridor, exterior, void_id, pos, frozenset(prog.edges), cell)
+    rooms = SliceRooms(cells, min_side, corridor, exterior, void_id, pos, frozenset(prog.edges), cell, opts)
     tree = slice_footprint((0, 0, nx, ny), rooms, rng)
     targets = np.maximum(cells, (min_side / cell) ** 2)
     if void_id is not None:
         targets[void_id] = 1.0
-    tune_rooms = TuneRooms(targets, min_side, corridor, exterior, void_id, tuple(prog.edges), cell)
+    tune_rooms = TuneRooms(targets, min_side, corridor, exterior, void_id, tuple(prog.edges), cell, opts)
     tree = anneal(tree, (0, 0, nx, ny), tune_rooms, rng, opts)
     tune_tree(tree, (0, 0, nx, ny), tune_rooms)
     owner = np.full((nx + 2, ny + 2), OUTSIDE, dtype=np.int32)
@@ -205,9 +206,9 @@ def _check_rooms(prog: Program, owner: np.ndarray, cell_m: float, opts: Floorpla
         aspect = bbox_aspect(mask)
         if prog.types[k] not in CORRIDOR_TYPES and aspect > opts.max_room_aspect_ratio:
             return f"room {prog.ids[k]!r} too elongated", np.inf
-        if narrow_share(mask, min_side_cells(min_side, cell_m)) > opts.max_narrow_share_frac:
+        if narrow_share(mask, min_side_cells(min_side, cell_m, opts)) > opts.max_narrow_share_frac:
             return f"room {prog.ids[k]!r} too narrow", np.inf
-        score += abs(ratio - 1) + 0.1 * max(0.0, aspect - 1.6)
+        score += abs(ratio - 1) + opts.score_aspect_weight * max(0.0, aspect - opts.score_aspect_free_ratio)
     return "", score
 
 
@@ -218,7 +219,8 @@ def _place_doors(prog: Program, runs: list[Run], cell_m: float, rng) -> list[Pla
     for i in order:
         a, b = prog.links[i]
         kind = door_kind(prog.types[a], prog.types[b] if b != OUTSIDE else None)
-        door = place_door((a, b), kind, runs, cell_m, list(placed.values()), rng, _entrance_penalty(prog, a, b, runs, placed, cell_m))
+        penalty = _entrance_penalty(prog, a, b, runs, placed, cell_m)
+        door = place_door((a, b), kind, runs, cell_m, list(placed.values()), rng, prog.options, penalty)
         if door is None:
             return f"connection {prog.label(a)}-{prog.label(b)} has no shared wall long enough"
         placed[i] = door
@@ -231,10 +233,11 @@ def _entrance_penalty(prog, a, b, runs, placed, cell_m):
     if b != OUTSIDE or not prog.habitable(a):
         return None
     others = list(placed.values())
+    opts = prog.options
 
     def penalty(opening) -> float:
-        slots = free_slots(a, runs, others + [PlacedDoor((a, b), opening)], cell_m)
-        return 0.0 if window_room_ok(slots) else 100.0
+        slots = free_slots(a, runs, others + [PlacedDoor((a, b), opening)], cell_m, opts)
+        return 0.0 if window_room_ok(slots, opts) else opts.door_entrance_window_penalty
 
     return penalty
 
@@ -275,7 +278,7 @@ def _bridge(prog, runs, cell_m, doors, reached, missing, rng) -> PlacedDoor | No
             key=lambda p: -max(r.length for r in runs_between(runs, k, p)),
         )
         for p in partners:
-            door = place_door((p, k), "door", runs, cell_m, doors, rng)
+            door = place_door((p, k), "door", runs, cell_m, doors, rng, prog.options)
             if door is not None:
                 return door
     return None
@@ -284,8 +287,8 @@ def _bridge(prog, runs, cell_m, doors, reached, missing, rng) -> PlacedDoor | No
 def _place_windows(prog, runs, doors, cell_m) -> list[PlacedWindow] | str:
     windows: list[PlacedWindow] = []
     for k in range(prog.n):
-        slots = free_slots(k, runs, doors, cell_m)
-        placed = place_windows(k, prog.habitable(k), prog.types[k] == "bathroom", slots)
+        slots = free_slots(k, runs, doors, cell_m, prog.options)
+        placed = place_windows(k, prog.habitable(k), prog.types[k] == "bathroom", slots, prog.options)
         if prog.habitable(k) and not placed:
             return f"habitable room {prog.ids[k]!r} has no exterior wall for a window"
         windows.extend(placed)
@@ -293,9 +296,9 @@ def _place_windows(prog, runs, doors, cell_m) -> list[PlacedWindow] | str:
 
 
 DOOR_HEIGHT_M = 2.1
-"""Height of a door opening, where the rooms' ceilings allow it."""
+"""Height of a door opening, where the rooms' ceilings allow it (a physical standard)."""
 OPENING_HEADROOM_M = 0.1
-"""Wall kept between the top of a door or window and the ceiling."""
+"""Wall kept between the top of a door or window and the ceiling (a physical standard)."""
 
 
 def _to_floorplan(spec: HouseSpec, prog: Program, lay: Layout) -> Floorplan:

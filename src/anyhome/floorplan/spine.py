@@ -20,29 +20,12 @@ import numpy as np
 from anyhome.floorplan.grid import FREE, OUTSIDE
 from anyhome.floorplan.program import Program
 
-SPINE_CELL_M = 0.1
-"""Cell side of the owner grid the spine layout is drawn on."""
-DEPTH_RANGE_M = (3.2, 8.0)
-"""Range of the depth of the room blocks beside the spine."""
-DEPTH_JITTER = (0.9, 1.15)
-"""Random factor on the block depth derived from the room areas."""
-HALLWAY_MIN_M = 1.3
-"""Narrowest spine hallway (a 0.9 m door plus margins fits its end wall)."""
-WINDOW_GAP_M = 1.9
-"""Outside stretch kept free beside a habitable spine room whose both sides hold blocks."""
-BIG_ROOM_ASPECT = 1.8
-"""Long/short ratio a large room in a block column is held to: its side of the spine
-is made deeper than the common block depth when it needs it."""
-BIG_DEPTH_MAX_M = 16.0
-"""Deepest a side of the spine may grow for a large room."""
-SPINE_ASPECT_RANGE = (1.0, 1.5)
-"""Long/short side ratio of a spine room that has no blocks to size it."""
-
 Column = list[int]  # rooms stacked from the spine side outwards
 
 
 def spine_owner(prog: Program, rng: np.random.Generator) -> np.ndarray | str:
-    """Padded owner array (``[x, y]``) of one spine layout, or a reason it cannot be built."""
+    """Padded owner array (``[x, y]``) of one spine layout, or a reason it cannot be built
+    (cells of ``prog.options.spine_cell_m``; sizes from ``prog.options``)."""
     tree = _tree(prog, rng)
     if isinstance(tree, str):
         return tree
@@ -74,7 +57,7 @@ def spine_owner(prog: Program, rng: np.random.Generator) -> np.ndarray | str:
         seg_len = max(own_len, *lengths)
         window_gap = (prog.habitable(s) or s == root) and all(lengths)
         if window_gap:  # both sides taken: leave an outside stretch for its windows
-            seg_len = max(seg_len, max(lengths) + _cells(WINDOW_GAP_M))
+            seg_len = max(seg_len, max(lengths) + _cells(prog.options.spine_window_gap_m, prog))
         d = _spine_depth(prog, s, seg_len)
         y0 = -(d // 2)
         rects[s] = (x, y0, x + seg_len, y0 + d)
@@ -196,49 +179,56 @@ def _split_sides(
 
 
 # ----------------------------------------------------------------- the sizes
-def _cells(m: float) -> int:
-    return int(round(m / SPINE_CELL_M))
+def _cells(m: float, prog: Program) -> int:
+    return int(round(m / prog.options.spine_cell_m))
 
 
 def _min_side(prog: Program, k: int) -> int:
-    return _cells(prog.min_side_m(k))
+    return _cells(prog.min_side_m(k), prog)
 
 
 def _block_depth(prog: Program, spine: list[int], rng) -> int:
+    opts = prog.options
     others = [k for k in range(prog.n) if k not in spine]
     if not others:
-        return _cells(DEPTH_RANGE_M[0])
+        return _cells(opts.spine_block_depth_min_m, prog)
     typical = float(np.sqrt(np.median([prog.areas_m2[k] for k in others])))
-    depth_m = np.clip(typical * rng.uniform(*DEPTH_JITTER), *DEPTH_RANGE_M)
-    return _cells(float(depth_m))
+    jitter = rng.uniform(opts.spine_depth_jitter_min, opts.spine_depth_jitter_max)
+    depth_m = np.clip(typical * jitter, opts.spine_block_depth_min_m, opts.spine_block_depth_max_m)
+    return _cells(float(depth_m), prog)
 
 
 def _deep_enough(col: Column, prog: Program) -> int:
-    """Depth a one-room column needs to stay within ``BIG_ROOM_ASPECT`` (an auditorium
+    """Depth a one-room column needs to stay within ``spine_big_room_aspect`` (an auditorium
     beside a foyer must not become a 50 m strip); 0 for stacked columns."""
     if len(col) != 1:
         return 0
-    return min(_cells(float(np.sqrt(prog.areas_m2[col[0]] / BIG_ROOM_ASPECT))), _cells(BIG_DEPTH_MAX_M))
+    opts = prog.options
+    return min(
+        _cells(float(np.sqrt(prog.areas_m2[col[0]] / opts.spine_big_room_aspect)), prog),
+        _cells(opts.spine_big_depth_max_m, prog),
+    )
 
 
 def _column_width(col: Column, depth: int, prog: Program) -> int:
-    area_cells = sum(prog.areas_m2[k] for k in col) / SPINE_CELL_M**2
+    area_cells = sum(prog.areas_m2[k] for k in col) / prog.options.spine_cell_m**2
     return max(int(np.ceil(area_cells / depth)), *(_min_side(prog, k) for k in col))
 
 
 def _spine_length(prog: Program, s: int, blocks_len: int, rng) -> int:
     """The spine room's own length: its blocks' length, or its natural proportions."""
-    area = prog.areas_m2[s] / SPINE_CELL_M**2
-    natural = int(round(np.sqrt(area * rng.uniform(*SPINE_ASPECT_RANGE))))
+    opts = prog.options
+    area = prog.areas_m2[s] / opts.spine_cell_m**2
+    natural = int(round(np.sqrt(area * rng.uniform(opts.spine_aspect_min, opts.spine_aspect_max))))
     if prog.types[s] == "hallway" and blocks_len:
         return blocks_len
     return max(natural, _min_side(prog, s))
 
 
 def _spine_depth(prog: Program, s: int, length: int) -> int:
-    area = prog.areas_m2[s] / SPINE_CELL_M**2
-    floor_m = HALLWAY_MIN_M if prog.types[s] == "hallway" else prog.min_side_m(s)
-    return max(int(round(area / length)), _cells(floor_m))
+    area = prog.areas_m2[s] / prog.options.spine_cell_m**2
+    floor_m = prog.options.spine_hallway_min_m if prog.types[s] == "hallway" else prog.min_side_m(s)
+    return max(int(round(area / length)), _cells(floor_m, prog))
 
 
 def _place_column(col, w, cx, y0, d, depth, side, prog, rects) -> None:

@@ -12,24 +12,14 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from anyhome.floorplan.options import FloorplanOptions
 from anyhome.floorplan.slicing import Cut, Rect, _shared, tree_cuts, tree_rects
-
-TUNE_ROUNDS = 30
-"""Most hill-climbing rounds per layout."""
-NUDGES_CELLS = (-2, -1, 1, 2)
-"""Cut moves tried per round."""
-SHARED_WALL_M = 1.3
-"""Shared wall a connection should get (door width plus margins, a little spare)."""
-EXTERIOR_WALL_M = 1.5
-"""Exterior wall a room needing a window or entrance should get."""
-AREA_SLACK = 0.2
-"""Relative area error tolerated before the cost rises steeply."""
-MAX_ASPECT = 2.5
 
 
 @dataclass(frozen=True)
 class TuneRooms:
-    """Per leaf index: target cells, min side and flags (the void has target 0)."""
+    """Per leaf index: target cells, min side and flags (the void has target 0); the
+    search's options (the cost's weights and thresholds)."""
 
     target_cells: np.ndarray
     min_side_m: np.ndarray
@@ -38,18 +28,21 @@ class TuneRooms:
     void: int | None
     edges: tuple[tuple[int, int], ...]
     cell_m: float
+    opts: FloorplanOptions
 
 
 def tune_tree(tree: Cut | int, rect: Rect, rooms: TuneRooms) -> float:
     """Improve the tree's cut positions in place; return the final cost."""
+    opts = rooms.opts
+    nudges = [d for d in range(-opts.tune_nudge_max_cells, opts.tune_nudge_max_cells + 1) if d]
     cost = layout_cost(tree_rects(tree, rect), rect, rooms)
-    for _ in range(TUNE_ROUNDS):
+    for _ in range(opts.tune_rounds):
         if cost < 1e-9:
             break
         best = None
         for cut in tree_cuts(tree):
             start = cut.at
-            for d in NUDGES_CELLS:
+            for d in nudges:
                 cut.at = start + d
                 c = layout_cost(tree_rects(tree, rect), rect, rooms)
                 if c < cost - 1e-9:
@@ -63,6 +56,7 @@ def tune_tree(tree: Cut | int, rect: Rect, rooms: TuneRooms) -> float:
 
 def layout_cost(rects: dict[int, Rect], outer: Rect, rooms: TuneRooms) -> float:
     """Hard-rule violations of the leaf rectangles (0 when none)."""
+    opts = rooms.opts
     cost = 0.0
     for k, r in rects.items():
         if r[2] <= r[0] or r[3] <= r[1]:
@@ -71,21 +65,22 @@ def layout_cost(rects: dict[int, Rect], outer: Rect, rooms: TuneRooms) -> float:
             cost += _room_cost(k, r, rooms)
     for i, j in rooms.edges:
         shared = _shared(rects[i], rects[j]) * rooms.cell_m
-        if shared < SHARED_WALL_M:
-            cost += 10.0 * (SHARED_WALL_M - shared) + 2.0 * _gap(rects[i], rects[j]) * rooms.cell_m
+        if shared < opts.shared_wall_min_m:
+            cost += opts.tune_violation_weight * (opts.shared_wall_min_m - shared) + opts.tune_gap_weight * _gap(rects[i], rects[j]) * rooms.cell_m
     for k in np.flatnonzero(rooms.exterior).tolist():
         ext = _exterior(rects[k], outer, rects.get(rooms.void) if rooms.void is not None else None) * rooms.cell_m
-        cost += 10.0 * max(0.0, EXTERIOR_WALL_M - ext)
+        cost += opts.tune_violation_weight * max(0.0, opts.exterior_wall_min_m - ext)
     return cost
 
 
 def _room_cost(k: int, r: Rect, rooms: TuneRooms) -> float:
+    opts = rooms.opts
     w, h = (r[2] - r[0]) * rooms.cell_m, (r[3] - r[1]) * rooms.cell_m
     err = abs((r[2] - r[0]) * (r[3] - r[1]) / rooms.target_cells[k] - 1.0)
-    cost = 10.0 * max(0.0, err - AREA_SLACK)
-    cost += 10.0 * max(0.0, rooms.min_side_m[k] - min(w, h))
+    cost = opts.tune_violation_weight * max(0.0, err - opts.tune_area_slack_frac)
+    cost += opts.tune_violation_weight * max(0.0, rooms.min_side_m[k] - min(w, h))
     if not rooms.corridor[k]:
-        cost += 5.0 * max(0.0, max(w, h) / min(w, h) - MAX_ASPECT)
+        cost += opts.tune_aspect_weight * max(0.0, max(w, h) / min(w, h) - opts.max_room_aspect_ratio)
     return cost
 
 

@@ -1,7 +1,7 @@
 """Windows on the exterior walls: every habitable room gets one, bathrooms a small high one.
 
 A window sits in the largest free stretch of an exterior wall run, at least
-:data:`WINDOW_CORNER_MARGIN_M` from the run's ends and from any door on that wall line,
+``FloorplanOptions.window_corner_margin_m`` from the run's ends and from any door on that wall line,
 its width a share of the wall.
 """
 
@@ -12,24 +12,19 @@ from dataclasses import dataclass
 from anyhome.floorplan.doors import PlacedDoor
 from anyhome.floorplan.grid import OUTSIDE
 from anyhome.floorplan.openings import Opening, run_bounds_m, snap_down_m, snap_m
+from anyhome.floorplan.options import FloorplanOptions
 from anyhome.floorplan.walls import Run
 
-WINDOW_MIN_WIDTH_M = 0.8
-"""Narrowest window."""
-WINDOW_MAX_WIDTH_M = 1.8
-"""Widest window."""
-WINDOW_WALL_SHARE = 0.45
-"""A window's width as a share of its wall run (before clamping)."""
-WINDOW_CORNER_MARGIN_M = 0.3
-"""Least distance from a window to a corner (run end) and to a door on the same wall."""
 WINDOW_SILL_M = 0.9
+"""Sill height of a window (a physical standard, not an option)."""
 WINDOW_HEIGHT_M = 1.2
+"""Height of a window opening."""
 BATH_WINDOW_WIDTH_M = 0.8
+"""Width of a bathroom's small high window."""
 BATH_WINDOW_SILL_M = 1.5
+"""Sill height of a bathroom window (high, for privacy)."""
 BATH_WINDOW_HEIGHT_M = 0.6
-SECOND_WINDOW_RUN_M = 2.5
-"""Exterior runs at least this long get a window of their own (after the first)."""
-MAX_WINDOWS_PER_ROOM = 3
+"""Height of a bathroom window."""
 
 
 @dataclass(frozen=True)
@@ -41,7 +36,7 @@ class PlacedWindow:
 
 
 def free_slots(
-    room: int, runs: list[Run], doors: list[PlacedDoor], cell_m: float
+    room: int, runs: list[Run], doors: list[PlacedDoor], cell_m: float, opts: FloorplanOptions
 ) -> list[tuple[float, Opening]]:
     """Free stretches of ``room``'s exterior walls as (run length, stretch), longest first."""
     slots = []
@@ -53,15 +48,16 @@ def free_slots(
             d.opening for d in doors
             if room in d.rooms and d.opening.axis == run.axis and abs(d.opening.line_m - line) < 1e-6
         ]
-        for lo, hi in _free_intervals(start + WINDOW_CORNER_MARGIN_M, end - WINDOW_CORNER_MARGIN_M, blocked):
+        margin = opts.window_corner_margin_m
+        for lo, hi in _free_intervals(start + margin, end - margin, blocked, margin):
             slots.append((end - start, Opening(run.axis, line, lo, hi)))
     return sorted(slots, key=lambda s: (-s[1].width_m, -s[0]))
 
 
-def _free_intervals(lo: float, hi: float, blocked: list[Opening]) -> list[tuple[float, float]]:
+def _free_intervals(lo: float, hi: float, blocked: list[Opening], margin_m: float) -> list[tuple[float, float]]:
     pieces = [(lo, hi)]
     for b in blocked:
-        cut_lo, cut_hi = b.lo_m - WINDOW_CORNER_MARGIN_M, b.hi_m + WINDOW_CORNER_MARGIN_M
+        cut_lo, cut_hi = b.lo_m - margin_m, b.hi_m + margin_m
         pieces = [
             piece
             for a, z in pieces
@@ -71,12 +67,12 @@ def _free_intervals(lo: float, hi: float, blocked: list[Opening]) -> list[tuple[
     return pieces
 
 
-def window_room_ok(slots: list[tuple[float, Opening]]) -> bool:
-    return bool(slots) and slots[0][1].width_m >= WINDOW_MIN_WIDTH_M - 1e-9
+def window_room_ok(slots: list[tuple[float, Opening]], opts: FloorplanOptions) -> bool:
+    return bool(slots) and slots[0][1].width_m >= opts.window_min_width_m - 1e-9
 
 
 def place_windows(
-    room: int, habitable: bool, bathroom: bool, slots: list[tuple[float, Opening]]
+    room: int, habitable: bool, bathroom: bool, slots: list[tuple[float, Opening]], opts: FloorplanOptions
 ) -> list[PlacedWindow]:
     """Windows of one room in its free exterior stretches (``slots`` from :func:`free_slots`)."""
     if bathroom:
@@ -89,14 +85,15 @@ def place_windows(
     out: list[PlacedWindow] = []
     used_lines: set[tuple[int, float]] = set()
     for run_len, slot in slots:
-        if slot.width_m < WINDOW_MIN_WIDTH_M - 1e-9 or (slot.axis, slot.line_m) in used_lines:
+        if slot.width_m < opts.window_min_width_m - 1e-9 or (slot.axis, slot.line_m) in used_lines:
             continue
-        if out and run_len < SECOND_WINDOW_RUN_M:
+        if out and run_len < opts.second_window_run_m:
             continue
-        width = min(WINDOW_MAX_WIDTH_M, max(WINDOW_MIN_WIDTH_M, snap_down_m(WINDOW_WALL_SHARE * run_len)))
+        share_m = snap_down_m(opts.window_wall_share_frac * run_len)
+        width = min(opts.window_max_width_m, max(opts.window_min_width_m, share_m))
         out.append(PlacedWindow(room, _centred(slot, min(width, snap_down_m(slot.width_m)))))
         used_lines.add((slot.axis, slot.line_m))
-        if len(out) >= MAX_WINDOWS_PER_ROOM:
+        if len(out) >= opts.max_windows_per_room:
             break
     return out
 
