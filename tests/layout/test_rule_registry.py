@@ -109,11 +109,12 @@ def test_knowledge_sets_build_valid_params():
     """Every set of the shipped knowledge furnishes rooms whose items pass the check
     (a set overriding a template's rule keeps only the params the new rule takes)."""
     from anyhome.plan import furnish
-    from anyhome.plan.knowledge import load
+    from anyhome.plan.knowledge import knowledge_base
 
+    kb = knowledge_base()
     rng = np.random.default_rng(0)
-    for key in load("furniture")["sets"]:
-        groups, ornaments, _ = furnish.furnish_room(key, "other", 20.0, rng)
+    for key in kb.raw("furniture")["sets"]:
+        groups, ornaments, _ = furnish.furnish_room(kb, key, "other", 20.0, rng)
         for it in [*(i for g in groups for i in (g["anchor"], *g["members"])), *ornaments]:
             REGISTRY[it["rule"]].parse(it["params"])
 
