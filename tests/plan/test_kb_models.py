@@ -91,6 +91,7 @@ def test_tags_are_accepted():
     ("materials", lambda m: m["words"]["oak"].update(goes_on=["table"]), "materials.yaml: words.oak: goes_on[0]:"),
     ("materials", lambda m: m["words"]["oak"].update(kind="wod"), "words.oak: kind: unknown kind 'wod' (did you mean 'wood'?)"),
     ("materials", lambda m: m["words"]["oak"].update(roughness=1.5), "words.oak: roughness:"),
+    ("materials", lambda m: m["words"]["brass"].update(color="#be9f52"), "words.brass: color: is a colour word of colours.yaml"),
     ("materials", lambda m: m["words"]["oak"].update(color="brown"), "words.oak: color:"),
     ("materials", lambda m: m["words"].update(cork={"goes_on": ["floor"]}), "words.cork: names no material word with a kind"),
     ("materials", lambda m: m["words"].update(cork={"kind": "plain"}) or m["words"]["cork"].update(rank="best"), "words.cork: rank:"),

@@ -75,11 +75,9 @@ def material_color(text: str) -> str | None:
 
     colour = first(colors, longest, 1, tuple)
     several = first(materials, longest_material, 2, " ".join)
-    one = first(materials, longest_material, 1, " ".join)
+    hit: tuple[int, RGB] | None = first(materials, longest_material, 1, " ".join)
     if colour is not None:
         hit = several if several is not None and several[0] <= colour[0] else colour
-    else:
-        hit = one
     found: RGB | None = None if hit is None else hit[1]
     at = -1 if hit is None else hit[0]
     if found is None:

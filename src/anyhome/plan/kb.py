@@ -621,6 +621,8 @@ class KnowledgeBase:
                 look = getattr(e, surface) if surface else e
                 if look is not None and look.kind is not None and look.kind not in kinds:
                     raise bad(("words", w, *((surface,) if surface else ()), "kind"), known(look.kind))
+            if e.color is not None and w in self.colours.colours:
+                raise bad(("words", w, "color"), "is a colour word of colours.yaml, which gives its RGB; keep it in one place")
             if e.kind is None:
                 ws = material_words(w)
                 grams = {tuple(ws[i:i + n]) for n in range(1, longest + 1) for i in range(len(ws) - n + 1)}
