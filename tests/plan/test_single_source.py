@@ -81,14 +81,78 @@ def test_every_colour_word_has_one_rgb() -> None:
         assert vocabulary().colour_regex.fullmatch(word), word  # and the planner the same word
     styles = yaml.safe_load((KNOWLEDGE_DIR / "styles.yaml").read_text(encoding="utf-8"))
     assert "colours" not in styles
-    assets = yaml.safe_load(Path(asset_colors.__file__).with_name("colors.yaml").read_text(encoding="utf-8"))
-    assert set(assets) == {"materials"}
-    assert not set(assets["materials"]) & set(kb.colours.colours)
+    assert not (Path(asset_colors.__file__).with_name("colors.yaml")).exists()
+    # a word that is both a colour and a material ("brass") has its RGB in colours.yaml only
+    both = set(kb.materials.words) & set(kb.colours.colours)
+    assert both and not [w for w in both if kb.materials.words[w].color is not None]
 
 
 def test_longest_colour_phrase_wins() -> None:
     rgb = knowledge_base().colours.colours
     assert material_color("sky blue velvet") == to_hex(rgb["sky blue"]) != to_hex(rgb["blue"])
+
+
+# ------------------------------------------------------------------ material words
+def test_no_material_word_is_in_two_tables() -> None:
+    # styles.yaml (where the planner puts a word), assets/colors.yaml (its RGB) and
+    # materials/materials.yaml (its look) were three tables that disagreed
+    assert "materials" not in yaml.safe_load((KNOWLEDGE_DIR / "styles.yaml").read_text(encoding="utf-8"))
+    assert not (SRC / "assets" / "colors.yaml").exists()
+    assert not (SRC / "materials" / "materials.yaml").exists()
+    text = (KNOWLEDGE_DIR / "materials.yaml").read_text(encoding="utf-8")
+    keys = re.findall(r'^  ("[^"]+"|[^:#\n]+):', text.split("\nwords:\n")[1].split("\n\n")[0], flags=re.M)
+    assert len(keys) == len(set(keys)) == len(knowledge_base().materials.words) >= 250
+
+
+def test_every_planner_material_word_is_known_to_the_catalog() -> None:
+    from anyhome.materials.catalog import material_clauses, surface_material
+
+    kb = knowledge_base()
+    planner = {w for w, e in kb.materials.words.items() if e.goes_on}
+    assert len(planner) >= 160
+    for word in planner:
+        assert vocabulary().material_regex.fullmatch(word), word  # the planner finds it
+        assert material_clauses(word), word  # and the catalog knows what it is
+    # the words the planner knew and the renderer did not: now each has a kind of its own
+    assert surface_material("soapstone", "furniture").kind == "stone"
+    assert surface_material("corduroy", "furniture").kind == "fabric"
+    assert surface_material("wainscoting", "walls").variant == "shiplap"
+    assert surface_material("pine tongue and groove", "walls").variant == "shiplap"
+    assert surface_material("shou sugi ban", "walls").color == "#2a2420"
+    assert material_color("bouclé") == "#e6e1d4"
+
+
+def test_a_material_word_has_one_colour_for_assets_and_surfaces() -> None:
+    from anyhome.materials.catalog import surface_material
+
+    for word, e in knowledge_base().materials.words.items():
+        if e.color is not None:
+            assert material_color(word) == e.color, word  # the assets' colour of the word
+            tone = {"whitewashed", "charred", "smoked"} & set(word.split())
+            if not tone:
+                assert surface_material(word, "furniture").color == e.color, word  # the renderer's
+    # a colour the material catalog alone knew now reaches the assets: a mirror is silver, not glass blue
+    assert material_color("silvered glass") == knowledge_base().materials.words["silvered glass"].color
+    assert material_color("silvered glass") != material_color("glass")
+    # the first material decides when no colour is named; a colour word still beats a material
+    assert material_color("rough-hewn oak and wrought iron") == material_color("oak")
+    assert material_color("black wrought iron") == material_color("black")
+
+
+def test_user_material_word_reaches_planner_catalog_and_colours(tmp_path: Path) -> None:
+    from anyhome.materials.catalog import _tables_of
+
+    (tmp_path / "materials.yaml").write_text(
+        "words:\n  cork: {kind: plain, roughness: 0.8, color: '#b48c5f', goes_on: [floor]}\n"
+        "  oak: {color: '#102030'}\n", encoding="utf-8")
+    kb = knowledge_base([str(tmp_path)])
+    assert kb.materials.words["oak"].kind == "wood"  # the overlay changed one field of oak
+    assert kb.materials.words["oak"].color == "#102030"
+    assert kb.materials.words["oak"].goes_on == ["furniture", "floor"]
+    from anyhome.plan.kbview import vocabulary as kb_vocabulary
+
+    assert kb_vocabulary(kb).material_regex.fullmatch("cork")
+    assert _tables_of(kb).lexicon[("cork",)][1]["roughness"] == 0.8
 
 
 # ------------------------------------------------------------------ room types
@@ -110,6 +174,9 @@ def test_room_types_are_one_list() -> None:
     ("colours.yaml", "colours:\n  ultramarine: [18, 10, 300]\n", "colours.yaml: colours.ultramarine"),
     ("colours.yaml", "colours:\n  dark: [1, 2, 3]\n", "colours.yaml: colours.dark: is also a modifier"),
     ("rooms.yaml", "types:\n  bedroom: {habitable: false}\n", "rooms.yaml: types.bedroom: habitable: is true"),
+    ("materials.yaml", "words:\n  cork: {kind: korky}\n", "materials.yaml: words.cork: kind: unknown kind 'korky'"),
+    ("materials.yaml", "words:\n  oak: {goes_on: [roof]}\n", "materials.yaml: words.oak: goes_on[0]:"),
+    ("materials.yaml", "words:\n  cork: {goes_on: [floor]}\n", "materials.yaml: words.cork: names no material"),
 ])
 def test_cli_bad_entry_is_one_line(tmp_path: Path, name: str, body: str, where: str) -> None:
     kdir = tmp_path / "kb"

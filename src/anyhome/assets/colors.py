@@ -1,6 +1,7 @@
 """Material and colour words to base colours.
 
-The word lists live in ``colors.yaml`` next to this module. Colours are sRGB hex
+Colour words live in ``plan/knowledge/colours.yaml``, material words (with their base
+colour, ``color``) in ``plan/knowledge/materials.yaml``. Colours are sRGB hex
 strings (``"#rrggbb"``) everywhere a record stores them, so they survive JSON.
 """
 
@@ -8,23 +9,22 @@ from __future__ import annotations
 
 import re
 from functools import lru_cache
-from pathlib import Path
 from typing import Any
 
 import numpy as np
 
-_COLORS_FILE = Path(__file__).with_name("colors.yaml")
-"""Material words -> base colour (the colour words live in ``plan/knowledge/colours.yaml``)."""
-
 RGB = tuple[int, int, int]
 
 
-@lru_cache(maxsize=1)
-def _material_rgb() -> dict[str, RGB]:
-    import yaml
-
-    data = yaml.safe_load(_COLORS_FILE.read_text(encoding="utf-8"))
-    return {str(k): (int(v[0]), int(v[1]), int(v[2])) for k, v in data["materials"].items()}
+@lru_cache(maxsize=8)
+def _material_rgb(kb: Any) -> dict[str, RGB]:
+    """Material word -> its base colour (materials.yaml entries with a ``color``)."""
+    out: dict[str, RGB] = {}
+    for word, e in kb.materials.words.items():
+        if e.color is not None:
+            rgb = to_rgba(e.color)
+            out[" ".join(_words(word))] = (int(rgb[0]), int(rgb[1]), int(rgb[2]))
+    return out
 
 
 @lru_cache(maxsize=8)
@@ -39,45 +39,47 @@ def _colour_tables(kb: Any) -> tuple[dict[tuple[str, ...], RGB], int, dict[str, 
 def _tables() -> tuple[dict[tuple[str, ...], RGB], int, dict[str, RGB], dict[str, float], dict[str, float]]:
     from anyhome.plan.knowledge import knowledge_base
 
-    phrases, longest, modifiers, muting = _colour_tables(knowledge_base())
-    return phrases, longest, _material_rgb(), modifiers, muting
+    kb = knowledge_base()
+    phrases, longest, modifiers, muting = _colour_tables(kb)
+    return phrases, longest, _material_rgb(kb), modifiers, muting
 
 
 def _words(text: str) -> list[str]:
-    return re.findall(r"[a-z]+", text.lower())
+    return re.findall(r"[^\W\d_]+", text.lower())
 
 
 def material_color(text: str) -> str | None:
     """Base colour named by a material phrase, or None if it names none.
 
     Colour words (``plan/knowledge/colours.yaml``; the longest phrase: "sky blue") win
-    over material words ("pink velvet" is pink); a two-word material
-    ("white oak") wins over its parts; the modifiers right before the match shade it
-    ("dark") or mute it ("faded": greyer).
+    over material words (``plan/knowledge/materials.yaml``: "pink velvet" is pink),
+    except a material of several words that starts at or before the colour ("white
+    oak"); with no colour word the first material decides, the longest at its place
+    ("oak and wrought iron" is oak, "silvered glass" is not glass). The modifiers right
+    before the match shade it ("dark") or mute it ("faded": greyer).
 
     >>> material_color("dark walnut")
     '#392518'
     """
     colors, longest, materials, modifiers, muting = _tables()
     words = _words(text)
-    found: tuple[int, int, int] | None = None
-    at = -1
-    for i in range(len(words) - 1):  # two-word materials first
-        pair = f"{words[i]} {words[i + 1]}"
-        if pair in materials:
-            found, at = materials[pair], i
-            break
-    if found is None:
-        for i in range(len(words)):  # the first colour, its longest phrase ("sky blue")
-            n = next((n for n in range(min(longest, len(words) - i), 0, -1) if tuple(words[i:i + n]) in colors), 0)
-            if n:
-                found, at = colors[tuple(words[i:i + n])], i
-                break
-    if found is None:
-        for i, w in enumerate(words):
-            if w in materials:
-                found, at = materials[w], i
-                break
+    longest_material = max((w.count(" ") + 1 for w in materials), default=1)
+
+    def first(table: dict[Any, RGB], most: int, least: int, key: Any) -> tuple[int, RGB] | None:
+        """(place, colour) of the first phrase of ``table`` in the words, the longest there."""
+        for i in range(len(words)):
+            for n in range(min(most, len(words) - i), least - 1, -1):
+                if key(words[i:i + n]) in table:
+                    return i, table[key(words[i:i + n])]
+        return None
+
+    colour = first(colors, longest, 1, tuple)
+    several = first(materials, longest_material, 2, " ".join)
+    hit: tuple[int, RGB] | None = first(materials, longest_material, 1, " ".join)
+    if colour is not None:
+        hit = several if several is not None and several[0] <= colour[0] else colour
+    found: RGB | None = None if hit is None else hit[1]
+    at = -1 if hit is None else hit[0]
     if found is None:
         return None
     rgb = np.asarray(found, dtype=float)

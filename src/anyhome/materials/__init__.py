@@ -5,7 +5,7 @@
 metallic, tile size); ``texture_images(spec)`` gives its base colour,
 metallicRoughness and normal images, cached so equal materials share one texture;
 ``object_parts`` splits a procedural object mesh into parts with their own materials.
-Knowledge lives in ``materials.yaml``; textures are numpy (``textures.generate``).
+Knowledge lives in ``plan/knowledge/materials.yaml``; textures are numpy (``textures.generate``).
 """
 
 from anyhome.materials.catalog import MaterialSpec, surface_material, texture_size_px

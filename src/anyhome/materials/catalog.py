@@ -1,6 +1,8 @@
 """Material words -> a material spec (texture kind, colour, roughness, metallic, scale).
 
-The knowledge lives in ``materials.yaml`` next to this module. A phrase is split into
+The knowledge lives in ``plan/knowledge/materials.yaml`` (one entry per material word,
+extendable by a user's knowledge folder); the tables here are built from the knowledge
+base in force (:func:`anyhome.plan.knowledge.knowledge_base`). A phrase is split into
 clauses ("oak and matte black metal" -> "oak", "matte black metal"); the first clause
 that names a material decides, and inside it the highest-ranked word wins, ties going
 to the last word (the head noun). The surface then adapts the kind (wood on a floor is
@@ -17,22 +19,24 @@ import os
 import re
 from dataclasses import dataclass
 from functools import lru_cache
-from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from anyhome.assets.colors import material_color, shade, to_hex, to_rgba
 from anyhome.materials.textures import DEFAULT_SIZE_PX, GENERATORS, VARIANTS
 from anyhome.sanitize import clean_text
 
-MATERIALS_FILE = Path(__file__).with_name("materials.yaml")
+if TYPE_CHECKING:
+    from anyhome.plan.kb import KnowledgeBase
+
 SURFACES: tuple[str, ...] = ("floor", "walls", "ceiling", "furniture")
 TEXTURE_PX_ENV = "ANYHOME_TEXTURE_PX"
 """Environment variable that sets the texture size in texels (default 256)."""
 MIN_ROUGHNESS = 0.06
 """Finish words never make a surface smoother than this."""
 _OVERRIDABLE = ("roughness", "metallic", "tile_m", "alpha", "color")
-_RANKS = {"patterns": 2, "materials": 1, "generic": 0}
-_CLAUSE_SPLIT = re.compile(r"\s*(?:,|;|/|\band\b|\bwith\b|\bon\b|\bin\b|\bover\b|\bplus\b)\s*")
+_JOINERS = ("and", "with", "on", "in", "over", "plus")
+"""Words that split a phrase into clauses (unless they stand inside a material word:
+"tongue and groove")."""
 
 
 @dataclass(frozen=True)
@@ -67,22 +71,52 @@ class MaterialSpec:
         return f"{kind} {self.color}"
 
 
-@lru_cache(maxsize=1)
+@dataclass(frozen=True)
+class _Tables:
+    data: dict[str, Any]
+    lexicon: dict[tuple[str, ...], tuple[int, dict[str, Any]]]
+    """words of a material word (with a kind) -> (rank, entry)"""
+    longest: int
+    split: re.Pattern[str]
+
+
+def _kb() -> KnowledgeBase:
+    from anyhome.plan.knowledge import knowledge_base
+
+    return knowledge_base()
+
+
+@lru_cache(maxsize=8)
+def _tables_of(kb: KnowledgeBase) -> _Tables:
+    from anyhome.plan.kb import RANKS, material_words
+
+    data = kb.raw("materials")
+    lex: dict[tuple[str, ...], tuple[int, dict[str, Any]]] = {}
+    for word, e in kb.materials.words.items():
+        if e.kind is not None:
+            entry = e.model_dump(exclude_none=True, exclude={"rank", "goes_on"})
+            lex[tuple(material_words(word))] = (RANKS[e.rank], entry)
+    return _Tables(data, lex, max((len(w) for w in lex), default=1), _splitter([" ".join(w) for w in lex]))
+
+
+def _splitter(words: list[str]) -> re.Pattern[str]:
+    """The clause splitter: commas, semicolons, slashes and the joiner words, except a
+    joiner inside a material word ("tongue and groove" stays one clause)."""
+    alts = []
+    for j in _JOINERS:
+        guards = "".join(rf"(?!(?<=\b{re.escape(w.split(f' {j} ', 1)[0])} ){j} {re.escape(w.split(f' {j} ', 1)[1])}\b)"
+                         for w in words if f" {j} " in w)
+        alts.append(rf"\b{guards}{j}\b")
+    return re.compile(rf"\s*(?:,|;|/|{'|'.join(alts)})\s*")
+
+
+def _tables() -> _Tables:
+    return _tables_of(_kb())
+
+
 def _data() -> dict[str, Any]:
-    import yaml
-
-    loader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
-    return yaml.load(MATERIALS_FILE.read_text(encoding="utf-8"), Loader=loader)
-
-
-@lru_cache(maxsize=1)
-def _lexicon() -> dict[str, tuple[int, dict[str, Any]]]:
-    """word or phrase -> (rank, entry)."""
-    out: dict[str, tuple[int, dict[str, Any]]] = {}
-    for group, rank in _RANKS.items():
-        for word, entry in (_data()["words"].get(group) or {}).items():
-            out[str(word)] = (rank, {"kind": entry} if isinstance(entry, str) else dict(entry))
-    return out
+    """materials.yaml of the knowledge base in force (merged with the user's overlay)."""
+    return _tables().data
 
 
 MIN_TEXTURE_PX = 8
@@ -111,32 +145,37 @@ def texture_size_px(size_px: int | None = None) -> int:
 
 
 def _words(text: str) -> list[str]:
-    return re.findall(r"[a-z]+", text.lower())
+    from anyhome.plan.kb import material_words
+
+    return material_words(text)
 
 
-def _match(clause: str) -> tuple[dict[str, Any], list[str]] | None:
-    """The winning entry of one clause and the clause's words, or None."""
-    lex = _lexicon()
+def _match(clause: str, t: _Tables) -> tuple[dict[str, Any], list[str]] | None:
+    """The winning entry of one clause and the clause's words, or None (the longest
+    material word at each place: "white oak" before "oak")."""
+    lex = t.lexicon
     words = _words(clause)
     best: tuple[int, dict[str, Any]] | None = None
     i = 0
     while i < len(words):
-        pair = f"{words[i]} {words[i + 1]}" if i + 1 < len(words) else ""
-        key = pair if pair in lex else words[i] if words[i] in lex else None
-        if key is not None and (best is None or lex[key][0] >= best[0]):
-            best = lex[key]  # ties: the later word wins
-        i += 2 if pair and key == pair else 1
+        n = next((n for n in range(min(t.longest, len(words) - i), 0, -1) if tuple(words[i:i + n]) in lex), 0)
+        if n:
+            hit = lex[tuple(words[i:i + n])]
+            if best is None or hit[0] >= best[0]:
+                best = hit  # ties: the later word wins
+        i += max(n, 1)
     return None if best is None else (best[1], words)
 
 
 def clauses(words: str) -> list[str]:
     """The clauses of a material phrase, in order."""
-    return [c for c in _CLAUSE_SPLIT.split(words.lower()) if c.strip()]
+    return [c for c in _tables().split.split(words.lower()) if c.strip()]
 
 
 def material_clauses(words: str) -> list[tuple[dict[str, Any], list[str]]]:
     """(entry, words) for each clause of ``words`` that names a material, in order."""
-    return [m for c in clauses(words) if (m := _match(c)) is not None]
+    t = _tables()
+    return [m for c in clauses(words) if (m := _match(c, t)) is not None]
 
 
 def _kind_defaults(kind: str, variant: str) -> dict[str, Any]:

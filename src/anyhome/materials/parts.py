@@ -57,7 +57,7 @@ ROLE_MATERIALS: dict[Role, dict[str, Any]] = {
     "screen": {"kind": "plain", "roughness": 0.1},
     "paint": {"kind": "plain", "roughness": 0.5},
 }
-"""Each role's own material (a lexicon entry, see ``materials.yaml``)."""
+"""Each role's own material (an entry like those of ``plan/knowledge/materials.yaml``)."""
 KIND_ROLES: dict[str, Role] = {
     "wood": "wood", "planks": "wood", "fabric": "fabric", "carpet": "fabric", "tatami": "plant",
     "metal": "metal", "glass": "glass", "tile": "ceramic", "marble": "stone", "stone": "stone",

@@ -257,7 +257,6 @@ class StylesFile(_Model):
     styles: dict[str, Style] = Field(min_length=1)
     asset_classes: dict[str, AssetClass]
     defaults: dict[str, list[str]] = Field(description="program -> style keys drawn when the text names none")
-    materials: dict[str, list[Surface]] = Field(description="material word -> surfaces it goes to")
     category_materials: dict[str, str]
 
     @field_validator("category_materials")
@@ -283,6 +282,88 @@ class ConceptsFile(_Model):
     buildings: dict[str, list[Word]] = Field(default_factory=dict)
     non_objects: list[Word] = Field(default_factory=list)
     fallback_object: FallbackObject | None = None
+
+
+# ------------------------------------------------------------------ materials.yaml
+Rank = Literal["pattern", "material", "generic"]
+RANKS: dict[str, int] = {"pattern": 2, "material": 1, "generic": 0}
+"""How strongly a material word decides its clause (higher wins; ties: the later word)."""
+Unit = Annotated[float, Field(ge=0, le=1)]
+TileM = Annotated[float, Field(gt=0, le=100)]
+
+
+class MaterialLook(_Model):
+    """What a material word (or one surface of it) overrides of its kind's defaults."""
+
+    kind: str | None = None
+    variant: str | None = None
+    roughness: Unit | None = None
+    metallic: Unit | None = None
+    alpha: Unit | None = None
+    tile_m: TileM | None = None
+    color: HexColour | None = None
+
+
+class MaterialVariant(_Model):
+    roughness: Unit | None = None
+    metallic: Unit | None = None
+    alpha: Unit | None = None
+    tile_m: TileM | None = None
+    color: HexColour | None = None
+
+
+class MaterialKind(MaterialVariant):
+    variants: dict[Word, MaterialVariant] = Field(default_factory=dict)
+
+
+class MaterialWord(MaterialLook):
+    """One material word with every fact about it (see materials.yaml's header)."""
+
+    rank: Rank = "material"
+    floor: MaterialLook | None = None
+    walls: MaterialLook | None = None
+    ceiling: MaterialLook | None = None
+    furniture: MaterialLook | None = None
+    goes_on: list[Surface] = Field(default_factory=list, description="where the planner puts it when the text does not say")
+
+    @model_validator(mode="after")
+    def _phrase(self) -> MaterialWord:
+        if self.kind is None:
+            extra = sorted(f for f in self.model_fields_set if f != "goes_on")
+            if extra:
+                raise ValueError(f"an entry without a kind may only give goes_on (it has {', '.join(extra)})")
+            if not self.goes_on:
+                raise ValueError("give a kind (or goes_on, for a phrase known by its words)")
+        return self
+
+
+class SurfaceRule(_Model):
+    becomes: dict[str, str] = Field(default_factory=dict, description="kind -> the kind it becomes on this surface")
+    default: str = Field(description="material words when a phrase names none")
+
+
+class MaterialsFile(_Model):
+    """materials.yaml: texture kinds, every material word, surface rules, finish and tone words."""
+
+    kinds: dict[str, MaterialKind] = Field(min_length=1)
+    words: dict[Word, MaterialWord] = Field(min_length=1)
+    surfaces: dict[Surface, SurfaceRule]
+    finish: dict[Word, Annotated[float, Field(ge=-1, le=1)]] = Field(default_factory=dict)
+    tone: dict[Word, Annotated[float, Field(gt=0, le=3)]] = Field(default_factory=dict)
+
+    @field_validator("surfaces")
+    @classmethod
+    def _all(cls, v: dict[str, SurfaceRule]) -> dict[str, SurfaceRule]:
+        missing = [s for s in ("floor", "walls", "ceiling", "furniture") if s not in v]
+        if missing:
+            raise ValueError(f"missing the rules of {', '.join(missing)}")
+        return v
+
+
+def material_words(text: str) -> list[str]:
+    """The words of a material phrase as the material tables match them (letters only,
+    lower case: "Bouclé" stays one word)."""
+    return re.findall(r"[^\W\d_]+", text.lower())
 
 
 # ------------------------------------------------------------------ colours.yaml
@@ -330,6 +411,7 @@ FILE_MODELS: dict[str, type[BaseModel]] = {
     "surfaces": SurfacesFile,
     "assets": AssetsFile,
     "colours": ColoursFile,
+    "materials": MaterialsFile,
 }
 """The model of each knowledge file, by file name (without ``.yaml``)."""
 
@@ -423,6 +505,7 @@ class KnowledgeBase:
         self.surfaces: SurfacesFile = validate_file("surfaces", raw["surfaces"], source)  # type: ignore[assignment]
         self.assets: AssetsFile = validate_file("assets", raw["assets"], source)  # type: ignore[assignment]
         self.colours: ColoursFile = validate_file("colours", raw["colours"], source)  # type: ignore[assignment]
+        self.materials: MaterialsFile = validate_file("materials", raw["materials"], source)  # type: ignore[assignment]
         self._check_references()
 
     def raw(self, name: str) -> dict[str, Any]:
@@ -542,7 +625,41 @@ class KnowledgeBase:
         for w in self.colours.colours:
             need(w not in self.colours.modifiers and w not in self.colours.muting, "colours", ("colours", w),
                  "is also a modifier or muting word; keep it in one place")
+        self._check_materials()
         # concepts.yaml
         for kind, pool, what in (("rooms", sets, "furnishing set"), ("objects", objects, "object"), ("buildings", programs, "program")):
             for k in getattr(self.concepts, kind):
                 need(k in pool, "concepts", (kind, k), lambda: known(k, pool, what))
+
+    def _check_materials(self) -> None:
+        """materials.yaml: every kind named exists; a phrase without a kind is known by its words."""
+        m = self.materials
+        kinds = set(m.kinds)
+
+        def bad(loc: tuple[Any, ...], msg: str) -> KnowledgeError:
+            return self._bad("materials", loc, msg)
+
+        def known(k: str) -> str:
+            near = difflib.get_close_matches(k, sorted(kinds), n=2, cutoff=0.6)
+            hint = f"did you mean {' or '.join(map(repr, near))}?" if near else f"known: {', '.join(sorted(kinds))}"
+            return f"unknown kind {k!r} ({hint})"
+
+        with_kind = {tuple(material_words(w)) for w, e in m.words.items() if e.kind is not None}
+        longest = max((len(w) for w in with_kind), default=1)
+        for w, e in m.words.items():
+            for surface in ("", "floor", "walls", "ceiling", "furniture"):
+                look = getattr(e, surface) if surface else e
+                if look is not None and look.kind is not None and look.kind not in kinds:
+                    raise bad(("words", w, *((surface,) if surface else ()), "kind"), known(look.kind))
+            if e.color is not None and w in self.colours.colours:
+                raise bad(("words", w, "color"), "is a colour word of colours.yaml, which gives its RGB; keep it in one place")
+            if e.kind is None:
+                ws = material_words(w)
+                grams = {tuple(ws[i:i + n]) for n in range(1, longest + 1) for i in range(len(ws) - n + 1)}
+                if not grams & with_kind:
+                    raise bad(("words", w), "names no material word with a kind (give it a kind)")
+        for s, rule in m.surfaces.items():
+            for a, b in rule.becomes.items():
+                for k in (a, b):
+                    if k not in kinds:
+                        raise bad(("surfaces", s, "becomes", a), known(k))

@@ -24,7 +24,8 @@ KNOWLEDGE_DIR = Path(__file__).with_name("knowledge")
 """Folder holding the shipped programs.yaml, rooms.yaml, objects.yaml, furniture.yaml,
 styles.yaml and concepts.yaml."""
 
-KNOWLEDGE_FILES = ("programs", "rooms", "objects", "furniture", "styles", "concepts", "surfaces", "assets", "colours")
+KNOWLEDGE_FILES = ("programs", "rooms", "objects", "furniture", "styles", "concepts", "surfaces", "assets", "colours",
+                   "materials")
 
 
 def normalize(text: str) -> str:
@@ -253,6 +254,12 @@ def _vocabulary(overlay_key: tuple[str, ...]) -> Vocabulary:
     return kb_vocabulary(_knowledge_base(overlay_key))
 
 
+def planner_materials(kb: KnowledgeBase) -> dict[str, list[str]]:
+    """The planner's material words (materials.yaml words with ``goes_on``) -> the
+    surfaces each goes on when the text does not say."""
+    return {w: list(e.goes_on) for w, e in kb.materials.words.items() if e.goes_on}
+
+
 def compile_vocabulary(kb: KnowledgeBase) -> Vocabulary:
     """Every phrase of ``kb`` compiled into lookup tables (use
     :func:`anyhome.plan.kbview.vocabulary`: cached per knowledge base)."""
@@ -278,7 +285,7 @@ def compile_vocabulary(kb: KnowledgeBase) -> Vocabulary:
                 building_forms.setdefault(f, i)
     styles = load("styles")
     style_forms = {normalize(w): k for k, s in styles["styles"].items() for w in s["words"]}
-    mats = [normalize(m) for m in styles["materials"]]
+    mats = [normalize(m) for m in planner_materials(kb)]
     colours = load("colours")
     cols = [normalize(c) for c in [*colours["colours"], *colours.get("modifiers", {})]]
     return Vocabulary(

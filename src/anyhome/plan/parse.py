@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 from anyhome.plan import openvocab as ov
 from anyhome.plan.kb import KnowledgeBase
 from anyhome.plan.kbview import resolve, vocabulary
-from anyhome.plan.knowledge import normalize
+from anyhome.plan.knowledge import normalize, planner_materials
 from anyhome.plan.spec import MAX_COUNT
 from anyhome.sanitize import clean_text
 
@@ -671,7 +671,7 @@ def _find_styles(kb: KnowledgeBase, text: str, p: Parsed) -> None:
 
 def _find_materials(kb: KnowledgeBase, text: str, p: Parsed, rooms: list[Mention]) -> None:
     voc = vocabulary(kb)
-    defaults = kb.raw("styles")["materials"]
+    defaults = planner_materials(kb)
     for mt in voc.material_regex.finditer(text):
         material = mt.group()
         words = [t for t, _, _ in _tokens(text[max(0, mt.start() - 30) : mt.start()])][-2:]
