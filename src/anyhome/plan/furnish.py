@@ -65,7 +65,7 @@ def make_item(kb: KnowledgeBase, entry: dict[str, Any], rng: np.random.Generator
     if ornament and rule not in ORNAMENT_RULES:
         rule = "place_top"
     # the prototype's params for its own rule, kept where the item's rule takes them too
-    params = {**_params_for(rule, proto.get("params", {})), **entry.get("params", {})}
+    params = _params_for(rule, {**proto.get("params", {}), **entry.get("params", {})})
     target = entry.get("target", proto.get("target") if ornament else None)
     return {
         "name": name,
@@ -383,18 +383,25 @@ def _arrange(m: Mention, g: Group, item: Item) -> None:
         return
     if m.arrangement == "around":
         if item is not g["anchor"]:
-            item["rule"], item["target"] = "place_around", None
+            _set_rule(item, "place_around")
+            item["target"] = None
         return
     if item is not g["anchor"] and m.arrangement != "rows":
         return
     g["arrangement"] = m.arrangement
     anchor = g["anchor"]
     if m.arrangement == "along_walls":
-        anchor["rule"] = "place_next_wall"
+        _set_rule(anchor, "place_next_wall")
     elif m.arrangement == "center":
-        anchor["rule"] = "place_center"
+        _set_rule(anchor, "place_center")
     elif m.arrangement == "rows" and anchor["rule"] in ("place_wall", "place_next_wall", "place_corner"):
-        anchor["rule"] = "place_center"
+        _set_rule(anchor, "place_center")
+
+
+def _set_rule(item: dict[str, Any], rule: str) -> None:
+    """Give ``item`` another rule, keeping only the params that rule takes."""
+    item["rule"] = rule
+    item["params"] = _params_for(rule, item.get("params", {}))
 
 
 WALL_MOUNT_FROM = 3
