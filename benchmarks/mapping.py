@@ -27,6 +27,7 @@ import yaml
 
 from anyhome.plan import concepts
 from anyhome.plan.embed import available_backends, get_embedder
+from anyhome.plan.knowledge import knowledge_base
 from anyhome.plan.knowledge import normalize, vocabulary
 
 CASES = Path(__file__).with_name("mapping_cases.yaml")
@@ -58,7 +59,7 @@ def evaluate(backend: str, cases: dict, sweep: bool) -> list[dict]:
         skipped = sum(listed(kind, c["phrase"]) for c in cases[kind])
         open_cases = [c for c in cases[kind] if not listed(kind, c["phrase"])]
         t0 = time.perf_counter()
-        idx = concepts.ConceptIndex(kind, emb)
+        idx = concepts.ConceptIndex(kind, emb, knowledge_base())
         build_s = time.perf_counter() - t0
         limit = concepts.THRESHOLDS[backend][kind]
         results = []
