@@ -27,8 +27,7 @@ import yaml
 
 from anyhome.plan import concepts
 from anyhome.plan.embed import available_backends, get_embedder
-from anyhome.plan.knowledge import knowledge_base
-from anyhome.plan.knowledge import normalize, vocabulary
+from anyhome.plan.knowledge import knowledge_base, normalize, vocabulary
 
 CASES = Path(__file__).with_name("mapping_cases.yaml")
 
