@@ -146,10 +146,10 @@ def generate_from_spec(
 
     progress = progress or _quiet
     seed = _check_seed(seed)
-    if not isinstance(spec, HouseSpec):
-        spec = _spec_from_json(spec, "the spec")
-    stages = stages or Stages()
     kb = _knowledge(knowledge)
+    if not isinstance(spec, HouseSpec):
+        spec = _spec_from_json(spec, "the spec", kb)
+    stages = stages or Stages()
     rngs = stage_rngs(seed)
     timings: dict[str, float] = {}
     with _stage("floorplan", timings, progress):
@@ -199,15 +199,18 @@ def _knowledge(knowledge: object) -> KnowledgeBase:
     return knowledge
 
 
-def _spec_from_json(data: object, what: str) -> HouseSpec:
+def _spec_from_json(data: object, what: str, kb: KnowledgeBase) -> HouseSpec:
+    """``data`` validated as a HouseSpec in the knowledge base ``kb`` (its styles, the tags
+    of items without them)."""
     from pydantic import ValidationError
 
     from anyhome.plan import HouseSpec
+    from anyhome.plan.spec import kb_context
 
     if not isinstance(data, dict):
         raise PlanError(f"{what} must be a HouseSpec or its JSON object, got {type(data).__name__}")
     try:
-        return HouseSpec.model_validate(data)
+        return HouseSpec.model_validate(data, context=kb_context(kb))
     except ValidationError as e:
         err = e.errors()[0]
         where = ".".join(str(x) for x in err["loc"]) or "plan"
@@ -254,7 +257,7 @@ def relayout(
     if house.plan is None:
         raise AnyHomeError("this house holds no plan (house.json has no 'plan'), so its rooms cannot be "
                            "laid out again; generate it again to get one")
-    spec = _spec_from_json({**house.plan, "provenance": house.provenance}, "the house's plan")
+    spec = _spec_from_json({**house.plan, "provenance": house.provenance}, "the house's plan", kb)
     unplanned = sorted(chosen - {rs.id for rs in spec.rooms})
     if unplanned:
         raise AnyHomeError(f"room {unplanned[0]!r} is not in the house's plan, so it cannot be laid out again")

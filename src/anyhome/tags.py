@@ -37,13 +37,21 @@ dining table), then by its category (a prototype key, or the first prototype of 
 asset family). An object none of these finds gets **no tags** (``()``): it is never
 a supporter, a seat, a table or front of room, and it blocks navigation like any
 other object. That is the explicit, safe fallback.
+
+Every lookup reads the knowledge base ``kb`` it is given (the planner passes its own);
+None is the knowledge base in force: the explicit default for a house file read from
+disk without tags (:class:`anyhome.house.HouseObject`) and for navigation of an object
+given without tags.
 """
 
 from __future__ import annotations
 
 import functools
 from collections.abc import Collection
-from typing import Literal, get_args
+from typing import TYPE_CHECKING, Literal, get_args
+
+if TYPE_CHECKING:
+    from anyhome.plan.kb import KnowledgeBase
 
 Tag = Literal[
     "seat", "table", "work_surface", "storage", "surface", "front_of_room", "floor_layer",
@@ -82,27 +90,36 @@ def is_floor_layer(tags: Collection[str]) -> bool:
     return "floor_layer" in tags
 
 
-@functools.lru_cache(maxsize=1)
-def _tables() -> tuple[dict[str, tuple[str, ...]], dict[str, tuple[str, ...]]]:
-    from anyhome.plan.knowledge import load
+def _resolve(kb: KnowledgeBase | None) -> KnowledgeBase:
+    from anyhome.plan.kbview import resolve
 
+    return resolve(kb)
+
+
+@functools.lru_cache(maxsize=8)
+def _tables(kb: KnowledgeBase) -> tuple[dict[str, tuple[str, ...]], dict[str, tuple[str, ...]]]:
     by_key: dict[str, tuple[str, ...]] = {}
     by_category: dict[str, tuple[str, ...]] = {}
-    for key, proto in load("objects").items():
+    for key, proto in kb.raw("objects").items():
         tags = tuple(proto.get("tags") or ())
         by_key[key] = tags
         by_category.setdefault(str(proto.get("category", "")), tags)
     return by_key, by_category
 
 
-@functools.lru_cache(maxsize=4096)
-def prototype_of_name(name: str) -> str | None:
-    """The object prototype a name means: the name itself as a key or synonym (plurals
-    too), else the last prototype phrase inside it (the head of an English noun phrase
-    comes last: "oak dining table" is a dining table); None when it names none."""
-    from anyhome.plan.knowledge import normalize, vocabulary
+def prototype_of_name(name: str, kb: KnowledgeBase | None = None) -> str | None:
+    """The object prototype a name means in ``kb``: the name itself as a key or synonym
+    (plurals too), else the last prototype phrase inside it (the head of an English noun
+    phrase comes last: "oak dining table" is a dining table); None when it names none."""
+    return _prototype_of_name(name, _resolve(kb))
 
-    voc = vocabulary()
+
+@functools.lru_cache(maxsize=4096)
+def _prototype_of_name(name: str, kb: KnowledgeBase) -> str | None:
+    from anyhome.plan.kbview import vocabulary
+    from anyhome.plan.knowledge import normalize
+
+    voc = vocabulary(kb)
     n = normalize(name)
     hit = voc.forms.get(n)
     if hit is not None and hit[0].kind == "object":
@@ -111,22 +128,29 @@ def prototype_of_name(name: str) -> str | None:
     return voc.forms[found[-1].group(0)][0].key if found else None
 
 
-def tags_by_name(name: str) -> tuple[str, ...]:
-    """The tags of the prototype ``name`` means (see :func:`prototype_of_name`), else ``()``."""
-    key = prototype_of_name(name)
-    return _tables()[0].get(key, ()) if key is not None else ()
+def tags_by_name(name: str, kb: KnowledgeBase | None = None) -> tuple[str, ...]:
+    """The tags of the prototype ``name`` means in ``kb`` (see :func:`prototype_of_name`),
+    else ``()``."""
+    kb = _resolve(kb)
+    key = _prototype_of_name(name, kb)
+    return _tables(kb)[0].get(key, ()) if key is not None else ()
 
 
-@functools.lru_cache(maxsize=4096)
-def tags_for(name: str, category: str = "") -> tuple[str, ...]:
-    """The semantic tags of an object called ``name`` of asset family ``category``.
+def tags_for(name: str, category: str = "", kb: KnowledgeBase | None = None) -> tuple[str, ...]:
+    """The semantic tags of an object called ``name`` of asset family ``category``, in
+    ``kb`` (None: the knowledge base in force).
 
     Order: the name as a prototype key or synonym (plural forms too), then the
     longest prototype phrase inside the name, then ``category`` as a prototype key,
     then the first prototype of that asset family; else ``()`` (see module docs).
     """
-    by_key, by_category = _tables()
-    key = prototype_of_name(name)
+    return _tags_for(name, category, _resolve(kb))
+
+
+@functools.lru_cache(maxsize=4096)
+def _tags_for(name: str, category: str, kb: KnowledgeBase) -> tuple[str, ...]:
+    by_key, by_category = _tables(kb)
+    key = _prototype_of_name(name, kb)
     if key is not None:
         return by_key.get(key, ())
     c = category.strip().lower()

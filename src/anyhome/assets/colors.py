@@ -9,9 +9,12 @@ from __future__ import annotations
 
 import re
 from functools import lru_cache
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
+
+if TYPE_CHECKING:
+    from anyhome.plan.kb import KnowledgeBase
 
 RGB = tuple[int, int, int]
 
@@ -36,10 +39,11 @@ def _colour_tables(kb: Any) -> tuple[dict[tuple[str, ...], RGB], int, dict[str, 
     return phrases, max(len(p) for p in phrases), dict(c.modifiers), dict(c.muting)
 
 
-def _tables() -> tuple[dict[tuple[str, ...], RGB], int, dict[str, RGB], dict[str, float], dict[str, float]]:
-    from anyhome.plan.knowledge import knowledge_base
+def _tables(kb: KnowledgeBase | None) -> tuple[dict[tuple[str, ...], RGB], int, dict[str, RGB], dict[str, float],
+                                              dict[str, float]]:
+    from anyhome.plan.kbview import resolve
 
-    kb = knowledge_base()
+    kb = resolve(kb)
     phrases, longest, modifiers, muting = _colour_tables(kb)
     return phrases, longest, _material_rgb(kb), modifiers, muting
 
@@ -48,8 +52,9 @@ def _words(text: str) -> list[str]:
     return re.findall(r"[^\W\d_]+", text.lower())
 
 
-def material_color(text: str) -> str | None:
-    """Base colour named by a material phrase, or None if it names none.
+def material_color(text: str, kb: KnowledgeBase | None = None) -> str | None:
+    """Base colour named by a material phrase in ``kb``'s colours and materials (None:
+    the knowledge base in force), or None if it names none.
 
     Colour words (``plan/knowledge/colours.yaml``; the longest phrase: "sky blue") win
     over material words (``plan/knowledge/materials.yaml``: "pink velvet" is pink),
@@ -61,7 +66,7 @@ def material_color(text: str) -> str | None:
     >>> material_color("dark walnut")
     '#392518'
     """
-    colors, longest, materials, modifiers, muting = _tables()
+    colors, longest, materials, modifiers, muting = _tables(kb)
     words = _words(text)
     longest_material = max((w.count(" ") + 1 for w in materials), default=1)
 

@@ -19,7 +19,7 @@ import trimesh
 
 from anyhome.assets.colors import material_color
 from anyhome.assets.procedural._parts import Params, Size
-from anyhome.assets.styles import class_name
+from anyhome.assets.styles import Style, style_class
 from anyhome.house import HouseObject
 
 if TYPE_CHECKING:
@@ -36,7 +36,7 @@ BROAD_FAMILIES = frozenset({"table", "chair", "bench", "cabinet", "shelf", "box"
 @dataclass(frozen=True)
 class Family:
     name: str
-    sample: Callable[[np.random.Generator, Size, str], Params]
+    sample: Callable[[np.random.Generator, Size, Style], Params]
     build: Callable[[Params], trimesh.Trimesh]
 
 
@@ -80,10 +80,12 @@ class _Words:
     sizes: dict[str, tuple[float, float, float]]  # family -> typical box
 
 
-def _kb() -> Any:
-    from anyhome.plan.knowledge import knowledge_base
+def _kb(kb: KnowledgeBase | None) -> KnowledgeBase:
+    """``kb``, else the knowledge base in force: the explicit default of the catalog tools
+    and of a caller outside the stages; the assets stage passes its own."""
+    from anyhome.plan.kbview import resolve
 
-    return knowledge_base()
+    return resolve(kb)
 
 
 @lru_cache(maxsize=8)
@@ -114,18 +116,18 @@ def _tables(kb: Any) -> _Words:
     return _Words(protos, cats, dict(kb.assets.words), sizes)
 
 
-def synonyms() -> dict[str, str]:
+def synonyms(kb: KnowledgeBase | None = None) -> dict[str, str]:
     """Every object word -> the family it names: the prototypes' words (objects.yaml) and
-    assets.yaml ``words:`` (the family names themselves are not listed)."""
-    t = _tables(_kb())
+    assets.yaml ``words:`` (the family names themselves are not listed), in ``kb``."""
+    t = _tables(_kb(kb))
     return {**{w: f for w, f in t.protos.items() if f}, **t.words}
 
 
-def typical_size(family: str) -> tuple[float, float, float]:
+def typical_size(family: str, kb: KnowledgeBase | None = None) -> tuple[float, float, float]:
     """A typical box (width, depth, height) in meters for a family: the size of the object
     prototype that is the family (its key, else its category), else assets.yaml
     ``sizes:``, else the generic block's."""
-    sizes = _tables(_kb()).sizes
+    sizes = _tables(_kb(kb)).sizes
     return sizes.get(family) or sizes[GENERIC]
 
 
@@ -133,9 +135,8 @@ def _norm(text: str) -> str:
     return "_".join(re.findall(r"[a-z0-9]+", text.lower()))
 
 
-def _lookup(key: str, use_synonyms: bool = True, tables: _Words | None = None) -> str | None:
+def _lookup(key: str, t: _Words, use_synonyms: bool = True) -> str | None:
     fams = _loaded()
-    t = tables or _tables(_kb())
     for k in (key, key[:-1] if key.endswith("s") else None, key[:-2] if key.endswith("es") else None):
         if not k:
             continue
@@ -149,7 +150,7 @@ def _lookup(key: str, use_synonyms: bool = True, tables: _Words | None = None) -
     return None
 
 
-def _specific_name(name: str, category: str) -> str | None:
+def _specific_name(name: str, category: str, t: _Words) -> str | None:
     """The family a name asks for by itself, when it should overrule the category: a
     name of two or more words that is a family or a synonym ("pool table", "billiard
     table"), or a one-word family name ("pew") given with a broad category ("bench").
@@ -158,32 +159,33 @@ def _specific_name(name: str, category: str) -> str | None:
     if not key:
         return None
     if "_" in key:
-        hit = _lookup(key)
-        if hit in BROAD_FAMILIES and key in _tables(_kb()).protos and _lookup(_norm(category)) not in (None, GENERIC, hit):
+        hit = _lookup(key, t)
+        if hit in BROAD_FAMILIES and key in t.protos and _lookup(_norm(category), t) not in (None, GENERIC, hit):
             return None  # a loose prototype word ("long table") never overrules a specific category
         return hit if hit != GENERIC else None  # a known fallback never overrules a category
-    hit = _lookup(key, use_synonyms=False)
-    return hit if hit and _lookup(_norm(category)) in BROAD_FAMILIES else None
+    hit = _lookup(key, t, use_synonyms=False)
+    return hit if hit and _lookup(_norm(category), t) in BROAD_FAMILIES else None
 
 
-def family_for(category: str, name: str = "") -> str:
+def family_for(category: str, name: str = "", kb: KnowledgeBase | None = None) -> str:
     """The family to build an object as: the family a name asks for by itself (see
     ``_specific_name``), else the category if it is a family, else the best match of the
     category or name (whole, word pairs, then single words, last word first, through the
-    prototypes' words and assets.yaml, see :func:`_tables`), else ``"generic"``."""
-    if hit := _specific_name(name, category):
+    prototypes' words and assets.yaml of ``kb``, see :func:`_tables`), else ``"generic"``."""
+    t = _tables(_kb(kb))
+    if hit := _specific_name(name, category, t):
         return hit
     for text in (category, name):
         key = _norm(text)
-        if key and (hit := _lookup(key)):
+        if key and (hit := _lookup(key, t)):
             return hit
     for text in (category, name):
         words = _norm(text).split("_")
         for i in range(len(words) - 2, -1, -1):
-            if hit := _lookup(f"{words[i]}_{words[i + 1]}"):
+            if hit := _lookup(f"{words[i]}_{words[i + 1]}", t):
                 return hit
         for w in reversed(words):
-            if w and (hit := _lookup(w)):
+            if w and (hit := _lookup(w, t)):
                 return hit
     return GENERIC
 
@@ -193,7 +195,7 @@ def object_rng(obj: HouseObject) -> np.random.Generator:
     return np.random.default_rng(zlib.crc32(obj.id.encode("utf-8")))
 
 
-def assign_asset(obj: HouseObject, rng: np.random.Generator, style: str | Sequence[str] = "",
+def assign_asset(obj: HouseObject, rng: np.random.Generator, style: Style | Sequence[str] = "",
                  kb: KnowledgeBase | None = None) -> dict[str, Any]:
     """Choose and parametrise the procedural asset for an object.
 
@@ -202,12 +204,14 @@ def assign_asset(obj: HouseObject, rng: np.random.Generator, style: str | Sequen
     colours the asset, and the record's ``params.style`` names that class (see
     :mod:`anyhome.assets.styles`). Returns the JSON-serialisable record to store in
     ``HouseObject.asset``; the object's material words (else its description's) set the
-    main colour.
+    main colour. Everything is read in ``kb`` (None: the knowledge base in force): the
+    family, the style class (resolved here, once, and handed to the factory) and colours.
     """
-    name = family_for(obj.category, obj.name)
+    kb = _kb(kb)
+    name = family_for(obj.category, obj.name, kb)
     fam = get(name)
-    params = fam.sample(rng, obj.size, class_name(style, kb))
-    color = material_color(obj.material) or material_color(obj.description)
+    params = fam.sample(rng, obj.size, style_class(style, kb))
+    color = material_color(obj.material, kb) or material_color(obj.description, kb)
     if color:
         params = replace(params, primary=color)
     return {"source": SOURCE, "family": name, "params": params.to_record()}
@@ -217,15 +221,16 @@ def params_from_record(record: dict[str, Any]) -> Params:
     return Params.from_record(record["family"], record["params"])
 
 
-def build_object_mesh(obj: HouseObject) -> trimesh.Trimesh:
+def build_object_mesh(obj: HouseObject, kb: KnowledgeBase | None = None) -> trimesh.Trimesh:
     """The object's mesh in its local frame (see module doc), rebuilt from ``obj.asset``.
 
     Without a procedural record an asset is sampled from a generator seeded by the
-    object id. The mesh is fitted to ``obj.size`` (so a resized object keeps its look).
+    object id (its family and colours read in ``kb``; None: the knowledge base in force).
+    The mesh is fitted to ``obj.size`` (so a resized object keeps its look).
     """
     record = obj.asset
     if not record or record.get("source") != SOURCE or record.get("family") not in _loaded():
-        record = assign_asset(obj, object_rng(obj), "")
+        record = assign_asset(obj, object_rng(obj), "", kb)
     params = params_from_record(record)
     size = (float(obj.size[0]), float(obj.size[1]), float(obj.size[2]))
     if size != params.size:

@@ -2,9 +2,12 @@
 
 The knowledge lives in ``plan/knowledge/styles.yaml``: every style names its
 ``asset_class``, and ``asset_classes`` says what each class means (its traits, leg
-shapes, wood and fabric colours). A factory gets a style as a string, a style key
-("gothic", "japandi") or an asset class name ("antique"), and reads it through
-:func:`style_class`; anything else (no style, prose) is the ``plain`` class.
+shapes, wood and fabric colours). The assets stage resolves the style once, in the run's
+knowledge base (:func:`style_class` with ``kb``), and hands the factories the
+:class:`StyleClass` itself, so a class a user's knowledge base adds reaches them with no
+knowledge base in force. A factory may also be given a string (a style key such as
+"gothic", or an asset class name such as "antique": tools and tests); that is read in
+the knowledge base in force; anything else (no style, prose) is the ``plain`` class.
 """
 
 from __future__ import annotations
@@ -13,7 +16,7 @@ import re
 from collections.abc import Sequence
 from dataclasses import dataclass
 from functools import lru_cache
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, TypeAlias
 
 from anyhome.errors import PlanError
 
@@ -39,6 +42,11 @@ class StyleClass:
     legs: tuple[str, ...]
     woods: tuple[str, ...]
     fabrics: tuple[str, ...]
+
+
+Style: TypeAlias = "str | StyleClass"
+"""What a factory's ``style`` is: a resolved :class:`StyleClass` (the assets stage), or a
+style key or class name (read in the knowledge base in force)."""
 
 
 def _bad(key: str, what: str) -> PlanError:
@@ -93,9 +101,12 @@ def asset_classes(kb: KnowledgeBase | None = None) -> dict[str, StyleClass]:
     return dict(_tables(_kb(kb))[0])
 
 
-def class_name(style: str | Sequence[str], kb: KnowledgeBase | None = None) -> str:
+def class_name(style: Style | Sequence[str], kb: KnowledgeBase | None = None) -> str:
     """The asset class name of a style key, an asset class name, or a list of style keys
-    (the first one known leads); :data:`DEFAULT_CLASS` when none is known."""
+    (the first one known leads); :data:`DEFAULT_CLASS` when none is known. A
+    :class:`StyleClass` is its own name (no knowledge base is read)."""
+    if isinstance(style, StyleClass):
+        return style.name
     classes, of_style = _tables(_kb(kb))
     for key in [style] if isinstance(style, str) else style:
         k = str(key).strip().lower().replace(" ", "_").replace("-", "_")
@@ -106,15 +117,19 @@ def class_name(style: str | Sequence[str], kb: KnowledgeBase | None = None) -> s
     return DEFAULT_CLASS
 
 
-def style_class(style: str | Sequence[str], kb: KnowledgeBase | None = None) -> StyleClass:
-    """The :class:`StyleClass` of a style (see :func:`class_name`)."""
+def style_class(style: Style | Sequence[str], kb: KnowledgeBase | None = None) -> StyleClass:
+    """The :class:`StyleClass` of a style (see :func:`class_name`) in ``kb``; a
+    :class:`StyleClass` is returned as it is (no knowledge base is read)."""
+    if isinstance(style, StyleClass):
+        return style
     kb = _kb(kb)
     return _tables(kb)[0][class_name(style, kb)]
 
 
 def _kb(kb: KnowledgeBase | None) -> KnowledgeBase:
-    """``kb``, else the knowledge base in force: the asset factories look a style class
-    up by its name (``Params.style``) without a knowledge base."""
+    """``kb``, else the knowledge base in force: the explicit default for a caller that
+    names a style by a string and passes no knowledge base (tools, tests, the knob
+    ranges of :mod:`anyhome.house`); the assets stage always passes its own."""
     from anyhome.plan.kbview import default
 
     return kb if kb is not None else default()

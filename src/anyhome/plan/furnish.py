@@ -79,7 +79,7 @@ def make_item(kb: KnowledgeBase, entry: dict[str, Any], rng: np.random.Generator
         "material": entry.get("material", ""),
         # the entry's own tags, else what its name means ("low altar" with use: cabinet is
         # an altar), else its prototype's; with none of these ItemSpec derives them
-        "tags": list(entry.get("tags") or tags_by_name(name) or proto.get("tags") or []) or None,
+        "tags": list(entry.get("tags") or tags_by_name(name, kb) or proto.get("tags") or []) or None,
     }
 
 

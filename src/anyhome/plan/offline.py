@@ -24,7 +24,7 @@ from anyhome.plan.kb import KnowledgeBase
 from anyhome.plan.kbview import resolve
 from anyhome.plan.parse import Mention, Parsed, parse, plural
 from anyhome.plan.program import Slot, choose_program, connect, plan_rooms, sample_areas
-from anyhome.plan.spec import GroupSpec, HouseSpec, ItemSpec, RoomSpec
+from anyhome.plan.spec import GroupSpec, HouseSpec, ItemSpec, RoomSpec, kb_context
 
 log = logging.getLogger(__name__)
 
@@ -93,15 +93,10 @@ class OfflinePlanner:
         building = parsed.building_word or building
         specs = [_room_spec(kb, s, g, o, look, rng) for s, (g, o) in zip(slots, rooms)]
         log.debug("planned %d rooms for %r", len(specs), text[:60])
-        return HouseSpec(
-            prompt=text,
-            building=building,
-            style=look.describe,
-            styles=look.styles,
-            palette=look.palette,
-            rooms=specs,
-            connections=connections,
-            warnings=warnings,
+        return HouseSpec.model_validate(
+            {"prompt": text, "building": building, "style": look.describe, "styles": look.styles,
+             "palette": look.palette, "rooms": specs, "connections": connections, "warnings": warnings},
+            context=kb_context(kb),
         )
 
 
@@ -283,7 +278,7 @@ def _item(kb: KnowledgeBase, it: fu.Item, look: Look, furniture: str, rng: np.ra
     data = dict(it)
     if not data.get("material"):
         data["material"] = item_material(data["category"], look, furniture, rng, kb)
-    return ItemSpec(**data)
+    return ItemSpec.model_validate(data, context=kb_context(kb))
 
 
 # ---------------------------------------------------------------- stage fallbacks

@@ -38,6 +38,7 @@ from pydantic import (
     ConfigDict,
     Field,
     ValidationError,
+    ValidationInfo,
     field_validator,
     model_validator,
 )
@@ -47,6 +48,25 @@ from anyhome.layout.rules import RELATIVE_RULES as RELATIVE_RULES  # re-exported
 from anyhome.layout.rules import WALL_RULES as WALL_RULES  # re-exported
 from anyhome.sanitize import clean_text, is_safe_id
 from anyhome.tags import Tag, tags_for
+
+if TYPE_CHECKING:
+    from anyhome.plan.kb import KnowledgeBase
+
+KB_CONTEXT = "kb"
+"""The validation context key of the knowledge base a spec is read in: the planner and
+the entry points validate with ``HouseSpec.model_validate(data, context=kb_context(kb))``;
+without it (a spec built by hand, a tool) the knowledge base in force is read."""
+
+
+def kb_context(kb: KnowledgeBase) -> dict[str, Any]:
+    """The pydantic validation context that makes the validators read ``kb``."""
+    return {KB_CONTEXT: kb}
+
+
+def _context_kb(info: ValidationInfo) -> KnowledgeBase | None:
+    ctx = info.context
+    return ctx.get(KB_CONTEXT) if isinstance(ctx, dict) else None
+
 
 if TYPE_CHECKING:  # a Literal built from the rule registry at run time; a checker sees str
     Rule = str
@@ -131,12 +151,13 @@ class ItemSpec(_Model):
 
     @model_validator(mode="before")
     @classmethod
-    def _derive_tags(cls, data: Any) -> Any:
-        """Items built without tags (the LLM planner's) get them from the knowledge base."""
+    def _derive_tags(cls, data: Any, info: ValidationInfo) -> Any:
+        """Items built without tags (the LLM planner's) get them from the knowledge base
+        (the context's, see :data:`KB_CONTEXT`)."""
         if isinstance(data, dict) and data.get("tags") is None:
             name, category = data.get("name"), data.get("category")
             if isinstance(name, str) and isinstance(category, str):
-                data = {**data, "tags": list(tags_for(name, category))}
+                data = {**data, "tags": list(tags_for(name, category, _context_kb(info)))}
         return data
 
     @model_validator(mode="after")
@@ -181,20 +202,24 @@ def _style_keys(v: Any) -> Any:
     return list(dict.fromkeys(keys))
 
 
-def _check_style_keys(keys: list[str]) -> list[str]:
-    from anyhome.plan.knowledge import load
+def _check_style_keys(keys: list[str], info: ValidationInfo) -> list[str]:
+    """``keys`` when each is a style of the context's knowledge base (see
+    :data:`KB_CONTEXT`; none: the knowledge base in force)."""
+    if not keys:
+        return keys
+    from anyhome.plan.kbview import resolve
 
-    known = load("styles")["styles"]
+    known = resolve(_context_kb(info)).raw("styles")["styles"]
     unknown = [k for k in keys if k not in known]
     if unknown:
         raise ValueError(f"unknown style {unknown[0]!r}; known styles include {', '.join(list(known)[:8])}")
     return keys
 
 
-def _keys_from_words(style: str) -> list[str]:
+def _keys_from_words(style: str, kb: KnowledgeBase | None) -> list[str]:
     from anyhome.plan.appearance import style_keys
 
-    return style_keys(style)
+    return style_keys(style, kb=kb)
 
 
 StyleKeys = Annotated[list[str], BeforeValidator(_style_keys)]
@@ -226,8 +251,8 @@ class RoomSpec(_Model):
 
     @field_validator("styles")
     @classmethod
-    def _known_styles(cls, v: list[str]) -> list[str]:
-        return _check_style_keys(v)
+    def _known_styles(cls, v: list[str], info: ValidationInfo) -> list[str]:
+        return _check_style_keys(v, info)
 
 
 class HouseSpec(_Model):
@@ -269,15 +294,15 @@ class HouseSpec(_Model):
 
     @model_validator(mode="before")
     @classmethod
-    def _styles_from_words(cls, data: Any) -> Any:
+    def _styles_from_words(cls, data: Any, info: ValidationInfo) -> Any:
         if isinstance(data, dict) and not data.get("styles") and isinstance(data.get("style"), str):
-            data = {**data, "styles": _keys_from_words(clean_text(data["style"]))}
+            data = {**data, "styles": _keys_from_words(clean_text(data["style"]), _context_kb(info))}
         return data
 
     @field_validator("styles")
     @classmethod
-    def _known_styles(cls, v: list[str]) -> list[str]:
-        return _check_style_keys(v)
+    def _known_styles(cls, v: list[str], info: ValidationInfo) -> list[str]:
+        return _check_style_keys(v, info)
 
     def styles_for(self, room_id: str) -> list[str]:
         """The style keys of a room: its own, else the house's."""

@@ -26,7 +26,7 @@ import numpy as np
 import trimesh
 
 from anyhome.assets.colors import mix, to_rgba
-from anyhome.assets.styles import TRAITS, class_name, style_class
+from anyhome.assets.styles import TRAITS, Style, class_name, style_class
 
 Size = tuple[float, float, float]
 KNOB_DECIMALS = 4
@@ -212,7 +212,7 @@ def make_params(
     family: str,
     rng: np.random.Generator,
     size: Size,
-    style: str,
+    style: Style,
     primary: list[str] | str,
     secondary: list[str] | str = TEXTILE_WHITE,
     accent: list[str] | str = "#7d8c74",
@@ -236,9 +236,10 @@ def make_params(
 
 
 # ----------------------------------------------------------------- style helpers
-# A style reaches a factory as a string: a style key or an asset class name, read
-# through the asset style classes of plan/knowledge/styles.yaml (anyhome.assets.styles).
-def style_is(style: str, *traits: str) -> bool:
+# A style reaches a factory as the StyleClass the assets stage resolved in its knowledge
+# base (or, from tools and tests, a style key or class name string, read in the knowledge
+# base in force): see anyhome.assets.styles.
+def style_is(style: Style, *traits: str) -> bool:
     """Whether the style's asset class has any of ``traits`` (antique, modern,
     industrial, rustic, eastern)."""
     unknown = set(traits) - TRAITS
@@ -247,18 +248,18 @@ def style_is(style: str, *traits: str) -> bool:
     return bool(style_class(style).traits & set(traits))
 
 
-def leg_style(rng: np.random.Generator, style: str) -> str:
+def leg_style(rng: np.random.Generator, style: Style) -> str:
     """Leg shape for a style: its class's one shape, else one drawn from its shapes."""
     legs = style_class(style).legs
     return legs[0] if len(legs) == 1 else str(rng.choice(list(legs)))
 
 
-def wood_tones(style: str) -> list[str]:
+def wood_tones(style: Style) -> list[str]:
     """Candidate wood colours for a style."""
     return list(style_class(style).woods)
 
 
-def fabric_tones(style: str) -> list[str]:
+def fabric_tones(style: Style) -> list[str]:
     """Candidate upholstery colours for a style."""
     return list(style_class(style).fabrics)
 

@@ -41,6 +41,7 @@ from anyhome.assets.procedural._parts import (
     wood_tones,
 )
 from anyhome.assets.registry import register
+from anyhome.assets.styles import Style
 
 APPLIANCE_FINISHES = tint([STEEL, WHITE_PLASTIC, "#2b2b2b", "#c9ccd0"], "metal")
 OFFICE_GREYS = tint(["#e6e4de", "#d9dadc", "#c9ccd0", "#3a3b3e", "#f2f1ed"], "plastic")
@@ -48,7 +49,7 @@ RETRO = tint(["#c9483a", "#7fb8a8", "#e8d9b0", "#3a6fb0", "#2b2b2b", "#e8e6e0"],
 TAP_HANDLES = tint(["#c0392b", "#f1c40f", "#2e86c1", "#27ae60", BLACK, "#e67e22", "#8e44ad", "#e8e6e0"], "plastic")
 
 
-def _vintage(style: str, rng, share: float = 0.25) -> bool:
+def _vintage(style: Style, rng, share: float = 0.25) -> bool:
     if style_is(style, "antique", "rustic"):
         return True
     if style_is(style, "modern"):

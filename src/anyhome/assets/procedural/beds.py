@@ -22,13 +22,14 @@ from anyhome.assets.procedural._parts import (
     wood_tones,
 )
 from anyhome.assets.registry import register
+from anyhome.assets.styles import Style
 
 MATTRESS_TOP_M = (0.45, 0.62)
 """Height range of a bed's mattress top; the bed's box reaches up to its headboard."""
 BEDDING = tint(["#e9e4da", "#d7dde6", "#c8b8a6", "#9fb2a0", "#b9a2b8", "#d9c3a0", "#8a9bb0"], "fabric")
 
 
-def sample_bed(rng: np.random.Generator, size: Size, style: str) -> Params:
+def sample_bed(rng: np.random.Generator, size: Size, style: Style) -> Params:
     return make_params(
         "bed", rng, size, style, wood_tones(style), TEXTILE_WHITE, BEDDING + fabric_tones(style),
         legs=leg_style(rng, style),
@@ -75,7 +76,7 @@ def build_bed(p: Params) -> trimesh.Trimesh:
     return b.mesh(p.size)
 
 
-def sample_bunk_bed(rng: np.random.Generator, size: Size, style: str) -> Params:
+def sample_bunk_bed(rng: np.random.Generator, size: Size, style: Style) -> Params:
     return make_params("bunk_bed", rng, size, style, wood_tones(style) + ["#e8e6e0", "#3a3b3e"],
                        TEXTILE_WHITE, BEDDING, ladder_right=bool(rng.random() < 0.5))
 
@@ -103,7 +104,7 @@ def build_bunk_bed(p: Params) -> trimesh.Trimesh:
     return b.mesh(p.size)
 
 
-def sample_crib(rng: np.random.Generator, size: Size, style: str) -> Params:
+def sample_crib(rng: np.random.Generator, size: Size, style: Style) -> Params:
     return make_params("crib", rng, size, style, ["#f2efe8", "#e8dccb", "#d8bf98", "#c9d6df", "#f0d9dd"],
                        TEXTILE_WHITE, ["#f4c7d0", "#bcd6ea", "#f3e3a6", "#c9e3c4"],
                        slats=int(rng.integers(9, 15)))

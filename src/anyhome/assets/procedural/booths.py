@@ -33,6 +33,7 @@ from anyhome.assets.procedural._parts import (
     wood_tones,
 )
 from anyhome.assets.registry import register
+from anyhome.assets.styles import Style
 
 FELTS = tint(["#5f6b7a", "#7d8c74", "#3f4a5a", "#8c8f94", "#2b2b2b", "#a6896b", "#c9c1b4"], "fabric")
 PANE = tint("#cfe0e6", "glass")
@@ -40,7 +41,7 @@ SIGN_LIGHT = tint("#fff4c8", "light")
 NEON = tint(["#e040a0", "#40c0e0", "#7b4ad5", "#40e080"], "light")
 
 
-def _antique(style: str, rng, share: float) -> bool:
+def _antique(style: Style, rng, share: float) -> bool:
     if style_is(style, "antique", "rustic"):
         return True
     if style_is(style, "modern"):

@@ -22,6 +22,7 @@ from anyhome.assets.procedural._parts import (
 )
 from anyhome.assets.procedural.storage import HANDLE, case
 from anyhome.assets.registry import register
+from anyhome.assets.styles import class_name
 
 APPLIANCE = tint(["#e9e9e6", "#c8cacd", "#b9bcc0", "#2b2b2b"], "paint")
 WORKTOPS = tint(["#e4e1da", "#3a3a3c", "#d9cfb8", "#9a958c", "#f0eeea"], "stone")
@@ -257,7 +258,7 @@ def build_toilet(p):
 
 def sample_bathtub(rng, size, style):
     return make_params("bathtub", rng, size, style, [PORCELAIN, "#ecebe6", "#e9ecef", "#2b2b2b"], "#cfe3ea",
-                       METAL, clawfoot=bool(rng.random() < (0.7 if "victorian" in style.lower() else 0.15)))
+                       METAL, clawfoot=bool(rng.random() < (0.7 if "victorian" in class_name(style) else 0.15)))
 
 
 def build_bathtub(p):
