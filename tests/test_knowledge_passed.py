@@ -82,3 +82,55 @@ def test_default_knowledge_honours_the_environment_variable(tmp_path, monkeypatc
 def test_knowledge_must_be_a_knowledge_base():
     with pytest.raises(anyhome.AnyHomeError, match="knowledge must be a KnowledgeBase"):
         anyhome.generate("a kitchen", knowledge="kb")  # type: ignore[arg-type]
+
+
+# A user knowledge base with a brand-new asset class, a style that uses it, and a new
+# object whose name holds a shipped word ("couch": a sofa, tags [seat]) but whose own tags
+# differ. Passed only as an argument: nothing in force knows any of it.
+NEON = {
+    "styles.yaml": "asset_classes:\n"
+    "  neon: {traits: [modern], legs: [metal], woods: ['#ff10f0', '#f011ff'], fabrics: ['#00ffe1', '#10ffd0']}\n"
+    "styles:\n"
+    "  cyberpunk: {words: [cyberpunk, neon noir], describe: 'cyberpunk, neon and chrome', "
+    "palette: [black, neon pink], floor: polished concrete, walls: black paint, ceiling: black paint, "
+    "furniture: glossy lacquer, asset_class: neon}\n",
+    "objects.yaml": "hover couch: {category: sofa, size: [2.0, 0.9, 0.8], rule: place_wall, rooms: [bedroom], "
+    "tags: [seat, light_source]}\n",
+}
+NEON_COLOURS = {"#ff10f0", "#f011ff", "#00ffe1", "#10ffd0"}
+
+
+def _neon(root: Path) -> Path:
+    root.mkdir(parents=True, exist_ok=True)
+    for name, text in NEON.items():
+        (root / name).write_text(text, encoding="utf-8")
+    return root
+
+
+def test_a_new_asset_class_and_new_tags_reach_the_stages_when_passed_explicitly(tmp_path):
+    from anyhome.assets import build_object_mesh
+    from anyhome.tags import tags_for
+
+    user = knowledge_base([str(_neon(tmp_path / "kb"))])
+    house = anyhome.generate("a cyberpunk bedroom with a hover couch", seed=0, knowledge=user)
+    assert overlay() == ()
+    assert house.styles[0] == "cyberpunk"
+    assert _classes(house) == {"neon"}  # the new class, not the plain one a global lookup finds
+    # the factories drew their colours from the new class
+    hexes = {"#%02x%02x%02x" % tuple(int(c) for c in rgb)
+             for o in house.objects for rgb in build_object_mesh(o, user).visual.face_colors[:, :3]}
+    assert NEON_COLOURS & hexes
+    # the planner's tags of the new object are the user's, not the shipped sofa's
+    couch = [o for o in house.objects if o.name == "hover couch"]
+    assert couch and all(set(o.tags) == {"seat", "light_source"} for o in couch)
+    assert set(tags_for("hover couch", "sofa", user)) == {"seat", "light_source"}
+    assert set(tags_for("hover couch", "sofa", knowledge_base([]))) == {"seat"}
+    # a spec without tags (as the LLM planner writes it) derives them in the kb passed in
+    plan = json.loads(json.dumps(house.plan))
+    for room in plan["rooms"]:
+        for group in room["groups"]:
+            for item in [group["anchor"], *group["members"]]:
+                item.pop("tags", None)
+    again = anyhome.generate_from_spec(plan, seed=0, knowledge=user)
+    assert {tuple(sorted(o.tags)) for o in again.objects if o.name == "hover couch"} == {("light_source", "seat")}
+    assert _classes(again) == {"neon"}
