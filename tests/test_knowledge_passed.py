@@ -134,3 +134,21 @@ def test_a_new_asset_class_and_new_tags_reach_the_stages_when_passed_explicitly(
     again = anyhome.generate_from_spec(plan, seed=0, knowledge=user)
     assert {tuple(sorted(o.tags)) for o in again.objects if o.name == "hover couch"} == {("light_source", "seat")}
     assert _classes(again) == {"neon"}
+
+
+def test_materials_and_asset_words_read_the_knowledge_base_passed_in(tmp_path):
+    from anyhome.assets.catalog import knowledge_map
+    from anyhome.assets.colors import material_color
+    from anyhome.assets.registry import family_for
+    from anyhome.materials.catalog import surface_material
+
+    root = _neon(tmp_path / "kb")
+    (root / "materials.yaml").write_text(
+        "words:\n  neonite: {kind: metal, color: '#12ff34', goes_on: [furniture, floor]}\n", encoding="utf-8")
+    user, shipped = knowledge_base([str(root)]), knowledge_base([])
+    assert material_color("neonite", user) == "#12ff34" and material_color("neonite", shipped) is None
+    assert surface_material("neonite", "floor", 8, kb=user).color == "#12ff34"
+    assert surface_material("neonite", "floor", 8, kb=shipped).color != "#12ff34"
+    assert family_for("", "hover couch", user) == "sofa"
+    assert "hover couch" in knowledge_map(user)["sofa"]["objects"]
+    assert "hover couch" not in knowledge_map(shipped)["sofa"]["objects"]

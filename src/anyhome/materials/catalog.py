@@ -2,7 +2,8 @@
 
 The knowledge lives in ``plan/knowledge/materials.yaml`` (one entry per material word,
 extendable by a user's knowledge folder); the tables here are built from the knowledge
-base in force (:func:`anyhome.plan.knowledge.knowledge_base`). A phrase is split into
+base each function is given as ``kb`` (None: the knowledge base in force, the explicit
+default of an export of a house file). A phrase is split into
 clauses ("oak and matte black metal" -> "oak", "matte black metal"); the first clause
 that names a material decides, and inside it the highest-ranked word wins, ties going
 to the last word (the head noun). The surface then adapts the kind (wood on a floor is
@@ -80,10 +81,10 @@ class _Tables:
     split: re.Pattern[str]
 
 
-def _kb() -> KnowledgeBase:
-    from anyhome.plan.knowledge import knowledge_base
+def _kb(kb: KnowledgeBase | None) -> KnowledgeBase:
+    from anyhome.plan.kbview import resolve
 
-    return knowledge_base()
+    return resolve(kb)
 
 
 @lru_cache(maxsize=8)
@@ -110,13 +111,14 @@ def _splitter(words: list[str]) -> re.Pattern[str]:
     return re.compile(rf"\s*(?:,|;|/|{'|'.join(alts)})\s*")
 
 
-def _tables() -> _Tables:
-    return _tables_of(_kb())
+def _tables(kb: KnowledgeBase | None) -> _Tables:
+    return _tables_of(_kb(kb))
 
 
-def _data() -> dict[str, Any]:
-    """materials.yaml of the knowledge base in force (merged with the user's overlay)."""
-    return _tables().data
+def _data(kb: KnowledgeBase | None) -> dict[str, Any]:
+    """materials.yaml of ``kb`` (None: the knowledge base in force; merged with the
+    user's overlay)."""
+    return _tables(kb).data
 
 
 MIN_TEXTURE_PX = 8
@@ -167,27 +169,28 @@ def _match(clause: str, t: _Tables) -> tuple[dict[str, Any], list[str]] | None:
     return None if best is None else (best[1], words)
 
 
-def clauses(words: str) -> list[str]:
+def clauses(words: str, kb: KnowledgeBase | None = None) -> list[str]:
     """The clauses of a material phrase, in order."""
-    return [c for c in _tables().split.split(words.lower()) if c.strip()]
+    return [c for c in _tables(kb).split.split(words.lower()) if c.strip()]
 
 
-def material_clauses(words: str) -> list[tuple[dict[str, Any], list[str]]]:
-    """(entry, words) for each clause of ``words`` that names a material, in order."""
-    t = _tables()
-    return [m for c in clauses(words) if (m := _match(c, t)) is not None]
+def material_clauses(words: str, kb: KnowledgeBase | None = None) -> list[tuple[dict[str, Any], list[str]]]:
+    """(entry, words) for each clause of ``words`` that names a material in ``kb``, in order."""
+    t = _tables(kb)
+    return [m for c in clauses(words, kb) if (m := _match(c, t)) is not None]
 
 
-def _kind_defaults(kind: str, variant: str) -> dict[str, Any]:
-    base = dict(_data()["kinds"][kind])
+def _kind_defaults(kind: str, variant: str, kb: KnowledgeBase | None) -> dict[str, Any]:
+    base = dict(_data(kb)["kinds"][kind])
     variants = base.pop("variants", {}) or {}
     base.update(variants.get(variant, {}))
     return base
 
 
-def _finish(words: list[str]) -> tuple[float, float]:
+def _finish(words: list[str], kb: KnowledgeBase | None) -> tuple[float, float]:
     """(roughness shift, colour tone factor) named by finish and tone words."""
-    finish, tone = _data().get("finish") or {}, _data().get("tone") or {}
+    data = _data(kb)
+    finish, tone = data.get("finish") or {}, data.get("tone") or {}
     dr = sum(float(finish[w]) for w in words if w in finish)
     factor = 1.0
     for w in words:
@@ -197,7 +200,7 @@ def _finish(words: list[str]) -> tuple[float, float]:
 
 
 def spec_from_entry(entry: dict[str, Any], surface: str, words: list[str], color: str | None,
-                    size_px: int | None = None) -> MaterialSpec:
+                    size_px: int | None = None, kb: KnowledgeBase | None = None) -> MaterialSpec:
     """Resolve a lexicon entry for a surface into a spec.
 
     The kind first becomes the surface's kind (``surfaces.<surface>.becomes``), then the
@@ -207,13 +210,13 @@ def spec_from_entry(entry: dict[str, Any], surface: str, words: list[str], color
         raise ValueError(f"surface must be one of {', '.join(SURFACES)}, got {surface!r}")
     own = entry.get(surface) or {}
     kind = str(entry["kind"])
-    kind = str(own.get("kind", _data()["surfaces"][surface]["becomes"].get(kind, kind)))
+    kind = str(own.get("kind", _data(kb)["surfaces"][surface]["becomes"].get(kind, kind)))
     variant = str(own.get("variant", entry.get("variant", "") if kind == entry["kind"] else ""))
-    if variant not in _known_variants(kind):
+    if variant not in _known_variants(kind, kb):
         variant = ""
-    d = _kind_defaults(kind, variant)
+    d = _kind_defaults(kind, variant, kb)
     d.update({k: v for k, v in {**entry, **own}.items() if k in _OVERRIDABLE})
-    dr, tone = _finish(words)
+    dr, tone = _finish(words, kb)
     base = color or d.get("color", "#b0aaa0")
     if tone != 1.0:
         base = to_hex(shade(to_rgba(base)[:3].astype(float), tone))
@@ -229,12 +232,12 @@ def spec_from_entry(entry: dict[str, Any], surface: str, words: list[str], color
     )
 
 
-def _known_variants(kind: str) -> set[str]:
-    return set((_data()["kinds"].get(kind) or {}).get("variants", {}) or {}) | set(VARIANTS.get(kind, ()))
+def _known_variants(kind: str, kb: KnowledgeBase | None) -> set[str]:
+    return set((_data(kb)["kinds"].get(kind) or {}).get("variants", {}) or {}) | set(VARIANTS.get(kind, ()))
 
 
 def surface_material(words: str, surface: str, size_px: int | None = None,
-                     color: str | None = None) -> MaterialSpec:
+                     color: str | None = None, kb: KnowledgeBase | None = None) -> MaterialSpec:
     """The material a surface made of ``words`` gets.
 
     Parameters
@@ -243,18 +246,20 @@ def surface_material(words: str, surface: str, size_px: int | None = None,
     surface : "floor", "walls", "ceiling" or "furniture"
     size_px : texture size (default: :func:`texture_size_px`)
     color : base colour to use instead of the one the words name
+    kb : the knowledge base the words are read in (None: the one in force)
     """
     if surface not in SURFACES:
         raise ValueError(f"surface must be one of {', '.join(SURFACES)}, got {surface!r}")
     words = words or ""
-    found = material_clauses(words)
+    kb = _kb(kb)
+    found = material_clauses(words, kb)
     if found:
         entry, clause_words = found[0]
     else:
-        default = _data()["surfaces"][surface]["default"] or ""
-        hit = material_clauses(default)
+        default = _data(kb)["surfaces"][surface]["default"] or ""
+        hit = material_clauses(default, kb)
         entry, clause_words = hit[0] if hit else ({"kind": "plain"}, [])
-        color = color or material_color(words) or material_color(default)
-    color = color or material_color(" ".join(clause_words)) or material_color(words)
-    return spec_from_entry(entry, surface, clause_words, color, size_px)
+        color = color or material_color(words, kb) or material_color(default, kb)
+    color = color or material_color(" ".join(clause_words), kb) or material_color(words, kb)
+    return spec_from_entry(entry, surface, clause_words, color, size_px, kb)
 
