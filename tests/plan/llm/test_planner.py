@@ -45,7 +45,7 @@ def test_invalid_reply_gets_one_repair_then_the_offline_stage(llama_server, tmp_
     msgs = messages("program", text=CAT, max_rooms=12, types="cafe, kitchen, bathroom")
     from anyhome.plan.llm import checks
 
-    obj, rec = planner._ask("program", "program", msgs, ProgramReply, checks.check_program, 3, warnings)
+    obj, rec = planner._ask("program", "program", msgs, ProgramReply, lambda r: checks.check_program(r, planner.kb), 3, warnings)
     assert obj is None and rec.source == "offline" and rec.requests == 2
     assert rec.errors and ("cut off" in rec.errors[0] or "JSON" in rec.errors[0])
     assert warnings and "still invalid after one repair" in warnings[0]
