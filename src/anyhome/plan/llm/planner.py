@@ -156,7 +156,8 @@ class LLMPlanner:
         laid out ([] when they can); the program reply is checked with it too. None skips
         that check: whoever builds the planner passes the floorplan stage's check (see
         ``anyhome.plan.get_planner`` and ``anyhome.floorplan.floorplan_errors``). ``kb``:
-        the knowledge base the offline fallbacks read (None: the one in force)."""
+        the knowledge base the offline fallbacks and the reply checks read (None: the one in
+        force)."""
         self.config = config
         self.kb = resolve(kb)
         self.floorplan_check = floorplan_check
