@@ -203,12 +203,14 @@ def test_llm_params_schema_is_the_models(rule):
 
 
 def test_llm_stage_rules_derive_from_the_registry():
+    def rules(item):  # one variant per rule (tests/plan/llm/test_params.py checks their params)
+        return [schemas.variant_rule(v) for v in schemas.item_variants(item)]
+
     fur = schemas.json_schema("furniture")["properties"]["groups"]["items"]["properties"]
-    assert fur["members"]["items"]["properties"]["rule"]["enum"] == list(RULES)
-    assert fur["anchor"]["properties"]["rule"]["enum"] == [n for n in RULES if n not in RELATIVE_RULES]
-    orn = schemas.json_schema("ornaments")["properties"]["ornaments"]["items"]["properties"]
-    assert orn["rule"]["enum"] == [n for n, r in REGISTRY.items() if r.kind != "floor"] == ["place_top",
-                                                                                              "place_on_wall"]
+    assert rules(fur["members"]["items"]) == list(RULES)
+    assert rules(fur["anchor"]) == [n for n in RULES if n not in RELATIVE_RULES]
+    orn = schemas.json_schema("ornaments")["properties"]["ornaments"]["items"]
+    assert rules(orn) == [n for n, r in REGISTRY.items() if r.kind != "floor"] == ["place_top", "place_on_wall"]
 
 
 # ------------------------------------------------------------------ property: any valid params lay out validly

@@ -5,13 +5,15 @@ import json
 from pathlib import Path
 
 import numpy as np
+import pytest
 
+from anyhome.layout.rules import REGISTRY
 from anyhome.plan.knowledge import knowledge_base
 from anyhome.plan.llm import LLMPlanner
 from anyhome.plan.llm.cache import ReplyCache
 from anyhome.plan.llm.client import LLMClient
 from anyhome.plan.llm.config import LLMConfig
-from anyhome.plan.llm.planner import replace_groups, replace_ornaments
+from anyhome.plan.llm.planner import STAGE_MAX_TOKENS, replace_groups, replace_ornaments
 from anyhome.plan.llm.prompts import examples, messages
 from anyhome.plan.llm.schemas import FurnitureReply, OrnamentsReply, ProgramReply, json_schema
 from anyhome.plan.offline import fallback_room, offline_look
@@ -38,6 +40,31 @@ def test_llama_cpp_server_takes_json_object_with_schema(llama_server, tmp_path: 
     assert hit.cached and hit.content == reply.content and again.usage.calls == 0
 
 
+@pytest.mark.parametrize("stage", ["ornaments", "furniture"])
+def test_llama_cpp_server_holds_items_to_their_rules_params(stage: str, llama_server, tmp_path: Path) -> None:
+    """The item schemas (one variant per rule, each with that rule's params model) go
+    through the real server's grammar converter, and the reply it samples has, for every
+    item, exactly its rule's parameters."""
+    client = LLMClient(_config(tmp_path, llama_server.base_url, max_tokens=STAGE_MAX_TOKENS[stage]))
+    furniture = ["sofa", "coffee table"]
+    values = dict(text=CAT, building="cafe", name="cat lounge", type="cafe", area_m2="30", max_groups=2,
+                  furniture=", ".join(furniture), max_ornaments=3)  # fmt: skip
+    schema = json_schema(stage, targets=furniture)
+    reply = client.chat_json(messages(stage, **values), schema, stage, seed=2)
+    assert client.mode == "json_object_schema"  # the server took the schema (no fallback to plain JSON)
+    data = json.loads(reply.content)
+    model = OrnamentsReply if stage == "ornaments" else FurnitureReply
+    parsed = model.model_validate(data)
+    if stage == "ornaments":
+        items = data["ornaments"]
+    else:
+        items = [it for g in data["groups"] for it in [g["anchor"], *g["members"]]]
+    assert items, "the model listed no item"
+    for it in items:
+        assert set(it["params"]) == set(REGISTRY[it["rule"]].params.model_fields), it
+    assert parsed is not None
+
+
 def test_invalid_reply_gets_one_repair_then_the_offline_stage(llama_server, tmp_path: Path) -> None:
     planner = LLMPlanner(_config(tmp_path, llama_server.base_url, max_tokens=16))  # replies cut off
     planner.client = LLMClient(planner.config)
@@ -45,7 +72,7 @@ def test_invalid_reply_gets_one_repair_then_the_offline_stage(llama_server, tmp_
     msgs = messages("program", text=CAT, max_rooms=12, types="cafe, kitchen, bathroom")
     from anyhome.plan.llm import checks
 
-    obj, rec = planner._ask("program", "program", msgs, ProgramReply, checks.check_program, 3, warnings)
+    obj, rec = planner._ask("program", "program", msgs, ProgramReply, lambda r: checks.check_program(r, planner.kb), 3, warnings)
     assert obj is None and rec.source == "offline" and rec.requests == 2
     assert rec.errors and ("cut off" in rec.errors[0] or "JSON" in rec.errors[0])
     assert warnings and "still invalid after one repair" in warnings[0]

@@ -37,9 +37,10 @@ Extent = tuple[float, float, float, float]
 
 
 class RuleParams(BaseModel):
-    """Parameters of a rule: unknown keys are refused, defaults are stated once, here."""
+    """Parameters of a rule: unknown keys are refused, defaults are stated once, here; a
+    field's docstring is its description (in the LLM planner's schemas and prompts)."""
 
-    model_config = ConfigDict(extra="forbid", frozen=True)
+    model_config = ConfigDict(extra="forbid", frozen=True, use_attribute_docstrings=True)
 
 
 class NoParams(RuleParams):

@@ -1,14 +1,19 @@
 """The plan's own sanity rules, applied to a reply that already matches its schema.
 
 Each check returns a list of errors, one short line each, quoted back to the model in
-the repair request; an empty list means the reply is usable.
+the repair request; an empty list means the reply is usable. The knowledge they read is
+the one passed in (the planner's), never a module-level load.
+
+A parameter value wrong for its rule (``"facing": "up"``) is refused earlier, by the
+reply's model (:mod:`.schemas`: each rule's ``params`` is that rule's parameters model),
+and gets the same repair request.
 """
 
 from __future__ import annotations
 
 from collections import deque
 
-from anyhome.plan.knowledge import load
+from anyhome.plan.kb import KnowledgeBase
 from anyhome.plan.llm.schemas import FurnitureReply, ItemReply, OrnamentsReply, ProgramReply
 from anyhome.plan.spec import MAX_COUNT, RELATIVE_RULES
 
@@ -25,20 +30,20 @@ MAX_OBJECTS_PER_M2 = 3.0
 """Most floor objects (copies included) per m2 of room: more is a looping model."""
 
 
-def type_area_m2(room_type: str) -> tuple[float, float]:
-    types = load("rooms")["types"]
-    lo, hi = (types.get(room_type) or types["other"])["area"]
+def type_area_m2(kb: KnowledgeBase, room_type: str) -> tuple[float, float]:
+    types = kb.rooms.types
+    lo, hi = (types.get(room_type) or types["other"]).area
     return max(ROOM_AREA_M2[0], lo * AREA_SLACK[0]), min(ROOM_AREA_M2[1], hi * AREA_SLACK[1])
 
 
-def check_program(reply: ProgramReply) -> list[str]:
+def check_program(reply: ProgramReply, kb: KnowledgeBase) -> list[str]:
     errors: list[str] = []
     ids = [r.id for r in reply.rooms]
     dupes = sorted({i for i in ids if ids.count(i) > 1})
     if dupes:
         errors.append(f"room ids must be unique; repeated: {', '.join(dupes)}")
     for i, r in enumerate(reply.rooms):
-        lo, hi = type_area_m2(r.type)
+        lo, hi = type_area_m2(kb, r.type)
         if not lo <= r.area_m2 <= hi:
             errors.append(f"rooms[{i}] ({r.id}): area_m2 {r.area_m2:g} is implausible for a {r.type}; use {lo:g} to {hi:g}")
     known = set(ids)

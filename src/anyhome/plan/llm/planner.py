@@ -48,6 +48,7 @@ from anyhome.plan.llm.schemas import (
     MAX_PALETTE,
     AppearanceReply,
     FurnitureReply,
+    ItemReply,
     OrnamentsReply,
     ProgramReply,
     json_schema,
@@ -155,7 +156,8 @@ class LLMPlanner:
         laid out ([] when they can); the program reply is checked with it too. None skips
         that check: whoever builds the planner passes the floorplan stage's check (see
         ``anyhome.plan.get_planner`` and ``anyhome.floorplan.floorplan_errors``). ``kb``:
-        the knowledge base the offline fallbacks read (None: the one in force)."""
+        the knowledge base the offline fallbacks and the reply checks read (None: the one in
+        force)."""
         self.config = config
         self.kb = resolve(kb)
         self.floorplan_check = floorplan_check
@@ -201,7 +203,7 @@ class LLMPlanner:
 
     def _program_check(self, reply: ProgramReply) -> list[str]:
         """The sanity rules, then whether the floorplan stage can lay the rooms out."""
-        errors = checks.check_program(reply)
+        errors = checks.check_program(reply, self.kb)
         if errors or self.floorplan_check is None:
             return errors
         rooms = [RoomSpec(id=r.id, name=r.name, type=r.type, area_m2=r.area_m2) for r in reply.rooms]
@@ -372,10 +374,10 @@ def replace_groups(kb: KnowledgeBase, room: RoomSpec, reply: FurnitureReply, loo
     return room.model_copy(update={"groups": groups, "ornaments": ornaments})
 
 
-def _item_data(it: Any, target: str | None) -> dict[str, Any]:
+def _item_data(it: ItemReply, target: str | None) -> dict[str, Any]:
     return {
         "name": it.name.strip(), "category": _slug(it.category), "size_m": tuple(round(float(s), 3) for s in it.size_m),
-        "rule": it.rule, "target": target, "count": it.count,
+        "rule": it.rule, "target": target, "count": it.count, "params": it.given_params(),
     }  # fmt: skip
 
 

@@ -3,18 +3,26 @@
 The schemas are strict-mode compatible (every property required, no extra properties,
 no ``$ref``: definitions are inlined so every server's grammar converter reads them) and
 every array is bounded (``maxItems``), so a small model cannot loop.
+
+An item (anchor, member, ornament) is one variant per placement rule it may use: the
+variant's ``rule`` is that rule's name and its ``params`` that rule's parameters model
+(:mod:`anyhome.layout.rules`), so what a reply may set is derived from the models the
+layout reads (a pydantic union discriminated on ``rule``; ``anyOf`` in the schema). A
+reply without ``params`` (an older cache, a server that ignores schemas) validates: the
+reply models default them, though the schema lists them as required.
 """
 
 from __future__ import annotations
 
 import copy
+from collections.abc import Iterable
 from functools import lru_cache
-from typing import TYPE_CHECKING, Annotated, Any, Literal
+from typing import TYPE_CHECKING, Annotated, Any, Literal, Union
 
-from pydantic import BaseModel, BeforeValidator, ConfigDict, Field
+from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, create_model
 
 from anyhome.house import ROOM_TYPES
-from anyhome.layout.rules import REGISTRY
+from anyhome.layout.rules import REGISTRY, RuleParams
 from anyhome.plan.spec import MAX_COUNT, MAX_ROOMS, RULES
 from anyhome.sanitize import clean_text
 
@@ -28,17 +36,18 @@ MAX_ITEM_COUNT = 40
 NAME_CHARS = 60
 WORDS_CHARS = 80
 
+ANCHOR_RULES: tuple[str, ...] = tuple(n for n, r in REGISTRY.items() if not r.relative)
+"""Rules an anchor may use: the absolute ones."""
+MEMBER_RULES: tuple[str, ...] = RULES
+ORNAMENT_RULES: tuple[str, ...] = tuple(n for n, r in REGISTRY.items() if r.kind != "floor")
+"""Rules an ornament may use: on a top or on a wall."""
+
 if TYPE_CHECKING:  # Literals built from the knowledge and the rule registry at run time; a checker sees str
     RoomType = str
     RuleName = str
-    AnchorRule = str
-    OrnamentRule = str
 else:
     RoomType = Literal[tuple(ROOM_TYPES)]
     RuleName = Literal[RULES]
-    # an anchor is placed by an absolute rule; an ornament on a top or a wall
-    AnchorRule = Literal[tuple(n for n, r in REGISTRY.items() if not r.relative)]
-    OrnamentRule = Literal[tuple(n for n, r in REGISTRY.items() if r.kind != "floor")]
 ArrangementName = Literal["free", "rows", "along_walls", "center", "symmetric"]
 
 
@@ -76,22 +85,52 @@ class ProgramReply(_Reply):
 
 
 class ItemReply(_Reply):
+    """What every item variant holds; :func:`item_union` makes one variant per rule."""
+
     name: Name
     category: Name
     size_m: Size3
     rule: RuleName
     target: Annotated[str, Clean, Field(max_length=NAME_CHARS)]
     count: Annotated[int, Field(ge=1, le=MAX_ITEM_COUNT)]
+    params: RuleParams = Field(default_factory=RuleParams)  # the rule's own model in each variant
+
+    def given_params(self) -> dict[str, Any]:
+        """The params as ``ItemSpec.params``: the values that differ from the rule's
+        defaults. A strict schema makes a model write every parameter; a default written
+        out means the same as one left out (so ``place_on_wall`` above a target still
+        clears the target's top unless a height other than the default is asked)."""
+        fields = type(self.params).model_fields
+        return {k: v for k, v in self.params.model_dump().items() if v != fields[k].default}
 
 
-class AnchorReply(ItemReply):
-    rule: AnchorRule  # an anchor is placed by an absolute rule
+def item_union(base: type[ItemReply], rules: Iterable[str]) -> Any:
+    """``base`` as a union discriminated on ``rule``: one variant per rule, whose
+    ``params`` is that rule's parameters model (defaulted: a reply may leave it out)."""
+    def variant(rule: str) -> type[ItemReply]:
+        name: Any = Literal[rule]  # a Literal of a run-time value; a checker cannot see it
+        model = REGISTRY[rule].params
+        return create_model(f"{base.__name__}_{rule}", __base__=base, __doc__=REGISTRY[rule].doc,
+                            rule=(name, ...), params=(model, Field(default_factory=model)))  # fmt: skip
+
+    variants = tuple(variant(rule) for rule in rules)
+    return Annotated[Union[variants], Field(discriminator="rule")]  # noqa: UP007
+
+
+if TYPE_CHECKING:  # one variant per rule at run time; a checker sees the base
+    AnchorReply = ItemReply
+    MemberReply = ItemReply
+    OrnamentReply = ItemReply
+else:
+    AnchorReply = item_union(ItemReply, ANCHOR_RULES)  # an anchor is placed by an absolute rule
+    MemberReply = item_union(ItemReply, MEMBER_RULES)
+    OrnamentReply = item_union(ItemReply, ORNAMENT_RULES)  # on top of furniture or on a wall
 
 
 class GroupReply(_Reply):
     name: Name
     anchor: AnchorReply
-    members: Annotated[list[ItemReply], Field(max_length=MAX_MEMBERS)]
+    members: Annotated[list[MemberReply], Field(max_length=MAX_MEMBERS)]
     arrangement: ArrangementName
     repeat: Annotated[int, Field(ge=1, le=MAX_COUNT)]
 
@@ -100,10 +139,6 @@ class FurnitureReply(_Reply):
     """Stage 2, per room: furniture groups (anchor, members, rules, sizes in meters)."""
 
     groups: Annotated[list[GroupReply], Field(min_length=1, max_length=MAX_GROUPS)]
-
-
-class OrnamentReply(ItemReply):
-    rule: OrnamentRule  # on top of furniture or on a wall
 
 
 class OrnamentsReply(_Reply):
@@ -147,9 +182,15 @@ def _inline(node: Any, defs: dict[str, Any]) -> Any:
 
 
 def _strict(node: Any) -> Any:
-    """Every object closed and every property required, as strict structured output wants."""
+    """Every object closed and every property required, as strict structured output wants;
+    a union is ``anyOf`` (no ``oneOf``, no ``discriminator``) and a constant a one-value
+    ``enum``, which every grammar converter and strict mode read."""
     if isinstance(node, dict):
-        node = {k: _strict(v) for k, v in node.items()}
+        node = {k: _strict(v) for k, v in node.items() if k != "discriminator"}
+        if "oneOf" in node:
+            node["anyOf"] = node.pop("oneOf")
+        if "const" in node:
+            node["enum"] = [node.pop("const")]
         if node.get("type") == "object" and "properties" in node:
             node["additionalProperties"] = False
             node["required"] = list(node["properties"])
@@ -192,5 +233,17 @@ def json_schema(stage: str, room_ids: list[str] | None = None, targets: list[str
     if stage == "appearance" and room_ids:
         schema["properties"]["rooms"]["items"]["properties"]["id"] = {"type": "string", "enum": list(room_ids)}
     if stage == "ornaments" and targets is not None:
-        schema["properties"]["ornaments"]["items"]["properties"]["target"] = {"type": "string", "enum": ["", *targets]}
+        for variant in item_variants(schema["properties"]["ornaments"]["items"]):
+            variant["properties"]["target"] = {"type": "string", "enum": ["", *targets]}
     return schema
+
+
+def item_variants(node: dict[str, Any]) -> list[dict[str, Any]]:
+    """The per-rule object schemas of an item's schema (its ``anyOf``; itself if one)."""
+    return list(node.get("anyOf", [node]))
+
+
+def variant_rule(variant: dict[str, Any]) -> str:
+    """The rule an item variant's schema is for."""
+    (rule,) = variant["properties"]["rule"]["enum"]
+    return str(rule)
