@@ -54,7 +54,7 @@ from anyhome.plan.llm.schemas import (
     json_schema,
 )
 from anyhome.plan.offline import OfflinePlanner, fallback_room, item_spec, offline_look
-from anyhome.plan.spec import MAX_ROOMS, RELATIVE_RULES, GroupSpec, HouseSpec, RoomSpec
+from anyhome.plan.spec import MAX_ROOMS, RELATIVE_RULES, GroupSpec, HouseSpec, RoomSpec, kb_context
 from anyhome.sanitize import clean_text
 
 log = logging.getLogger(__name__)
@@ -207,7 +207,7 @@ class LLMPlanner:
         if errors or self.floorplan_check is None:
             return errors
         rooms = [RoomSpec(id=r.id, name=r.name, type=r.type, area_m2=r.area_m2) for r in reply.rooms]
-        spec = HouseSpec(prompt="", rooms=rooms, connections=_connections(reply))
+        spec = HouseSpec.model_validate(dict(prompt="", rooms=rooms, connections=_connections(reply)), context=kb_context(self.kb))
         return [f"these rooms and connections cannot be laid out as a floorplan: {e}"
                 for e in self.floorplan_check(spec)]
 
@@ -279,13 +279,13 @@ class LLMPlanner:
                 rooms[r_i] = replace_ornaments(self.kb, rooms[r_i], obj, look, np.random.default_rng([seed, 200 + r_i]))
         if appearance is not None:
             rooms = [_dress(r, appearance) for r in rooms]
-        spec = HouseSpec(
+        spec = HouseSpec.model_validate(dict(
             prompt=text, building=building or offline.building,
             style=appearance.style if appearance is not None else offline.style,
             styles=(style_keys(appearance.style, kb=self.kb) or offline.styles) if appearance is not None else offline.styles,
             palette=list(appearance.palette) if appearance is not None else offline.palette,
             rooms=rooms, connections=connections, warnings=warnings,
-        )  # fmt: skip
+        ), context=kb_context(self.kb))  # fmt: skip
         return self._finish(spec, spec.warnings, records, model_name)
 
     def _run_all(self, jobs: list[tuple], seed: int, warnings: list[str]) -> list[tuple[Any, StageRecord]]:
