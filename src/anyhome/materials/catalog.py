@@ -175,9 +175,15 @@ def clauses(words: str, kb: KnowledgeBase | None = None) -> list[str]:
 
 
 def material_clauses(words: str, kb: KnowledgeBase | None = None) -> list[tuple[dict[str, Any], list[str]]]:
-    """(entry, words) for each clause of ``words`` that names a material in ``kb``, in order."""
+    """(entry, words) for each clause of ``words`` that names a material in ``kb``, in order
+    (the entries are the lexicon's own: read them, do not change them)."""
+    return [(entry, list(ws)) for entry, ws in _material_clauses(words, _kb(kb))]
+
+
+@lru_cache(maxsize=4096)
+def _material_clauses(words: str, kb: KnowledgeBase) -> tuple[tuple[dict[str, Any], tuple[str, ...]], ...]:
     t = _tables(kb)
-    return [m for c in clauses(words, kb) if (m := _match(c, t)) is not None]
+    return tuple((m[0], tuple(m[1])) for c in clauses(words, kb) if (m := _match(c, t)) is not None)
 
 
 def _kind_defaults(kind: str, variant: str, kb: KnowledgeBase | None) -> dict[str, Any]:
@@ -250,8 +256,13 @@ def surface_material(words: str, surface: str, size_px: int | None = None,
     """
     if surface not in SURFACES:
         raise ValueError(f"surface must be one of {', '.join(SURFACES)}, got {surface!r}")
-    words = words or ""
-    kb = _kb(kb)
+    return _surface_material(words or "", surface, texture_size_px(size_px), color, _kb(kb))
+
+
+@lru_cache(maxsize=4096)
+def _surface_material(words: str, surface: str, size_px: int, color: str | None, kb: KnowledgeBase) -> MaterialSpec:
+    """:func:`surface_material` once per phrase, surface, size, colour and knowledge base
+    (an export asks for the same few phrases hundreds of times; the spec is frozen)."""
     found = material_clauses(words, kb)
     if found:
         entry, clause_words = found[0]
