@@ -13,7 +13,7 @@ from typing import Any
 
 import numpy as np
 
-from anyhome.layout.rules import REGISTRY, place_around
+from anyhome.layout.rules import params_for, place_around
 from anyhome.plan.kb import KnowledgeBase
 from anyhome.plan.openvocab import fallback_object
 from anyhome.plan.parse import Mention
@@ -65,7 +65,7 @@ def make_item(kb: KnowledgeBase, entry: dict[str, Any], rng: np.random.Generator
     if ornament and rule not in ORNAMENT_RULES:
         rule = "place_top"
     # the prototype's params for its own rule, kept where the item's rule takes them too
-    params = _params_for(rule, {**proto.get("params", {}), **entry.get("params", {})})
+    params = params_for(rule, {**proto.get("params", {}), **entry.get("params", {})})
     target = entry.get("target", proto.get("target") if ornament else None)
     return {
         "name": name,
@@ -103,17 +103,11 @@ def _merge(base: dict[str, Any], over: dict[str, Any]) -> dict[str, Any]:
     return out
 
 
-def _params_for(rule: Any, params: dict[str, Any]) -> dict[str, Any]:
-    """The ``params`` a rule takes (those written for another rule are left behind)."""
-    taken = REGISTRY[rule].params.model_fields if rule in REGISTRY else {}
-    return {k: v for k, v in params.items() if k in taken}
-
-
 def _override(item: dict[str, Any], over: dict[str, Any]) -> dict[str, Any]:
     """A template's item with a set's overrides; a new rule keeps only the params it takes."""
     out = {**item, **over}
     if "rule" in over and "params" not in over and "params" in item:
-        out["params"] = _params_for(over["rule"], item["params"])
+        out["params"] = params_for(over["rule"], item["params"])
     return out
 
 
@@ -401,7 +395,7 @@ def _arrange(m: Mention, g: Group, item: Item) -> None:
 def _set_rule(item: dict[str, Any], rule: str) -> None:
     """Give ``item`` another rule, keeping only the params that rule takes."""
     item["rule"] = rule
-    item["params"] = _params_for(rule, item.get("params", {}))
+    item["params"] = params_for(rule, item.get("params", {}))
 
 
 WALL_MOUNT_FROM = 3

@@ -445,17 +445,11 @@ def _fail(source: Source, name: str, loc: tuple[Any, ...], msg: str) -> Knowledg
 
 def _params_problem(rule: str, params: dict[str, Any]) -> str | None:
     """What is wrong with ``params`` for ``rule`` (its model in anyhome.layout.rules), or None."""
-    from anyhome.layout.rules import REGISTRY
+    from anyhome.layout.rules import params_problem
 
-    try:
-        REGISTRY[rule].parse(params)
-    except ValidationError as e:
-        err = e.errors()[0]
-        where = ".".join(str(x) for x in err["loc"])
-        what = "unknown parameter" if err["type"] == "extra_forbidden" else err["msg"]
-        known = ", ".join(REGISTRY[rule].params.model_fields) or "none"
-        return f"{where}: {what} for {rule} (its parameters: {known})"
-    return None
+    if (bad := params_problem(rule, params)) is None:
+        return None
+    return f"{bad.where}: {bad.what} for {rule} (its parameters: {bad.known})"
 
 
 def validate_file(name: str, data: Any, source: Source) -> BaseModel:

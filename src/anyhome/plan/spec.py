@@ -37,14 +37,13 @@ from pydantic import (
     BeforeValidator,
     ConfigDict,
     Field,
-    ValidationError,
     ValidationInfo,
     field_validator,
     model_validator,
 )
 
-from anyhome.layout.rules import REGISTRY, RULES
 from anyhome.layout.rules import RELATIVE_RULES as RELATIVE_RULES  # re-exported
+from anyhome.layout.rules import RULES, params_problem
 from anyhome.layout.rules import WALL_RULES as WALL_RULES  # re-exported
 from anyhome.sanitize import clean_text, is_safe_id
 from anyhome.tags import Tag, tags_for
@@ -163,14 +162,8 @@ class ItemSpec(_Model):
     @model_validator(mode="after")
     def _check_params(self) -> ItemSpec:
         """``params`` as the rule's parameters model takes them (anyhome.layout.rules)."""
-        try:
-            REGISTRY[self.rule].parse(self.params)
-        except ValidationError as e:
-            err = e.errors()[0]
-            where = ".".join(str(x) for x in err["loc"])
-            what = "unknown parameter" if err["type"] == "extra_forbidden" else err["msg"]
-            known = ", ".join(REGISTRY[self.rule].params.model_fields) or "none"
-            raise ValueError(f"{self.rule} params: {where}: {what} (parameters: {known})") from None
+        if (bad := params_problem(self.rule, self.params)) is not None:
+            raise ValueError(f"{self.rule} params: {bad.where}: {bad.what} (parameters: {bad.known})")
         return self
 
     @field_validator("size_m")

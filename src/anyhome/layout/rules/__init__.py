@@ -10,7 +10,10 @@ and the LLM planner's JSON schemas.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import Any
+
+from pydantic import ValidationError
 
 from anyhome.layout.rules import (
     place_around,
@@ -61,9 +64,32 @@ WALL_RULES: frozenset[str] = frozenset(n for n, r in REGISTRY.items() if r.again
 """Rules that put an object against (or on) a wall."""
 
 
-def validate_params(rule: str, params: dict[str, Any]) -> RuleParams:
-    """``params`` checked against ``rule``'s model; a pydantic ValidationError if wrong."""
-    return REGISTRY[rule].parse(params)
+@dataclass(frozen=True)
+class ParamsProblem:
+    """What is wrong with an item's ``params`` for its rule: the first bad entry
+    (``where``), what is wrong with it, and the parameters the rule takes."""
+
+    where: str
+    what: str
+    known: str
+
+
+def params_problem(rule: str, params: dict[str, Any]) -> ParamsProblem | None:
+    """``params`` checked against ``rule``'s model (the plan's ``ItemSpec`` and the
+    knowledge files both report through this); None when they are right."""
+    try:
+        REGISTRY[rule].parse(params)
+    except ValidationError as e:
+        err = e.errors()[0]
+        what = "unknown parameter" if err["type"] == "extra_forbidden" else err["msg"]
+        known = ", ".join(REGISTRY[rule].params.model_fields) or "none"
+        return ParamsProblem(".".join(str(x) for x in err["loc"]), what, known)
+    return None
+
+
+def params_for(rule: str, params: dict[str, Any]) -> dict[str, Any]:
+    """The entries of ``params`` that ``rule`` takes ({} for a rule not in the registry)."""
+    return REGISTRY[rule].taken(params) if rule in REGISTRY else {}
 
 
 __all__ = [
@@ -79,7 +105,9 @@ __all__ = [
     "RuleParams",
     "front_dir",
     "right_dir",
-    "validate_params",
+    "ParamsProblem",
+    "params_for",
+    "params_problem",
     "wrap",
     "yaw_facing",
 ]

@@ -152,9 +152,11 @@ class PlacementRule:
 
         With ``lenient``, keys this rule does not take are left out (an item placed by
         another rule than its own, as an arrangement does)."""
-        if lenient:
-            raw = {k: v for k, v in raw.items() if k in self.params.model_fields}
-        return self.params.model_validate(raw)
+        return self.params.model_validate(self.taken(raw) if lenient else raw)
+
+    def taken(self, raw: dict[str, Any]) -> dict[str, Any]:
+        """The entries of ``raw`` this rule takes (those written for another rule left out)."""
+        return {k: v for k, v in raw.items() if k in self.params.model_fields}
 
 
 # ------------------------------------------------------------------ geometry helpers
