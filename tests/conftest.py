@@ -18,6 +18,18 @@ if os.environ.get("CI"):
 from llama_server import closed_port_url, llama_server, own_server, silent_server  # noqa: E402, F401
 
 
+@pytest.fixture
+def no_knowledge_overlay(monkeypatch):
+    """The test starts and ends with the shipped knowledge only: no $ANYHOME_KNOWLEDGE_PATH,
+    no ``--knowledge`` folders left in force by another test."""
+    from anyhome.plan.knowledge import ENV_VAR, use_knowledge
+
+    monkeypatch.delenv(ENV_VAR, raising=False)
+    use_knowledge(None)
+    yield
+    use_knowledge(None)
+
+
 @pytest.fixture(scope="session")
 def gl_available() -> None:
     """Skip when moderngl or a headless EGL context is missing, except under CI (``CI``

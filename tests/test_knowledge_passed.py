@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 
 import anyhome
-from anyhome.plan.knowledge import ENV_VAR, knowledge_base, overlay, use_knowledge
+from anyhome.plan.knowledge import ENV_VAR, knowledge_base, overlay
 
 TREEHOUSE = {
     "objects.yaml": "hammock stand: {category: hammock, size: [1.0, 3.2, 1.2], rule: place_center, "
@@ -35,12 +35,7 @@ def _folder(root: Path) -> Path:
     return root
 
 
-@pytest.fixture(autouse=True)
-def _no_overlay(monkeypatch):
-    monkeypatch.delenv(ENV_VAR, raising=False)
-    use_knowledge(None)
-    yield
-    use_knowledge(None)
+pytestmark = pytest.mark.usefixtures("no_knowledge_overlay")  # tests/conftest.py
 
 
 def _classes(house: anyhome.House) -> set[str]:

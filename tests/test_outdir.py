@@ -8,6 +8,7 @@ import os
 import stat
 import subprocess
 import sys
+from pathlib import Path
 
 import pytest
 from hypothesis import given, settings
@@ -177,16 +178,55 @@ def test_a_symlinked_out_is_followed_and_stays_a_link(tmp_path):
     assert sorted(os.listdir(tmp_path)) == ["link", "target"]
 
 
-@pytest.mark.skipif(os.geteuid() == 0, reason="root writes into read-only folders")
-def test_read_only_parent_as_a_user(tmp_path):
-    ro = tmp_path / "ro"
-    ro.mkdir()
-    ro.chmod(0o555)
+NOBODY = 65534
+"""The unprivileged user (and group) a root test run checks permissions as."""
+
+
+def _as_unprivileged(check) -> str:
+    """``check()``'s ExportError message, run as this user or, under root (who may write
+    anywhere), in a forked child that has dropped to :data:`NOBODY` first."""
+    if os.geteuid() != 0:
+        with pytest.raises(ExportError) as e:
+            check()
+        return str(e.value)
+    read, write = os.pipe()
+    pid = os.fork()
+    if pid == 0:  # the child: drop root, run the check, send back the message
+        os.close(read)
+        try:
+            os.setgid(NOBODY)
+            os.setuid(NOBODY)
+            check()
+            message = "no error"
+        except ExportError as e:
+            message = str(e)
+        except BaseException as e:  # anything else is reported, not raised, in the child
+            message = f"{type(e).__name__}: {e}"
+        os.write(write, message.encode())
+        os._exit(0)
+    os.close(write)
+    with os.fdopen(read, "rb") as f:
+        message = f.read().decode()
+    os.waitpid(pid, 0)
+    return message
+
+
+def test_read_only_parent_as_a_user():
+    """A folder the user may not write into (permission, not a read-only file system: the
+    tmpfs test of tests/e2e covers that) is one line before any work."""
+    import shutil
+    import tempfile
+
+    base = Path(tempfile.mkdtemp(prefix="anyhome-ro-"))  # /tmp: an unprivileged user may enter it
     try:
-        with pytest.raises(ExportError, match="cannot write into"):
-            check_out(ro / "house")
+        base.chmod(0o755)
+        ro = base / "ro"
+        ro.mkdir()
+        ro.chmod(0o555)
+        message = _as_unprivileged(lambda: check_out(ro / "house"))
+        assert "cannot write into" in message and "permission denied" in message, message
     finally:
-        ro.chmod(0o755)
+        shutil.rmtree(base)
 
 
 # ----------------------------------------------------------------- the swap

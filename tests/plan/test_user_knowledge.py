@@ -43,13 +43,7 @@ def _cli(*args: str, env: dict[str, str] | None = None) -> subprocess.CompletedP
                           timeout=60, env={**e, **(env or {})})
 
 
-@pytest.fixture(autouse=True)
-def _no_overlay(monkeypatch):
-    """Every test starts and ends with the shipped knowledge only."""
-    monkeypatch.delenv(ENV_VAR, raising=False)
-    use_knowledge(None)
-    yield
-    use_knowledge(None)
+pytestmark = pytest.mark.usefixtures("no_knowledge_overlay")  # tests/conftest.py
 
 
 # ------------------------------------------------------------------ through the CLI
