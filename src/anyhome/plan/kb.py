@@ -127,6 +127,8 @@ class RoomType(_Model):
     max: Annotated[int, Field(ge=1)]
     wet: bool = False
     materials: SurfaceMaterials
+    min_width_m: Annotated[float, Field(gt=0, le=20, description="narrowest clear width (docs/space_standards.md)")]
+    circulation: bool = Field(default=False, description="a room for passing through (entry, hallway)")
 
     _r = field_validator("area")(classmethod(lambda cls, v: _ordered(v)))
 
