@@ -24,12 +24,15 @@ from anyhome.plan.llm import LLMConfig, LLMPlanner
 from anyhome.plan.llm.prompts import fill
 from anyhome.plan.llm.schemas import (
     ANCHOR_RULES,
+    MAX_GROUPS,
     ORNAMENT_RULES,
     STAGES,
     FurnitureReply,
     OrnamentsReply,
     item_variants,
     json_schema,
+    max_groups,
+    max_ornaments,
     params_schema,
     variant_rule,
 )
@@ -251,3 +254,34 @@ def test_the_furniture_prompt_fills_from_the_registry() -> None:
     assert ", ".join(ANCHOR_RULES) in text
     text = fill("ornaments", text=CAT, building="cafe", name="lounge", type="cafe", furniture="sofa", max_ornaments=5)
     assert "- place_on_wall" in text and "- place_wall" not in text and '"elevation_m"' in text
+
+
+def test_a_rooms_request_asks_for_as_many_groups_and_ornaments_as_its_size_holds(fake_llm, tmp_path: Path) -> None:  # noqa: F811
+    """The schema sent for each room caps its groups and ornaments by its area (a small
+    model fills whatever the schema allows: a 4 m2 washroom got 15 floor objects), and the
+    prompt says the same number."""
+    spec = _planner(fake_llm, tmp_path).plan(CAT, np.random.default_rng(0))
+    areas = {r.name: r.area_m2 for r in spec.rooms}
+    for stage, key, cap in (("furniture", "groups", max_groups), ("ornaments", "ornaments", max_ornaments)):
+        requests = [r for r in fake_llm.chat_requests(stage) if len(r["messages"]) == 2]
+        assert len(requests) == len(spec.rooms)
+        seen = []
+        for r in requests:
+            schema = r["response_format"]["json_schema"]["schema"]
+            name = next(n for n in areas if f"Room: {n}, a " in r["messages"][1]["content"])
+            assert schema["properties"][key]["maxItems"] == cap(areas[name]), (stage, name)
+            assert f"at most {cap(areas[name])}" in r["messages"][1]["content"].lower()
+            seen.append(cap(areas[name]))
+        assert len(set(seen)) > 1  # the cat cafe's rooms differ in size: so do their caps
+    assert max_groups(4.0) == 1 and max_groups(12.0) == 3 and max_groups(200.0) == MAX_GROUPS
+
+
+def test_every_rooms_prompt_starts_with_the_same_text_so_a_server_reuses_it() -> None:
+    """llama.cpp reuses the evaluated prefix its previous request shares; the rules guide and
+    the example come first, the room last (measured: furniture prompts of 1,150 tokens re-read
+    from the 1,200-token shared prefix instead of evaluated again)."""
+    for stage, extra in (("furniture", dict(area_m2="30", max_groups=5)), ("ornaments", dict(furniture="sofa", max_ornaments=5))):
+        a = fill(stage, text=CAT, building="cafe", name="lounge", type="cafe", **extra)
+        b = fill(stage, text="a riad", building="home", name="salon", type="living room", **extra)
+        i = next(i for i, (x, y) in enumerate(zip(a, b)) if x != y)
+        assert i > 0.8 * len(a), (stage, i, len(a))

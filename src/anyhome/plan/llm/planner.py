@@ -43,8 +43,6 @@ from anyhome.plan.llm.cache import ReplyCache
 from anyhome.plan.llm.client import LLMClient, Unavailable, parse_json
 from anyhome.plan.llm.config import LLMConfig
 from anyhome.plan.llm.schemas import (
-    MAX_GROUPS,
-    MAX_ORNAMENTS,
     MAX_PALETTE,
     AppearanceReply,
     FurnitureReply,
@@ -52,6 +50,8 @@ from anyhome.plan.llm.schemas import (
     OrnamentsReply,
     ProgramReply,
     json_schema,
+    max_groups,
+    max_ornaments,
 )
 from anyhome.plan.offline import OfflinePlanner, fallback_room, item_spec, offline_look
 from anyhome.plan.spec import MAX_ROOMS, RELATIVE_RULES, GroupSpec, HouseSpec, RoomSpec, kb_context
@@ -249,8 +249,9 @@ class LLMPlanner:
         jobs: list[tuple] = []
         for r in rooms:
             m = prompts.messages("furniture", text=text, building=building, name=r.name, type=r.type.replace("_", " "),
-                                 area_m2=f"{r.area_m2:g}", max_groups=MAX_GROUPS)  # fmt: skip
-            jobs.append((f"furniture:{r.id}", "furniture", m, FurnitureReply, _area_check(r.area_m2), json_schema("furniture")))
+                                 area_m2=f"{r.area_m2:g}", max_groups=max_groups(r.area_m2))  # fmt: skip
+            jobs.append((f"furniture:{r.id}", "furniture", m, FurnitureReply, _area_check(r.area_m2),
+                         json_schema("furniture", max_items=max_groups(r.area_m2))))
         ids = {r.id for r in rooms}
         m = prompts.messages("appearance", text=text, building=building, rooms=room_list, max_palette=MAX_PALETTE)
         jobs.append(("appearance", "appearance", m, AppearanceReply, lambda a: checks.check_appearance(ids, [x.id for x in a.rooms]),
@@ -270,9 +271,9 @@ class LLMPlanner:
             names = _furniture_names(r.groups)
             pieces = sorted({it.name for g in r.groups for it in [g.anchor, *g.members]})
             m = prompts.messages("ornaments", text=text, building=building, name=r.name, type=r.type.replace("_", " "),
-                                 furniture=", ".join(pieces) or "none", max_ornaments=MAX_ORNAMENTS)  # fmt: skip
+                                 furniture=", ".join(pieces) or "none", max_ornaments=max_ornaments(r.area_m2))  # fmt: skip
             jobs.append((f"ornaments:{r.id}", "ornaments", m, OrnamentsReply, _ornament_check(names),
-                         json_schema("ornaments", targets=pieces)))
+                         json_schema("ornaments", targets=pieces, max_items=max_ornaments(r.area_m2))))
         for r_i, (obj, rec) in enumerate(self._run_all(jobs, seed, warnings)):
             records.append(rec)
             if obj is not None:

@@ -15,6 +15,7 @@ reply models default them, though the schema lists them as required.
 from __future__ import annotations
 
 import copy
+import math
 from collections.abc import Iterable
 from functools import lru_cache
 from typing import TYPE_CHECKING, Annotated, Any, Literal, Union
@@ -30,6 +31,11 @@ MAX_GROUPS = 5
 """Most furniture groups one room reply may hold."""
 MAX_MEMBERS = 3
 MAX_ORNAMENTS = 8
+M2_PER_GROUP = 5.0
+"""Floor area per furniture group a room's request allows (at least one, at most
+:data:`MAX_GROUPS`): a 4 m2 washroom is asked for one group, a 12 m2 bedroom for three."""
+M2_PER_ORNAMENT = 2.0
+"""Floor area per ornament a room's request allows (2 to :data:`MAX_ORNAMENTS`)."""
 MAX_PALETTE = 6
 MAX_CONNECTIONS = 2 * MAX_ROOMS
 MAX_ITEM_COUNT = 40
@@ -223,13 +229,30 @@ def params_schema(rule: str) -> dict[str, Any]:
     return copy.deepcopy(_params_schema(rule))
 
 
-def json_schema(stage: str, room_ids: list[str] | None = None, targets: list[str] | None = None) -> dict[str, Any]:
+def max_groups(area_m2: float) -> int:
+    """How many furniture groups a room of ``area_m2`` is asked for (:data:`M2_PER_GROUP`)."""
+    return int(min(MAX_GROUPS, max(1, math.ceil(area_m2 / M2_PER_GROUP))))
+
+
+def max_ornaments(area_m2: float) -> int:
+    """How many ornaments a room of ``area_m2`` is asked for (:data:`M2_PER_ORNAMENT`)."""
+    return int(min(MAX_ORNAMENTS, max(2, math.ceil(area_m2 / M2_PER_ORNAMENT))))
+
+
+def json_schema(stage: str, room_ids: list[str] | None = None, targets: list[str] | None = None,
+                max_items: int | None = None) -> dict[str, Any]:  # fmt: skip
     """The self-contained JSON Schema of a stage's reply (a fresh copy).
 
     What the request already knows narrows it, so a server that enforces schemas cannot
-    produce a wrong reference: ``room_ids`` (appearance) the ids a room entry may name,
-    ``targets`` (ornaments) the furniture an ornament may stand on or hang above."""
+    produce a wrong reference or a room crammed beyond its size: ``room_ids`` (appearance)
+    the ids a room entry may name, ``targets`` (ornaments) the furniture an ornament may
+    stand on or hang above, ``max_items`` (furniture, ornaments) the most groups or
+    ornaments the room is asked for (:func:`max_groups`, :func:`max_ornaments`; a small
+    model fills whatever the schema allows, measured: a 4 m2 washroom got 15 floor objects)."""
     schema = copy.deepcopy(_schema(stage))
+    if max_items is not None and stage in ("furniture", "ornaments"):
+        key = "groups" if stage == "furniture" else "ornaments"
+        schema["properties"][key]["maxItems"] = min(schema["properties"][key]["maxItems"], max(1, int(max_items)))
     if stage == "appearance" and room_ids:
         schema["properties"]["rooms"]["items"]["properties"]["id"] = {"type": "string", "enum": list(room_ids)}
     if stage == "ornaments" and targets is not None:
