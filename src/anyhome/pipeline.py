@@ -198,7 +198,7 @@ def _with_stairs(floorplan: Floorplan, objects: list[HouseObject]) -> list[House
     if not stairs:
         return objects
     runs = {s.room: Polygon(footprint_corners(s.position, s.size, s.yaw)) for s in stairs}
-    gone = {o.id for o in objects if o.room in runs and o.support != "wall" and o.support != "ceiling"
+    gone = {o.id for o in objects if o.room in runs and o.support != "ceiling"
             and Polygon(footprint_corners(o.position, o.size, o.yaw)).intersects(runs[o.room])}
     grew = True
     while grew:
@@ -367,7 +367,8 @@ def write_outputs(
     ``progress`` gets the stages ``"write"`` and, with ``extra``, ``"render"``. Returns
     the paths of the written files inside ``out_dir``.
     """
-    from anyhome.export import write_glb, write_svg
+    from anyhome.export import write_glb
+    from anyhome.export.svg import write_level_svgs
     from anyhome.outdir import Staging, write_file
 
     progress = progress or _quiet
@@ -384,7 +385,7 @@ def write_outputs(
             timings["write_glb"] = time.perf_counter() - t0
         if svg:
             t0 = time.perf_counter()
-            written.append(write_svg(house, tmp / "floorplan.svg"))
+            written += write_level_svgs(house, tmp)
             timings["write_svg"] = time.perf_counter() - t0
         progress("write", "done", time.perf_counter() - t_write)
         if extra is not None:

@@ -207,3 +207,34 @@ def stair_link(plan: Floorplan, obj: HouseObject) -> tuple[str, str] | None:
         if r.level == above[0] and Polygon(r.polygon).buffer(1e-6).contains(top):
             return (here.id, r.id)
     return None
+
+
+def level_view(house, level: int):
+    """The storey ``level`` of ``house`` as a house of its own: its rooms, the doors and
+    windows of those rooms, their objects (the checks of one storey run on it)."""
+    ids = {r.id for r in house.rooms if r.level == level}
+    return house.model_copy(update={
+        "rooms": [r for r in house.rooms if r.id in ids],
+        "doors": [d for d in house.doors if all(x in ids or x == "outside" for x in d.rooms)],
+        "windows": [w for w in house.windows if w.room in ids],
+        "objects": [o for o in house.objects if o.room in ids],
+        "connections": [c for c in house.connections if all(x in ids or x == "outside" for x in c)],
+    })
+
+
+def reachable_rooms(house) -> set[str]:
+    """Rooms reachable from the outside through doors and stairs (:func:`stair_link`)."""
+    adj: dict[str, set[str]] = {}
+    links = [tuple(d.rooms) for d in house.doors]
+    links += [lk for o in house.objects if (lk := stair_link(house.floorplan, o)) is not None]
+    for a, b in links:
+        adj.setdefault(a, set()).add(b)
+        adj.setdefault(b, set()).add(a)
+    seen = {"outside"}
+    todo = ["outside"]
+    while todo:
+        for nxt in adj.get(todo.pop(), ()):
+            if nxt not in seen:
+                seen.add(nxt)
+                todo.append(nxt)
+    return seen - {"outside"}
