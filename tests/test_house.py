@@ -46,7 +46,7 @@ def test_required_fields_present(tmp_path):
     for key in ("format", "version", "prompt", "seed", "style", "rooms", "connections",
                 "doors", "windows", "objects"):
         assert key in data
-    assert data["format"] == "anyhome.house" and data["version"] == 1
+    assert data["format"] == "anyhome.house" and data["version"] == 2
     obj = data["objects"][0]
     for key in ("id", "room", "name", "category", "description", "position", "size", "yaw",
                 "support", "group", "anchor", "rule", "material"):
@@ -57,7 +57,7 @@ def test_required_fields_present(tmp_path):
     "mutate, message",
     [
         (lambda d: d.update(format="other.scene"), "not an AnyHome house"),
-        (lambda d: d.update(version=2), "version 2 is not supported"),
+        (lambda d: d.update(version=3), "version 3 is not supported"),
         (lambda d: d["rooms"][0].pop("polygon"), r"house.json: rooms\[0\]\.polygon: Field required"),
     ],
 )

@@ -8,7 +8,7 @@ import pytest
 
 import anyhome
 from anyhome.errors import AnyHomeError, PlanError
-from anyhome.floorplan import solve_floorplan
+from anyhome.floorplan.levels import solve_levels
 from anyhome.layout import LayoutResult, layout_house
 from anyhome.pipeline import STAGES
 from anyhome.plan import HouseSpec, get_planner
@@ -26,7 +26,7 @@ def test_stages_name_today_functions_in_run_order() -> None:
     assert tuple(f.name for f in fields(Stages)) == STAGES
     s = Stages()
     assert (s.plan, s.floorplan, s.layout, s.refine, s.assets) == (
-        plan_text, solve_floorplan, layout_house, refine_objects, assign_assets)
+        plan_text, solve_levels, layout_house, refine_objects, assign_assets)
     with pytest.raises(AttributeError):
         s.layout = layout_house  # frozen
     assert anyhome.Stages is Stages

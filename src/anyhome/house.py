@@ -25,7 +25,9 @@ from anyhome.sanitize import clean_text, is_safe_id
 from anyhome.tags import Tag, tags_for
 
 FORMAT: Final = "anyhome.house"
-VERSION: Final = 1
+VERSION: Final = 2
+"""The version written; version-1 files (one storey, no level fields) are still read."""
+READ_VERSIONS: Final = (1, 2)
 HOUSE_FILE = "house.json"
 JSON_DECIMALS = 4
 """Floats in house.json are rounded to 0.1 mm so output is byte-stable across runs."""
@@ -58,6 +60,8 @@ MAX_HEIGHT_M = 50.0
 """Largest room height, door or window height and window sill."""
 MAX_OBJECT_SIZE_M = MAX_ROOM_SIDE_M
 """Largest object extent along any axis."""
+MIN_LEVEL, MAX_LEVEL = -5, 50
+"""Lowest and highest storey number (0 = ground, -1 = the first basement)."""
 MAX_YAW_RAD = 1_000.0
 """Largest |yaw| (any angle can be written within a few turns)."""
 MAX_ASSET_KNOB = 1_000
@@ -106,6 +110,16 @@ class Room(_Model):
     height: float = 2.7
     style: str = ""
     materials: dict[str, str] = Field(default_factory=dict)
+    level: int = Field(default=0, description="storey: 0 ground, 1 the first floor up, -1 a basement")
+
+
+class Level(_Model):
+    """One storey: its floor's height above the ground floor's and its storey height
+    (floor to the next floor: the tallest room plus the slab)."""
+
+    level: int
+    elevation_m: float
+    height_m: float
 
 
 class Door(_Model):
@@ -170,6 +184,7 @@ class Floorplan(_Model):
     doors: list[Door] = Field(default_factory=list)
     windows: list[Window] = Field(default_factory=list)
     connections: list[tuple[str, str]] = Field(default_factory=list)
+    levels: list[Level] = Field(default_factory=list)
 
     def room(self, room_id: str) -> Room:
         for r in self.rooms:
@@ -182,7 +197,7 @@ class House(_Model):
     """A generated house: the content of house.json."""
 
     format: Literal["anyhome.house"] = FORMAT
-    version: Literal[1] = VERSION
+    version: Literal[2] = VERSION
     prompt: str
     seed: int
     style: str = ""
@@ -192,6 +207,8 @@ class House(_Model):
     doors: list[Door] = Field(default_factory=list)
     windows: list[Window] = Field(default_factory=list)
     objects: list[HouseObject] = Field(default_factory=list)
+    levels: list[Level] = Field(
+        default_factory=list, description="storeys of a house of several; empty: one storey, level 0 at 0 m")
     # --- additions beyond the required core (documented in docs/house_format.md)
     building: str = "home"
     palette: list[str] = Field(default_factory=list)
@@ -233,8 +250,21 @@ class House(_Model):
     @property
     def floorplan(self) -> Floorplan:
         return Floorplan(
-            rooms=self.rooms, doors=self.doors, windows=self.windows, connections=self.connections
+            rooms=self.rooms, doors=self.doors, windows=self.windows, connections=self.connections,
+            levels=self.levels,
         )
+
+    def level_numbers(self) -> list[int]:
+        """The storeys that hold rooms, lowest first."""
+        return sorted({r.level for r in self.rooms})
+
+    def elevation_m(self, level: int) -> float:
+        """Height of a storey's floor above the ground floor's (0 for a one-storey house)."""
+        return next((lv.elevation_m for lv in self.levels if lv.level == level), 0.0)
+
+    def room_level(self, room_id: str) -> int:
+        """The storey of a room (``outside``: 0)."""
+        return next((r.level for r in self.rooms if r.id == room_id), 0)
 
     # ------------------------------------------------------------------ json
     def to_json(self) -> str:
@@ -281,11 +311,15 @@ class House(_Model):
             raise HouseFormatError(f"{source}: JSON nested deeper than {MAX_JSON_DEPTH} levels")
         if not isinstance(data, dict) or data.get("format") != FORMAT:
             raise HouseFormatError(f"{source}: not an AnyHome house (format must be {FORMAT!r})")
-        if data.get("version") != VERSION or isinstance(data.get("version"), bool):
+        if data.get("version") not in READ_VERSIONS or isinstance(data.get("version"), bool):
             raise HouseFormatError(
                 f"{source}: house format version {_short(data.get('version'))} is not supported "
-                f"(this AnyHome reads version {VERSION})"
+                f"(this AnyHome reads versions {', '.join(map(str, READ_VERSIONS))})"
             )
+        if data["version"] == 1:  # one storey: every room on level 0, no levels list
+            if "levels" in data or any(isinstance(r, dict) and "level" in r for r in data.get("rooms") or []):
+                raise HouseFormatError(f"{source}: a version-1 house has no level fields")
+            data = {**data, "version": VERSION}
         try:
             return cls.model_validate(data)
         except ValidationError as e:
@@ -467,6 +501,22 @@ def _problems(h: House) -> Iterator[str]:
             if item.id in seen:
                 yield f"{name}[{i}].id: duplicate id {item.id!r}"
             seen.add(item.id)
+    listed: set[int] = set()
+    for i, lv in enumerate(h.levels):
+        if not MIN_LEVEL <= lv.level <= MAX_LEVEL:
+            yield f"levels[{i}].level: must be from {MIN_LEVEL} to {MAX_LEVEL}"
+        if lv.level in listed:
+            yield f"levels[{i}].level: level {lv.level} is listed twice"
+        listed.add(lv.level)
+        if _bad_number(lv.elevation_m) or abs(lv.elevation_m) > MAX_COORD_M:
+            yield f"levels[{i}].elevation_m: must be a finite number within {MAX_COORD_M:g} m"
+        if err := _check_height(f"levels[{i}].height_m", lv.height_m):
+            yield err
+    for i, r in enumerate(h.rooms):
+        if not MIN_LEVEL <= r.level <= MAX_LEVEL:
+            yield f"rooms[{i}].level: must be from {MIN_LEVEL} to {MAX_LEVEL}"
+        elif r.level != 0 and r.level not in listed:
+            yield f"rooms[{i}].level: level {r.level} is not in levels (its elevation)"
     rooms = {r.id for r in h.rooms}
     objects = {o.id for o in h.objects}
     x0 = y0 = math.inf

@@ -61,6 +61,8 @@ RENDER_FILES = frozenset({
 VIEWS_DIR = "views"
 LEGACY_FILES = frozenset({HOUSE_FILE, "house.glb", "floorplan.svg"}) | RENDER_FILES
 """Top-level names a house folder without a manifest may hold."""
+_LEVEL_SVG_RE = re.compile(r"floorplan-b?[0-9]{1,2}\.svg")
+"""The floorplan of a storey other than the ground floor (anyhome.export.svg.level_svg_name)."""
 _LEGACY_VIEW_RE = re.compile(r"[A-Za-z0-9_.-]+\.(?:png|depth\.npy|ids\.npy)")
 _HOUSE_FORMAT_RE = re.compile(rb'"format"\s*:\s*"anyhome\.house"')
 NAME_MAX = 255
@@ -236,7 +238,7 @@ def _legacy_foreign(folder: Path) -> str | None:
             return _LEGACY_VIEW_RE.fullmatch(rel[len(VIEWS_DIR) + 1:]) is not None
         if rel == HOUSE_FILE:
             return _is_anyhome_house(folder / rel)
-        return rel in LEGACY_FILES
+        return rel in LEGACY_FILES or _LEVEL_SVG_RE.fullmatch(rel) is not None
 
     return _first_foreign(folder, "", ours)
 

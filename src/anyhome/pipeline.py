@@ -21,7 +21,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from anyhome.errors import AnyHomeError, ExportError, PlanError
-from anyhome.house import HOUSE_FILE, House, HouseObject
+from anyhome.house import HOUSE_FILE, Floorplan, House, HouseObject
 from anyhome.sanitize import clean_text, is_safe_id
 
 if TYPE_CHECKING:
@@ -157,7 +157,7 @@ def generate_from_spec(
     with _stage("layout", timings, progress):
         result = stages.layout(spec, floorplan, rngs["layout"])
     with _stage("refine", timings, progress):
-        objects = stages.refine(floorplan, result.objects, rngs["refine"])
+        objects = _with_stairs(floorplan, stages.refine(floorplan, result.objects, rngs["refine"]))
     with _stage("assets", timings, progress):
         objects = stages.assets(objects, rngs["assets"], spec, kb)
     if planner is None:
@@ -176,6 +176,7 @@ def generate_from_spec(
         doors=floorplan.doors,
         windows=floorplan.windows,
         objects=objects,
+        levels=floorplan.levels,
         dropped=result.dropped,
         warnings=spec.warnings,
         plan=spec.model_dump(mode="json", exclude={"provenance"}),
@@ -183,6 +184,28 @@ def generate_from_spec(
     )
     house._timings_s.update(timings)
     return house
+
+
+def _with_stairs(floorplan: Floorplan, objects: list[HouseObject]) -> list[HouseObject]:
+    """The objects plus a flight of stairs between each pair of storeys; what the layout
+    put where a flight runs (and what stands on it) gives way to the stairs."""
+    from shapely.geometry import Polygon
+
+    from anyhome.floorplan.levels import stairs_objects
+    from anyhome.geometry import footprint_corners
+
+    stairs = stairs_objects(floorplan)
+    if not stairs:
+        return objects
+    runs = {s.room: Polygon(footprint_corners(s.position, s.size, s.yaw)) for s in stairs}
+    gone = {o.id for o in objects if o.room in runs and o.support != "ceiling"
+            and Polygon(footprint_corners(o.position, o.size, o.yaw)).intersects(runs[o.room])}
+    grew = True
+    while grew:
+        kept = {o.id for o in objects if o.id not in gone and (o.support in gone or o.anchor in gone)}
+        grew = bool(kept)
+        gone |= kept
+    return [o for o in objects if o.id not in gone] + stairs
 
 
 def _knowledge(knowledge: object) -> KnowledgeBase:
@@ -344,7 +367,8 @@ def write_outputs(
     ``progress`` gets the stages ``"write"`` and, with ``extra``, ``"render"``. Returns
     the paths of the written files inside ``out_dir``.
     """
-    from anyhome.export import write_glb, write_svg
+    from anyhome.export import write_glb
+    from anyhome.export.svg import write_level_svgs
     from anyhome.outdir import Staging, write_file
 
     progress = progress or _quiet
@@ -361,7 +385,7 @@ def write_outputs(
             timings["write_glb"] = time.perf_counter() - t0
         if svg:
             t0 = time.perf_counter()
-            written.append(write_svg(house, tmp / "floorplan.svg"))
+            written += write_level_svgs(house, tmp)
             timings["write_svg"] = time.perf_counter() - t0
         progress("write", "done", time.perf_counter() - t_write)
         if extra is not None:

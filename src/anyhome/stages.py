@@ -24,7 +24,7 @@ import numpy as np
 
 from anyhome.assets import assign_asset
 from anyhome.errors import AnyHomeError
-from anyhome.floorplan import solve_floorplan
+from anyhome.floorplan.levels import solve_levels
 from anyhome.house import Floorplan, HouseObject
 from anyhome.layout import LayoutResult, layout_house
 from anyhome.pipeline import STAGES
@@ -67,7 +67,7 @@ class Stages:
     ``dataclasses.replace(stages, refine=...)``. Field order is the run order."""
 
     plan: PlanStage = plan_text
-    floorplan: FloorplanStage = solve_floorplan
+    floorplan: FloorplanStage = solve_levels
     layout: LayoutStage = layout_house
     refine: RefineStage = refine_objects
     assets: AssetsStage = assign_assets

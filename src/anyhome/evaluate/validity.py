@@ -33,8 +33,46 @@ class ValidityResult:
     metrics: dict[str, float | int]
 
 
+ENTRANCE_CODES = frozenset({"no_entrance", "disconnected_room", "unreachable_room", "unreachable_door"})
+"""Codes about reaching rooms from the entrance: on a storey other than the ground floor
+they are replaced by reachability through doors and stairs over the whole house."""
+
+
 def check_validity(house: House) -> ValidityResult:
-    """Run every validity rule on ``house``; violations sorted by rule, in house order."""
+    """Run every validity rule on ``house``; violations sorted by rule, in house order.
+    A house of several storeys is checked storey by storey (rooms overlap only on the
+    same storey), plus every room reachable from the entrance through doors and stairs."""
+    numbers = house.level_numbers()
+    if len(numbers) <= 1:
+        return _check_one(house)
+    from anyhome.floorplan.levels import level_view, reachable_rooms
+
+    results = {k: _check_one(level_view(house, k)) for k in numbers}
+    violations = [v for k in numbers for v in results[k].violations
+                  if not (k != 0 and v.code in ENTRANCE_CODES) and v.code != "taller_than_room"
+                  or (v.code == "taller_than_room" and not any(i.endswith("-stairs") for i in v.ids))]
+    reached = reachable_rooms(house)
+    violations += [Violation(5, "disconnected_room",
+                             f"room {r.id} cannot be reached from the entrance through doors and stairs", (r.id,))
+                   for r in house.rooms if r.id not in reached and r.level != 0]
+    order = {rule: k for k, rule in enumerate(RULES)}
+    violations.sort(key=lambda v: order.get(v.rule, len(order)))
+    metrics = dict(results[0].metrics)
+    for key in ("n_rooms", "n_objects", "n_doors", "n_windows", "n_oob_objects", "n_colliding_pairs"):
+        metrics[key] = sum(int(results[k].metrics[key]) for k in numbers)
+    metrics["n_violations"] = len(violations)
+    per_rule = Counter(v.rule for v in violations)
+    metrics.update({f"violations_rule_{rule}": per_rule.get(rule, 0) for rule in RULES})
+    planned = list(house.connections)
+    realised = {frozenset(d.rooms) for d in house.doors}
+    metrics["connections_realized"] = sum(frozenset(c) in realised for c in planned) / len(planned) if planned else 1.0
+    metrics["nav_rooms_reachable_fraction"] = len(reached) / len(house.rooms)
+    metrics["n_levels"] = len(numbers)
+    metrics["stairs_reachable"] = len(reached) == len(house.rooms)
+    return ValidityResult(violations, metrics)
+
+
+def _check_one(house: House) -> ValidityResult:
     screened = values.screen(house)
     full, house = house, screened.house
     index = objects.ObjectIndex.build(house)

@@ -227,3 +227,20 @@ def write_svg(house: House, path: str | os.PathLike[str]) -> Path:
     """Write a top-down floorplan SVG atomically; return its path."""
     path = Path(path)
     return write_file(path, render_svg(house).encode("utf-8"))
+
+
+def level_svg_name(level: int) -> str:
+    """``floorplan.svg`` for the ground floor, ``floorplan-1.svg``... above it,
+    ``floorplan-b1.svg``... for basements."""
+    return "floorplan.svg" if level == 0 else f"floorplan-{level}.svg" if level > 0 else f"floorplan-b{-level}.svg"
+
+
+def write_level_svgs(house: House, folder: str | os.PathLike[str]) -> list[Path]:
+    """One floorplan SVG per storey (:func:`level_svg_name`) into ``folder``; a
+    one-storey house: just floorplan.svg, the same as :func:`write_svg`."""
+    from anyhome.floorplan.levels import level_view
+
+    numbers = house.level_numbers()
+    if numbers == [0] or len(numbers) <= 1:
+        return [write_svg(house, Path(folder) / "floorplan.svg")]
+    return [write_svg(level_view(house, k), Path(folder) / level_svg_name(k)) for k in numbers]

@@ -23,7 +23,7 @@ from anyhome.plan.appearance import Look, choose_look, item_material, room_mater
 from anyhome.plan.kb import KnowledgeBase
 from anyhome.plan.kbview import resolve
 from anyhome.plan.parse import Mention, Parsed, parse, plural
-from anyhome.plan.program import Slot, choose_program, connect, plan_rooms, sample_areas
+from anyhome.plan.program import Slot, choose_program, connect_levels, plan_rooms, sample_areas
 from anyhome.plan.spec import GroupSpec, HouseSpec, ItemSpec, RoomSpec, kb_context
 
 log = logging.getLogger(__name__)
@@ -86,7 +86,7 @@ class OfflinePlanner:
             )
         sample_areas(slots, parsed.building_size, rng)
         prog = kb.raw("programs")["programs"].get(program or "", {})
-        connections = connect(kb, slots, prog.get("entrance", []))
+        connections = connect_levels(kb, slots, prog.get("entrance", []))
         building = prog.get("building") or (slots[0].type.replace("_", " ") if program is None else "home")
         rooms = _furnish(kb, parsed, slots, main_key, prog, rng, warnings)
         look = choose_look(kb, parsed, implied, building, rng)
@@ -267,6 +267,7 @@ def _room_spec(kb: KnowledgeBase, s: Slot, groups: list[fu.Group], ornaments: li
         name=s.name,
         type=s.type,
         area_m2=round(float(np.clip(s.area, 0.6, 400.0)), 2),
+        level=s.level,
         style=look.describe,
         materials=materials,
         groups=group_specs,

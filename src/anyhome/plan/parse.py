@@ -200,6 +200,9 @@ class Parsed:
     people: int | None = None
     one_room: bool = False  # "a one-room house"
     total_rooms: int | None = None  # "a hotel with 40 rooms": rooms asked for in all
+    storeys: int = 1  # "a three-storey townhouse", "two floors": storeys above ground, ground included
+    basement: bool = False  # "with a basement", "a cellar gym"
+    attic: bool = False  # "an attic bedroom", "a loft conversion"
     proper_words: frozenset[str] = frozenset()  # words written capitalised mid-sentence, lower-cased
     warnings: list[str] = field(default_factory=list)
 
@@ -595,6 +598,32 @@ def _apply_codes(text: str, p: Parsed, taken: list[tuple[int, int]]) -> None:
             p.people = max(adults, 2 if kids else 1) + kids
 
 
+_STOREYS = re.compile(
+    r"\b(\w+)[- ](?:storey|story|storeyed|storied|level|floor)s?\b(?! plan)|\b(\w+) (?:storeys|stories|floors|levels)\b")
+_UPSTAIRS = re.compile(r"\b(?:upstairs|downstairs|upper floor|upper storey)\b")
+_BASEMENT = re.compile(r"\b(?:basement|lower ground floor|underground level)s?\b")
+_ATTIC = re.compile(r"\b(?:attic|loft conversion|garret)s?\b")
+_MEZZANINE = re.compile(r"\bmezzanines?\b")
+MAX_STOREYS = 4
+"""Most storeys above ground a plan holds (ground floor included)."""
+
+
+def _find_levels(text: str, p: Parsed) -> None:
+    """Storeys ("two-storey", "3-story", "three floors"; "upstairs", a mezzanine: two),
+    a basement and an attic."""
+    for mt in _STOREYS.finditer(text):
+        word = mt.group(1) or mt.group(2)
+        n = {"single": 1, "one": 1, "double": 2, "twin": 2, "multi": 3}.get(word) or parse_number(word)
+        if n is not None and n >= 1:
+            if n > MAX_STOREYS:
+                p.warnings.append(f"asked for {n} storeys; a plan holds at most {MAX_STOREYS}, planned {MAX_STOREYS}")
+            p.storeys = max(p.storeys, min(n, MAX_STOREYS))
+    if p.storeys == 1 and (_UPSTAIRS.search(text) or _MEZZANINE.search(text)):
+        p.storeys = 2
+    p.basement = bool(_BASEMENT.search(text))
+    p.attic = bool(_ATTIC.search(text))
+
+
 def _assign_rooms(text: str, mentions: list[Mention]) -> None:
     """Attach each object mention to the room mention that governs it, if any."""
     context: int | None = None
@@ -910,6 +939,7 @@ def parse(text: str, kb: KnowledgeBase | None = None) -> Parsed:
     p.text = norm
     taken: list[tuple[int, int]] = []
     _apply_codes(norm, p, taken)
+    _find_levels(norm, p)
     span = _parse_building(kb, norm, p, taken)
     if span:
         taken.append(span)

@@ -54,6 +54,7 @@ class Slot:
     drawn_area: float = 0.0  # the area drawn from the room's range, before furniture grew it
     optional: bool = False
     extra_groups: list[str] = field(default_factory=list)
+    level: int = 0  # storey: 0 ground, 1 up, -1 basement
 
 
 def _type_info(kb: KnowledgeBase, room_type: str) -> dict:
@@ -148,6 +149,7 @@ def plan_rooms(kb: KnowledgeBase, parsed: Parsed, program: str | None, rng: np.r
                 f"the text rules out {', '.join(ruled_out)} and names no other room; planned a {s.name}"
             )
     _name_main_room(parsed, slots, prog)
+    assign_levels(kb, parsed, slots, warnings)
     _name_and_number(slots)
     return slots, (prog or {}).get("main")
 
@@ -472,3 +474,89 @@ def connect(kb: KnowledgeBase, slots: list[Slot], entrance_types: list[str]) -> 
             s.area = max(s.area, min(14.0, 1.5 + 1.3 * degree[s.id]))
     return edges + [(root.id, "outside")]
 
+
+
+# ------------------------------------------------------------------ storeys
+STAIRWELL_KEY = "stairwell"
+"""Program key (and name) of the stairwell room planned on every storey of a house of
+several; the floorplan stage (anyhome.floorplan.levels) stacks them."""
+STAIRWELL_AREA_M2 = 12.5
+"""Floor of a stairwell: a straight flight 0.9 m wide and 3.3 m long (a 2.9 m storey:
+15 risers of 0.193 m, goings of 0.236 m, within UK Approved Document K for a private
+stair) beside a landing strip; the floorplan solver makes it about 3.5 m square."""
+UP_TYPES = ("bedroom", "closet", "study", "playroom")
+"""Room types that go upstairs in a house of several storeys (bathrooms follow them)."""
+BASEMENT_TYPES = ("storage", "cellar", "gym", "laundry")
+"""Room types that go down to a basement."""
+ATTIC_TYPES = ("bedroom", "storage", "study")
+"""Room types an attic takes (the first of them the plan has)."""
+
+
+def assign_levels(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], warnings: list[str]) -> None:
+    """Put rooms on storeys when the text asks for several ("a three-storey townhouse",
+    "upstairs", "a basement", "an attic") and add one stairwell per storey. A one-storey
+    text leaves every room on level 0 and adds nothing."""
+    if parsed.storeys <= 1 and not parsed.basement and not parsed.attic:
+        return
+    top = parsed.storeys - 1  # highest full storey
+    up = [s for s in slots if s.type in UP_TYPES]
+    if top >= 1:
+        for i, s in enumerate(up):  # contiguous runs of bedrooms per storey, bottom first
+            s.level = 1 + i * top // max(1, len(up))
+        for k in range(1, top + 1):  # a storey with nothing on it gets a bedroom
+            if not any(s.level == k for s in slots):
+                s = _slot_from_entry(kb, {"type": "bedroom", "name": "bedroom"})
+                s.level = k
+                slots.append(s)
+        baths = [s for s in slots if s.type == "bathroom"]
+        keep = 1 if len(baths) > 1 else 0  # a cloakroom stays on the ground floor
+        for i, s in enumerate(baths[keep:]):
+            levels = sorted({x.level for x in slots if x.type in UP_TYPES and x.level > 0})
+            s.level = levels[i % len(levels)] if levels else 0
+    if parsed.attic:
+        pick = next((s for s in slots if "attic" in s.name or "loft" in s.name), None)
+        pick = pick or next((s for t in ATTIC_TYPES for s in reversed(slots) if s.type == t), None)
+        if pick is None or (pick.level == 0 and pick.type == "bedroom" and top >= 1):
+            pick = _slot_from_entry(kb, {"type": "storage", "name": "attic"})
+            slots.append(pick)
+        pick.level = top + 1
+    if parsed.basement:
+        down = [s for s in slots if s.type in BASEMENT_TYPES and s.level == 0]
+        if not down:
+            down = [_slot_from_entry(kb, {"type": "storage", "name": "basement"})]
+            slots.append(down[0])
+        for s in down:
+            s.level = -1
+    levels = sorted({s.level for s in slots})
+    while len(slots) + len(levels) > MAX_ROOMS:
+        victim = next((s for s in reversed(slots) if s.mention is None and s.type not in ("hallway", "entry")), None)
+        if victim is None:
+            break
+        slots.remove(victim)
+        warnings.append(f"a house has at most {MAX_ROOMS} rooms with its stairwells; dropped the {victim.name}")
+    for k in levels:
+        s = Slot("stairwell", "hallway", "hallway", (STAIRWELL_AREA_M2, STAIRWELL_AREA_M2), key=STAIRWELL_KEY)
+        s.level = k
+        slots.append(s)
+
+
+def connect_levels(kb: KnowledgeBase, slots: list[Slot], entrance_types: list[str]) -> list[tuple[str, str]]:
+    """:func:`connect` per storey: the ground floor as a one-storey house (its stairwell a
+    hub like a hallway), every other storey a tree rooted at its stairwell (no entrance).
+    The stairs, not doors, join the storeys."""
+    if all(s.level == 0 for s in slots):
+        return connect(kb, slots, entrance_types)
+    edges: list[tuple[str, str]] = []
+    for k in sorted({s.level for s in slots}, key=lambda k: (k != 0, k)):
+        on = [s for s in slots if s.level == k]
+        if k == 0:
+            edges += connect(kb, on, entrance_types)
+            continue
+        stair = next(s for s in on if s.key == STAIRWELL_KEY)
+        on.remove(stair)
+        edges += [e for e in connect(kb, [stair, *on], ["hallway"]) if e[1] != "outside"]
+    for s in slots:
+        if s.key == STAIRWELL_KEY:
+            s.area = STAIRWELL_AREA_M2
+    entrance = [e for e in edges if e[1] == "outside"]
+    return [e for e in edges if e[1] != "outside"] + entrance

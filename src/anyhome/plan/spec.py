@@ -78,8 +78,12 @@ MAX_COUNT = 120
 """Most copies of one item (``count``) or group (``repeat``) a plan holds; a text asking
 for more is capped with a warning."""
 
-MAX_ROOMS = 12
-"""Most rooms one plan may hold (the floorplan solver's supported range is 1..12)."""
+MAX_ROOMS = 48
+"""Most rooms one plan may hold, all storeys together (a hotel floor of 14 guest rooms with
+their bathrooms, a school wing)."""
+
+MIN_LEVEL, MAX_LEVEL = -2, 5
+"""Lowest and highest storey a plan may use (0 = ground, -1 = a basement)."""
 
 
 MAX_TEXT_CHARS = 2000
@@ -227,6 +231,7 @@ class RoomSpec(_Model):
     type: CleanStr = Field(min_length=1, description="functional type, see anyhome.house.ROOM_TYPES")
     area_m2: float = Field(gt=0.5, le=400.0)
     height_m: float = Field(default=2.7, ge=2.0, le=12.0)
+    level: int = Field(default=0, ge=MIN_LEVEL, le=MAX_LEVEL, description="storey: 0 ground, 1 up, -1 basement")
     style: CleanStr = Field(default="", description="the room's style in words, for display")
     styles: StyleKeys = Field(
         default_factory=list,

@@ -1,0 +1,240 @@
+"""Floorplans of several storeys: one solve per storey, stairwells stacked, stairs objects.
+
+A plan whose rooms all sit on level 0 goes straight to :func:`solve_floorplan` (the same
+floorplan, byte for byte). Otherwise every storey is solved as a house of its own (an
+upper storey or a basement gets a stand-in entrance through its stairwell, dropped
+afterwards), until its stairwell comes out as a rectangle at least
+:data:`STAIRWELL_MIN_LONG_M` x :data:`STAIRWELL_MIN_SHORT_M`. Each storey is then turned
+(a quarter turn when needed) so its stairwell's long side runs east-west and moved so
+that every stairwell has the same south-west corner: the stairwells overlap in a
+rectangle that holds a straight flight beside a landing strip. The flight is a
+``stairs`` object in the lower storey's stairwell (:func:`stairs_objects`).
+
+The narrow interface (:func:`solve_levels`, :func:`stairs_objects`) is what the pipeline
+sees; a solver that takes a footprint and a fixed stairwell rectangle can replace the
+per-storey solve without changing it. Storeys are not yet kept inside the ground floor's
+footprint (an upper storey may overhang).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from anyhome.errors import FloorplanError
+from anyhome.floorplan.options import FloorplanOptions
+from anyhome.floorplan.solver import solve_floorplan
+from anyhome.house import Door, Floorplan, HouseObject, Level, Room, Window
+from anyhome.plan.spec import HouseSpec
+
+STAIRWELL_MIN_LONG_M = 3.5
+"""Shortest long side of a stairwell: a 3.3 m flight (a 2.9 m storey in 15 risers of
+0.193 m and 14 goings of 0.236 m: within UK Approved Document K for a private stair,
+rise <= 220 mm, going >= 220 mm, pitch <= 42 deg)."""
+STAIRWELL_MIN_SHORT_M = 1.95
+"""Shortest short side of a stairwell: a 0.9 m flight (Document K's usual minimum width)
+beside a landing strip."""
+FLIGHT_WIDTH_M = 0.9
+FLIGHT_MIN_LENGTH_M = 3.3
+SLAB_M = 0.2
+"""Floor structure between a storey's ceiling and the next storey's floor."""
+LEVEL_ATTEMPTS = 8
+"""Solves per storey before a FloorplanError (each is one bounded solve_floorplan)."""
+STAIRS_CATEGORY = "stairs"
+
+
+def stair_room(spec: HouseSpec, level: int) -> str:
+    """The id of the stairwell of ``level``: its room named or id'd like a stair."""
+    for r in spec.rooms:
+        if r.level == level and ("stair" in r.id.lower() or "stair" in r.name.lower()):
+            return r.id
+    raise FloorplanError(f"level {level} has no stairwell room (a room named 'stairwell')")
+
+
+def solve_levels(spec: HouseSpec, rng: np.random.Generator, options: FloorplanOptions | None = None) -> Floorplan:
+    """Lay out every storey of ``spec`` (see the module doc); one storey: solve_floorplan."""
+    numbers = sorted({r.level for r in spec.rooms})
+    if numbers == [0]:
+        return solve_floorplan(spec, rng, options)
+    if 0 not in numbers:
+        raise FloorplanError("a house of several storeys needs rooms on the ground floor (level 0)")
+    plans: dict[int, Floorplan] = {}
+    for k in numbers:
+        plans[k] = _solve_storey(spec, k, rng, options)
+    ox, oy = _rect(plans[0].room(stair_room(spec, 0)))[:2]
+    for k in numbers:
+        x0, y0 = _rect(plans[k].room(stair_room(spec, k)))[:2]
+        plans[k] = _moved(plans[k], ox - x0, oy - y0)
+    heights = {k: max(r.height_m for r in spec.rooms if r.level == k) + SLAB_M for k in numbers}
+    elevation = {0: 0.0}
+    for k in (n for n in numbers if n > 0):
+        elevation[k] = elevation[k - 1] + heights[k - 1]
+    for k in sorted((n for n in numbers if n < 0), reverse=True):
+        elevation[k] = elevation[k + 1] - heights[k]
+    return _joined(spec, plans, [Level(level=k, elevation_m=round(elevation[k], 4), height_m=round(heights[k], 4)) for k in numbers])
+
+
+def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options) -> Floorplan:
+    ids = {r.id for r in spec.rooms if r.level == k}
+    stair = stair_room(spec, k)
+    links = [c for c in spec.connections if c[0] in ids and (c[1] in ids or (k == 0 and c[1] == "outside"))]
+    if k != 0:
+        links.append((stair, "outside"))  # stand-in entrance: the stairs come in here
+    sub = spec.model_copy(update={"rooms": [r for r in spec.rooms if r.level == k], "connections": links})
+    why = "its stairwell never came out as a rectangle large enough for a flight"
+    for _ in range(LEVEL_ATTEMPTS):
+        try:
+            plan = solve_floorplan(sub, rng, options)
+        except FloorplanError as e:
+            why = str(e)
+            continue
+        if k != 0:
+            plan = plan.model_copy(update={"doors": [d for d in plan.doors if "outside" not in d.rooms]})
+        x0, y0, w, h = _rect(plan.room(stair))
+        if w < h:
+            plan = _turned(plan)
+            x0, y0, w, h = _rect(plan.room(stair))
+        top = k == max(r.level for r in spec.rooms)
+        if w >= STAIRWELL_MIN_LONG_M - 1e-6 and h >= STAIRWELL_MIN_SHORT_M - 1e-6 and (top or _flight_box(plan, stair)):
+            return plan
+    raise FloorplanError(f"could not lay out level {k} in {LEVEL_ATTEMPTS} attempts ({why})")
+
+
+def _rect(room: Room) -> tuple[float, float, float, float]:
+    """(x0, y0, width, height) of a room that is a rectangle; zeros if it is not."""
+    xs = [p[0] for p in room.polygon]
+    ys = [p[1] for p in room.polygon]
+    if len(room.polygon) != 4:
+        return (min(xs), min(ys), 0.0, 0.0)
+    return (min(xs), min(ys), max(xs) - min(xs), max(ys) - min(ys))
+
+
+def _map(plan: Floorplan, f) -> Floorplan:
+    rooms = [r.model_copy(update={"polygon": [f(p) for p in r.polygon]}) for r in plan.rooms]
+    doors = [d.model_copy(update={"segment": (f(d.segment[0]), f(d.segment[1]))}) for d in plan.doors]
+    windows = [w.model_copy(update={"segment": (f(w.segment[0]), f(w.segment[1]))}) for w in plan.windows]
+    return plan.model_copy(update={"rooms": rooms, "doors": doors, "windows": windows})
+
+
+def _turned(plan: Floorplan) -> Floorplan:
+    """A quarter turn counter-clockwise (outlines stay counter-clockwise)."""
+    return _map(plan, lambda p: (-p[1], p[0]))
+
+
+def _moved(plan: Floorplan, dx: float, dy: float) -> Floorplan:
+    return _map(plan, lambda p: (p[0] + dx, p[1] + dy))
+
+
+def _flight_box(plan: Floorplan, stair: str) -> tuple[float, float, float, float, float] | None:
+    """(x0, y0, x1, y1, yaw) of a flight along a long wall of the stairwell, its top end
+    against a short wall, touching no door of the stairwell (None: every place does)."""
+    from shapely.geometry import LineString, box
+
+    x0, y0, w, h = _rect(plan.room(stair))
+    doors = [LineString(d.segment) for d in plan.doors if stair in d.rooms]
+    for ya, yb in ((y0, y0 + FLIGHT_WIDTH_M), (y0 + h - FLIGHT_WIDTH_M, y0 + h)):
+        for xa, yaw in ((x0, 0.0), (x0 + w - FLIGHT_MIN_LENGTH_M, math.pi)):
+            run = box(xa, ya, xa + FLIGHT_MIN_LENGTH_M, yb).buffer(0.05)
+            if not any(run.intersects(d) for d in doors):
+                return (xa, ya, xa + FLIGHT_MIN_LENGTH_M, yb, yaw)
+    return None
+
+
+def _joined(spec: HouseSpec, plans: dict[int, Floorplan], levels: list[Level]) -> Floorplan:
+    by_id = {r.id: r for p in plans.values() for r in p.rooms}
+    rooms = [by_id[r.id].model_copy(update={"level": r.level}) for r in spec.rooms]
+    doors: list[Door] = []
+    windows: list[Window] = []
+    for k in sorted(plans):
+        doors += [d.model_copy(update={"id": f"door-{len(doors) + i}"}) for i, d in enumerate(plans[k].doors)]
+        windows += [w.model_copy(update={"id": f"win-{len(windows) + i}"}) for i, w in enumerate(plans[k].windows)]
+    return Floorplan(rooms=rooms, doors=doors, windows=windows, connections=list(spec.connections), levels=levels)
+
+
+def stairs_objects(plan: Floorplan) -> list[HouseObject]:
+    """One straight flight per pair of storeys, in the lower stairwell, rising to the
+    upper storey's floor (its height is the difference of the two elevations). Its
+    ``position`` is, as for every object, relative to its room's floor."""
+    if not plan.levels:
+        return []
+    out = []
+    numbers = [lv.level for lv in plan.levels]
+    elev = {lv.level: lv.elevation_m for lv in plan.levels}
+    for lo, hi in zip(numbers, numbers[1:]):
+        low = _stairwell(plan, lo)
+        up = _stairwell(plan, hi)
+        fb = _flight_box(plan, low.id)
+        if fb is None or up is None:
+            raise FloorplanError(f"no room for a flight of stairs in {low.id!r}")
+        xa, ya, xb, yb, yaw = fb
+        rise = elev[hi] - elev[lo]
+        out.append(HouseObject(
+            id=f"{low.id}-stairs", room=low.id, name="stairs", category=STAIRS_CATEGORY,
+            description=f"a straight flight from level {lo} up to level {hi}",
+            position=(round((xa + xb) / 2, 4), round((ya + yb) / 2, 4), 0.0),
+            size=(FLIGHT_MIN_LENGTH_M, FLIGHT_WIDTH_M, round(rise, 4)),
+            yaw=yaw, rule="place_wall", tags=["equipment"],
+        ))
+    return out
+
+
+def _stairwell(plan: Floorplan, level: int) -> Room:
+    for r in plan.rooms:
+        if r.level == level and ("stair" in r.id.lower() or "stair" in r.name.lower()):
+            return r
+    raise FloorplanError(f"level {level} has no stairwell room")
+
+
+def stair_link(plan: Floorplan, obj: HouseObject) -> tuple[str, str] | None:
+    """The two rooms a ``stairs`` object joins: its own and the room of the next storey
+    up over its top end (None: not stairs, or nothing above)."""
+    if obj.category != STAIRS_CATEGORY:
+        return None
+    from shapely.geometry import Point, Polygon
+
+    here = next((r for r in plan.rooms if r.id == obj.room), None)
+    if here is None:
+        return None
+    above = sorted(lv.level for lv in plan.levels if lv.level > here.level)
+    if not above:
+        return None
+    x, y, _ = obj.position
+    c, s = math.cos(obj.yaw), math.sin(obj.yaw)
+    half = obj.size[0] / 2 - 0.1
+    top = Point(x - c * half, y - s * half)  # the flight rises toward its local -x
+    for r in plan.rooms:
+        if r.level == above[0] and Polygon(r.polygon).buffer(1e-6).contains(top):
+            return (here.id, r.id)
+    return None
+
+
+def level_view(house, level: int):
+    """The storey ``level`` of ``house`` as a house of its own: its rooms, the doors and
+    windows of those rooms, their objects (the checks of one storey run on it)."""
+    ids = {r.id for r in house.rooms if r.level == level}
+    return house.model_copy(update={
+        "rooms": [r for r in house.rooms if r.id in ids],
+        "doors": [d for d in house.doors if all(x in ids or x == "outside" for x in d.rooms)],
+        "windows": [w for w in house.windows if w.room in ids],
+        "objects": [o for o in house.objects if o.room in ids],
+        "connections": [c for c in house.connections if all(x in ids or x == "outside" for x in c)],
+    })
+
+
+def reachable_rooms(house) -> set[str]:
+    """Rooms reachable from the outside through doors and stairs (:func:`stair_link`)."""
+    adj: dict[str, set[str]] = {}
+    links = [tuple(d.rooms) for d in house.doors]
+    links += [lk for o in house.objects if (lk := stair_link(house.floorplan, o)) is not None]
+    for a, b in links:
+        adj.setdefault(a, set()).add(b)
+        adj.setdefault(b, set()).add(a)
+    seen = {"outside"}
+    todo = ["outside"]
+    while todo:
+        for nxt in adj.get(todo.pop(), ()):
+            if nxt not in seen:
+                seen.add(nxt)
+                todo.append(nxt)
+    return seen - {"outside"}
