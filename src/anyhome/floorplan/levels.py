@@ -39,8 +39,6 @@ FLIGHT_WIDTH_M = 0.9
 FLIGHT_MIN_LENGTH_M = 3.3
 SLAB_M = 0.2
 """Floor structure between a storey's ceiling and the next storey's floor."""
-LEVEL_ATTEMPTS = 8
-"""Solves per storey before a FloorplanError (each is one bounded solve_floorplan)."""
 STAIRS_CATEGORY = "stairs"
 
 
@@ -75,7 +73,7 @@ def solve_levels(spec: HouseSpec, rng: np.random.Generator, options: FloorplanOp
     return _joined(spec, plans, [Level(level=k, elevation_m=round(elevation[k], 4), height_m=round(heights[k], 4)) for k in numbers])
 
 
-def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options) -> Floorplan:
+def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options: FloorplanOptions | None) -> Floorplan:
     ids = {r.id for r in spec.rooms if r.level == k}
     stair = stair_room(spec, k)
     links = [c for c in spec.connections if c[0] in ids and (c[1] in ids or (k == 0 and c[1] == "outside"))]
@@ -83,7 +81,8 @@ def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options) ->
         links.append((stair, "outside"))  # stand-in entrance: the stairs come in here
     sub = spec.model_copy(update={"rooms": [r for r in spec.rooms if r.level == k], "connections": links})
     why = "its stairwell never came out as a rectangle large enough for a flight"
-    for _ in range(LEVEL_ATTEMPTS):
+    attempts = (options or FloorplanOptions()).level_attempts
+    for _ in range(attempts):
         try:
             plan = solve_floorplan(sub, rng, options)
         except FloorplanError as e:
@@ -98,7 +97,7 @@ def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options) ->
         top = k == max(r.level for r in spec.rooms)
         if w >= STAIRWELL_MIN_LONG_M - 1e-6 and h >= STAIRWELL_MIN_SHORT_M - 1e-6 and (top or _flight_box(plan, stair)):
             return plan
-    raise FloorplanError(f"could not lay out level {k} in {LEVEL_ATTEMPTS} attempts ({why})")
+    raise FloorplanError(f"could not lay out level {k} in {attempts} attempts ({why})")
 
 
 def _rect(room: Room) -> tuple[float, float, float, float]:

@@ -54,6 +54,8 @@ class FloorplanOptions:
     # ---------------------------------------------------------------- the search
     max_attempts: int = _opt(40, 1, 10_000)
     """Attempts before giving up with a FloorplanError."""
+    level_attempts: int = _opt(8, 1, 1_000)
+    """Solves per storey of a house of several storeys before a FloorplanError."""
     slicing_max_rooms: int = _opt(6, 1, 1_000)
     """Programs up to this many rooms try the slicing search first; larger ones go to the spine."""
     slicing_attempts: int = _opt(10, 0, 10_000)
