@@ -8,7 +8,10 @@ from __future__ import annotations
 
 from collections import Counter
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from anyhome.evaluate.plan_metrics import PlanMetrics
 
 MAX_SUMMARY_VIOLATIONS = 12
 """How many violations ``summary_lines`` lists before it says "... and N more"."""
@@ -107,6 +110,8 @@ class EvalReport:
     violations: list[Violation] = field(default_factory=list)
     metrics: dict[str, float | int] = field(default_factory=dict)
     coverage: Coverage | None = None
+    plan: PlanMetrics | None = None
+    """Plan figures (circulation, proportions, size words, open air, levels): not violations."""
 
     @property
     def ok(self) -> bool:
@@ -125,6 +130,7 @@ class EvalReport:
             "violations": [v.to_dict() for v in self.violations],
             "metrics": {k: _plain(v) for k, v in self.metrics.items()},
             "coverage": self.coverage.to_dict() if self.coverage is not None else None,
+            "plan": self.plan.to_dict() if self.plan is not None else None,
         }
 
     def summary_lines(self) -> list[str]:
@@ -159,6 +165,8 @@ class EvalReport:
             )
             for c in cov.failed[:MAX_SUMMARY_CHECKS]:
                 lines.append(f"  {c}")
+        if self.plan is not None:
+            lines += self.plan.summary_lines()
         return lines
 
 

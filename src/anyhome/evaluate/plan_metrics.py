@@ -1,0 +1,473 @@
+"""Plan metrics (issue 13): how a floorplan compares with how buildings are laid out.
+
+Figures, not violations: :func:`plan_metrics` reads only what house.json holds (rooms,
+their types, polygons and levels, doors, objects of category ``stairs``, the prompt) and
+the knowledge base's room norms (``rooms.yaml``: ``min_width_m``, ``circulation``,
+``habitable``). It never raises on a house that loads: rooms with unusable polygons are
+left out of the geometric figures, fields newer than the house (``level``,
+``open_air``, ``ceiling``) are read when present and defaulted when not.
+
+Definitions
+-----------
+circulation share
+    Area of the rooms whose type has ``circulation: true`` (entry, hallway) over the area
+    of all rooms.
+min width
+    Twice the radius of the room's maximum inscribed circle (the widest disc that fits).
+aspect
+    Long side of the room's minimum rotated rectangle over its min width (>= 1).
+    An L of arms ``w`` wide gets more than ``w``: the disc at its elbow is
+    ``2 w sqrt(2) / (1 + sqrt(2))`` (1.17 w) across.
+length of a corridor
+    A circulation room that fills its minimum rotated rectangle (a rectangle): the long
+    side of that rectangle. Any other shape: the long side of the rectangle of the same
+    area and perimeter (``P/4 + sqrt(P^2/16 - A)``), which for an L, T or U of one width
+    is the length of its centre line (the medial path: (a - w/2) + (b - w/2) for an L of
+    arms a and b); a shape too compact for such a rectangle: the long side of its
+    minimum rotated rectangle.
+size words, stated total
+    Read from the prompt by :func:`read_size` (this evaluator's own reading, independent
+    of the planner's).
+open air
+    A room whose ``open_air`` flag is set, whose type is an open-air type
+    (:data:`OPEN_AIR_TYPES`) or whose name says so (:data:`OPEN_AIR_NAME`). It "has a
+    ceiling" when its ``ceiling`` field says so; a house without that field: when its
+    ``open_air`` flag is not set (a house without either field: always, as every room
+    of such a house is built with a ceiling).
+levels, reachability
+    Distinct ``room.level`` (1 for a house without levels). Every room must be reachable
+    from a room with a door to the outside through doors, and between levels through
+    objects of category ``stairs``: a stair in room R joins R to the rooms one level up
+    or down whose polygon contains the stair's position (a stairwell of the same
+    footprint on each level).
+signature
+    The sorted (short side, long side) of every room's minimum rotated rectangle,
+    rounded to 0.5 m; :func:`signature_overlap` says how much two signatures coincide.
+home
+    See :func:`is_home`: ``house.building`` is a dwelling (:data:`HOME_BUILDINGS`), or a
+    building word of programs.yaml whose program is one, or (a word the knowledge does
+    not know, which the planner keeps as the building) the house has a bedroom or a
+    living room.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from collections import deque
+from collections.abc import Iterable, Sequence
+from dataclasses import asdict, dataclass
+from typing import Any
+
+import shapely
+from shapely.geometry import Point as ShapelyPoint
+from shapely.geometry import Polygon
+
+from anyhome.evaluate.polygons import is_usable, room_polygon
+from anyhome.house import OUTSIDE, House, is_habitable
+from anyhome.plan.kb import KnowledgeBase
+
+HOME_BUILDINGS = ("home", "apartment", "castle")
+"""Buildings people live in: the ``building`` of the programs ``home``, ``apartment``,
+``studio_apartment`` and ``castle`` (see :func:`is_home`)."""
+OPEN_AIR_TYPES = ("balcony", "terrace", "deck", "patio", "porch", "courtyard", "garden", "roof_terrace")
+"""Room types that are open to the sky (issue 13's list; today's knowledge files map all
+of them to ``balcony``)."""
+OPEN_AIR_NAME = re.compile(
+    r"\b(balcony|terrace|deck|patio|porch|courtyard|veranda|verandah|loggia|garden|atrium)\b"
+    r"(?!\s+(room|shed|house|studio|office|centre|center))",
+    re.IGNORECASE,
+)
+"""A room name that says it is open air ("roof terrace", "courtyard"; not "garden room")."""
+INDOOR_NAME = re.compile(r"\b(winter garden|screened porch|enclosed porch)\b", re.IGNORECASE)
+"""Names that match :data:`OPEN_AIR_NAME` but are enclosed rooms."""
+
+NARROW_BEDROOM_M = 2.4
+"""The issue's bar: no bedroom narrower than this."""
+NARROW_LIVING_M = 3.0
+"""The issue's bar: no living room narrower than this."""
+LONG_ASPECT = 2.0
+"""A habitable room with aspect above this is a strip."""
+WIDTH_TOL_M = 0.005
+"""A width this much under a norm still meets it (the inscribed circle is found to
+:data:`MIC_TOL_M`)."""
+MIC_TOL_M = 0.001
+"""Tolerance of the maximum-inscribed-circle search."""
+RECTANGLE_FILL = 0.98
+"""A polygon filling this share of its minimum rotated rectangle counts as a rectangle."""
+SIGNATURE_STEP_M = 0.5
+"""Room sizes of a signature are rounded to this."""
+
+TINY_MAX_M2 = 45.0
+"""A "tiny" home has at most this total area."""
+MANSION_MIN_M2 = 300.0
+"""A "mansion" / "grand" home has at least this total area."""
+STATED_TOL = 0.15
+"""A stated total area is met within this fraction."""
+
+SIZE_WORDS = {
+    "tiny": "tiny", "small": "small", "cosy": "cosy", "cozy": "cosy", "spacious": "spacious",
+    "large": "large", "grand": "grand", "mansion": "mansion",
+}
+"""Words that size the whole building -> their canonical form."""
+_SIZE_RE = re.compile(r"\b(" + "|".join(SIZE_WORDS) + r")\b", re.IGNORECASE)
+_HEAD_END = re.compile(r",|;|:|\.\s|\bwith\b|\bfeaturing\b|\bincluding\b|\bwhere\b|\bwhich\b",
+                       re.IGNORECASE)
+_NUMBER_WORDS = {
+    "ten": 10, "fifteen": 15, "twenty": 20, "thirty": 30, "forty": 40, "fifty": 50, "sixty": 60,
+    "seventy": 70, "eighty": 80, "ninety": 90, "hundred": 100, "one hundred": 100,
+    "two hundred": 200, "three hundred": 300, "four hundred": 400, "five hundred": 500,
+}
+_UNIT = r"(?:m2|m\^2|m²|sqm|sq\.?\s?m\.?|square\s+met(?:er|re)s?)(?![a-z0-9])"
+_AREA_RE = re.compile(
+    r"(?<![\w.])(\d{1,5}(?:[.,]\d+)?|" + "|".join(sorted(_NUMBER_WORDS, key=len, reverse=True))
+    + r")\s*-?\s*" + _UNIT,
+    re.IGNORECASE,
+)
+
+
+# ---------------------------------------------------------------------- results
+@dataclass(frozen=True)
+class RoomMetrics:
+    """One room's shape against the norm for its type."""
+
+    id: str
+    type: str
+    level: int
+    area_m2: float
+    min_width_m: float
+    long_side_m: float
+    aspect: float
+    norm_min_width_m: float | None
+    habitable: bool
+    circulation: bool
+    open_air: bool
+    has_ceiling: bool
+
+    @property
+    def below_norm(self) -> bool:
+        return self.norm_min_width_m is not None and self.min_width_m < self.norm_min_width_m - WIDTH_TOL_M
+
+
+@dataclass(frozen=True)
+class PlanMetrics:
+    """The plan figures of one house (see the module docstring for each definition)."""
+
+    building: str
+    is_home: bool
+    n_rooms: int
+    total_area_m2: float
+    circulation_area_m2: float
+    circulation_share: float
+    longest_corridor_m: float
+    n_habitable: int
+    n_habitable_aspect_over_2: int
+    n_bedrooms: int
+    n_bedrooms_narrow: int
+    n_living_rooms: int
+    n_living_rooms_narrow: int
+    n_below_type_min_width: int
+    size_words: tuple[str, ...]
+    stated_area_m2: float | None
+    tiny_ok: bool | None
+    stated_area_ok: bool | None
+    mansion_ok: bool | None
+    n_open_air: int
+    n_open_air_with_ceiling: int
+    levels: int
+    all_reachable: bool
+    n_unreachable: int
+    signature: tuple[tuple[float, float], ...]
+    rooms: tuple[RoomMetrics, ...]
+
+    def to_dict(self) -> dict[str, Any]:
+        d = asdict(self)
+        d["size_words"] = list(self.size_words)
+        d["signature"] = [list(s) for s in self.signature]
+        d["rooms"] = [{**asdict(r), "below_norm": r.below_norm} for r in self.rooms]
+        return d
+
+    def summary_lines(self) -> list[str]:
+        def verdict(v: bool | None) -> str:
+            return "n/a" if v is None else ("ok" if v else "MISSED")
+
+        stated = f"{self.stated_area_m2:g} m2" if self.stated_area_m2 is not None else "none"
+        words = ", ".join(self.size_words) or "none"
+        return [
+            f"plan: {self.building} ({'home' if self.is_home else 'not a home'}), "
+            f"{self.total_area_m2:.1f} m2, {self.levels} level(s)",
+            f"  circulation {100 * self.circulation_share:.1f}% of floor, "
+            f"longest corridor {self.longest_corridor_m:.1f} m",
+            f"  habitable rooms with aspect > 2: {self.n_habitable_aspect_over_2}/{self.n_habitable}; "
+            f"bedrooms < {NARROW_BEDROOM_M} m: {self.n_bedrooms_narrow}/{self.n_bedrooms}; "
+            f"living rooms < {NARROW_LIVING_M} m: {self.n_living_rooms_narrow}/{self.n_living_rooms}; "
+            f"rooms below their type's min width: {self.n_below_type_min_width}/{self.n_rooms}",
+            f"  size words: {words}; stated area: {stated}; tiny {verdict(self.tiny_ok)}, "
+            f"stated {verdict(self.stated_area_ok)}, mansion/grand {verdict(self.mansion_ok)}",
+            f"  open-air rooms with a ceiling: {self.n_open_air_with_ceiling}/{self.n_open_air}; "
+            f"reachable through doors and stairs: "
+            f"{'all' if self.all_reachable else f'{self.n_unreachable} rooms not'}",
+        ]
+
+
+# ---------------------------------------------------------------------- prompt reading
+def _room_phrases(kb: KnowledgeBase) -> tuple[str, ...]:
+    return tuple({n.lower() for n in kb.rooms.names} | {t.replace("_", " ") for t in kb.rooms.types})
+
+
+def _building_phrases(kb: KnowledgeBase) -> tuple[str, ...]:
+    return tuple({w.lower() for b in kb.programs.buildings for w in b.words})
+
+
+_STOP_WORDS = frozenset({"with", "of", "and", "in", "for", "on", "including", "featuring", "plus", "or"})
+
+
+def _longest(tail: str, phrases: Sequence[str]) -> int:
+    return max((len(p) for p in phrases if tail == p or tail.startswith(p + " ")), default=0)
+
+
+def _names_a_room(rest: str, kb: KnowledgeBase, in_head: bool) -> bool:
+    """``rest`` (the text after a size word or area) names a room in its first words, up
+    to the first punctuation or linking word ("a small balcony", "a 20 m2 master
+    bedroom"; not "80 square meters with a balcony"). A building word there wins over a
+    shorter room phrase ("a 27 m2 studio flat"); a word that is both ("office") is the
+    building in the head of the prompt and a room after it."""
+    rest = re.split(r"[,.;:!?()]", rest.lower(), maxsplit=1)[0]
+    words: list[str] = []
+    for w in re.findall(r"[a-z'\-]+", rest):
+        if w in _STOP_WORDS or len(words) == 4:
+            break
+        words.append(w)
+    rooms, buildings = _room_phrases(kb), _building_phrases(kb)
+    for start in range(min(3, len(words))):
+        tail = " ".join(words[start:])
+        r, b = _longest(tail, rooms), _longest(tail, buildings)
+        if r or b:
+            return r > b or (r == b and not in_head)
+    return False
+
+
+def read_size(text: str, kb: KnowledgeBase) -> tuple[tuple[str, ...], float | None]:
+    """The size words and the stated total area (m2) of a prompt.
+
+    A size word counts when it stands in the head of the prompt (before the first
+    comma, "with", "featuring"...) and is not followed by a room ("a small balcony"
+    sizes the balcony). An area ("50 m2", "about 80 square meters", "120 sqm", "thirty
+    square metres") counts anywhere unless a room follows it ("a 20 m2 living room");
+    the first that counts is the stated total.
+    """
+    end = _HEAD_END.search(text)
+    head_end = end.start() if end else len(text)
+    words: list[str] = []
+    for m in _SIZE_RE.finditer(text[:head_end]):
+        w = SIZE_WORDS[m.group(1).lower()]
+        if w != "mansion" and _names_a_room(text[m.end():head_end], kb, True):
+            continue
+        if w not in words:
+            words.append(w)
+    area: float | None = None
+    for m in _AREA_RE.finditer(text):
+        if _names_a_room(text[m.end():], kb, m.start() < head_end):
+            continue
+        num = m.group(1).lower()
+        area = float(_NUMBER_WORDS[num]) if num in _NUMBER_WORDS else float(num.replace(",", "."))
+        break
+    return tuple(words), area
+
+
+# ---------------------------------------------------------------------- geometry
+def min_width_m(poly: Polygon) -> float:
+    """Twice the radius of the polygon's maximum inscribed circle."""
+    line = shapely.maximum_inscribed_circle(poly, MIC_TOL_M)
+    return 2.0 * float(line.length)
+
+
+def rect_sides_m(poly: Polygon) -> tuple[float, float]:
+    """(short, long) sides of the polygon's minimum rotated rectangle."""
+    rect = shapely.minimum_rotated_rectangle(poly)
+    if not isinstance(rect, Polygon):  # degenerate: a line or a point
+        return 0.0, float(rect.length)
+    xs = list(rect.exterior.coords)
+    a = math.dist(xs[0], xs[1])
+    b = math.dist(xs[1], xs[2])
+    return (a, b) if a <= b else (b, a)
+
+
+def corridor_length_m(poly: Polygon) -> float:
+    """Length of a corridor room along it (see the module docstring)."""
+    short, long = rect_sides_m(poly)
+    if short * long > 0 and poly.area >= RECTANGLE_FILL * short * long:
+        return long
+    quarter = poly.length / 4.0
+    disc = quarter * quarter - poly.area
+    return quarter + math.sqrt(disc) if disc >= 0 else long
+
+
+def _snap(x: float) -> float:
+    return round(x / SIGNATURE_STEP_M) * SIGNATURE_STEP_M
+
+
+def signature_overlap(a: Sequence[Sequence[float]], b: Sequence[Sequence[float]],
+                      tol_m: float = SIGNATURE_STEP_M) -> float:
+    """Share of the smaller of two signatures whose rooms have a partner in the other
+    (short and long side each within ``tol_m``), each room matched at most once (a
+    maximum bipartite matching); 0.0 when either is empty."""
+    small, big = (a, b) if len(a) <= len(b) else (b, a)
+    if not small:
+        return 0.0
+    adj = [[j for j, q in enumerate(big)
+            if abs(p[0] - q[0]) <= tol_m + 1e-9 and abs(p[1] - q[1]) <= tol_m + 1e-9]
+           for p in small]
+    match: dict[int, int] = {}
+
+    def augment(i: int, seen: set[int]) -> bool:
+        for j in adj[i]:
+            if j not in seen:
+                seen.add(j)
+                if j not in match or augment(match[j], seen):
+                    match[j] = i
+                    return True
+        return False
+
+    n = sum(augment(i, set()) for i in range(len(small)))
+    return n / len(small)
+
+
+# ---------------------------------------------------------------------- metrics
+def _is_open_air(room: Any, kb: KnowledgeBase) -> bool:
+    if getattr(room, "open_air", None) is True:
+        return True
+    rt = kb.rooms.types.get(room.type)
+    if room.type in OPEN_AIR_TYPES or (rt is not None and getattr(rt, "open_air", False) is True):
+        return True
+    return bool(OPEN_AIR_NAME.search(room.name)) and not INDOOR_NAME.search(room.name)
+
+
+def _has_ceiling(room: Any) -> bool:
+    fields = type(room).model_fields
+    if "ceiling" in fields:
+        c = room.ceiling
+        return bool(c) if not isinstance(c, str) else c.strip().lower() not in ("", "none", "open", "sky")
+    if "open_air" in fields:
+        return not room.open_air
+    return True
+
+
+def _level(room: Any) -> int:
+    lv = getattr(room, "level", 0)
+    return int(lv) if isinstance(lv, (int, float)) and not isinstance(lv, bool) else 0
+
+
+def _reachable(house: House, polys: dict[str, Polygon]) -> set[str]:
+    """Rooms reached from the entrance rooms through doors and stairs."""
+    ids = {r.id for r in house.rooms}
+    adj: dict[str, set[str]] = {rid: set() for rid in ids}
+    start: set[str] = set()
+    for d in house.doors:
+        a, b = d.rooms
+        if a == OUTSIDE and b in ids:
+            start.add(b)
+        elif b == OUTSIDE and a in ids:
+            start.add(a)
+        elif a in ids and b in ids:
+            adj[a].add(b)
+            adj[b].add(a)
+    level = {r.id: _level(r) for r in house.rooms}
+    for o in house.objects:
+        if o.category != "stairs" or o.room not in ids:
+            continue
+        pt = ShapelyPoint(o.position[0], o.position[1])
+        for rid, poly in polys.items():
+            if abs(level[rid] - level[o.room]) == 1 and poly.buffer(1e-6).contains(pt):
+                adj[o.room].add(rid)
+                adj[rid].add(o.room)
+    seen = set(start)
+    queue = deque(start)
+    while queue:
+        for nxt in adj[queue.popleft()]:
+            if nxt not in seen:
+                seen.add(nxt)
+                queue.append(nxt)
+    return seen
+
+
+def is_home(house: House, kb: KnowledgeBase) -> bool:
+    """Is ``house`` a dwelling (see the module docstring)?"""
+    building = str(house.building).strip().lower()
+    if building in HOME_BUILDINGS:
+        return True
+    programs = kb.programs.programs
+    if any(p.building == building for p in programs.values()):
+        return False
+    for b in kb.programs.buildings:
+        if building in (w.lower() for w in b.words):
+            prog = programs.get(b.program)
+            return prog is not None and prog.building in HOME_BUILDINGS
+    return any(r.type in ("bedroom", "living_room") for r in house.rooms)
+
+
+def plan_metrics(house: House, kb: KnowledgeBase) -> PlanMetrics:
+    """The plan figures of ``house`` (see the module docstring)."""
+    types = kb.rooms.types
+    polys = {r.id: room_polygon(r.polygon) for r in house.rooms}
+    usable = {rid: p for rid, p in polys.items() if is_usable(p)}
+    rooms: list[RoomMetrics] = []
+    signature: list[tuple[float, float]] = []
+    longest = 0.0
+    for r in house.rooms:
+        rt = types.get(r.type)
+        poly = usable.get(r.id)
+        if poly is None:
+            continue
+        width = min_width_m(poly)
+        short, long = rect_sides_m(poly)
+        circ = bool(rt is not None and rt.circulation)
+        if circ:
+            longest = max(longest, corridor_length_m(poly))
+        rooms.append(RoomMetrics(
+            id=r.id, type=r.type, level=_level(r), area_m2=poly.area, min_width_m=width,
+            long_side_m=long, aspect=long / max(width, 1e-6),
+            norm_min_width_m=rt.min_width_m if rt is not None else None,
+            habitable=is_habitable(r.type), circulation=circ,
+            open_air=_is_open_air(r, kb), has_ceiling=_has_ceiling(r),
+        ))
+        signature.append((_snap(short), _snap(long)))
+    total = sum(m.area_m2 for m in rooms)
+    circ_area = sum(m.area_m2 for m in rooms if m.circulation)
+    habitable = [m for m in rooms if m.habitable]
+    bedrooms = [m for m in rooms if m.type == "bedroom"]
+    living = [m for m in rooms if m.type == "living_room"]
+    building = str(house.building)
+    home = is_home(house, kb)
+    words, stated = read_size(house.prompt, kb)
+    tiny_ok = total <= TINY_MAX_M2 if home and "tiny" in words else None
+    mansion_ok = total >= MANSION_MIN_M2 if home and ("mansion" in words or "grand" in words) else None
+    stated_ok = abs(total - stated) <= STATED_TOL * stated if stated else None
+    open_air = [m for m in rooms if m.open_air]
+    reached = _reachable(house, usable)
+    return PlanMetrics(
+        building=building, is_home=home, n_rooms=len(house.rooms), total_area_m2=total,
+        circulation_area_m2=circ_area, circulation_share=circ_area / total if total > 0 else 0.0,
+        longest_corridor_m=longest,
+        n_habitable=len(habitable),
+        n_habitable_aspect_over_2=sum(m.aspect > LONG_ASPECT for m in habitable),
+        n_bedrooms=len(bedrooms),
+        n_bedrooms_narrow=sum(m.min_width_m < NARROW_BEDROOM_M - WIDTH_TOL_M for m in bedrooms),
+        n_living_rooms=len(living),
+        n_living_rooms_narrow=sum(m.min_width_m < NARROW_LIVING_M - WIDTH_TOL_M for m in living),
+        n_below_type_min_width=sum(m.below_norm for m in rooms),
+        size_words=words, stated_area_m2=stated,
+        tiny_ok=tiny_ok, stated_area_ok=stated_ok, mansion_ok=mansion_ok,
+        n_open_air=len(open_air), n_open_air_with_ceiling=sum(m.has_ceiling for m in open_air),
+        levels=len({_level(r) for r in house.rooms}) or 1,
+        all_reachable=len(reached) == len(house.rooms) and bool(house.rooms),
+        n_unreachable=len(house.rooms) - len(reached),
+        signature=tuple(sorted(signature)),
+        rooms=tuple(rooms),
+    )
+
+
+def signatures_share_most(a: Iterable[Sequence[float]], b: Iterable[Sequence[float]],
+                          share: float = 0.7) -> bool:
+    """Two signatures "mostly coincide": at least ``share`` of the smaller matches."""
+    return signature_overlap(list(a), list(b)) >= share
