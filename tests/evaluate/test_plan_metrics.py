@@ -22,7 +22,7 @@ from anyhome.evaluate.plan_metrics import (
     signature_overlap,
     signatures_share_most,
 )
-from anyhome.house import Door, House, HouseObject, Room
+from anyhome.house import Door, House, HouseObject, Level, Room
 from anyhome.plan.knowledge import knowledge_base
 
 
@@ -36,13 +36,13 @@ def box(x0: float, y0: float, w: float, h: float) -> list[tuple[float, float]]:
 
 
 def house_of(rooms: list[Room], doors: list[tuple[str, str]] | None = None, prompt: str = "a house",
-             objects: list[HouseObject] | None = None, building: str = "home") -> House:
+             objects: list[HouseObject] | None = None, building: str = "home", levels: list[Level] | None = None) -> House:
     """A house of these rooms; ``doors``: room pairs (default: the first room to the
     outside and a chain through the others). The metrics do not read door segments."""
     if doors is None:
         ids = [r.id for r in rooms]
         doors = [(ids[0], "outside")] + list(zip(ids, ids[1:]))
-    return House(prompt=prompt, seed=0, rooms=rooms, building=building, objects=objects or [],
+    return House(prompt=prompt, seed=0, rooms=rooms, building=building, objects=objects or [], levels=levels or [],
                  doors=[Door(id=f"d{i}", rooms=pair, segment=((0, 0), (1, 0))) for i, pair in enumerate(doors)])
 
 
@@ -156,25 +156,20 @@ def test_unreachable_room(kb) -> None:
     assert not m.all_reachable and m.n_unreachable == 3
 
 
-class LevelRoom(Room):
-    """A room with a ``level`` (as house.json v2 will hold), to check the stair links."""
-
-    level: int = 0
-
-
 def test_levels_joined_by_stairs(kb) -> None:
     rooms = [
-        LevelRoom(id="hall0", name="hall", type="hallway", polygon=box(0, 0, 3, 4), level=0),
-        LevelRoom(id="liv", name="living room", type="living_room", polygon=box(3, 0, 5, 4), level=0),
-        LevelRoom(id="hall1", name="landing", type="hallway", polygon=box(0, 0, 3, 4), level=1),
-        LevelRoom(id="bed", name="bedroom", type="bedroom", polygon=box(3, 0, 5, 4), level=1),
+        Room(id="hall0", name="hall", type="hallway", polygon=box(0, 0, 3, 4), level=0),
+        Room(id="liv", name="living room", type="living_room", polygon=box(3, 0, 5, 4), level=0),
+        Room(id="hall1", name="landing", type="hallway", polygon=box(0, 0, 3, 4), level=1),
+        Room(id="bed", name="bedroom", type="bedroom", polygon=box(3, 0, 5, 4), level=1),
     ]
     doors = [("hall0", "outside"), ("hall0", "liv"), ("hall1", "bed")]
     stairs = HouseObject(id="st", room="hall0", name="staircase", category="stairs",
                          position=(1.5, 2.0, 0.0), size=(1.0, 3.0, 2.7))
-    without = plan_metrics(house_of(rooms, doors=doors), kb)
+    storeys = [Level(level=1, elevation_m=2.9, height_m=2.7)]
+    without = plan_metrics(house_of(rooms, doors=doors, levels=storeys), kb)
     assert without.levels == 2 and without.n_unreachable == 2
-    with_stairs = plan_metrics(house_of(rooms, doors=doors, objects=[stairs]), kb)
+    with_stairs = plan_metrics(house_of(rooms, doors=doors, objects=[stairs], levels=storeys), kb)
     assert with_stairs.levels == 2 and with_stairs.all_reachable
 
 

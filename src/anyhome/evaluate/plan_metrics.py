@@ -54,17 +54,17 @@ from __future__ import annotations
 
 import math
 import re
-from collections import deque
 from collections.abc import Iterable, Sequence
 from dataclasses import asdict, dataclass
 from typing import Any
 
+import numpy as np
 import shapely
-from shapely.geometry import Point as ShapelyPoint
 from shapely.geometry import Polygon
 
 from anyhome.evaluate.polygons import is_usable, room_polygon
-from anyhome.house import OUTSIDE, House, is_habitable
+from anyhome.floorplan.levels import reachable_rooms
+from anyhome.house import House, is_habitable
 from anyhome.plan.kb import KnowledgeBase
 
 HOME_BUILDINGS = ("home", "apartment", "castle")
@@ -358,39 +358,6 @@ def _level(room: Any) -> int:
     return int(lv) if isinstance(lv, (int, float)) and not isinstance(lv, bool) else 0
 
 
-def _reachable(house: House, polys: dict[str, Polygon]) -> set[str]:
-    """Rooms reached from the entrance rooms through doors and stairs."""
-    ids = {r.id for r in house.rooms}
-    adj: dict[str, set[str]] = {rid: set() for rid in ids}
-    start: set[str] = set()
-    for d in house.doors:
-        a, b = d.rooms
-        if a == OUTSIDE and b in ids:
-            start.add(b)
-        elif b == OUTSIDE and a in ids:
-            start.add(a)
-        elif a in ids and b in ids:
-            adj[a].add(b)
-            adj[b].add(a)
-    level = {r.id: _level(r) for r in house.rooms}
-    for o in house.objects:
-        if o.category != "stairs" or o.room not in ids:
-            continue
-        pt = ShapelyPoint(o.position[0], o.position[1])
-        for rid, poly in polys.items():
-            if abs(level[rid] - level[o.room]) == 1 and poly.buffer(1e-6).contains(pt):
-                adj[o.room].add(rid)
-                adj[rid].add(o.room)
-    seen = set(start)
-    queue = deque(start)
-    while queue:
-        for nxt in adj[queue.popleft()]:
-            if nxt not in seen:
-                seen.add(nxt)
-                queue.append(nxt)
-    return seen
-
-
 def is_home(house: House, kb: KnowledgeBase) -> bool:
     """Is ``house`` a dwelling (see the module docstring)?"""
     building = str(house.building).strip().lower()
@@ -406,11 +373,20 @@ def is_home(house: House, kb: KnowledgeBase) -> bool:
     return any(r.type in ("bedroom", "living_room") for r in house.rooms)
 
 
+MAX_EXTENT_M = 100_000.0
+"""Polygons reaching further are left out of the figures (the validity checks report
+them): the inscribed-circle search's work grows with size over its tolerance."""
+
+
+def _plausible(poly: Polygon) -> bool:
+    return bool(np.isfinite(poly.area)) and max(abs(v) for v in poly.bounds) <= MAX_EXTENT_M
+
+
 def plan_metrics(house: House, kb: KnowledgeBase) -> PlanMetrics:
     """The plan figures of ``house`` (see the module docstring)."""
     types = kb.rooms.types
     polys = {r.id: room_polygon(r.polygon) for r in house.rooms}
-    usable = {rid: p for rid, p in polys.items() if is_usable(p)}
+    usable = {rid: p for rid, p in polys.items() if is_usable(p) and _plausible(p)}
     rooms: list[RoomMetrics] = []
     signature: list[tuple[float, float]] = []
     longest = 0.0
@@ -444,7 +420,7 @@ def plan_metrics(house: House, kb: KnowledgeBase) -> PlanMetrics:
     mansion_ok = total >= MANSION_MIN_M2 if home and ("mansion" in words or "grand" in words) else None
     stated_ok = abs(total - stated) <= STATED_TOL * stated if stated else None
     open_air = [m for m in rooms if m.open_air]
-    reached = _reachable(house, usable)
+    reached = reachable_rooms(house)  # through doors and stairs, as the validity check reads them
     return PlanMetrics(
         building=building, is_home=home, n_rooms=len(house.rooms), total_area_m2=total,
         circulation_area_m2=circ_area, circulation_share=circ_area / total if total > 0 else 0.0,
