@@ -67,7 +67,9 @@ class FloorplanOptions:
     area_tolerance_frac: float = _opt(0.25, 0.0, 1.0)
     """Allowed relative deviation of a room's area from its target (0.25: 25 %)."""
     max_room_aspect_ratio: float = _opt(2.5, 1.0, 20.0)
-    """Longest/shortest side of a room (hallways excepted): checked, and penalised in slicing and tuning."""
+    """Longest/shortest side of a service room (hallways excepted): checked, and penalised in slicing and tuning."""
+    max_habitable_aspect_ratio: float = _opt(2.0, 1.0, 20.0)
+    """Longest/shortest side of a habitable room: a hard check (issue 13: at most twice the short side)."""
     max_narrow_share_frac: float = _opt(0.08, 0.0, 1.0)
     """Share of a room's floor allowed in arms narrower than its minimum side."""
     precheck_wall_per_door_m: float = _opt(1.2, 0.0, 10.0)
@@ -185,7 +187,7 @@ class FloorplanOptions:
     tune_gap_weight: float = _opt(2.0, 0.0, 1_000_000.0)
     """Tuning cost per meter of gap between two connected rooms that do not touch."""
     tune_aspect_weight: float = _opt(5.0, 0.0, 1_000_000.0)
-    """Tuning cost per unit of aspect above ``max_room_aspect_ratio``."""
+    """Tuning cost per unit of aspect above a room's greatest aspect."""
 
     # ------------------------------------------------------- spine (constructive)
     spine_cell_m: float = _opt(0.1, 0.05, 1.0)
@@ -206,6 +208,12 @@ class FloorplanOptions:
     """Long/short ratio a large room in a block column is held to (its side grows deeper)."""
     spine_big_depth_max_m: float = _opt(16.0, 0.5, 1_000.0)
     """Deepest a side of the spine may grow for a large room."""
+    spine_corridor_soft_length_m: float = _opt(7.0, 1.0, 1_000.0)
+    """Spine hallway length its sides are deepened to stay within (rooms keeping their proportions)."""
+    spine_depth_steps: int = _opt(8, 0, 100)
+    """Deeper steps tried for one side of a spine segment (its rooms too long a row)."""
+    spine_depth_step_frac: float = _opt(0.1, 0.01, 1.0)
+    """Each step deepens the side by this share of its base depth."""
     spine_aspect_min: float = _opt(1.0, 1.0, 20.0)
     """Least long/short side ratio of a spine room that has no blocks to size it."""
     spine_aspect_max: float = _opt(1.5, 1.0, 20.0)

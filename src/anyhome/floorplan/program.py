@@ -9,6 +9,7 @@ import numpy as np
 from anyhome.floorplan.grid import OUTSIDE
 from anyhome.floorplan.options import FloorplanOptions
 from anyhome.house import is_habitable
+from anyhome.plan.kb import KnowledgeBase
 from anyhome.plan.spec import HouseSpec
 
 CORRIDOR_TYPES = frozenset({"hallway"})
@@ -20,19 +21,29 @@ HUB_TYPES = frozenset({"hallway", "entry"})
 @dataclass(frozen=True)
 class Program:
     """Rooms by index; ``links`` holds (a, b or OUTSIDE) per spec connection, in order;
-    ``options`` are the search's tunables (the minimum room sides among them)."""
+    ``options`` are the search's tunables (the minimum room sides among them);
+    ``min_width_m`` the knowledge base's narrowest width per room type (rooms.yaml
+    ``min_width_m``), 0 for a type it does not know; ``circulation`` its flag of
+    rooms for passing through."""
 
     ids: tuple[str, ...]
     types: tuple[str, ...]
     areas_m2: np.ndarray
     links: tuple[tuple[int, int], ...]
     options: FloorplanOptions
+    min_width_m: tuple[float, ...] = ()
+    circulation: tuple[bool, ...] = ()
 
     @classmethod
-    def from_spec(cls, spec: HouseSpec, options: FloorplanOptions) -> Program:
+    def from_spec(cls, spec: HouseSpec, options: FloorplanOptions, kb: KnowledgeBase | None = None) -> Program:
         ids = tuple(r.id for r in spec.rooms)
         index = {rid: k for k, rid in enumerate(ids)} | {"outside": OUTSIDE}
+        types = kb.rooms.types if kb is not None else {}
+        widths = tuple(types[r.type].min_width_m if r.type in types else 0.0 for r in spec.rooms)
+        circulation = tuple(bool(types[r.type].circulation) if r.type in types else False for r in spec.rooms)
         return cls(
+            min_width_m=widths,
+            circulation=circulation,
             ids=ids,
             types=tuple(r.type for r in spec.rooms),
             areas_m2=np.array([r.area_m2 for r in spec.rooms], dtype=float),
@@ -60,10 +71,23 @@ class Program:
         return np.array([self.types[k] in HUB_TYPES or not ext[k] for k in range(self.n)])
 
     def min_side_m(self, k: int) -> float:
+        """The narrowest side room ``k`` may have: its type's norm (``min_width_m``), never
+        below the options' floor for its kind (corridor, habitable, service)."""
         opts = self.options
         if self.types[k] in CORRIDOR_TYPES:
-            return opts.corridor_width_m
-        return opts.min_side_habitable_m if self.habitable(k) else opts.min_side_service_m
+            floor = opts.corridor_width_m
+        else:
+            floor = opts.min_side_habitable_m if self.habitable(k) else opts.min_side_service_m
+        norm = self.min_width_m[k] if self.min_width_m else 0.0
+        return max(floor, norm)
+
+    def max_aspect(self, k: int) -> float:
+        """Longest/shortest side room ``k`` may have (corridors and other circulation
+        rooms, rooms.yaml ``circulation``: no limit)."""
+        if self.types[k] in CORRIDOR_TYPES or (self.circulation and self.circulation[k]):
+            return float("inf")
+        opts = self.options
+        return opts.max_habitable_aspect_ratio if self.habitable(k) else opts.max_room_aspect_ratio
 
     def label(self, k: int) -> str:
         return "outside" if k == OUTSIDE else self.ids[k]

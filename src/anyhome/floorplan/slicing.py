@@ -40,6 +40,8 @@ class SliceRooms:
     edges: frozenset[tuple[int, int]]
     cell_m: float
     opts: FloorplanOptions
+    max_aspect: np.ndarray
+    """Longest/shortest side each room may have (inf for corridors and the void)."""
 
 
 @dataclass
@@ -292,7 +294,7 @@ def _room_shape_score(k: int, short: float, long_: float, ext: Ext, rooms: Slice
     if rooms.corridor[k]:
         return score
     aspect = long_ / short
-    if aspect > opts.max_room_aspect_ratio:
+    if aspect > rooms.max_aspect[k]:
         score += opts.slice_infeasible_cost
     return score + max(0.0, aspect - opts.slice_room_aspect_soft)
 

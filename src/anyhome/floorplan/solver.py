@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import logging
 from collections import Counter
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 import numpy as np
@@ -40,6 +41,7 @@ from anyhome.floorplan.walls import (
 )
 from anyhome.floorplan.windows import PlacedWindow, free_slots, place_windows, window_room_ok
 from anyhome.house import Door, Floorplan, Room, Window
+from anyhome.plan.kb import KnowledgeBase
 from anyhome.plan.spec import HouseSpec
 
 log = logging.getLogger(__name__)
@@ -53,9 +55,19 @@ class Layout:
     doors: list[PlacedDoor]
     windows: list[PlacedWindow]
     score: float
+    origin: tuple[float, float] = (0.0, 0.0)
+    """Where the owner grid's corner lies (a given footprint's corner)."""
 
 
-def solve_floorplan(spec: HouseSpec, rng: np.random.Generator, options: FloorplanOptions | None = None) -> Floorplan:
+def solve_floorplan(
+    spec: HouseSpec,
+    rng: np.random.Generator,
+    options: FloorplanOptions | None = None,
+    *,
+    kb: KnowledgeBase | None = None,
+    footprint: object | None = None,
+    fixed: Mapping[str, tuple[float, float, float, float]] | None = None,
+) -> Floorplan:
     """Lay out ``spec``'s rooms, doors and windows.
 
     Parameters
@@ -63,15 +75,32 @@ def solve_floorplan(spec: HouseSpec, rng: np.random.Generator, options: Floorpla
     spec : the planned house
     rng : the only source of randomness; the same seed gives the same floorplan
     options : the solver's tunable numbers; None: ``FloorplanOptions()``
+    kb : the knowledge base whose room types give each room's narrowest width
+        (``rooms.yaml`` ``min_width_m``); None: the one in force
+    footprint : a shapely polygon (or a list of (x, y) points) the rooms must fill
+        exactly (an upper storey on the ground floor's footprint); None: the solver
+        draws one. See :mod:`anyhome.floorplan.fixed` for what is supported.
+    fixed : room id -> axis-aligned rectangle (x0, y0, x1, y1) in meters that room must
+        occupy exactly (a stairwell at the same place on every level)
 
     Raises
     ------
     FloorplanError
-        if no attempt within ``options.max_attempts`` satisfies the hard constraints.
+        if no attempt within ``options.max_attempts`` satisfies the hard constraints,
+        or ``footprint``/``fixed`` cannot be honoured.
     """
     opts = options or FloorplanOptions()
-    prog = Program.from_spec(spec, opts)
+    if kb is None:
+        from anyhome.plan.knowledge import knowledge_base
+
+        kb = knowledge_base()
+    prog = Program.from_spec(spec, opts, kb)
     _precheck(prog, opts)
+    if footprint is not None or fixed:
+        from anyhome.floorplan.fixed import solve_in_footprint
+
+        lay = solve_in_footprint(prog, rng, footprint, dict(fixed or {}))
+        return _to_floorplan(spec, prog, lay)
     failures: Counter[str] = Counter()
     found: list[Layout] = []
     slicing_attempts = opts.slicing_attempts if prog.n <= opts.slicing_max_rooms else 0
@@ -116,9 +145,11 @@ def _precheck(prog: Program, opts: FloorplanOptions) -> None:
             )
 
 
-def _attempt(prog: Program, rng: np.random.Generator, opts: FloorplanOptions) -> Layout | str:
-    """One try: a Layout, or a short reason it failed."""
-    grid = make_footprint(float(prog.areas_m2.sum()), prog.n, rng, opts)
+def _attempt(prog: Program, rng: np.random.Generator, opts: FloorplanOptions, grid: Grid | None = None) -> Layout | str:
+    """One try: a Layout, or a short reason it failed; ``grid``: the footprint to fill
+    (None: one drawn at random)."""
+    if grid is None:
+        grid = make_footprint(float(prog.areas_m2.sum()), prog.n, rng, opts)
     owner = _slice_rooms(prog, grid, rng, opts)
     reason, score = _check_rooms(prog, owner, grid.cell_m, opts)
     if reason:
@@ -141,6 +172,9 @@ def _spine_attempt(prog: Program, rng: np.random.Generator, opts: FloorplanOptio
     if isinstance(owner, str):
         return owner
     cell_m = opts.spine_cell_m
+    reason = _check_shapes(prog, owner, cell_m, opts)
+    if reason:
+        return reason
     runs = wall_runs(owner)
     doors = _place_doors(prog, runs, cell_m, rng)
     if isinstance(doors, str):
@@ -163,18 +197,20 @@ def _slice_rooms(prog: Program, grid: Grid, rng: np.random.Generator, opts: Floo
     cells = prog.areas_m2 / cell**2
     min_side = np.array([min_side_cells(prog.min_side_m(k), cell, opts) * cell for k in range(prog.n)])
     corridor = np.array([t in CORRIDOR_TYPES for t in prog.types])
+    max_aspect = np.array([prog.max_aspect(k) for k in range(prog.n)])
     void_id = None
     if len(void):
         void_id = prog.n
         cells = np.append(cells, len(void) * cells.sum() / (nx * ny - len(void)))
         min_side, corridor = np.append(min_side, 2 * cell), np.append(corridor, True)
+        max_aspect = np.append(max_aspect, np.inf)
         exterior, pos = np.append(exterior, False), np.vstack([pos, void.mean(axis=0) + 0.5])
-    rooms = SliceRooms(cells, min_side, corridor, exterior, void_id, pos, frozenset(prog.edges), cell, opts)
+    rooms = SliceRooms(cells, min_side, corridor, exterior, void_id, pos, frozenset(prog.edges), cell, opts, max_aspect)
     tree = slice_footprint((0, 0, nx, ny), rooms, rng)
     targets = np.maximum(cells, (min_side / cell) ** 2)
     if void_id is not None:
         targets[void_id] = 1.0
-    tune_rooms = TuneRooms(targets, min_side, corridor, exterior, void_id, tuple(prog.edges), cell, opts)
+    tune_rooms = TuneRooms(targets, min_side, corridor, exterior, void_id, tuple(prog.edges), cell, opts, max_aspect)
     tree = anneal(tree, (0, 0, nx, ny), tune_rooms, rng, opts)
     tune_tree(tree, (0, 0, nx, ny), tune_rooms)
     owner = np.full((nx + 2, ny + 2), OUTSIDE, dtype=np.int32)
@@ -204,12 +240,27 @@ def _check_rooms(prog: Program, owner: np.ndarray, cell_m: float, opts: Floorpla
         if abs(ratio - 1) > opts.area_tolerance_frac and not (ratio > 1 and cells * cell_m**2 <= (1 + opts.area_tolerance_frac) * min_side**2):
             return f"room {prog.ids[k]!r} area off target", np.inf
         aspect = bbox_aspect(mask)
-        if prog.types[k] not in CORRIDOR_TYPES and aspect > opts.max_room_aspect_ratio:
+        if aspect > prog.max_aspect(k) + 1e-9:
             return f"room {prog.ids[k]!r} too elongated", np.inf
         if narrow_share(mask, min_side_cells(min_side, cell_m, opts)) > opts.max_narrow_share_frac:
             return f"room {prog.ids[k]!r} too narrow", np.inf
         score += abs(ratio - 1) + opts.score_aspect_weight * max(0.0, aspect - opts.score_aspect_free_ratio)
     return "", score
+
+
+def _check_shapes(prog: Program, owner: np.ndarray, cell_m: float, opts: FloorplanOptions) -> str:
+    """'' if every room keeps its type's proportions and width, else the reason."""
+    for k in range(prog.n):
+        mask = owner == k
+        xs, ys = np.nonzero(mask)
+        w, h = int(xs.max() - xs.min() + 1), int(ys.max() - ys.min() + 1)
+        if max(w, h) / min(w, h) > prog.max_aspect(k) + 1e-9:
+            return f"room {prog.ids[k]!r} too elongated"
+        least = min_side_cells(prog.min_side_m(k), cell_m, opts)
+        narrow = min(w, h) < least if w * h == len(xs) else narrow_share(mask, least) > opts.max_narrow_share_frac
+        if narrow:
+            return f"room {prog.ids[k]!r} too narrow"
+    return ""
 
 
 def _place_doors(prog: Program, runs: list[Run], cell_m: float, rng) -> list[PlacedDoor] | str:
@@ -302,10 +353,17 @@ OPENING_HEADROOM_M = 0.1
 
 
 def _to_floorplan(spec: HouseSpec, prog: Program, lay: Layout) -> Floorplan:
+    ox, oy = lay.origin
+
+    def moved(points):
+        if ox == 0 and oy == 0:
+            return points
+        return type(points)((round(x + ox, 4), round(y + oy, 4)) for x, y in points)
+
     rooms = [
         Room(
             id=r.id, name=r.name, type=r.type, height=r.height_m, style=r.style,
-            materials=dict(r.materials), polygon=room_outline(lay.owner == k, lay.cell_m),
+            materials=dict(r.materials), polygon=moved(room_outline(lay.owner == k, lay.cell_m)),
         )
         for k, r in enumerate(spec.rooms)
     ]
@@ -315,12 +373,12 @@ def _to_floorplan(spec: HouseSpec, prog: Program, lay: Layout) -> Floorplan:
         sides = spec.connections[i] if i < len(spec.connections) else (prog.label(d.rooms[0]), prog.label(d.rooms[1]))
         # a door fits under the lower ceiling of the rooms it joins
         ceiling_m = min(heights.get(s, DOOR_HEIGHT_M + OPENING_HEADROOM_M) for s in sides)
-        doors.append(Door(id=f"door-{i}", rooms=sides, segment=d.opening.segment(), kind=d.kind,
+        doors.append(Door(id=f"door-{i}", rooms=sides, segment=moved(d.opening.segment()), kind=d.kind,
                           height=min(DOOR_HEIGHT_M, ceiling_m - OPENING_HEADROOM_M)))
     windows = []
     for i, w in enumerate(lay.windows):
         room_id = prog.ids[w.room]
         # a window's top stays under its room's ceiling
         height_m = min(w.height_m, heights[room_id] - OPENING_HEADROOM_M - w.sill_m)
-        windows.append(Window(id=f"win-{i}", room=room_id, segment=w.opening.segment(), height=height_m, sill=w.sill_m))
+        windows.append(Window(id=f"win-{i}", room=room_id, segment=moved(w.opening.segment()), height=height_m, sill=w.sill_m))
     return Floorplan(rooms=rooms, doors=doors, windows=windows, connections=list(spec.connections))

@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from anyhome.floorplan.grid import FREE, OUTSIDE
+from anyhome.floorplan.grid import FREE, OUTSIDE, min_side_cells
 from anyhome.floorplan.program import Program
 
 Column = list[int]  # rooms stacked from the spine side outwards
@@ -50,7 +50,9 @@ def spine_owner(prog: Program, rng: np.random.Generator) -> np.ndarray | str:
     x = 0
     for s in spine:
         sides = _split_sides(blocks[s], prog, rng)
-        side_depth = [max([depth, *(_deep_enough(col, prog) for b in side for col in b)]) for side in sides]
+        base_depth = [max([depth, *(_deep_enough(col, prog) for b in side for col in b)]) for side in sides]
+        cap = _segment_cap(prog, s)
+        side_depth = [_pick_depth(side, base_depth[i], cap, prog) for i, side in enumerate(sides)]
         widths = [[[_column_width(c, side_depth[i], prog) for c in b] for b in side] for i, side in enumerate(sides)]
         lengths = [sum(sum(bw) for bw in side) for side in widths]
         own_len = _spine_length(prog, s, max(lengths), rng)
@@ -184,7 +186,8 @@ def _cells(m: float, prog: Program) -> int:
 
 
 def _min_side(prog: Program, k: int) -> int:
-    return _cells(prog.min_side_m(k), prog)
+    """Cells room ``k`` must span (as the shape check counts them)."""
+    return min_side_cells(prog.min_side_m(k), prog.options.spine_cell_m, prog.options)
 
 
 def _block_depth(prog: Program, spine: list[int], rng) -> int:
@@ -210,9 +213,59 @@ def _deep_enough(col: Column, prog: Program) -> int:
     )
 
 
+def _segment_cap(prog: Program, s: int) -> int:
+    """Longest a spine room's segment should grow: a hallway's soft length, else the
+    length at which the room, at its target area, reaches its greatest aspect."""
+    opts = prog.options
+    if not np.isfinite(prog.max_aspect(s)):
+        return _cells(opts.spine_corridor_soft_length_m, prog)
+    return int(np.sqrt(prog.areas_m2[s] * prog.max_aspect(s)) / opts.spine_cell_m)
+
+
+def _pick_depth(side: list[list[Column]], base: int, cap: int, prog: Program) -> int:
+    """Depth of one side of a spine segment: the least of ``base`` and deeper steps that
+    keeps the side within ``cap`` and every column room within its aspect; else the one
+    with the fewest aspect faults, then the shortest."""
+    if not side:
+        return base
+    opts = prog.options
+    best: tuple[tuple[int, int], int] | None = None
+    for step in range(opts.spine_depth_steps + 1):
+        depth = int(round(base * (1 + step * opts.spine_depth_step_frac)))
+        if depth * opts.spine_cell_m > opts.spine_big_depth_max_m and step:
+            break
+        length, faults = 0, 0
+        for block in side:
+            for col in block:
+                w = _column_width(col, depth, prog)
+                length += w
+                faults += sum(_aspect_fault(k, w, h, prog) for k, h in zip(col, _column_heights(col, depth, prog)))
+        if faults == 0 and length <= cap:
+            return depth
+        key = (faults, length)
+        if best is None or key < best[0]:
+            best = (key, depth)
+    assert best is not None
+    return best[1]
+
+
+def _aspect_fault(k: int, w: int, h: int, prog: Program) -> bool:
+    return min(w, h) < _min_side(prog, k) or max(w, h) / min(w, h) > prog.max_aspect(k)
+
+
+def _column_heights(col: Column, depth: int, prog: Program) -> list[int]:
+    total = sum(prog.areas_m2[k] for k in col)
+    heights = [max(int(round(depth * prog.areas_m2[k] / total)), _min_side(prog, k)) for k in col]
+    heights[-1] = depth - sum(heights[:-1])
+    return heights
+
+
 def _column_width(col: Column, depth: int, prog: Program) -> int:
     area_cells = sum(prog.areas_m2[k] for k in col) / prog.options.spine_cell_m**2
-    return max(int(np.ceil(area_cells / depth)), *(_min_side(prog, k) for k in col))
+    width = max(int(np.ceil(area_cells / depth)), *(_min_side(prog, k) for k in col))
+    if len(col) == 1 and np.isfinite(prog.max_aspect(col[0])):  # a small room in a deep row: wider, not a strip
+        width = max(width, int(np.ceil(depth / prog.max_aspect(col[0]))))
+    return width
 
 
 def _spine_length(prog: Program, s: int, blocks_len: int, rng) -> int:
@@ -226,16 +279,19 @@ def _spine_length(prog: Program, s: int, blocks_len: int, rng) -> int:
 
 
 def _spine_depth(prog: Program, s: int, length: int) -> int:
+    """A spine room's depth: its area over its length, never narrower than its type
+    allows nor so shallow that it becomes a strip (its greatest aspect)."""
     area = prog.areas_m2[s] / prog.options.spine_cell_m**2
     floor_m = prog.options.spine_hallway_min_m if prog.types[s] == "hallway" else prog.min_side_m(s)
-    return max(int(round(area / length)), _cells(floor_m, prog))
+    depth = max(int(round(area / length)), _cells(floor_m, prog))
+    if np.isfinite(prog.max_aspect(s)):
+        depth = max(depth, int(np.ceil(length / prog.max_aspect(s))))
+    return depth
 
 
 def _place_column(col, w, cx, y0, d, depth, side, prog, rects) -> None:
     """Stack ``col``'s rooms outward from the spine, north (side 0) or south (side 1)."""
-    total = sum(prog.areas_m2[k] for k in col)
-    heights = [max(int(round(depth * prog.areas_m2[k] / total)), _min_side(prog, k)) for k in col]
-    heights[-1] = depth - sum(heights[:-1])
+    heights = _column_heights(col, depth, prog)
     offset = 0
     for k, h in zip(col, heights):
         if side == 0:

@@ -29,6 +29,8 @@ class TuneRooms:
     edges: tuple[tuple[int, int], ...]
     cell_m: float
     opts: FloorplanOptions
+    max_aspect: np.ndarray
+    """Longest/shortest side each room may have (inf for corridors and the void)."""
 
 
 def tune_tree(tree: Cut | int, rect: Rect, rooms: TuneRooms) -> float:
@@ -80,7 +82,7 @@ def _room_cost(k: int, r: Rect, rooms: TuneRooms) -> float:
     cost = opts.tune_violation_weight * max(0.0, err - opts.tune_area_slack_frac)
     cost += opts.tune_violation_weight * max(0.0, rooms.min_side_m[k] - min(w, h))
     if not rooms.corridor[k]:
-        cost += opts.tune_aspect_weight * max(0.0, max(w, h) / min(w, h) - opts.max_room_aspect_ratio)
+        cost += opts.tune_aspect_weight * max(0.0, max(w, h) / min(w, h) - rooms.max_aspect[k])
     return cost
 
 
