@@ -63,6 +63,8 @@ LEGACY_FILES = frozenset({HOUSE_FILE, "house.glb", "floorplan.svg"}) | RENDER_FI
 """Top-level names a house folder without a manifest may hold."""
 _LEVEL_SVG_RE = re.compile(r"floorplan-b?[0-9]{1,2}\.svg")
 """The floorplan of a storey other than the ground floor (anyhome.export.svg.level_svg_name)."""
+_LEVEL_RENDER_RE = re.compile(r"birdseye-b?[0-9]{1,2}\.(?:png|depth\.npy|ids\.npy)")
+"""The bird's-eye of a storey other than the ground floor (anyhome.render.api.level_suffix)."""
 _LEGACY_VIEW_RE = re.compile(r"[A-Za-z0-9_.-]+\.(?:png|depth\.npy|ids\.npy)")
 _HOUSE_FORMAT_RE = re.compile(rb'"format"\s*:\s*"anyhome\.house"')
 NAME_MAX = 255
@@ -238,7 +240,7 @@ def _legacy_foreign(folder: Path) -> str | None:
             return _LEGACY_VIEW_RE.fullmatch(rel[len(VIEWS_DIR) + 1:]) is not None
         if rel == HOUSE_FILE:
             return _is_anyhome_house(folder / rel)
-        return rel in LEGACY_FILES or _LEVEL_SVG_RE.fullmatch(rel) is not None
+        return rel in LEGACY_FILES or _LEVEL_SVG_RE.fullmatch(rel) is not None or _LEVEL_RENDER_RE.fullmatch(rel) is not None
 
     return _first_foreign(folder, "", ours)
 
@@ -572,4 +574,4 @@ def is_ours(folder: Path) -> bool:
 
 def is_render_output(rel: str) -> bool:
     """True for files a render writes (bird's-eye, render.json, anything in views/)."""
-    return rel in RENDER_FILES or rel.startswith(VIEWS_DIR + "/")
+    return rel in RENDER_FILES or rel.startswith(VIEWS_DIR + "/") or _LEVEL_RENDER_RE.fullmatch(rel) is not None

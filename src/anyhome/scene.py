@@ -151,7 +151,7 @@ class _SceneBuilder:
         self.specs[material_key(spec)] = spec
         return textured_mesh(mesh.vertices, mesh.faces, pbr_material(spec, self.textures), spec.tile_m)
 
-    def room(self, room: Room) -> None:
+    def room(self, room: Room, parent: str = ROOT_NODE) -> None:
         base = {"room": room.id, "room_name": room.name, "room_type": room.type}
         slabs = {"floor": _slab(room.polygon, -FLOOR_THICKNESS_M, 0.0),
                  "ceiling": _slab(room.polygon, room.height, room.height + FLOOR_THICKNESS_M)}
@@ -163,14 +163,14 @@ class _SceneBuilder:
             spec = surface_material(words, part, self.px)
             meta = {**base, "name": f"{room.name} {part}", "category": part, "material": words,
                     "texture": spec.kind}
-            self.add(self.surface(mesh, spec), f"room:{room.id}:{part}", meta)
+            self.add(self.surface(mesh, spec), f"room:{room.id}:{part}", meta, parent=parent)
 
-    def object(self, obj: HouseObject) -> None:
+    def object(self, obj: HouseObject, parent: str = ROOT_NODE) -> None:
         node = f"object:{obj.id}"
         meta = {"id": obj.id, "name": obj.name, "category": obj.category, "room": obj.room,
                 "support": obj.support, "material": obj.material,
                 "family": (obj.asset or {}).get("family") or family_for(obj.category, obj.name)}
-        self.scene.graph.update(frame_from=ROOT_NODE, frame_to=node,
+        self.scene.graph.update(frame_from=parent, frame_to=node,
                                 matrix=object_transform(obj.position, obj.yaw), metadata=dict(meta))
         record = _asset_record(obj)
         mesh = build_object_mesh(obj)  # (loads the families, so their slot roles are known)
@@ -202,20 +202,38 @@ def scene_and_materials(house: House, texture_px: int | None = None, textures: b
     from the specs, once per distinct image).
     """
     b = _SceneBuilder(house, texture_px, textures)
-    for room in house.rooms:
-        b.room(room)
-    for obj in house.objects:
-        b.object(obj)
-    for name, mesh, meta in architecture_meshes(house):  # doors, windows, skirting, lights
-        b.add(mesh, name, meta)
+    storeys = house.level_numbers()
+    if len(storeys) <= 1:
+        _add_storey(b, house, ROOT_NODE)
+        return b.scene, b.specs
+    from anyhome.floorplan.levels import level_view
+
+    b.walls = {}
+    for k in storeys:  # each storey's walls, openings and lights on its own, under a node at its elevation
+        part = level_view(house, k)
+        b.walls.update(room_wall_meshes(part))
+        node = f"level:{k}"
+        b.scene.graph.update(frame_from=ROOT_NODE, frame_to=node, metadata={"level": k},
+                             matrix=trimesh.transformations.translation_matrix((0.0, 0.0, house.elevation_m(k))))
+        _add_storey(b, part, node)
     return b.scene, b.specs
+
+
+def _add_storey(b: _SceneBuilder, house: House, parent: str) -> None:
+    for room in house.rooms:
+        b.room(room, parent)
+    for obj in house.objects:
+        b.object(obj, parent)
+    for name, mesh, meta in architecture_meshes(house):  # doors, windows, skirting, lights
+        b.add(mesh, name, meta, parent=parent)
 
 
 def build_scene(house: House, texture_px: int | None = None) -> trimesh.Scene:
     """The house as a trimesh Scene (glTF frame via the root node), with textured PBR
     materials (PIL images on the materials).
 
-    Nodes: ``room:<id>:floor|walls|ceiling`` (one mesh each) and ``object:<id>`` (no
+    A house of several storeys has one node ``level:<k>`` per storey, raised to its
+    elevation, holding that storey's nodes. Nodes: ``room:<id>:floor|walls|ceiling`` (one mesh each) and ``object:<id>`` (no
     mesh; the object's transform and metadata) with one child per material part,
     ``object:<id>:<role>`` (the part's material role: wood, fabric, metal, glass...; a ``-2`` suffix
     for repeats), in the object's local frame.

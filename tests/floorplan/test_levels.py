@@ -86,3 +86,40 @@ def test_per_storey_svgs_written(tmp_path):
         assert all(r.name in text for r in h.rooms if r.level == level)
     assert "kitchen" in (out / "floorplan.svg").read_text()
     assert "kitchen" not in (out / "floorplan-b1.svg").read_text()
+
+
+def test_glb_stacks_each_storey_at_its_elevation(townhouse, tmp_path):
+    """One node per storey, raised to its elevation (glTF is y-up); its rooms under it."""
+    import numpy as np
+    import trimesh
+
+    from anyhome.export.glb import write_glb
+
+    path = write_glb(townhouse, tmp_path / "house.glb")
+    scene = trimesh.load(path)
+    for lv in townhouse.levels:
+        node = f"level:{lv.level}"
+        assert node in scene.graph.nodes
+        assert np.isclose(scene.graph.get(node)[0][1, 3], lv.elevation_m)
+        for r in townhouse.rooms:
+            if r.level == lv.level:
+                assert np.isclose(scene.graph.get(f"room:{r.id}:floor")[0][1, 3], lv.elevation_m)
+    top = max(townhouse.levels, key=lambda lv: lv.level)
+    assert scene.bounds[1][1] >= top.elevation_m + 2.0  # the top storey stands above the others
+
+
+def test_each_storey_has_its_birdseye_and_rerender_keeps_the_folder_ours(townhouse, gl_available, tmp_path):
+    out = tmp_path / "town"
+    subprocess.run([sys.executable, "-m", "anyhome", "generate", "a three-storey townhouse", "--out", str(out),
+                    "--render", "--view-size", "64", "--size", "96", "--no-glb"], check=True, timeout=300)
+    meta = json.loads((out / "render.json").read_text())
+    assert {"birdseye", "birdseye-1", "birdseye-2"} <= set(meta["images"])
+    assert set(meta["instances_by_level"]) == {"0", "1", "2"}
+    rooms = {r["id"]: r["level"] for r in json.loads((out / "house.json").read_text())["rooms"]}
+    for name, rec in meta["images"].items():
+        if name.startswith("views/"):
+            assert rec["level"] == rooms[rec["room"]]
+    proc = subprocess.run([sys.executable, "-m", "anyhome", "render", str(out), "--view-size", "64", "--size", "96"],
+                          capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 0, proc.stderr
+    assert (out / "birdseye-2.png").is_file()

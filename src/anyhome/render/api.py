@@ -89,6 +89,12 @@ def render_house(
     optical axis, inf where nothing is drawn); with ``ids`` a ``<stem>.ids.npy`` ((h, w)
     int32 index into ``instances`` of ``render.json``, -1 for sky and ground; indices
     below ``len(house.objects)`` are the object's index in ``house.objects``).
+    A house of several storeys is rendered storey by storey, each as a house of its own:
+    ``birdseye.png`` is the ground floor, ``birdseye-1.png``... the storeys above and
+    ``birdseye-b1.png``... basements (named as the floorplan SVGs); each view record
+    carries its ``level``, and ``instances_by_level`` in ``render.json`` holds each
+    storey's legend (an index below the storey's object count is the index in that
+    storey's objects, in house order).
     ``render.json`` holds each image's camera (intrinsics, world-to-camera in the plan
     frame, OpenGL convention) and the instance legend.
 
@@ -125,48 +131,29 @@ def render_house(
         out.mkdir(parents=True, exist_ok=True)
     except OSError as e:
         raise RenderError(f"could not create {out}: {e.strerror}") from None
-    t = time.perf_counter()
-    if scene is None:
-        from anyhome.scene import build_scene
-
-        scene = build_scene(house)
-    meshes = scene_meshes(house, scene)
-    timings["scene"] = time.perf_counter() - t
     files: list[Path] = []
     records: dict[str, Any] = {}
-    write_s = 0.0
-    t = time.perf_counter()
-    with Renderer(meshes, room_lights(house, meshes.fixtures), supersample) as renderer:
-        timings["upload"] = time.perf_counter() - t
+    legends: dict[int, list[Any]] = {}
+    storeys = house.level_numbers() or [0]
+    for k in storeys:
+        if len(storeys) > 1:  # each storey on its own, as a one-storey house
+            from anyhome.floorplan.levels import level_view
 
-        def shoot(name: str, camera: Camera, ceilings: bool) -> float:
-            nonlocal write_s
-            t0 = time.perf_counter()
-            frame = renderer.render(camera, ceilings=ceilings, depth=depth, ids=ids)
-            t1 = time.perf_counter()
-            _write_frame(out, name, frame, files)
-            write_s += time.perf_counter() - t1
-            records[name] = {"file": f"{name}.png", **camera.to_record()}
-            return t1 - t0
-
-        timings["birdseye"] = shoot(BIRDSEYE_NAME, birdseye_camera(house, size_px), ceilings=False)
-        timings["views"] = 0.0
-        if views:
-            leaves = door_leaf_boxes(house)
-            used: set[str] = set()
-            for room in house.rooms:
-                stem = _stem(room.id)
-                while stem in used:  # two ids that sanitize alike
-                    stem += "_"
-                used.add(stem)
-                name = f"{VIEWS_DIR}/{stem}"
-                camera = room_camera(house, room, view_size_px, leaves)
-                timings["views"] += shoot(name, camera, ceilings=True)
-                records[name]["room"] = room.id
+            part, part_scene, suffix = level_view(house, k), None, level_suffix(k)
+        else:
+            part, part_scene, suffix = house, scene, ""
+        legends[k] = _render_storey(part, out, size_px, view_size_px, views, depth, ids, part_scene, supersample,
+                                    suffix, files, records, timings)
+    write_s = timings.pop("write_frames", 0.0)
     timings["write"] = write_s
     meta = {"frame": "plan (x east, y north, z up, meters); cameras look down -z, y up",
             "depth": "meters along the optical axis; inf where nothing is drawn",
-            "instances": meshes.instances, "images": records}
+            "instances": legends[0] if 0 in legends else legends[storeys[0]], "images": records}
+    if len(legends) > 1:  # several storeys: each storey's images index its own storey's legend
+        meta["instances_by_level"] = {str(k): v for k, v in legends.items()}
+        for rec in records.values():
+            if "room" in rec:
+                rec["level"] = house.room_level(rec["room"])
     t = time.perf_counter()
     meta_path = out / META_FILE
     write_bytes(meta_path, (json.dumps(meta, indent=1) + "\n").encode("utf-8"))
@@ -174,4 +161,57 @@ def render_house(
     timings["write"] += time.perf_counter() - t
     timings["total"] = time.perf_counter() - t_start
     log.debug("rendered %d images in %.2f s", len(records), timings["total"])
-    return {"files": files, "images": records, "n_triangles": meshes.n_triangles, "timings_s": timings}
+    n_triangles = timings.pop("n_triangles")
+    return {"files": files, "images": records, "n_triangles": int(n_triangles), "timings_s": timings}
+
+
+def level_suffix(level: int) -> str:
+    """The file-name suffix of a storey's bird's-eye: "" (ground), "-1"..., "-b1"... (basements),
+    as the floorplan SVGs are named."""
+    return "" if level == 0 else f"-{level}" if level > 0 else f"-b{-level}"
+
+
+def _render_storey(house: House, out: Path, size_px: int, view_size_px: int, views: bool, depth: bool, ids: bool,
+                   scene: trimesh.Scene | None, supersample: int, suffix: str, files: list[Path],
+                   records: dict[str, Any], timings: dict[str, float]) -> list[Any]:
+    """Render one storey (or a one-storey house): its bird's-eye ``birdseye<suffix>`` and
+    its rooms' views; add to ``files``, ``records`` and ``timings``; return its instance legend."""
+    def add(key: str, value: float) -> None:
+        timings[key] = timings.get(key, 0.0) + value
+
+    t = time.perf_counter()
+    if scene is None:
+        from anyhome.scene import build_scene
+
+        scene = build_scene(house)
+    meshes = scene_meshes(house, scene)
+    add("scene", time.perf_counter() - t)
+    add("n_triangles", meshes.n_triangles)
+    t = time.perf_counter()
+    with Renderer(meshes, room_lights(house, meshes.fixtures), supersample) as renderer:
+        add("upload", time.perf_counter() - t)
+
+        def shoot(name: str, camera: Camera, ceilings: bool) -> float:
+            t0 = time.perf_counter()
+            frame = renderer.render(camera, ceilings=ceilings, depth=depth, ids=ids)
+            t1 = time.perf_counter()
+            _write_frame(out, name, frame, files)
+            add("write_frames", time.perf_counter() - t1)
+            records[name] = {"file": f"{name}.png", **camera.to_record()}
+            return t1 - t0
+
+        add("birdseye", shoot(BIRDSEYE_NAME + suffix, birdseye_camera(house, size_px), ceilings=False))
+        add("views", 0.0)
+        if views:
+            leaves = door_leaf_boxes(house)
+            used = {Path(n).name for n in records if n.startswith(f"{VIEWS_DIR}/")}
+            for room in house.rooms:
+                stem = _stem(room.id)
+                while stem in used:  # two ids that sanitize alike
+                    stem += "_"
+                used.add(stem)
+                name = f"{VIEWS_DIR}/{stem}"
+                camera = room_camera(house, room, view_size_px, leaves)
+                add("views", shoot(name, camera, ceilings=True))
+                records[name]["room"] = room.id
+    return list(meshes.instances)
