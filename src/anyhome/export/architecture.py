@@ -26,6 +26,7 @@ from shapely.geometry import Point as ShapelyPoint
 from shapely.geometry import Polygon
 from shapely.ops import unary_union
 
+from anyhome.export.ceilings import ceiling_height_at
 from anyhome.export.walls import ON_LINE_TOL_M, WALL_THICKNESS_M, WallPiece, wall_pieces
 from anyhome.geometry import blocks_navigation, footprint_polygon, opening_zone
 from anyhome.house import Door, House, Room, Window
@@ -325,7 +326,7 @@ def skirting(house: House, room: Room) -> Piece:
 def ceiling_light(room: Room) -> Piece:
     """A pendant (``PENDANT_TYPES``) or a flush disc at the room's light position."""
     x, y = light_position(room)
-    top = room.height - CEILING_GAP_M
+    top = ceiling_height_at(room, x, y) - CEILING_GAP_M  # under a pitched or vaulted ceiling: higher
     if room.type in PENDANT_TYPES and top - PENDANT_BOTTOM_M > PENDANT_SHADE_HEIGHT_M + 0.05:
         finish, style = FINISHES["pendant_light"], "pendant"
         shade = trimesh.creation.cone(PENDANT_RADIUS_M, PENDANT_SHADE_HEIGHT_M, sections=LIGHT_SECTIONS)
