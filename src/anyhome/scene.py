@@ -155,6 +155,10 @@ class _SceneBuilder:
 
     def room(self, room: Room) -> None:
         base = {"room": room.id, "room_name": room.name, "room_type": room.type}
+        if room.open_air:  # no ceiling node: open to the sky
+            base["open_air"] = True
+        elif room.ceiling != "flat":
+            base["ceiling_shape"] = room.ceiling
         slabs = {"floor": _slab(room.polygon, -FLOOR_THICKNESS_M, 0.0),
                  "ceiling": ceiling_mesh(room, FLOOR_THICKNESS_M)}  # None: open air
         for part in ROOM_PARTS:

@@ -61,6 +61,8 @@ def test_open_air_rooms_have_no_ceiling_node(terrace_house, terrace_glb) -> None
     for r in terrace_house.rooms:
         assert (f"room:{r.id}:ceiling" in names) == (not r.open_air), r.id
         assert f"room:{r.id}:floor" in names
+        geom = terrace_glb.graph[f"room:{r.id}:floor"][1]
+        assert terrace_glb.geometry[geom].metadata.get("open_air", False) == r.open_air
 
 
 def test_no_ceiling_hung_object_in_open_air_rooms(terrace_house) -> None:

@@ -73,7 +73,7 @@ def test_llm_rooms_take_their_type_height_and_open_air() -> None:
     ({"rooms.yaml": "types:\n  balcony: {height_m: 2.7, open_air: true, min_width_m: 1.2, habitable: true, "
                     "area: [4, 8], tier: 7, max: 2, materials: {floor: a, walls: b, ceiling: ''}}\n"},
      "rooms.yaml: types.balcony: an open_air room cannot be habitable"),
-    ({"rooms.yaml": "types:\n  balcony: {height_m: 30}\n"}, "rooms.yaml: types.balcony: height_m:"),
+    ({"rooms.yaml": "types:\n  balcony: {height_m: 30}\n"}, "rooms.yaml: types.balcony: height_m: Input should be less than or equal to 12"),
     ({"heights.yaml": "words:\n  domed: {ceiling: domed}\n"}, "heights.yaml: words.domed: ceiling:"),
     ({"heights.yaml": "limits: {min_m: 4.0, max_m: 3.0}\n"}, "heights.yaml: limits: min_m 4.0 is more than max_m 3.0"),
 ])
