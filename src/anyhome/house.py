@@ -99,6 +99,13 @@ class _Model(BaseModel):
 
 
 Point = tuple[float, float]
+CeilingShape = Literal["flat", "pitched", "vaulted"]
+"""A room's ceiling: flat at ``height``; pitched: two planes rising from the long walls to
+a ridge along the room's long axis; vaulted: a barrel vault across the short side (see
+:data:`CEILING_RISE`)."""
+CEILING_RISE: Final[dict[str, float]] = {"flat": 0.0, "pitched": 0.25, "vaulted": 0.3}
+"""Rise of the ridge (pitched) or crown (vaulted) above ``height``, as a share of the
+room's short side (plan/knowledge/heights.yaml ``shapes`` says the same for the planner)."""
 Segment = tuple[Point, Point]
 
 
@@ -110,6 +117,10 @@ class Room(_Model):
     height: float = 2.7
     style: str = ""
     materials: dict[str, str] = Field(default_factory=dict)
+    open_air: bool = Field(default=False, description="no roof (balcony, terrace, courtyard): no ceiling, "
+                           "railings on the sides it shares with no enclosed room")
+    ceiling: CeilingShape = Field(default="flat", description="ceiling shape; meaningless (and kept 'flat') "
+                                  "when open_air")
     level: int = Field(default=0, description="storey: 0 ground, 1 the first floor up, -1 a basement")
 
 

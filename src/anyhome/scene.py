@@ -8,7 +8,8 @@ architecture pieces (doors, windows, skirting, lights), all under a single root 
 
 Surfaces carry PBR materials with procedural textures (``anyhome.materials``): floors,
 walls and ceilings get planar UVs in meters / tile size. Ceilings stay their own nodes
-(category ``ceiling``) so a viewer can hide them. Texture size: ``texture_px``, else
+(category ``ceiling``) so a viewer can hide them; an open-air room (``Room.open_air``)
+has none, a pitched or vaulted one is sloped (:mod:`anyhome.export.ceilings`). Texture size: ``texture_px``, else
 ``$ANYHOME_TEXTURE_PX``, else 256. :mod:`anyhome.export.glb` writes the scene as a GLB
 file; :mod:`anyhome.render` flattens it for the GPU.
 """
@@ -25,6 +26,7 @@ from anyhome.assets.procedural._parts import slot_role
 from anyhome.assets.registry import SOURCE, object_rng
 from anyhome.errors import ExportError
 from anyhome.export.architecture import architecture_meshes
+from anyhome.export.ceilings import ceiling_mesh
 from anyhome.export.walls import WALL_THICKNESS_M, solid_blocks, wall_pieces
 from anyhome.house import House, HouseObject, Room
 from anyhome.materials import (
@@ -153,8 +155,12 @@ class _SceneBuilder:
 
     def room(self, room: Room, parent: str = ROOT_NODE) -> None:
         base = {"room": room.id, "room_name": room.name, "room_type": room.type}
+        if room.open_air:  # no ceiling node: open to the sky
+            base["open_air"] = True
+        elif room.ceiling != "flat":
+            base["ceiling_shape"] = room.ceiling
         slabs = {"floor": _slab(room.polygon, -FLOOR_THICKNESS_M, 0.0),
-                 "ceiling": _slab(room.polygon, room.height, room.height + FLOOR_THICKNESS_M)}
+                 "ceiling": ceiling_mesh(room, FLOOR_THICKNESS_M)}  # None: open air
         for part in ROOM_PARTS:
             mesh = slabs.get(part) if part != "walls" else self.walls.get(room.id)
             if mesh is None:

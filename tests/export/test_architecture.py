@@ -90,7 +90,8 @@ def test_metadata(generated) -> None:
     house, pieces = generated
     for name, (_, meta) in pieces.items():
         kind, oid, part = name.split(":")
-        assert meta["category"] == CATEGORIES[(kind, part)]
+        open_air = kind == "room" and house.room(oid).open_air  # a wall lantern, not a ceiling light
+        assert meta["category"] == ("wall_light" if open_air and part == "light" else CATEGORIES[(kind, part)])
         assert isinstance(meta["material"], str) and meta["material"]
         json.dumps(meta)  # glTF extras must serialise
         if kind == "door":
@@ -214,9 +215,10 @@ def test_one_light_per_room_inside_below_ceiling(generated) -> None:
         mesh, meta = pieces[f"room:{room.id}:light"]
         assert Polygon(room.polygon).contains(_hull2d(mesh.vertices[:, :2]))
         z = mesh.vertices[:, 2]
-        assert z.max() < room.height and z.min() >= arch.PENDANT_BOTTOM_M - TOL
+        lowest = arch.LANTERN_BOTTOM_M if room.open_air else arch.PENDANT_BOTTOM_M
+        assert z.max() < room.height and z.min() >= lowest - TOL
         assert np.asarray(mesh.visual.material.emissiveFactor).max() > 0
-        assert meta["style"] in ("pendant", "flush disc")
+        assert meta["style"] in (("wall lantern",) if room.open_air else ("pendant", "flush disc"))
 
 
 def test_deterministic(generated) -> None:

@@ -71,9 +71,9 @@ BROKEN = {
     "group names a missing object": ({"furniture.yaml": "groups:\n  hammock: {anchor: {use: hammock stand}}\n"},
                                      "furniture.yaml: groups.hammock: anchor.use: unknown object 'hammock stand'"),
     "program names an unknown room type": (
-        {"programs.yaml": "programs:\n  hut:\n    building: hut\n    main: a\n    entrance: [porch]\n"
+        {"programs.yaml": "programs:\n  hut:\n    building: hut\n    main: a\n    entrance: [gazebo]\n"
                           "    rooms: [{key: a, type: living_room}]\n"},
-        "programs.yaml: programs.hut: entrance: unknown room type 'porch'"),
+        "programs.yaml: programs.hut: entrance: unknown room type 'gazebo'"),
     "style names an unknown asset class": ({"styles.yaml": "styles:\n  gothic: {asset_class: gothik}\n"},
                                            "styles.yaml: styles.gothic: asset_class: unknown asset class 'gothik'"),
     "bad colour": ({"styles.yaml": "asset_classes:\n  gothic: {woods: ['#12345']}\n"},

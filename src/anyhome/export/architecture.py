@@ -26,7 +26,8 @@ from shapely.geometry import Point as ShapelyPoint
 from shapely.geometry import Polygon
 from shapely.ops import unary_union
 
-from anyhome.export.walls import ON_LINE_TOL_M, WALL_THICKNESS_M
+from anyhome.export.ceilings import ceiling_height_at
+from anyhome.export.walls import ON_LINE_TOL_M, WALL_THICKNESS_M, WallPiece, wall_pieces
 from anyhome.geometry import blocks_navigation, footprint_polygon, opening_zone
 from anyhome.house import Door, House, Room, Window
 
@@ -56,7 +57,8 @@ LEAF_WALKWAY_M = 0.6
 this from the walls, into more pieces than the floor has without it."""
 DOORWAY_KEEP_CLEAR_M = 0.6
 """A leaf stays out of this depth in front of every other door's opening."""
-SWING_AVOID_TYPES = frozenset({"hallway", "entry", "balcony", "garage"})
+SWING_AVOID_TYPES = frozenset({"hallway", "entry", "balcony", "garage", "terrace", "deck", "patio", "porch",
+                               "courtyard", "garden", "roof_terrace"})
 """Room types a door leaf swings into only when the other side cannot take it."""
 
 WINDOW_FRAME_WIDTH_M = 0.05
@@ -93,6 +95,10 @@ PENDANT_TYPES = frozenset(
     {"dining_room", "kitchen", "living_room", "cafe", "restaurant", "bar", "hall", "library"}
 )
 """Room types that get a pendant; the others get a flush disc."""
+LANTERN_BOTTOM_M = 1.75
+"""Bottom of an open-air room's wall lantern (it has no ceiling to hang a light from)."""
+LANTERN_SIZE_M = (0.2, 0.15, 0.3)
+"""Width along the wall, depth out of it and height of the wall lantern."""
 PENDANT_BOTTOM_M = 2.1
 """Height above the floor of a pendant shade's bottom rim (at least this low headroom)."""
 PENDANT_RADIUS_M = 0.2
@@ -126,6 +132,8 @@ FINISHES: dict[str, Finish] = {
                          emissive=(1.0, 0.9, 0.72)),
     "pendant_light": Finish("brass, warm white light", (0.78, 0.62, 0.34, 1.0), metallic=0.8,
                             roughness=0.35, emissive=(1.0, 0.85, 0.6)),
+    "wall_lantern": Finish("black metal and frosted glass, warm white light", (0.95, 0.9, 0.8, 1.0),
+                           roughness=0.4, emissive=(1.0, 0.85, 0.6)),
 }
 """Finish of every piece kind."""
 
@@ -141,7 +149,8 @@ def architecture_meshes(house: House) -> list[Piece]:
     pieces : list of (node name, mesh, metadata)
         node names ``door:<id>:frame``, ``door:<id>:leaf`` (not for ``kind="open"``),
         ``window:<id>:frame``, ``window:<id>:glass``, ``room:<id>:skirting`` and
-        ``room:<id>:light``; meshes in plan coordinates with a PBR material; metadata
+        ``room:<id>:light`` (a ceiling light; in an open-air room a wall lantern on a
+        full-height wall it shares with an enclosed room, or none); meshes in plan coordinates with a PBR material; metadata
         with ``category``, ``room`` or ``rooms``, ``material`` and ``name``.
     """
     pieces: list[Piece] = []
@@ -152,9 +161,16 @@ def architecture_meshes(house: House) -> list[Piece]:
             pieces.append(door_leaf(house, door, placed))
     for window in house.windows:
         pieces.extend(window_pieces(window))
+    shared = None
     for room in house.rooms:
         pieces.append(skirting(house, room))
-        pieces.append(ceiling_light(room))
+        if not room.open_air:
+            pieces.append(ceiling_light(room))
+            continue
+        if shared is None:
+            shared = [p for p in wall_pieces(house) if not p.railing]
+        if (lantern := wall_lantern(room, shared)) is not None:
+            pieces.append(lantern)
     return pieces
 
 
@@ -310,7 +326,7 @@ def skirting(house: House, room: Room) -> Piece:
 def ceiling_light(room: Room) -> Piece:
     """A pendant (``PENDANT_TYPES``) or a flush disc at the room's light position."""
     x, y = light_position(room)
-    top = room.height - CEILING_GAP_M
+    top = ceiling_height_at(room, x, y) - CEILING_GAP_M  # under a pitched or vaulted ceiling: higher
     if room.type in PENDANT_TYPES and top - PENDANT_BOTTOM_M > PENDANT_SHADE_HEIGHT_M + 0.05:
         finish, style = FINISHES["pendant_light"], "pendant"
         shade = trimesh.creation.cone(PENDANT_RADIUS_M, PENDANT_SHADE_HEIGHT_M, sections=LIGHT_SECTIONS)
@@ -324,6 +340,40 @@ def ceiling_light(room: Room) -> Piece:
     meta = {"category": "ceiling_light", "room": room.id, "style": style,
             "material": finish.words, "name": f"{room.name} ceiling light"}
     return f"room:{room.id}:light", _finished(parts, finish), meta
+
+
+def wall_lantern(room: Room, walls: list[WallPiece]) -> Piece | None:
+    """A lantern on the longest full-height wall an open-air room shares with an
+    enclosed room, at :data:`LANTERN_BOTTOM_M`, where no opening is; None: no such wall."""
+    poly = _room_poly(room)
+    best = None
+    for piece in walls:
+        if room.id not in piece.rooms or piece.height < LANTERN_BOTTOM_M + LANTERN_SIZE_M[2] + 0.05:
+            continue
+        half = LANTERN_SIZE_M[0] / 2 + 0.15
+        blocked = [(o[0] - half, o[1] + half) for o in piece.openings
+                   if o[2] < LANTERN_BOTTOM_M + LANTERN_SIZE_M[2] and o[3] > LANTERN_BOTTOM_M]
+        for t in np.linspace(half, piece.length - half, 9) if piece.length > 2 * half else []:
+            if any(a <= t <= b for a, b in blocked):
+                continue
+            clear = min([t, piece.length - t, *[min(abs(t - a), abs(t - b)) for a, b in blocked]])
+            if best is None or clear > best[0]:
+                best = (clear, piece, float(t))
+    if best is None:
+        return None
+    _, piece, t = best
+    u = piece.direction
+    n = np.array([-u[1], u[0]])
+    mid = piece.a + u * t
+    if not poly.contains(ShapelyPoint(*(mid + n * 0.2))):
+        n = -n
+    w, d, h = LANTERN_SIZE_M
+    wall = WALL_THICKNESS_M / 2
+    body = _box(mid, u, n, (-w / 2, w / 2), (wall, wall + d), (LANTERN_BOTTOM_M, LANTERN_BOTTOM_M + h))
+    finish = FINISHES["wall_lantern"]
+    meta = {"category": "wall_light", "room": room.id, "style": "wall lantern",
+            "material": finish.words, "name": f"{room.name} wall lantern"}
+    return f"room:{room.id}:light", _finished([body], finish), meta
 
 
 def light_position(room: Room) -> tuple[float, float]:

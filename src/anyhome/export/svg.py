@@ -41,6 +41,15 @@ WALL_COLOR = "#333333"
 DOOR_COLOR = "#c0392b"
 WINDOW_COLOR = "#2e86c1"
 OBJECT_FILL = "#d9d2c5"
+OPEN_AIR_COLOR = "#5b8a5b"
+"""Outline and hatching of an open-air room (balcony, terrace, courtyard...)."""
+RAILING_STROKE = 0.35
+"""A parapet's line width, as a share of a wall's."""
+OPEN_AIR_DEFS = (
+    '<defs><pattern id="open-air-hatch" patternUnits="userSpaceOnUse" width="10" height="10" '
+    'patternTransform="rotate(45)"><line x1="0" y1="0" x2="0" y2="10" '
+    f'stroke="{OPEN_AIR_COLOR}" stroke-width="1" stroke-opacity="0.45"/></pattern></defs>'
+)
 
 
 class _Canvas:
@@ -83,12 +92,18 @@ def render_svg(house: House) -> str:
     out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{c.width:.0f}" height="{c.height:.0f}" '
            f'viewBox="0 0 {c.width:.0f} {c.height:.0f}" font-family="Helvetica, Arial, sans-serif">',
            f'<title>{_text_of(house.prompt[:200])}</title>',
-           f'<rect x="0" y="0" width="{c.width:.0f}" height="{c.height:.0f}" fill="white"/>',
-           '<g id="rooms">']
+           f'<rect x="0" y="0" width="{c.width:.0f}" height="{c.height:.0f}" fill="white"/>']
+    if any(r.open_air for r in house.rooms):
+        out.append(OPEN_AIR_DEFS)
+    out.append('<g id="rooms">')
     for room in house.rooms:
         fill = ROOM_FILLS.get(room.type, DEFAULT_FILL)
         out.append(f'<polygon id={_attr("room-" + room.id)} class="room" points="{c.pts(room.polygon)}" '
                    f'fill="{fill}" stroke="none"><title>{_text_of(room.name)}</title></polygon>')
+        if room.open_air:  # hatched, with a dashed outline: open to the sky
+            out.append(f'<polygon id={_attr("open-" + room.id)} class="open-air" points="{c.pts(room.polygon)}" '
+                       f'fill="url(#open-air-hatch)" stroke="{OPEN_AIR_COLOR}" stroke-width="1.5" '
+                       f'stroke-dasharray="6,4"/>')
     out.append('</g><g id="objects">')
     labels = []
     for obj in sorted(house.objects, key=lambda o: (o.support not in ("floor", "wall"), o.position[2])):
@@ -115,6 +130,11 @@ def render_svg(house: House) -> str:
         for t0, t1 in spans:
             a, b = piece.a + u * t0, piece.a + u * t1
             (ax, ay), (bx, by) = c.xy(*a), c.xy(*b)
+            if piece.railing:  # a low parapet: a thin line, not a wall
+                out.append(f'<line class="railing" x1="{ax:.1f}" y1="{ay:.1f}" x2="{bx:.1f}" y2="{by:.1f}" '
+                           f'stroke="{WALL_COLOR}" stroke-width="{stroke * RAILING_STROKE:.1f}" '
+                           f'stroke-linecap="square"/>')
+                continue
             out.append(f'<line x1="{ax:.1f}" y1="{ay:.1f}" x2="{bx:.1f}" y2="{by:.1f}" stroke="{WALL_COLOR}" '
                        f'stroke-width="{stroke:.1f}" stroke-linecap="square"/>')
     out.append('</g><g id="openings">')
@@ -126,7 +146,8 @@ def render_svg(house: House) -> str:
         p = _label_point(poly, [o for o in house.objects if o.room == room.id])
         x, y = c.xy(p.x, p.y)
         out.append(_text(x, y - 8, room.name, 14, "bold"))
-        out.append(_text(x, y + 9, f"{poly.area:.1f} m²", 11, fill="#555"))
+        area = f"{poly.area:.1f} m²"
+        out.append(_text(x, y + 9, f"open · {area}" if room.open_air else area, 11, fill="#555"))
     out.append('</g>')
     out += _scale_and_north(c)
     out.append('</svg>')

@@ -10,10 +10,14 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from anyhome.house import House
+from anyhome.house import House, Room
 
 WALL_THICKNESS_M = 0.1
 """Wall thickness; walls are centred on the room boundary."""
+RAILING_HEIGHT_M = 1.05
+"""Height of the parapet an open-air room (``Room.open_air``) has on the sides it shares
+with no enclosed room (guarding heights of 1.0-1.1 m: UK Approved Document K, the
+International Building Code's 42 in)."""
 ON_LINE_TOL_M = 0.01
 """How far an opening may lie from a wall line and still be cut into it."""
 _KEY_DECIMALS = 3
@@ -30,6 +34,8 @@ class WallPiece:
     rooms: set[str] = field(default_factory=set)
     openings: list[tuple[float, float, float, float, str]] = field(default_factory=list)
     """(t0, t1, z0, z1, id) along the piece, in meters from ``a``."""
+    railing: bool = False
+    """Only open-air rooms border it: a low parapet (:data:`RAILING_HEIGHT_M`)."""
 
     @property
     def length(self) -> float:
@@ -57,8 +63,15 @@ def _split_points(a: np.ndarray, b: np.ndarray, vertices: np.ndarray) -> list[fl
     return sorted({0.0, length, *np.round(t[inner], 6).tolist()})
 
 
+def wall_height(room: Room) -> float:
+    """The height a room raises its walls to: its ceiling, or for an open-air room the
+    parapet (a wall shared with an enclosed room takes the higher)."""
+    return min(RAILING_HEIGHT_M, room.height) if room.open_air else room.height
+
+
 def wall_pieces(house: House) -> list[WallPiece]:
-    """Every wall stretch of the house, once, with its openings."""
+    """Every wall stretch of the house, once, with its openings. A stretch only
+    open-air rooms border is a low parapet (``railing``)."""
     vertices = np.array([p for r in house.rooms for p in r.polygon], dtype=float).reshape(-1, 2)
     pieces: dict[tuple, WallPiece] = {}
     for room in house.rooms:
@@ -74,10 +87,11 @@ def wall_pieces(house: House) -> list[WallPiece]:
                 pa, pb = a + u * t0, a + u * t1
                 k = _key(pa, pb)
                 if k in pieces:
-                    pieces[k].height = max(pieces[k].height, room.height)
+                    pieces[k].height = max(pieces[k].height, wall_height(room))
                     pieces[k].rooms.add(room.id)
+                    pieces[k].railing = pieces[k].railing and room.open_air
                 else:
-                    pieces[k] = WallPiece(room.id, pa, pb, room.height, {room.id})
+                    pieces[k] = WallPiece(room.id, pa, pb, wall_height(room), {room.id}, railing=room.open_air)
     out = list(pieces.values())
     openings = [(d.id, d.segment, 0.0, d.height) for d in house.doors]
     openings += [(w.id, w.segment, w.sill, w.sill + w.height) for w in house.windows]

@@ -362,7 +362,7 @@ def _to_floorplan(spec: HouseSpec, prog: Program, lay: Layout) -> Floorplan:
 
     rooms = [
         Room(
-            id=r.id, name=r.name, type=r.type, height=r.height_m, style=r.style,
+            id=r.id, name=r.name, type=r.type, height=r.height_m, style=r.style, open_air=r.open_air, ceiling=r.ceiling,
             materials=dict(r.materials), polygon=moved(room_outline(lay.owner == k, lay.cell_m)),
         )
         for k, r in enumerate(spec.rooms)

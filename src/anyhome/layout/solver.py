@@ -57,6 +57,10 @@ def layout_house(spec: HouseSpec, floorplan: Floorplan, rng: np.random.Generator
             for item in _items(rs):
                 result.dropped.append(Dropped(room=rs.id, name=item.name, reason="room is missing from the floorplan"))
             continue
+        if room.open_air:  # no ceiling to hang a chandelier, a fan or a pendant from
+            rs, hung = _without_ceiling_hung(rs)
+            result.dropped += [Dropped(room=rs.id, name=n, reason="an open-air room has no ceiling to hang it from")
+                               for n in hung]
         st = RoomState(floorplan, room, rs, rng, options)
         furnish_room(st)
         result.objects.extend(st.space.objects)
@@ -72,6 +76,29 @@ def furnish_room(st: RoomState) -> None:
         else:
             arrangements.place_free(st, g)
     ornaments.place_ornaments(st)
+
+
+CEILING_HUNG = frozenset({"chandelier", "ceiling_fan", "pendant_light"})
+"""Categories that hang from a ceiling: an open-air room (``Room.open_air``) gets none."""
+
+
+def _without_ceiling_hung(rs: RoomSpec) -> tuple[RoomSpec, list[str]]:
+    """``rs`` without its ceiling-hung items (a group whose anchor hangs goes whole),
+    and the names of the copies left out."""
+    gone: list[str] = []
+    groups = []
+    for g in rs.groups:
+        if g.anchor.category in CEILING_HUNG:
+            gone += [it.name for it in [g.anchor, *g.members] for _ in range(g.repeat * it.count)]
+            continue
+        keep = [m for m in g.members if m.category not in CEILING_HUNG]
+        gone += [m.name for m in g.members if m.category in CEILING_HUNG for _ in range(g.repeat * m.count)]
+        groups.append(g if len(keep) == len(g.members) else g.model_copy(update={"members": keep}))
+    ornaments = [o for o in rs.ornaments if o.category not in CEILING_HUNG]
+    gone += [o.name for o in rs.ornaments if o.category in CEILING_HUNG for _ in range(o.count)]
+    if not gone:
+        return rs, []
+    return rs.model_copy(update={"groups": groups, "ornaments": ornaments}), gone
 
 
 def _items(rs: RoomSpec) -> list[ItemSpec]:

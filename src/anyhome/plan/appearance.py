@@ -20,7 +20,8 @@ WOOD_WORDS = ("wood", "wooden", "oak", "walnut", "pine", "bamboo", "teak", "maho
 """Materials that read as planks when put on a floor."""
 
 KEEP_DEFAULT_SURFACES = frozenset({"bathroom", "laundry", "changing_room", "balcony", "garage"})
-"""Room types whose floor and walls keep their own materials unless the text names them."""
+"""Room types whose floor and walls keep their own materials unless the text names them
+(open-air types, rooms.yaml ``open_air``, too: their outdoor floors)."""
 
 
 @dataclass
@@ -113,13 +114,14 @@ def room_materials(look: Look, room_type: str, kb: KnowledgeBase | None = None) 
     types = resolve(kb).raw("rooms")["types"]
     defaults = types.get(room_type, types["other"])["materials"]
     materials = {"floor": look.floor, "walls": look.walls, "ceiling": look.ceiling}
-    keep = room_type in KEEP_DEFAULT_SURFACES or bool(types.get(room_type, {}).get("wet"))
+    info = types.get(room_type, {})
+    keep = room_type in KEEP_DEFAULT_SURFACES or bool(info.get("wet")) or bool(info.get("open_air"))
     if keep:
         for surface in ("floor", "walls"):
             if surface not in look.user_surfaces:
                 materials[surface] = defaults[surface]
-        if room_type == "balcony":
-            materials["ceiling"] = defaults["ceiling"]
+    if info.get("open_air"):  # outdoor floor and walls (decking, pavers); no ceiling
+        materials["ceiling"] = ""
     return materials
 
 

@@ -129,8 +129,16 @@ class RoomType(_Model):
     materials: SurfaceMaterials
     min_width_m: Annotated[float, Field(gt=0, le=20, description="narrowest clear width (docs/space_standards.md)")]
     circulation: bool = Field(default=False, description="a room for passing through (entry, hallway)")
+    height_m: Annotated[float, Field(ge=2.1, le=12, description="floor-to-ceiling height (heights.yaml adjusts it)")]
+    open_air: bool = Field(default=False, description="no roof: no ceiling, railings on its exterior sides")
 
     _r = field_validator("area")(classmethod(lambda cls, v: _ordered(v)))
+
+    @model_validator(mode="after")
+    def _open_air_not_habitable(self) -> RoomType:
+        if self.open_air and self.habitable:
+            raise ValueError("an open_air room cannot be habitable (it has no window, no ceiling)")
+        return self
 
 
 class RoomName(_Model):
@@ -146,6 +154,37 @@ class RoomName(_Model):
 class RoomsFile(_Model):
     types: dict[str, RoomType]
     names: dict[str, RoomName]
+
+
+# ------------------------------------------------------------------ heights.yaml
+CeilingShape = Literal["flat", "pitched", "vaulted"]
+
+
+class HeightLimits(_Model):
+    min_m: Annotated[float, Field(ge=2.1, le=12)]
+    max_m: Annotated[float, Field(ge=2.1, le=12)]
+
+    @model_validator(mode="after")
+    def _ordered(self) -> HeightLimits:
+        if self.min_m > self.max_m:
+            raise ValueError(f"min_m {self.min_m} is more than max_m {self.max_m}")
+        return self
+
+
+class BuildingHeight(_Model):
+    scale: Annotated[float, Field(gt=0.5, le=3)]
+
+
+class HeightWord(_Model):
+    scale: Annotated[float, Field(gt=0.5, le=3)] = 1.0
+    add_m: Annotated[float, Field(ge=-1, le=3)] = 0.0
+    ceiling: CeilingShape | None = None
+
+
+class HeightsFile(_Model):
+    limits: HeightLimits
+    buildings: dict[Word, BuildingHeight] = Field(default_factory=dict)
+    words: dict[Word, HeightWord] = Field(default_factory=dict)
 
 
 # ------------------------------------------------------------------ objects.yaml
@@ -414,6 +453,7 @@ FILE_MODELS: dict[str, type[BaseModel]] = {
     "assets": AssetsFile,
     "colours": ColoursFile,
     "materials": MaterialsFile,
+    "heights": HeightsFile,
 }
 """The model of each knowledge file, by file name (without ``.yaml``)."""
 
@@ -502,6 +542,7 @@ class KnowledgeBase:
         self.assets: AssetsFile = validate_file("assets", raw["assets"], source)  # type: ignore[assignment]
         self.colours: ColoursFile = validate_file("colours", raw["colours"], source)  # type: ignore[assignment]
         self.materials: MaterialsFile = validate_file("materials", raw["materials"], source)  # type: ignore[assignment]
+        self.heights: HeightsFile = validate_file("heights", raw["heights"], source)  # type: ignore[assignment]
         self._check_references()
 
     def raw(self, name: str) -> dict[str, Any]:

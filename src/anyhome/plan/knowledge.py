@@ -25,7 +25,7 @@ KNOWLEDGE_DIR = Path(__file__).with_name("knowledge")
 styles.yaml and concepts.yaml."""
 
 KNOWLEDGE_FILES = ("programs", "rooms", "objects", "furniture", "styles", "concepts", "surfaces", "assets", "colours",
-                   "materials")
+                   "materials", "heights")
 
 
 def normalize(text: str) -> str:

@@ -20,6 +20,7 @@ from anyhome.errors import PlanError
 from anyhome.house import is_habitable
 from anyhome.plan import furnish as fu
 from anyhome.plan.appearance import Look, choose_look, item_material, room_materials
+from anyhome.plan.heights import RoomHeight, room_heights
 from anyhome.plan.kb import KnowledgeBase
 from anyhome.plan.kbview import resolve
 from anyhome.plan.parse import Mention, Parsed, parse, plural
@@ -91,7 +92,8 @@ class OfflinePlanner:
         rooms = _furnish(kb, parsed, slots, main_key, prog, rng, warnings)
         look = choose_look(kb, parsed, implied, building, rng)
         building = parsed.building_word or building
-        specs = [_room_spec(kb, s, g, o, look, rng) for s, (g, o) in zip(slots, rooms)]
+        heights = room_heights(kb, parsed, [s.type for s in slots], [s.mention for s in slots])
+        specs = [_room_spec(kb, s, g, o, look, rng, h) for s, (g, o), h in zip(slots, rooms, heights)]
         log.debug("planned %d rooms for %r", len(specs), text[:60])
         return HouseSpec.model_validate(
             {"prompt": text, "building": building, "style": look.describe, "styles": look.styles,
@@ -241,7 +243,10 @@ def _rows_cell_m2(g: fu.Group) -> float:
     return (width + ROW_AISLE_M) * (depth + ROW_AISLE_M)
 
 
-def _room_spec(kb: KnowledgeBase, s: Slot, groups: list[fu.Group], ornaments: list[fu.Item], look: Look, rng: np.random.Generator) -> RoomSpec:
+def _room_spec(kb: KnowledgeBase, s: Slot, groups: list[fu.Group], ornaments: list[fu.Item], look: Look,
+               rng: np.random.Generator, height: RoomHeight | None = None) -> RoomSpec:
+    rt = kb.rooms.types.get(s.type, kb.rooms.types["other"])
+    height = height or RoomHeight(rt.height_m)
     materials = room_materials(look, s.type, kb)
     furniture = look.furniture
     if s.mention is not None:
@@ -268,6 +273,9 @@ def _room_spec(kb: KnowledgeBase, s: Slot, groups: list[fu.Group], ornaments: li
         type=s.type,
         area_m2=round(float(np.clip(s.area, 0.6, 400.0)), 2),
         level=s.level,
+        height_m=height.height_m,
+        open_air=rt.open_air,
+        ceiling=height.ceiling,
         style=look.describe,
         materials=materials,
         groups=group_specs,

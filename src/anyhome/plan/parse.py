@@ -925,6 +925,18 @@ def _proper_words(text: str) -> frozenset[str]:
     return frozenset(out)
 
 
+def _mask_height_words(kb: KnowledgeBase, norm: str) -> str:
+    """``norm`` with the height words of heights.yaml blanked (same length, so positions
+    hold): "a double height living room" is one living room, not two named "height
+    living room"."""
+    words = tuple(kb.heights.words)
+    if not words or not any(w in norm for w in words):
+        return norm
+    rx = re.compile(r"(?<![a-z0-9])(?:" + "|".join(re.escape(w) for w in sorted(words, key=len, reverse=True))
+                    + r")(?![a-z0-9])")
+    return rx.sub(lambda m: " " * len(m.group()), norm)
+
+
 def parse(text: str, kb: KnowledgeBase | None = None) -> Parsed:
     """Parse ``text`` into a :class:`Parsed` with the knowledge base ``kb`` (None: the
     one in force); never raises on odd input."""
@@ -937,6 +949,7 @@ def parse(text: str, kb: KnowledgeBase | None = None) -> Parsed:
         norm = norm[:MAX_PARSE_CHARS]
     norm = rewrite_numbers(norm)
     p.text = norm
+    norm = _mask_height_words(kb, norm)  # read by anyhome.plan.heights from p.text
     taken: list[tuple[int, int]] = []
     _apply_codes(norm, p, taken)
     _find_levels(norm, p)

@@ -230,7 +230,9 @@ class RoomSpec(_Model):
     name: CleanStr = Field(min_length=1)
     type: CleanStr = Field(min_length=1, description="functional type, see anyhome.house.ROOM_TYPES")
     area_m2: float = Field(gt=0.5, le=400.0)
-    height_m: float = Field(default=2.7, ge=2.0, le=12.0)
+    height_m: float = Field(default=2.7, ge=2.0, le=12.0, description="when not given: the type's (rooms.yaml)")
+    open_air: bool = Field(default=False, description="no roof; when not given: the type's (rooms.yaml open_air)")
+    ceiling: Literal["flat", "pitched", "vaulted"] = Field(default="flat", description="ceiling shape (flat when open_air)")
     level: int = Field(default=0, ge=MIN_LEVEL, le=MAX_LEVEL, description="storey: 0 ground, 1 up, -1 basement")
     style: CleanStr = Field(default="", description="the room's style in words, for display")
     styles: StyleKeys = Field(
@@ -241,10 +243,29 @@ class RoomSpec(_Model):
     groups: list[GroupSpec] = Field(default_factory=list)
     ornaments: list[ItemSpec] = Field(default_factory=list)
 
+    @model_validator(mode="before")
+    @classmethod
+    def _type_defaults(cls, data: Any, info: ValidationInfo) -> Any:
+        """``height_m`` and ``open_air`` left out (the LLM planner's rooms): the room
+        type's, from rooms.yaml (the context's knowledge base, see :data:`KB_CONTEXT`)."""
+        if not isinstance(data, dict) or ("height_m" in data and "open_air" in data):
+            return data
+        from anyhome.plan.kbview import resolve
+
+        types = resolve(_context_kb(info)).raw("rooms")["types"]
+        t = data.get("type")
+        info_t = types.get(t if isinstance(t, str) else "", types["other"])
+        data = dict(data)
+        data.setdefault("height_m", float(info_t["height_m"]))
+        data.setdefault("open_air", bool(info_t.get("open_air", False)))
+        return data
+
     @model_validator(mode="after")
     def _materials_complete(self) -> RoomSpec:
         for key in ("floor", "walls", "ceiling"):
             self.materials.setdefault(key, "")
+        if self.open_air and self.ceiling != "flat":
+            self.ceiling = "flat"
         return self
 
     @field_validator("styles")

@@ -13,7 +13,7 @@ import numpy as np
 from shapely.geometry import LineString, MultiPoint, Point, Polygon
 
 from anyhome.geometry import footprint_polygon
-from anyhome.house import House, Room
+from anyhome.house import CEILING_RISE, House, Room
 
 BIRDSEYE_FOV_DEG = 30.0
 """Vertical field of view of the bird's-eye camera."""
@@ -28,7 +28,13 @@ EYE_HEIGHT_M = 1.6
 VIEW_FOV_DEG = 75.0
 """Horizontal (= vertical, images are square) field of view of the eye-level cameras."""
 LOOK_AT_HEIGHT_M = 1.0
-"""Height of the point the eye-level camera aims at in the far corner."""
+"""Height of the point the eye-level camera aims at in the far corner, in a room of
+:data:`REFERENCE_HEIGHT_M`."""
+REFERENCE_HEIGHT_M = 2.7
+"""The room height the eye-level framing is tuned for; in a taller room the camera aims
+higher by :data:`LOOK_UP_SHARE` of the difference (a double-height hall shows its
+height), in an open-air room level at eye height (the sky fills the top of the view)."""
+LOOK_UP_SHARE = 0.5
 WALL_INSET_M = 0.4
 """How far from the walls an eye-level camera stands."""
 MIN_INSET_M = 0.15
@@ -109,9 +115,26 @@ class Camera:
         }
 
 
+def look_at_height(room: Room) -> float:
+    """Height the eye-level camera of ``room`` aims at (see :data:`REFERENCE_HEIGHT_M`)."""
+    if room.open_air:
+        return EYE_HEIGHT_M
+    return LOOK_AT_HEIGHT_M + LOOK_UP_SHARE * max(0.0, room.height - REFERENCE_HEIGHT_M)
+
+
+def top_height(room: Room) -> float:
+    """Highest point of a room's ceiling (its ridge or crown when sloped)."""
+    if room.open_air or room.ceiling == "flat":
+        return room.height
+    xs = [p[0] for p in room.polygon]
+    ys = [p[1] for p in room.polygon]
+    short = min(max(xs) - min(xs), max(ys) - min(ys))
+    return room.height + CEILING_RISE.get(room.ceiling, 0.0) * short
+
+
 def house_points(house: House) -> np.ndarray:
-    """(n, 3) corners of every room at floor and ceiling height."""
-    pts = [(x, y, z) for r in house.rooms for x, y in r.polygon for z in (0.0, r.height)]
+    """(n, 3) corners of every room at floor and ceiling (ridge) height."""
+    pts = [(x, y, z) for r in house.rooms for x, y in r.polygon for z in (0.0, top_height(r))]
     return np.asarray(pts, dtype=float).reshape(-1, 3)
 
 
@@ -221,6 +244,6 @@ def room_camera(house: House, room: Room, size_px: int,
         best = (spot, far)
     spot, corner = best
     eye = (float(spot[0]), float(spot[1]), min(EYE_HEIGHT_M, room.height - 0.3))
-    target = (float(corner[0]), float(corner[1]), LOOK_AT_HEIGHT_M)
+    target = (float(corner[0]), float(corner[1]), look_at_height(room))
     far_m = float(np.linalg.norm(np.ptp(house_points(house), axis=0))) + 80.0
     return Camera(eye, target, VIEW_FOV_DEG, size_px, size_px, near_m=NEAR_M, far_m=far_m)

@@ -32,6 +32,8 @@ ROOM_LIGHT_POWER = 1.6
 """Ceiling light strength at its falloff distance."""
 LIGHT_BELOW_CEILING_M = 0.3
 """How far under the ceiling a room's light hangs."""
+OPEN_AIR_LIGHT_M = 2.0
+"""Height of the light of an open-air room with no wall lantern (it has no ceiling)."""
 FIXTURE_GAP_M = 0.05
 """How far under a light fixture's bottom its light sits."""
 EMISSIVE_STRENGTH = 2.0
@@ -59,8 +61,9 @@ def sun_direction(elevation_deg: float = SUN_ELEVATION_DEG,
 
 def room_lights(house: House, fixtures: dict[str, np.ndarray] | None = None) -> list[RoomLight]:
     """One light per room, in ``house.rooms`` order: just under the room's light
-    fixture when the scene has one (``fixtures``: room id -> (2, 3) bounds), else
-    hanging under the ceiling at the room's centre."""
+    fixture when the scene has one (``fixtures``: room id -> (2, 3) bounds; an open-air
+    room's wall lantern), else hanging under the ceiling at the room's centre (an
+    open-air room: :data:`OPEN_AIR_LIGHT_M` up)."""
     fixtures = fixtures or {}
     out = []
     for room in house.rooms:
@@ -73,7 +76,8 @@ def room_lights(house: House, fixtures: dict[str, np.ndarray] | None = None) -> 
             pos = ((lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, lo[2] - FIXTURE_GAP_M)
         else:
             c = poly.centroid if poly.contains(poly.centroid) else poly.representative_point()
-            pos = (c.x, c.y, room.height - LIGHT_BELOW_CEILING_M)
+            top = room.height if not room.open_air else min(room.height, OPEN_AIR_LIGHT_M + LIGHT_BELOW_CEILING_M)
+            pos = (c.x, c.y, top - LIGHT_BELOW_CEILING_M)
         out.append(RoomLight((float(pos[0]), float(pos[1]), float(pos[2])), range_m, rgb))
     return out
 

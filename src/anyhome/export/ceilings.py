@@ -1,0 +1,111 @@
+"""Ceiling geometry of a room: none (open air), a flat slab, or a sloped surface.
+
+``Room.ceiling`` (see :data:`anyhome.house.CEILING_RISE`):
+
+- ``flat``: a slab from ``height`` to ``height + thickness`` over the room's polygon.
+- ``pitched``: two planes rising from the two long sides of the room's bounding box to
+  a ridge along its long axis, ``CEILING_RISE["pitched"] x`` the short side above
+  ``height``.
+- ``vaulted``: a segmental barrel vault spanning the short side (its axis along the long
+  side), crown ``CEILING_RISE["vaulted"] x`` the short side above ``height``, drawn as
+  :data:`VAULT_SEGMENTS` flat strips.
+
+The sloped kinds are one double-sided surface over the room's polygon (cut into strips
+along the ridge so each strip is planar), plus the gable ends: an upright face on every
+stretch of the room's outline under the sloped part (from ``height`` up to the ceiling),
+so the walls reach the ceiling everywhere. The gables belong to the ceiling node (the
+walls stay ``height`` high, as house.json says).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import trimesh
+from shapely.geometry import Polygon, box
+
+from anyhome.house import CEILING_RISE, Room
+
+VAULT_SEGMENTS = 8
+"""Flat strips approximating a barrel vault."""
+
+
+def _poly(room: Room) -> Polygon:
+    poly = Polygon(room.polygon)
+    return poly if poly.is_valid else poly.buffer(0)
+
+
+def profile(room: Room) -> tuple[int, float, np.ndarray, np.ndarray]:
+    """The ceiling across the room: (axis, origin, s, z) with ``axis`` the plan axis (0 x,
+    1 y) the profile runs along (the short side), ``origin`` where it starts and the
+    knots ``(s, z)``; the height at a point is ``np.interp(p[axis] - origin, s, z)``."""
+    x0, y0, x1, y1 = _poly(room).bounds
+    axis = 1 if (x1 - x0) >= (y1 - y0) else 0
+    lo, span = (y0, y1 - y0) if axis == 1 else (x0, x1 - x0)
+    h = room.height
+    rise = CEILING_RISE.get(room.ceiling, 0.0) * span
+    if room.ceiling == "pitched":
+        return axis, lo, np.array([0.0, span / 2, span]), np.array([h, h + rise, h])
+    if room.ceiling == "vaulted" and rise > 0:
+        radius = (span * span / 4 + rise * rise) / (2 * rise)
+        s = np.linspace(0.0, span, VAULT_SEGMENTS + 1)
+        z = h + np.sqrt(np.maximum(radius * radius - (s - span / 2) ** 2, 0.0)) - (radius - rise)
+        return axis, lo, s, z
+    return axis, lo, np.array([0.0, span]), np.array([h, h])
+
+
+def ceiling_height_at(room: Room, x: float, y: float) -> float:
+    """Height of the ceiling above the plan point (x, y) (``room.height`` when flat)."""
+    axis, lo, s, z = profile(room)
+    return float(np.interp((x, y)[axis] - lo, s, z))
+
+
+def ceiling_mesh(room: Room, thickness: float) -> trimesh.Trimesh | None:
+    """The room's ceiling (see the module doc); None for an open-air room."""
+    if room.open_air:
+        return None
+    if room.ceiling == "flat":
+        mesh = trimesh.creation.extrude_polygon(_poly(room), thickness)
+        mesh.apply_translation((0.0, 0.0, room.height))
+        return mesh
+    return _sloped(room)
+
+
+def _sloped(room: Room) -> trimesh.Trimesh:
+    poly = _poly(room)
+    axis, lo, s, z = profile(room)
+    x0, y0, x1, y1 = poly.bounds
+    verts: list[np.ndarray] = []
+    faces: list[np.ndarray] = []
+
+    def add(v: np.ndarray, f: np.ndarray) -> None:
+        base = sum(len(x) for x in verts)
+        verts.append(v)
+        faces.append(np.vstack([f, f[:, ::-1]]) + base)  # both sides
+
+    for a, b in zip(s[:-1], s[1:], strict=True):
+        strip = box(x0 - 1, lo + a, x1 + 1, lo + b) if axis == 1 else box(lo + a, y0 - 1, lo + b, y1 + 1)
+        part = poly.intersection(strip)
+        for p in getattr(part, "geoms", [part]):
+            if not isinstance(p, Polygon) or p.area < 1e-9:
+                continue
+            v2, f = trimesh.creation.triangulate_polygon(p)
+            v2 = np.asarray(v2, dtype=float)
+            zz = np.interp(v2[:, axis] - lo, s, z)
+            add(np.column_stack([v2, zz]), np.asarray(f)[:, ::-1])
+    # gable ends: upright faces from the wall top up to the ceiling along the outline
+    ring = np.asarray(poly.exterior.coords, dtype=float)
+    h = room.height
+    for p, q in zip(ring[:-1], ring[1:], strict=True):
+        ts = [0.0, 1.0]
+        dp = q[axis] - p[axis]
+        if abs(dp) > 1e-9:
+            ts += [float(t) for t in (lo + s - p[axis]) / dp if 1e-9 < t < 1 - 1e-9]
+        ts = sorted(ts)
+        pts = np.array([p + (q - p) * t for t in ts])
+        tops = np.interp(pts[:, axis] - lo, s, z)
+        for i in range(len(pts) - 1):
+            if tops[i] - h < 1e-6 and tops[i + 1] - h < 1e-6:
+                continue
+            v = np.array([[*pts[i], h], [*pts[i + 1], h], [*pts[i + 1], tops[i + 1]], [*pts[i], tops[i]]])
+            add(v, np.array([[0, 1, 2], [0, 2, 3]]))
+    return trimesh.Trimesh(vertices=np.vstack(verts), faces=np.vstack(faces), process=False)
