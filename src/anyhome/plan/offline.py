@@ -23,7 +23,18 @@ from anyhome.plan.appearance import Look, choose_look, item_material, room_mater
 from anyhome.plan.kb import KnowledgeBase
 from anyhome.plan.kbview import resolve
 from anyhome.plan.parse import Mention, Parsed, parse, plural
-from anyhome.plan.program import Slot, choose_program, connect, plan_rooms, sample_areas
+from anyhome.plan.program import (
+    Sizing,
+    Slot,
+    choose_program,
+    connect,
+    fit_areas,
+    fit_rooms,
+    plan_rooms,
+    renumber,
+    sample_areas,
+    sizing,
+)
 from anyhome.plan.spec import GroupSpec, HouseSpec, ItemSpec, RoomSpec, kb_context
 
 log = logging.getLogger(__name__)
@@ -79,16 +90,26 @@ class OfflinePlanner:
         program, implied = choose_program(kb, parsed)
         if parsed.one_room:  # "a one-room cabin": only the rooms the text names
             program = None
-        slots, main_key = plan_rooms(kb, parsed, program, rng, warnings)
+        asked_program = program
+        sz = sizing(kb, parsed, program)  # the kind's room sizes, the total asked for
+        program = sz.program
+        slots, main_key = plan_rooms(kb, parsed, program, rng, warnings, sz)
+        if sz.band is not None:
+            fit_rooms(kb, parsed, slots, sz, kb.raw("programs")["programs"].get(program or ""), _furnished_need(kb))
+            renumber(slots)
         if parsed.one_room and len(slots) > 1:
             warnings.append(
                 f"the text asks for a one-room building but names {len(slots)} rooms; planned the named rooms"
             )
-        sample_areas(slots, parsed.building_size, rng)
+        sample_areas(slots, parsed.building_size, rng, kb)
         prog = kb.raw("programs")["programs"].get(program or "", {})
         connections = connect(kb, slots, prog.get("entrance", []))
-        building = prog.get("building") or (slots[0].type.replace("_", " ") if program is None else "home")
+        fit_areas(kb, slots, sz)
+        named = kb.raw("programs")["programs"].get(asked_program or "", prog)  # "a tiny cabin" stays a home
+        building = named.get("building") or (slots[0].type.replace("_", " ") if program is None else "home")
         rooms = _furnish(kb, parsed, slots, main_key, prog, rng, warnings)
+        if sz.band is not None:
+            _fit_furnished(kb, slots, rooms, sz, warnings)
         look = choose_look(kb, parsed, implied, building, rng)
         building = parsed.building_word or building
         specs = [_room_spec(kb, s, g, o, look, rng) for s, (g, o) in zip(slots, rooms)]
@@ -98,6 +119,24 @@ class OfflinePlanner:
              "palette": look.palette, "rooms": specs, "connections": connections, "warnings": warnings},
             context=kb_context(kb),
         )
+
+
+def _furnished_need(kb: KnowledgeBase) -> Any:
+    """``slot -> m2`` its required furniture needs at its smallest (what
+    :func:`_grow_area` would grow it to), probed with a fixed generator so the plan's own
+    draws stay as they are."""
+    cache: dict[tuple[str, str, int | None], float] = {}
+
+    def need(s: Slot) -> float:
+        key = (s.furnish, s.type, s.beds)
+        if key not in cache:
+            probe = Slot(s.name, s.type, s.furnish, s.area_range, area=1.0)
+            groups, _, _ = fu.furnish_room(kb, s.furnish, s.type, 1.0, np.random.default_rng(0), beds=s.beds)
+            _grow_area(probe, [g for g in groups if g["required"]])
+            cache[key] = probe.area
+        return cache[key]
+
+    return need
 
 
 def _mostly_latin(text: str) -> bool:
@@ -213,7 +252,24 @@ def _cap_house_area(slots: list[Slot], warnings: list[str]) -> None:
     )
 
 
-def _grow_area(s: Slot, groups: list[fu.Group], warnings: list[str] | None = None) -> None:
+def _fit_furnished(kb: KnowledgeBase, slots: list[Slot], rooms: list[tuple[list[fu.Group], list[fu.Item]]], sz: Sizing, warnings: list[str]) -> None:
+    """Bring a furnished plan back into the total it must reach (a size word, a stated
+    area): rooms the furniture grew past the total lose the groups the text did not ask
+    for (most grown room first, least important group first); the rest are scaled."""
+    hi = sz.band[1] if sz.band is not None else MAX_HOUSE_AREA_M2
+    for s, (groups, _) in sorted(zip(slots, rooms), key=lambda x: x[0].drawn_area - x[0].area):
+        if sum(x.area for x in slots) <= hi:
+            break
+        optional = sorted((g for g in groups if not g["required"]), key=lambda g: -g["priority"])
+        while optional and s.area > s.drawn_area + 1e-6:
+            groups.remove(optional.pop(0))
+            s.area = round(max(s.drawn_area, min(_need_m2(groups), MAX_ROOM_AREA_M2)), 2)
+    grown = {id(s) for s in slots if s.area > s.drawn_area + 1e-6}  # the furniture's needs stay
+    fit_areas(kb, slots, sz, warnings, pinned=grown)
+
+
+def _need_m2(groups: list[fu.Group]) -> float:
+    """Floor the groups need: their footprints with walkways and clearances."""
     need = 1.0
     for g in groups:
         if g.get("arrangement") == "rows":  # a grid of cells with aisles between them
@@ -224,6 +280,11 @@ def _grow_area(s: Slot, groups: list[fu.Group], warnings: list[str] | None = Non
                 continue
             w, d, _ = it["size_m"]
             need += w * d * it["count"] * g["repeat"] * FLOOR_USE_FACTOR
+    return need
+
+
+def _grow_area(s: Slot, groups: list[fu.Group], warnings: list[str] | None = None) -> None:
+    need = _need_m2(groups)
     s.drawn_area = s.area
     if need > MAX_ROOM_AREA_M2 and warnings is not None:
         warnings.append(

@@ -200,6 +200,8 @@ class Parsed:
     people: int | None = None
     one_room: bool = False  # "a one-room house"
     total_rooms: int | None = None  # "a hotel with 40 rooms": rooms asked for in all
+    total_m2: float | None = None  # "a 50 m2 flat", "500 sq ft": the floor area the text states
+    size_words: list[str] = field(default_factory=list)  # sizes.words found before the building word ("tiny")
     proper_words: frozenset[str] = frozenset()  # words written capitalised mid-sentence, lower-cased
     warnings: list[str] = field(default_factory=list)
 
@@ -394,10 +396,12 @@ def _parse_building(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[i
         p.building = next(i for i, b in enumerate(kb.raw("programs")["buildings"]) if b["program"] == program)
         p.building_word = head
         _building_modifiers(kb, text, span[0], p, taken=taken)
+        _size_words(kb, text, span[1], p)  # the head itself may be the size word ("a tiny")
         p.building_phrase = _with_modifier(kb, text, span[0], head, taken)
         return span
     p.building = voc.building_forms[best.group()]
     _building_modifiers(kb, text, best.start(), p, taken=taken)
+    _size_words(kb, text, best.end(), p)  # "a tiny house": the size word is in the building's phrase
     p.building_phrase = _with_modifier(kb, text, best.start(), best.group(), taken)
     return best.start(), best.end()
 
@@ -557,6 +561,48 @@ def _merge_adjacent(text: str, found: list[Mention]) -> list[Mention]:
         else:
             out.append(m)
     return out
+
+
+_AREA = re.compile(
+    r"\b(\d{1,6}(?:\.\d+)?)\s*(m2|m²|sqm|sq\.? ?m(?:et(?:er|re)s?)?\.?|square met(?:er|re)s?|m(?:et(?:er|re)s?)? squared|"
+    r"sq\.? ?ft\.?|sqft|square f(?:ee|oo)t|ft2|ft²|sf)(?![\w²])"
+)
+"""A stated floor area: a number and a unit ("50 m2", "30 square meters", "500 sq ft")."""
+
+SQ_FT_M2 = 0.09290304
+"""Square metres in a square foot."""
+
+
+def _stated_area(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[int, int]]) -> None:
+    """The floor area the text states for the whole building ("a 50 m2 apartment", "about
+    30 square meters"); an area right before a room word ("a 12 m2 bedroom") is no total.
+    Every area's span joins ``taken``: its number counts nothing."""
+    voc = vocabulary(kb)
+    for mt in _AREA.finditer(text):
+        taken.append(mt.span())
+        after = _tokens(text[mt.end() :])[:3]
+        nxt = " ".join(t for t, _, _ in after)
+        if any(nxt.startswith(f) and voc.forms[f][0].kind == "room" for f in _prefixes(nxt) if f in voc.forms):
+            continue
+        value = float(mt.group(1)) * (SQ_FT_M2 if "f" in mt.group(2) or mt.group(2) == "sf" else 1.0)
+        if p.total_m2 is None and value > 0:
+            p.total_m2 = value
+
+
+def _prefixes(phrase: str) -> list[str]:
+    words = phrase.split()
+    return [" ".join(words[:n]) for n in range(len(words), 0, -1)]
+
+
+def _size_words(kb: KnowledgeBase, text: str, start: int, p: Parsed) -> None:
+    """Size words (programs.yaml sizes.words) among the few words before the building
+    word, within its clause ("a tiny off-grid cabin", "a grand old mansion")."""
+    words = ((kb.raw("programs").get("sizes") or {}).get("words")) or {}
+    for tok, _, _ in reversed(_tokens(text[:start])[-4:]):
+        if not tok.isalpha() or tok in ("with", "and", "or", "but", "of", "for"):
+            break
+        if tok in words and tok not in p.size_words:
+            p.size_words.append(tok)
 
 
 def _apply_codes(text: str, p: Parsed, taken: list[tuple[int, int]]) -> None:
@@ -910,6 +956,7 @@ def parse(text: str, kb: KnowledgeBase | None = None) -> Parsed:
     p.text = norm
     taken: list[tuple[int, int]] = []
     _apply_codes(norm, p, taken)
+    _stated_area(kb, norm, p, taken)
     span = _parse_building(kb, norm, p, taken)
     if span:
         taken.append(span)
