@@ -111,6 +111,7 @@ class SizeWord(_Model):
     """A size word of a dwelling ("tiny", "grand"): the total floor area it means."""
 
     total_m2: AreaRange
+    scale: Annotated[float, Field(gt=0, le=3)] = Field(default=1.0, description="factor on every room's area range")
 
     _r = field_validator("total_m2")(classmethod(lambda cls, v: _ordered(v)))
 

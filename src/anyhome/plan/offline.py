@@ -39,7 +39,7 @@ from anyhome.plan.spec import GroupSpec, HouseSpec, ItemSpec, RoomSpec, kb_conte
 
 log = logging.getLogger(__name__)
 
-FLOOR_USE_FACTOR = 2.4
+FLOOR_USE_FACTOR = 2.0
 """Room area needed per m2 of furniture footprint (walkways, clearances)."""
 
 ROWS_USE_FACTOR = 1.8
@@ -57,6 +57,10 @@ MAX_HOUSE_AREA_M2 = 800.0
 """Largest total area the furniture may push a house to: twice the largest benchmark
 house (a fire station, about 410 m2); beyond it the rooms that grew shrink back
 in proportion."""
+
+ESSENTIAL_PRIORITY = 1
+"""Groups of this priority or a more urgent one (lower) stay in a room squeezed into a
+stated total or a size word's; the others may go."""
 
 MAX_ROOM_OBJECTS = 160
 """Most objects one room's plan places: a 120-seat hall with its stage, screen and
@@ -132,7 +136,7 @@ def _furnished_need(kb: KnowledgeBase) -> Any:
         if key not in cache:
             probe = Slot(s.name, s.type, s.furnish, s.area_range, area=1.0)
             groups, _, _ = fu.furnish_room(kb, s.furnish, s.type, 1.0, np.random.default_rng(0), beds=s.beds)
-            _grow_area(probe, [g for g in groups if g["required"]])
+            _grow_area(probe, [g for g in groups if _essential(g)])
             cache[key] = probe.area
         return cache[key]
 
@@ -260,12 +264,18 @@ def _fit_furnished(kb: KnowledgeBase, slots: list[Slot], rooms: list[tuple[list[
     for s, (groups, _) in sorted(zip(slots, rooms), key=lambda x: x[0].drawn_area - x[0].area):
         if sum(x.area for x in slots) <= hi:
             break
-        optional = sorted((g for g in groups if not g["required"]), key=lambda g: -g["priority"])
+        optional = sorted((g for g in groups if not _essential(g)), key=lambda g: -g["priority"])
         while optional and s.area > s.drawn_area + 1e-6:
             groups.remove(optional.pop(0))
             s.area = round(max(s.drawn_area, min(_need_m2(groups), MAX_ROOM_AREA_M2)), 2)
     grown = {id(s) for s in slots if s.area > s.drawn_area + 1e-6}  # the furniture's needs stay
     fit_areas(kb, slots, sz, warnings, pinned=grown)
+
+
+def _essential(g: fu.Group) -> bool:
+    """A group a room keeps when its total is tight: asked for by the text, or what
+    makes the room what it is (a bed, a toilet, a kitchen run: priority 0 or 1)."""
+    return bool(g["required"]) or int(g["priority"]) <= ESSENTIAL_PRIORITY
 
 
 def _need_m2(groups: list[fu.Group]) -> float:

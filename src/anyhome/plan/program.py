@@ -510,6 +510,7 @@ class Sizing:
     stretch: float = 1.6
     add: list[dict] = field(default_factory=list)
     circulation_share: float = 1.0
+    scale: float = 1.0  # the size word's factor on every room's range
 
 
 def _sizes(kb: KnowledgeBase) -> dict:
@@ -533,6 +534,7 @@ def sizing(kb: KnowledgeBase, parsed: Parsed, program: str | None) -> Sizing:
     for w in parsed.size_words:
         if w in sizes.get("words", {}):
             word_band = tuple(sizes["words"][w]["total_m2"])
+            sz.scale = float(sizes["words"][w].get("scale", 1.0)) if program in homes else 1.0
             sz.what = f"a {w} {'home' if program in homes else 'building'}"
             break
     if parsed.total_m2 is not None:
@@ -575,13 +577,14 @@ def _most(kb: KnowledgeBase, s: Slot, sz: Sizing) -> float:
 
 def apply_kind(kb: KnowledgeBase, slots: list[Slot], sz: Sizing) -> None:
     """A building kind's area ranges replace the type defaults ("a cabin's bedroom" is
-    smaller than a mansion's); its scale multiplies the other rooms' ranges."""
+    smaller than a mansion's); its scale and the size word's multiply the other rooms'
+    ranges."""
     areas = sz.kind.get("areas", {})
-    scale = float(sz.kind.get("scale", 1.0))
     for s in slots:
-        if s.area_from == "type" and s.type in areas:
-            s.area_range, s.area_from = tuple(float(x) for x in areas[s.type]), "kind"
-        elif scale != 1.0:
+        scale = sz.scale * float(sz.kind.get("scale", 1.0))
+        if s.area_from == "type" and s.type in areas:  # the kind's own sizes already say how big
+            s.area_range, s.area_from, scale = tuple(float(x) for x in areas[s.type]), "kind", 1.0
+        if scale != 1.0:
             lo, hi = s.area_range
             s.area_range = (max(lo * scale, min(lo, _least(kb, s))), hi * scale)
 
