@@ -185,6 +185,8 @@ class RoomType(_Model):
     materials: SurfaceMaterials
     min_width_m: Annotated[float, Field(gt=0, le=20, description="narrowest clear width (docs/space_standards.md)")]
     min_area_m2: Area = Field(description="smallest area the norms allow (docs/space_standards.md)")
+    floor_use: Annotated[float, Field(ge=1, le=5)] | None = Field(
+        default=None, description="room m2 per m2 of furniture footprint (default: the planner's FLOOR_USE_FACTOR)")
     circulation: bool = Field(default=False, description="a room for passing through (entry, hallway)")
 
     _r = field_validator("area")(classmethod(lambda cls, v: _ordered(v)))

@@ -39,8 +39,9 @@ from anyhome.plan.spec import GroupSpec, HouseSpec, ItemSpec, RoomSpec, kb_conte
 
 log = logging.getLogger(__name__)
 
-FLOOR_USE_FACTOR = 2.0
-"""Room area needed per m2 of furniture footprint (walkways, clearances)."""
+FLOOR_USE_FACTOR = 2.4
+"""Room area needed per m2 of furniture footprint (walkways, clearances), for a room
+type whose rooms.yaml entry gives no ``floor_use`` of its own."""
 
 ROWS_USE_FACTOR = 1.8
 """Area of a rows arrangement per m2 of its cells (front and side clearances)."""
@@ -136,7 +137,7 @@ def _furnished_need(kb: KnowledgeBase) -> Any:
         if key not in cache:
             probe = Slot(s.name, s.type, s.furnish, s.area_range, area=1.0)
             groups, _, _ = fu.furnish_room(kb, s.furnish, s.type, 1.0, np.random.default_rng(0), beds=s.beds)
-            _grow_area(probe, [g for g in groups if _essential(g)])
+            _grow_area(probe, [g for g in groups if _essential(g)], factor=_floor_use(kb, s.type))
             cache[key] = probe.area
         return cache[key]
 
@@ -177,7 +178,7 @@ def _furnish(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], main_key: str
         out.append((groups, fu.finalize_ornaments(groups, ornaments)))
     _cap_objects(slots, out, warnings)
     for s, (groups, _) in zip(slots, out):
-        _grow_area(s, groups, warnings)
+        _grow_area(s, groups, warnings, factor=_floor_use(kb, s.type))
     _cap_house_area(slots, warnings)
     return out
 
@@ -267,7 +268,7 @@ def _fit_furnished(kb: KnowledgeBase, slots: list[Slot], rooms: list[tuple[list[
         optional = sorted((g for g in groups if not _essential(g)), key=lambda g: -g["priority"])
         while optional and s.area > s.drawn_area + 1e-6:
             groups.remove(optional.pop(0))
-            s.area = round(max(s.drawn_area, min(_need_m2(groups), MAX_ROOM_AREA_M2)), 2)
+            s.area = round(max(s.drawn_area, min(_need_m2(groups, _floor_use(kb, s.type)), MAX_ROOM_AREA_M2)), 2)
     grown = {id(s) for s in slots if s.area > s.drawn_area + 1e-6}  # the furniture's needs stay
     fit_areas(kb, slots, sz, warnings, pinned=grown)
 
@@ -278,8 +279,15 @@ def _essential(g: fu.Group) -> bool:
     return bool(g["required"]) or int(g["priority"]) <= ESSENTIAL_PRIORITY
 
 
-def _need_m2(groups: list[fu.Group]) -> float:
-    """Floor the groups need: their footprints with walkways and clearances."""
+def _floor_use(kb: KnowledgeBase, room_type: str) -> float:
+    """Room area per m2 of furniture footprint for ``room_type`` (rooms.yaml ``floor_use``)."""
+    types = kb.raw("rooms")["types"]
+    return float(types.get(room_type, types["other"]).get("floor_use", FLOOR_USE_FACTOR))
+
+
+def _need_m2(groups: list[fu.Group], factor: float = FLOOR_USE_FACTOR) -> float:
+    """Floor the groups need: their footprints with walkways and clearances (``factor``
+    m2 per m2 of footprint)."""
     need = 1.0
     for g in groups:
         if g.get("arrangement") == "rows":  # a grid of cells with aisles between them
@@ -289,12 +297,12 @@ def _need_m2(groups: list[fu.Group]) -> float:
             if it["rule"] in fu.ORNAMENT_RULES or it["category"] == "rug":
                 continue
             w, d, _ = it["size_m"]
-            need += w * d * it["count"] * g["repeat"] * FLOOR_USE_FACTOR
+            need += w * d * it["count"] * g["repeat"] * factor
     return need
 
 
-def _grow_area(s: Slot, groups: list[fu.Group], warnings: list[str] | None = None) -> None:
-    need = _need_m2(groups)
+def _grow_area(s: Slot, groups: list[fu.Group], warnings: list[str] | None = None, factor: float = FLOOR_USE_FACTOR) -> None:
+    need = _need_m2(groups, factor)
     s.drawn_area = s.area
     if need > MAX_ROOM_AREA_M2 and warnings is not None:
         warnings.append(
