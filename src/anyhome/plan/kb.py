@@ -132,10 +132,11 @@ class BuildingKind(_Model):
     areas: dict[str, AreaRange] = Field(default_factory=dict, description="room type -> [lo, hi] m2")
     total_m2: AreaRange | None = None
     add: list[AddedRoom] | None = Field(default=None, description="rooms added first when the total needs more")
+    counts: dict[str, Count] = Field(default_factory=dict, description="room type -> how many its program plans")
 
     _r = field_validator("total_m2")(classmethod(lambda cls, v: _ordered(v)))
 
-    @field_validator("areas")
+    @field_validator("areas", "counts")
     @classmethod
     def _areas(cls, v: dict[str, Any]) -> dict[str, Any]:
         for r in v.values():
@@ -595,6 +596,8 @@ class KnowledgeBase:
                 need(t in types, "programs", ("sizes", "kinds", k, "areas", t), lambda: known(t, types, "room type"))
                 need(rng[0] >= least.get(t, 0.0), "programs", ("sizes", "kinds", k, "areas", t),
                      f"starts below the type's min_area_m2 ({least.get(t)} m2)")
+            for t in kind.counts:
+                need(t in types, "programs", ("sizes", "kinds", k, "counts", t), lambda: known(t, types, "room type"))
             for i, a in enumerate(kind.add or []):
                 need(a.type in types, "programs", ("sizes", "kinds", k, "add", i, "type"), lambda: known(a.type, types, "room type"))
 

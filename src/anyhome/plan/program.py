@@ -122,8 +122,9 @@ def plan_rooms(kb: KnowledgeBase, parsed: Parsed, program: str | None, rng: np.r
     prog = kb.raw("programs")["programs"].get(program) if program else None
     slots: list[Slot] = []
     if prog is not None:
+        counts = sizing.kind.get("counts", {}) if sizing is not None else {}
         for e in prog["rooms"]:
-            n = _sample_count(e.get("count", 1), rng)
+            n = _sample_count(counts.get(e["type"], e.get("count", 1)), rng)  # a mansion has more bedrooms
             opt = e.get("optional")
             if opt is not None and rng.random() >= float(opt):
                 n = 0
@@ -640,8 +641,24 @@ def fit_rooms(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], sz: Sizing, 
 
 
 def renumber(slots: list[Slot]) -> None:
-    """Unique names and ids again after rooms were added (the others keep theirs)."""
-    _name_and_number(slots)
+    """Unique names and ids again after rooms were added: the rooms planned before keep
+    theirs, an added "bathroom" becomes the next free "bathroom 3"."""
+    used: set[str] = set()
+    for s in slots:
+        if s.name in used:
+            k = 2
+            while f"{s.name} {k}" in used:
+                k += 1
+            s.name = f"{s.name} {k}"
+        used.add(s.name)
+    ids: set[str] = set()
+    for s in slots:
+        base = _slug(s.name)
+        rid, k = base, 2
+        while rid in ids:
+            rid, k = f"{base}_{k}", k + 1
+        ids.add(rid)
+        s.id = rid
 
 
 def _scale_to(kb: KnowledgeBase, slots: list[Slot], target: float, sz: Sizing, floors: dict[int, float]) -> None:
