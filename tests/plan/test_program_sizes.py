@@ -248,3 +248,12 @@ def test_the_cli_honours_a_stated_total_and_warns_when_it_cannot(tmp_path):
         else:
             assert any("the stated 40 m2 cannot hold" in w for w in house["warnings"])
             assert "the stated 40 m2 cannot hold" in run.stdout + run.stderr
+
+
+def test_size_word_factors_come_from_the_knowledge_file():
+    assert parse("a house with a tiny kitchen").rooms[0].size == pytest.approx(RAW["programs"]["sizes"]["words"]["tiny"]["factor"])
+
+    def halve(raw):
+        raw["programs"]["sizes"]["words"]["tiny"]["factor"] = 0.5
+
+    assert parse("a house with a tiny kitchen", _kb(halve)).rooms[0].size == pytest.approx(0.5)

@@ -108,9 +108,11 @@ class Program(_Model):
 
 
 class SizeWord(_Model):
-    """A size word of a dwelling ("tiny", "grand"): the total floor area it means."""
+    """A size word ("tiny", "grand"): its factor on what it stands before, and the total
+    floor area it means for a home."""
 
-    total_m2: AreaRange
+    factor: Annotated[float, Field(gt=0, le=3)] = Field(default=1.0, description="factor on a room's area or an object's size")
+    total_m2: AreaRange | None = None
     scale: Annotated[float, Field(gt=0, le=3)] = Field(default=1.0, description="factor on every room's area range")
 
     _r = field_validator("total_m2")(classmethod(lambda cls, v: _ordered(v)))

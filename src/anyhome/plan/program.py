@@ -533,7 +533,7 @@ def sizing(kb: KnowledgeBase, parsed: Parsed, program: str | None) -> Sizing:
                 circulation_share=float(sizes.get("circulation_share", 1.0)) if program in homes else 1.0)  # fmt: skip
     word_band = None
     for w in parsed.size_words:
-        if w in sizes.get("words", {}):
+        if sizes.get("words", {}).get(w, {}).get("total_m2"):
             word_band = tuple(sizes["words"][w]["total_m2"])
             sz.scale = float(sizes["words"][w].get("scale", 1.0)) if program in homes else 1.0
             sz.what = f"a {w} {'home' if program in homes else 'building'}"
