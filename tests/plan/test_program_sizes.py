@@ -257,3 +257,17 @@ def test_size_word_factors_come_from_the_knowledge_file():
         raw["programs"]["sizes"]["words"]["tiny"]["factor"] = 0.5
 
     assert parse("a house with a tiny kitchen", _kb(halve)).rooms[0].size == pytest.approx(0.5)
+
+
+def test_a_room_keeps_the_area_the_text_states_for_it():
+    spec = plan("a 60 m2 flat with a 30 m2 living room")
+    living = next(r for r in spec.rooms if r.type == "living_room")
+    assert living.area_m2 == pytest.approx(30.0)  # the flat's total is met by the other rooms
+    assert abs(total(spec) - 60) <= 6
+    assert plan("a 12 m2 bedroom").rooms[0].area_m2 == pytest.approx(12.0)
+
+
+def test_a_stated_room_too_small_for_its_furniture_says_so():
+    spec = plan("a house with a 5 m2 bedroom")
+    small = [r for r in spec.rooms if r.type == "bedroom" and r.area_m2 < 10]
+    assert small and any("instead of the 5 m2 asked for" in w for w in spec.warnings), spec.warnings

@@ -113,6 +113,14 @@ class OfflinePlanner:
         named = kb.raw("programs")["programs"].get(asked_program or "", prog)  # "a tiny cabin" stays a home
         building = named.get("building") or (slots[0].type.replace("_", " ") if program is None else "home")
         rooms = _furnish(kb, parsed, slots, main_key, prog, rng, warnings)
+        for s, (groups, _) in zip(slots, rooms):
+            if s.area_from == "stated":  # "a 9 m2 bedroom": what does not fit goes, not the area
+                _trim(kb, s, groups)
+                if s.area > s.drawn_area * 1.05:
+                    warnings.append(
+                        f"the {s.name} needs about {s.area:.0f} m2 for its furniture; planned {s.area:.0f} m2 "
+                        f"instead of the {s.drawn_area:.0f} m2 asked for"
+                    )
         if sz.band is not None:
             _fit_furnished(kb, slots, rooms, sz, warnings)
         look = choose_look(kb, parsed, implied, building, rng)
@@ -265,12 +273,18 @@ def _fit_furnished(kb: KnowledgeBase, slots: list[Slot], rooms: list[tuple[list[
     for s, (groups, _) in sorted(zip(slots, rooms), key=lambda x: x[0].drawn_area - x[0].area):
         if sum(x.area for x in slots) <= hi:
             break
-        optional = sorted((g for g in groups if not _essential(g)), key=lambda g: -g["priority"])
-        while optional and s.area > s.drawn_area + 1e-6:
-            groups.remove(optional.pop(0))
-            s.area = round(max(s.drawn_area, min(_need_m2(groups, _floor_use(kb, s.type)), MAX_ROOM_AREA_M2)), 2)
+        _trim(kb, s, groups)
     grown = {id(s) for s in slots if s.area > s.drawn_area + 1e-6}  # the furniture's needs stay
     fit_areas(kb, slots, sz, warnings, pinned=grown)
+
+
+def _trim(kb: KnowledgeBase, s: Slot, groups: list[fu.Group]) -> None:
+    """Take the room's less important groups out (least important first) until it is back
+    to the area it was drawn with, or only its essential groups are left."""
+    optional = sorted((g for g in groups if not _essential(g)), key=lambda g: -g["priority"])
+    while optional and s.area > s.drawn_area + 1e-6:
+        groups.remove(optional.pop(0))
+        s.area = round(max(s.drawn_area, min(_need_m2(groups, _floor_use(kb, s.type)), MAX_ROOM_AREA_M2)), 2)
 
 
 def _essential(g: fu.Group) -> bool:

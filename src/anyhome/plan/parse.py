@@ -168,6 +168,7 @@ class Mention:
     negated: bool = False  # "without a kitchen", "no rug", "0 kitchens": the text rules it out
     asked: int | None = None  # the count as the text wrote it, before any cap
     host: Mention | None = None  # objects: the room word right before it ("a courtyard fountain")
+    area_m2: float | None = None  # rooms: the area the text states for it ("a 12 m2 bedroom")
 
 
 @dataclass
@@ -202,6 +203,7 @@ class Parsed:
     total_rooms: int | None = None  # "a hotel with 40 rooms": rooms asked for in all
     total_m2: float | None = None  # "a 50 m2 flat", "500 sq ft": the floor area the text states
     size_words: list[str] = field(default_factory=list)  # sizes.words found before the building word ("tiny")
+    room_areas: list[tuple[int, float]] = field(default_factory=list)  # (end of "12 m2", m2) right before a room word
     proper_words: frozenset[str] = frozenset()  # words written capitalised mid-sentence, lower-cased
     warnings: list[str] = field(default_factory=list)
 
@@ -583,9 +585,10 @@ def _stated_area(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[int,
         taken.append(mt.span())
         after = _tokens(text[mt.end() :])[:3]
         nxt = " ".join(t for t, _, _ in after)
-        if any(nxt.startswith(f) and voc.forms[f][0].kind == "room" for f in _prefixes(nxt) if f in voc.forms):
-            continue
         value = float(mt.group(1)) * (SQ_FT_M2 if "f" in mt.group(2) or mt.group(2) == "sf" else 1.0)
+        if any(nxt.startswith(f) and voc.forms[f][0].kind == "room" for f in _prefixes(nxt) if f in voc.forms):
+            p.room_areas.append((mt.end(), value))
+            continue
         if p.total_m2 is None and value > 0:
             p.total_m2 = value
 
@@ -984,6 +987,10 @@ def parse(text: str, kb: KnowledgeBase | None = None) -> Parsed:
     _assign_rooms(norm, mentions)
     _apply_arrangements(norm, mentions)
     p.rooms = [m for m in mentions if m.kind == "room"]
+    for end, value in p.room_areas:  # "a 12 m2 bedroom": the next room word's own area
+        room = next((m for m in p.rooms if m.start >= end and len(_tokens(norm[end : m.start])) <= 2), None)
+        if room is not None and value > 0:
+            room.area_m2 = value
     p.objects = [m for m in mentions if m.kind == "object"]
     _find_styles(kb, norm, p)
     _find_materials(kb, norm, p, p.rooms)

@@ -93,6 +93,9 @@ def _slot_from_mention(kb: KnowledgeBase, m: Mention, idx: int) -> Slot:
     name = m.name if m.words or m.concept or not info.get("name") else info["name"]
     s = Slot(name, t, info.get("furnish", t), tuple(area), mention=idx, generic_name=False, size=m.size)
     s.area_from = "name" if info.get("area") else "type"
+    if m.area_m2 is not None:  # "a 12 m2 bedroom": that area, whatever the norms and words say
+        a = float(np.clip(m.area_m2, *AREA_LIMITS_M2))
+        s.area_range, s.area_from, s.size = (a, a), "stated", 1.0
     return s
 
 
@@ -221,6 +224,8 @@ def _claim_mentions(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], fixed:
             target.generic_name = generic
             if not generic or target.type != proto.type:
                 target.furnish, target.type = proto.furnish, proto.type
+                target.area_range, target.area_from = proto.area_range, proto.area_from
+            elif proto.area_from == "stated":  # "a 30 m2 living room"
                 target.area_range, target.area_from = proto.area_range, proto.area_from
             first = first or target
 
@@ -566,11 +571,15 @@ def sizing(kb: KnowledgeBase, parsed: Parsed, program: str | None) -> Sizing:
 def _least(kb: KnowledgeBase, s: Slot) -> float:
     """Smallest area the room may shrink to: its type's norm, or its own smaller range
     (a booth, a cubicle)."""
+    if s.area_from == "stated":  # "a 12 m2 bedroom" stays 12 m2
+        return float(s.area_range[0])
     return float(max(min(float(_type_info(kb, s.type)["min_area_m2"]), s.area_range[0]), s.need))
 
 
 def _most(kb: KnowledgeBase, s: Slot, sz: Sizing) -> float:
     """Largest area the room may grow to; circulation never grows to fill a total."""
+    if s.area_from == "stated":
+        return float(s.area_range[1])
     if _type_info(kb, s.type).get("circulation"):
         return max(s.area, s.area_range[1])
     return float(min(s.area_range[1] * sz.stretch, AREA_LIMITS_M2[1]))
@@ -694,7 +703,8 @@ def fit_areas(kb: KnowledgeBase, slots: list[Slot], sz: Sizing, warnings: list[s
     but not shrink (the furniture grew them)."""
     pinned = set(pinned or ())
     for s in slots:
-        s.area = max(s.area, s.need)
+        if s.area_from != "stated":
+            s.area = max(s.area, s.need)
     circ = [s for s in slots if _type_info(kb, s.type).get("circulation")]
     total = sum(s.area for s in slots)
     if circ and sz.circulation_share < 1.0:
