@@ -73,7 +73,7 @@ def test_number_rewriting_never_raises_and_stays_short(text):
 @pytest.mark.parametrize(
     ("text", "word"),
     [("10^9 rooms", "rooms"), ("1e9 bedrooms", "bedrooms"), ("a billion bedrooms", "bedrooms"),
-     ("100 bathrooms", "bathrooms"), ("a hotel with 40 rooms", "40 rooms")],
+     ("100 bathrooms", "bathrooms"), ("a hotel with 60 rooms", "60 rooms")],
 )  # fmt: skip
 def test_too_many_rooms_warn_and_plan_a_full_house(text, word):
     h = plan(text)
@@ -82,9 +82,9 @@ def test_too_many_rooms_warn_and_plan_a_full_house(text, word):
 
 
 def test_forty_hotel_rooms_fill_the_house_with_guest_rooms():
-    h = plan("a hotel with 40 rooms")
-    assert any("asked for 40 rooms" in w for w in h.warnings)
-    assert sum(r.type == "bedroom" for r in h.rooms) >= 6
+    h = plan("a hotel with 40 rooms")  # within MAX_ROOMS (48): planned as asked
+    assert len(h.rooms) == 40 and not any("at most" in w and "rooms" in w.split("at most")[1][:12] for w in h.warnings)
+    assert sum(r.type == "bedroom" for r in h.rooms) >= 30
 
 
 def test_a_negative_count_warns_and_is_ignored():

@@ -378,6 +378,17 @@ MAX_EXTENT_M = 100_000.0
 them): the inscribed-circle search's work grows with size over its tolerance."""
 
 
+def _polygon(points: Sequence[Sequence[float]]) -> Polygon | None:
+    """The room's polygon; None where its numbers make none (NaN, inf: the validity
+    checks report those)."""
+    if not all(math.isfinite(float(v)) for pt in points for v in pt):
+        return None
+    try:
+        return room_polygon(points)
+    except (ValueError, shapely.errors.GEOSException):
+        return None
+
+
 def _plausible(poly: Polygon) -> bool:
     return bool(np.isfinite(poly.area)) and max(abs(v) for v in poly.bounds) <= MAX_EXTENT_M
 
@@ -385,8 +396,8 @@ def _plausible(poly: Polygon) -> bool:
 def plan_metrics(house: House, kb: KnowledgeBase) -> PlanMetrics:
     """The plan figures of ``house`` (see the module docstring)."""
     types = kb.rooms.types
-    polys = {r.id: room_polygon(r.polygon) for r in house.rooms}
-    usable = {rid: p for rid, p in polys.items() if is_usable(p) and _plausible(p)}
+    polys = {r.id: _polygon(r.polygon) for r in house.rooms}
+    usable = {rid: p for rid, p in polys.items() if p is not None and is_usable(p) and _plausible(p)}
     rooms: list[RoomMetrics] = []
     signature: list[tuple[float, float]] = []
     longest = 0.0

@@ -72,6 +72,7 @@ class Building(_Model):
     words: list[Word] = Field(min_length=1)
     program: str
     styles: list[str] = Field(default_factory=list)
+    kind: str | None = Field(default=None, description="building kind: a key of sizes.kinds (its room sizes)")
 
 
 class ProgramRoom(_Model):
@@ -106,9 +107,67 @@ class Program(_Model):
         return self
 
 
+class SizeWord(_Model):
+    """A size word ("tiny", "grand"): its factor on what it stands before, and the total
+    floor area it means for a home."""
+
+    factor: Annotated[float, Field(gt=0, le=3)] = Field(default=1.0, description="factor on a room's area or an object's size")
+    total_m2: AreaRange | None = None
+    scale: Annotated[float, Field(gt=0, le=3)] = Field(default=1.0, description="factor on every room's area range")
+
+    _r = field_validator("total_m2")(classmethod(lambda cls, v: _ordered(v)))
+
+
+class AddedRoom(_Model):
+    """A room a dwelling gains when its total calls for more rooms."""
+
+    type: str
+    name: Word
+    up_to: Annotated[int, Field(ge=1, le=12)] = Field(default=1, description="added only while the home has fewer rooms of the type")
+
+
+class BuildingKind(_Model):
+    """Typical room sizes of one kind of building (a cabin's bedrooms are smaller than a
+    mansion's): area ranges by room type, a factor on the others, a typical total."""
+
+    scale: Annotated[float, Field(gt=0, le=3)] = 1.0
+    areas: dict[str, AreaRange] = Field(default_factory=dict, description="room type -> [lo, hi] m2")
+    total_m2: AreaRange | None = None
+    add: list[AddedRoom] | None = Field(default=None, description="rooms added first when the total needs more")
+    counts: dict[str, Count] = Field(default_factory=dict, description="room type -> how many its program plans")
+
+    _r = field_validator("total_m2")(classmethod(lambda cls, v: _ordered(v)))
+
+    @field_validator("areas", "counts")
+    @classmethod
+    def _areas(cls, v: dict[str, Any]) -> dict[str, Any]:
+        for r in v.values():
+            _ordered(r)
+        return v
+
+
+class Compact(_Model):
+    program: str
+    below_m2: Area
+
+
+class Sizes(_Model):
+    """programs.yaml ``sizes``: how big dwellings are (docs/space_standards.md)."""
+
+    homes: list[str] = Field(min_length=1, description="programs the size words and stated totals resize")
+    compact: Compact
+    stretch: Annotated[float, Field(ge=1, le=4)] = Field(description="most a room grows past its range's top")
+    circulation_share: Annotated[float, Field(gt=0, le=1)] = Field(
+        default=1.0, description="most of a home's planned area its entries and hallways take")
+    add: list[AddedRoom] = Field(default_factory=list, description="rooms a home gains when its total needs more")
+    words: dict[Word, SizeWord] = Field(default_factory=dict)
+    kinds: dict[Word, BuildingKind] = Field(default_factory=dict)
+
+
 class ProgramsFile(_Model):
     buildings: list[Building]
     programs: dict[str, Program] = Field(min_length=1)
+    sizes: Sizes | None = None
 
 
 # ------------------------------------------------------------------ rooms.yaml
@@ -128,6 +187,9 @@ class RoomType(_Model):
     wet: bool = False
     materials: SurfaceMaterials
     min_width_m: Annotated[float, Field(gt=0, le=20, description="narrowest clear width (docs/space_standards.md)")]
+    min_area_m2: Area = Field(description="smallest area the norms allow (docs/space_standards.md)")
+    floor_use: Annotated[float, Field(ge=1, le=5)] | None = Field(
+        default=None, description="room m2 per m2 of furniture footprint (default: the planner's FLOOR_USE_FACTOR)")
     circulation: bool = Field(default=False, description="a room for passing through (entry, hallway)")
     height_m: Annotated[float, Field(ge=2.1, le=12, description="floor-to-ceiling height (heights.yaml adjusts it)")]
     open_air: bool = Field(default=False, description="no roof: no ceiling, railings on its exterior sides")
@@ -560,6 +622,28 @@ class KnowledgeBase:
         if it.params and rule is not None and (bad := _params_problem(rule, it.params)) is not None:
             raise self._bad(name, loc, bad)
 
+    def _check_sizes(self, need: Callable[..., None], known: Callable[..., str], types: set[str]) -> None:
+        """programs.yaml ``sizes``; a kind's area ranges start at their type's min_area_m2 or above."""
+        least = {t: rt.min_area_m2 for t, rt in self.rooms.types.items()}
+        programs = self.programs.programs
+        sz = self.programs.sizes
+        if sz is None:
+            return
+        for i, h in enumerate(sz.homes):
+            need(h in programs, "programs", ("sizes", "homes", i), lambda: known(h, programs, "program"))
+        need(sz.compact.program in programs, "programs", ("sizes", "compact", "program"), lambda: known(sz.compact.program, programs, "program"))
+        for i, a in enumerate(sz.add):
+            need(a.type in types, "programs", ("sizes", "add", i, "type"), lambda: known(a.type, types, "room type"))
+        for k, kind in sz.kinds.items():
+            for t, rng in kind.areas.items():
+                need(t in types, "programs", ("sizes", "kinds", k, "areas", t), lambda: known(t, types, "room type"))
+                need(rng[0] >= least.get(t, 0.0), "programs", ("sizes", "kinds", k, "areas", t),
+                     f"starts below the type's min_area_m2 ({least.get(t)} m2)")
+            for t in kind.counts:
+                need(t in types, "programs", ("sizes", "kinds", k, "counts", t), lambda: known(t, types, "room type"))
+            for i, a in enumerate(kind.add or []):
+                need(a.type in types, "programs", ("sizes", "kinds", k, "add", i, "type"), lambda: known(a.type, types, "room type"))
+
     def _check_references(self) -> None:  # noqa: C901 - one check per reference, in file order
         from anyhome.house import ROOM_TYPES
 
@@ -585,6 +669,10 @@ class KnowledgeBase:
             need(b.program in programs, "programs", ("buildings", i, "program"), lambda: known(b.program, programs, "program"))
             for s in b.styles:
                 need(s in styles, "programs", ("buildings", i, "styles"), lambda: known(s, styles, "style"))
+            if b.kind is not None:
+                kinds = self.programs.sizes.kinds if self.programs.sizes else {}
+                need(b.kind in kinds, "programs", ("buildings", i, "kind"), lambda: known(str(b.kind), kinds, "building kind (sizes.kinds)"))
+        self._check_sizes(need, known, types)
         for key, p in programs.items():
             for t in p.entrance:
                 need(t in types, "programs", ("programs", key, "entrance"), lambda: known(t, types, "room type"))
@@ -603,6 +691,9 @@ class KnowledgeBase:
                  f"is {str(ROOM_TYPES[t]).lower()} in the shipped rooms.yaml; an overlay may not change it")
             for a in rt.attach:
                 need(a in types, "rooms", ("types", t, "attach"), lambda: known(a, types, "room type"))
+            need(rt.min_area_m2 >= rt.min_width_m**2 - 1e-9, "rooms", ("types", t, "min_area_m2"),
+                 f"{rt.min_area_m2} m2 is less than a square of its min_width_m ({rt.min_width_m ** 2:.2f} m2)")
+            need(rt.area[0] >= rt.min_area_m2, "rooms", ("types", t, "area"), f"starts below min_area_m2 ({rt.min_area_m2} m2)")
         for n, rn in self.rooms.names.items():
             need(rn.type in types, "rooms", ("names", n, "type"), lambda: known(rn.type, types, "room type"))
             if rn.furnish is not None:

@@ -24,13 +24,27 @@ from anyhome.plan.heights import RoomHeight, room_heights
 from anyhome.plan.kb import KnowledgeBase
 from anyhome.plan.kbview import resolve
 from anyhome.plan.parse import Mention, Parsed, parse, plural
-from anyhome.plan.program import Slot, choose_program, connect_levels, plan_rooms, sample_areas
+from anyhome.plan.program import (
+    STAIRWELL_AREA_M2,
+    STAIRWELL_KEY,
+    Sizing,
+    Slot,
+    choose_program,
+    connect_levels,
+    fit_areas,
+    fit_rooms,
+    plan_rooms,
+    renumber,
+    sample_areas,
+    sizing,
+)
 from anyhome.plan.spec import GroupSpec, HouseSpec, ItemSpec, RoomSpec, kb_context
 
 log = logging.getLogger(__name__)
 
 FLOOR_USE_FACTOR = 2.4
-"""Room area needed per m2 of furniture footprint (walkways, clearances)."""
+"""Room area needed per m2 of furniture footprint (walkways, clearances), for a room
+type whose rooms.yaml entry gives no ``floor_use`` of its own."""
 
 ROWS_USE_FACTOR = 1.8
 """Area of a rows arrangement per m2 of its cells (front and side clearances)."""
@@ -47,6 +61,10 @@ MAX_HOUSE_AREA_M2 = 800.0
 """Largest total area the furniture may push a house to: twice the largest benchmark
 house (a fire station, about 410 m2); beyond it the rooms that grew shrink back
 in proportion."""
+
+ESSENTIAL_PRIORITY = 1
+"""Groups of this priority or a more urgent one (lower) stay in a room squeezed into a
+stated total or a size word's; the others may go."""
 
 MAX_ROOM_OBJECTS = 160
 """Most objects one room's plan places: a 120-seat hall with its stage, screen and
@@ -80,16 +98,37 @@ class OfflinePlanner:
         program, implied = choose_program(kb, parsed)
         if parsed.one_room:  # "a one-room cabin": only the rooms the text names
             program = None
-        slots, main_key = plan_rooms(kb, parsed, program, rng, warnings)
+        asked_program = program
+        sz = sizing(kb, parsed, program)  # the kind's room sizes, the total asked for
+        program = sz.program
+        slots, main_key = plan_rooms(kb, parsed, program, rng, warnings, sz)
+        if sz.band is not None:
+            fit_rooms(kb, parsed, slots, sz, kb.raw("programs")["programs"].get(program or ""), _furnished_need(kb))
+            renumber(slots)
         if parsed.one_room and len(slots) > 1:
             warnings.append(
                 f"the text asks for a one-room building but names {len(slots)} rooms; planned the named rooms"
             )
-        sample_areas(slots, parsed.building_size, rng)
+        sample_areas(slots, parsed.building_size, rng, kb)
         prog = kb.raw("programs")["programs"].get(program or "", {})
         connections = connect_levels(kb, slots, prog.get("entrance", []))
-        building = prog.get("building") or (slots[0].type.replace("_", " ") if program is None else "home")
+        fit_areas(kb, slots, sz)
+        for s in slots:  # a stairwell holds its flight whatever the total
+            if s.key == STAIRWELL_KEY:
+                s.area = STAIRWELL_AREA_M2
+        named = kb.raw("programs")["programs"].get(asked_program or "", prog)  # "a tiny cabin" stays a home
+        building = named.get("building") or (slots[0].type.replace("_", " ") if program is None else "home")
         rooms = _furnish(kb, parsed, slots, main_key, prog, rng, warnings)
+        for s, (groups, _) in zip(slots, rooms):
+            if s.area_from == "stated":  # "a 9 m2 bedroom": what does not fit goes, not the area
+                _trim(kb, s, groups)
+                if s.area > s.drawn_area * 1.05:
+                    warnings.append(
+                        f"the {s.name} needs about {s.area:.0f} m2 for its furniture; planned {s.area:.0f} m2 "
+                        f"instead of the {s.drawn_area:.0f} m2 asked for"
+                    )
+        if sz.band is not None:
+            _fit_furnished(kb, slots, rooms, sz, warnings)
         look = choose_look(kb, parsed, implied, building, rng)
         building = parsed.building_word or building
         heights = room_heights(kb, parsed, [s.type for s in slots], [s.mention for s in slots])
@@ -100,6 +139,24 @@ class OfflinePlanner:
              "palette": look.palette, "rooms": specs, "connections": connections, "warnings": warnings},
             context=kb_context(kb),
         )
+
+
+def _furnished_need(kb: KnowledgeBase) -> Any:
+    """``slot -> m2`` its required furniture needs at its smallest (what
+    :func:`_grow_area` would grow it to), probed with a fixed generator so the plan's own
+    draws stay as they are."""
+    cache: dict[tuple[str, str, int | None], float] = {}
+
+    def need(s: Slot) -> float:
+        key = (s.furnish, s.type, s.beds)
+        if key not in cache:
+            probe = Slot(s.name, s.type, s.furnish, s.area_range, area=1.0)
+            groups, _, _ = fu.furnish_room(kb, s.furnish, s.type, 1.0, np.random.default_rng(0), beds=s.beds)
+            _grow_area(probe, [g for g in groups if _essential(g)], factor=_floor_use(kb, s.type))
+            cache[key] = probe.area
+        return cache[key]
+
+    return need
 
 
 def _mostly_latin(text: str) -> bool:
@@ -136,7 +193,7 @@ def _furnish(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], main_key: str
         out.append((groups, fu.finalize_ornaments(groups, ornaments)))
     _cap_objects(slots, out, warnings)
     for s, (groups, _) in zip(slots, out):
-        _grow_area(s, groups, warnings)
+        _grow_area(s, groups, warnings, factor=_floor_use(kb, s.type))
     _cap_house_area(slots, warnings)
     return out
 
@@ -215,7 +272,43 @@ def _cap_house_area(slots: list[Slot], warnings: list[str]) -> None:
     )
 
 
-def _grow_area(s: Slot, groups: list[fu.Group], warnings: list[str] | None = None) -> None:
+def _fit_furnished(kb: KnowledgeBase, slots: list[Slot], rooms: list[tuple[list[fu.Group], list[fu.Item]]], sz: Sizing, warnings: list[str]) -> None:
+    """Bring a furnished plan back into the total it must reach (a size word, a stated
+    area): rooms the furniture grew past the total lose the groups the text did not ask
+    for (most grown room first, least important group first); the rest are scaled."""
+    hi = sz.band[1] if sz.band is not None else MAX_HOUSE_AREA_M2
+    for s, (groups, _) in sorted(zip(slots, rooms), key=lambda x: x[0].drawn_area - x[0].area):
+        if sum(x.area for x in slots) <= hi:
+            break
+        _trim(kb, s, groups)
+    grown = {id(s) for s in slots if s.area > s.drawn_area + 1e-6}  # the furniture's needs stay
+    fit_areas(kb, slots, sz, warnings, pinned=grown)
+
+
+def _trim(kb: KnowledgeBase, s: Slot, groups: list[fu.Group]) -> None:
+    """Take the room's less important groups out (least important first) until it is back
+    to the area it was drawn with, or only its essential groups are left."""
+    optional = sorted((g for g in groups if not _essential(g)), key=lambda g: -g["priority"])
+    while optional and s.area > s.drawn_area + 1e-6:
+        groups.remove(optional.pop(0))
+        s.area = round(max(s.drawn_area, min(_need_m2(groups, _floor_use(kb, s.type)), MAX_ROOM_AREA_M2)), 2)
+
+
+def _essential(g: fu.Group) -> bool:
+    """A group a room keeps when its total is tight: asked for by the text, or what
+    makes the room what it is (a bed, a toilet, a kitchen run: priority 0 or 1)."""
+    return bool(g["required"]) or int(g["priority"]) <= ESSENTIAL_PRIORITY
+
+
+def _floor_use(kb: KnowledgeBase, room_type: str) -> float:
+    """Room area per m2 of furniture footprint for ``room_type`` (rooms.yaml ``floor_use``)."""
+    types = kb.raw("rooms")["types"]
+    return float(types.get(room_type, types["other"]).get("floor_use", FLOOR_USE_FACTOR))
+
+
+def _need_m2(groups: list[fu.Group], factor: float = FLOOR_USE_FACTOR) -> float:
+    """Floor the groups need: their footprints with walkways and clearances (``factor``
+    m2 per m2 of footprint)."""
     need = 1.0
     for g in groups:
         if g.get("arrangement") == "rows":  # a grid of cells with aisles between them
@@ -225,7 +318,12 @@ def _grow_area(s: Slot, groups: list[fu.Group], warnings: list[str] | None = Non
             if it["rule"] in fu.ORNAMENT_RULES or it["category"] == "rug":
                 continue
             w, d, _ = it["size_m"]
-            need += w * d * it["count"] * g["repeat"] * FLOOR_USE_FACTOR
+            need += w * d * it["count"] * g["repeat"] * factor
+    return need
+
+
+def _grow_area(s: Slot, groups: list[fu.Group], warnings: list[str] | None = None, factor: float = FLOOR_USE_FACTOR) -> None:
+    need = _need_m2(groups, factor)
     s.drawn_area = s.area
     if need > MAX_ROOM_AREA_M2 and warnings is not None:
         warnings.append(

@@ -49,12 +49,12 @@ FULL_WORDS = (
 )  # fmt: skip
 """Phrases asking for the generous end of a plural's range."""
 
-SIZE_WORDS: dict[str, float] = {
-    "tiny": 0.7, "small": 0.8, "little": 0.8, "compact": 0.8, "cramped": 0.7, "cozy": 0.95,
-    "big": 1.25, "large": 1.25, "spacious": 1.3, "huge": 1.4, "grand": 1.3, "vast": 1.4,
-    "generous": 1.2, "long": 1.0, "open": 1.05, "great": 1.2,
-}  # fmt: skip
-"""Size adjectives -> area (rooms, buildings) or size (objects) factor."""
+@functools.lru_cache(maxsize=8)
+def size_factors(kb: KnowledgeBase) -> dict[str, float]:
+    """Size adjectives -> area (rooms, buildings) or size (objects) factor: programs.yaml
+    ``sizes.words`` (docs/space_standards.md)."""
+    words = (kb.raw("programs").get("sizes") or {}).get("words") or {}
+    return {w: float(e.get("factor", 1.0)) for w, e in words.items()}
 
 STOP_WORDS = frozenset(
     "the and or with of in on at for to by from into inside near next as is are has have "
@@ -168,6 +168,7 @@ class Mention:
     negated: bool = False  # "without a kitchen", "no rug", "0 kitchens": the text rules it out
     asked: int | None = None  # the count as the text wrote it, before any cap
     host: Mention | None = None  # objects: the room word right before it ("a courtyard fountain")
+    area_m2: float | None = None  # rooms: the area the text states for it ("a 12 m2 bedroom")
 
 
 @dataclass
@@ -203,6 +204,9 @@ class Parsed:
     storeys: int = 1  # "a three-storey townhouse", "two floors": storeys above ground, ground included
     basement: bool = False  # "with a basement", "a cellar gym"
     attic: bool = False  # "an attic bedroom", "a loft conversion"
+    total_m2: float | None = None  # "a 50 m2 flat", "500 sq ft": the floor area the text states
+    size_words: list[str] = field(default_factory=list)  # sizes.words found before the building word ("tiny")
+    room_areas: list[tuple[int, float]] = field(default_factory=list)  # (end of "12 m2", m2) right before a room word
     proper_words: frozenset[str] = frozenset()  # words written capitalised mid-sentence, lower-cased
     warnings: list[str] = field(default_factory=list)
 
@@ -345,8 +349,9 @@ def _tokens(text: str) -> list[tuple[str, int, int]]:
     return [(m.group(), m.start(), m.end()) for m in _TOKEN.finditer(text)]
 
 
-def _look_back(m: Mention, text: str, tokens: list[tuple[str, int, int]], taken: list[tuple[int, int]], keep_words: bool) -> None:
+def _look_back(m: Mention, text: str, tokens: list[tuple[str, int, int]], taken: list[tuple[int, int]], keep_words: bool, kb: KnowledgeBase) -> None:
     """Fill count, size and adjectives of ``m`` from the words just before it."""
+    sizes = size_factors(kb)
     before = [t for t in tokens if t[2] <= m.start]
     words: list[str] = []
     first = m.start  # where the phrase with its adjectives starts
@@ -360,8 +365,8 @@ def _look_back(m: Mention, text: str, tokens: list[tuple[str, int, int]], taken:
         if tok in MANY_WORDS:
             m.many = True
             break
-        if tok in SIZE_WORDS:
-            m.size *= SIZE_WORDS[tok]
+        if tok in sizes:
+            m.size *= sizes[tok]
             first = s
             continue
         if tok in STOP_WORDS or not tok.isalpha() or tok.endswith("'s") or len(words) >= 2:
@@ -397,10 +402,12 @@ def _parse_building(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[i
         p.building = next(i for i, b in enumerate(kb.raw("programs")["buildings"]) if b["program"] == program)
         p.building_word = head
         _building_modifiers(kb, text, span[0], p, taken=taken)
+        _size_words(kb, text, span[1], p)  # the head itself may be the size word ("a tiny")
         p.building_phrase = _with_modifier(kb, text, span[0], head, taken)
         return span
     p.building = voc.building_forms[best.group()]
     _building_modifiers(kb, text, best.start(), p, taken=taken)
+    _size_words(kb, text, best.end(), p)  # "a tiny house": the size word is in the building's phrase
     p.building_phrase = _with_modifier(kb, text, best.start(), best.group(), taken)
     return best.start(), best.end()
 
@@ -411,7 +418,7 @@ def _with_modifier(kb: KnowledgeBase, text: str, start: int, phrase: str, taken:
     before = _tokens(text[:start])[-1:]
     for tok, s, _ in before:
         if (
-            tok.isalpha() and tok not in STOP_WORDS and tok not in SIZE_WORDS and tok not in MANY_WORDS
+            tok.isalpha() and tok not in STOP_WORDS and tok not in size_factors(kb) and tok not in MANY_WORDS
             and parse_number(tok) is None and tok not in voc.style_forms and not voc.colour_regex.fullmatch(tok)
             and not voc.material_regex.fullmatch(tok) and not any(a <= s < b for a, b in taken) and len(tok) > 2
             and tok not in voc.forms and tok not in voc.building_forms
@@ -435,10 +442,10 @@ def _opening_building(kb: KnowledgeBase, text: str, known_start: int, taken: lis
     return (mb.key, (s, fnp[2]), head) if mb is not None else None
 
 
-def _filler(tok: str) -> bool:
+def _filler(tok: str, kb: KnowledgeBase) -> bool:
     """A word that may stand between a negation or a list joiner and the next mention:
     an article or an adjective, never a count, a break word or a blocker."""
-    if tok in NEGATION_FILLERS or tok in SIZE_WORDS:
+    if tok in NEGATION_FILLERS or tok in size_factors(kb):
         return True
     return (
         tok.isalpha() and tok not in STOP_WORDS and tok not in ov.PHRASE_BREAKS and tok not in NEGATION_BLOCKERS
@@ -446,7 +453,7 @@ def _filler(tok: str) -> bool:
     )  # fmt: skip
 
 
-def _apply_negation(text: str, mentions: list[Mention]) -> None:
+def _apply_negation(text: str, mentions: list[Mention], kb: KnowledgeBase) -> None:
     """Mark what the text rules out: a mention right after a negation word (with only
     articles and adjectives between) and the list it heads ("no tv, rug or lamp";
     "without a kitchen and bathroom"; but "no garage, a big kitchen" rules out the
@@ -466,7 +473,7 @@ def _apply_negation(text: str, mentions: list[Mention]) -> None:
             if NEGATIONS.search(text[prev_end : prev_end + head[-1][2]]):
                 negated = True
                 break
-            if not _filler(head[-1][0]):
+            if not _filler(head[-1][0], kb):
                 break
             head.pop()
         if not negated:
@@ -480,7 +487,7 @@ def _apply_negation(text: str, mentions: list[Mention]) -> None:
             words = {t for t, _, _ in between}
             if not between or len(between) > 5 or not words & LIST_JOINERS:
                 break
-            if not all(t in LIST_JOINERS or _filler(t) for t in words):
+            if not all(t in LIST_JOINERS or _filler(t, kb) for t in words):
                 break
             chain.append(ordered[j])
             joiners.append(words)
@@ -508,8 +515,8 @@ def _building_modifiers(kb: KnowledgeBase, text: str, start: int, p: Parsed, kee
     for tok, s, _ in reversed(_tokens(text[:start])[-3:]):
         if any(a <= s < b for a, b in taken):
             break
-        if tok in SIZE_WORDS:
-            p.building_size *= SIZE_WORDS[tok]
+        if tok in size_factors(kb):
+            p.building_size *= size_factors(kb)[tok]
             continue
         if tok in STOP_WORDS or not tok.isalpha() or parse_number(tok) is not None or tok in MANY_WORDS:
             break
@@ -535,7 +542,7 @@ def _find_mentions(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[in
     spans = taken + [(m.start, m.end) for m in found]
     for mt in _UNKNOWN_ROOM.finditer(text):
         word = mt.group(1)
-        if word in STOP_WORDS or word in NUMBER_WORDS or word in SIZE_WORDS or word in MANY_WORDS:
+        if word in STOP_WORDS or word in NUMBER_WORDS or word in size_factors(kb) or word in MANY_WORDS:
             continue
         if any(a < mt.end() and mt.start() < b for a, b in spans):
             continue
@@ -560,6 +567,49 @@ def _merge_adjacent(text: str, found: list[Mention]) -> list[Mention]:
         else:
             out.append(m)
     return out
+
+
+_AREA = re.compile(
+    r"\b(\d{1,6}(?:\.\d+)?)\s*(m2|m²|sqm|sq\.? ?m(?:et(?:er|re)s?)?\.?|square met(?:er|re)s?|m(?:et(?:er|re)s?)? squared|"
+    r"sq\.? ?ft\.?|sqft|square f(?:ee|oo)t|ft2|ft²|sf)(?![\w²])"
+)
+"""A stated floor area: a number and a unit ("50 m2", "30 square meters", "500 sq ft")."""
+
+SQ_FT_M2 = 0.09290304
+"""Square metres in a square foot."""
+
+
+def _stated_area(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[int, int]]) -> None:
+    """The floor area the text states for the whole building ("a 50 m2 apartment", "about
+    30 square meters"); an area right before a room word ("a 12 m2 bedroom") is no total.
+    Every area's span joins ``taken``: its number counts nothing."""
+    voc = vocabulary(kb)
+    for mt in _AREA.finditer(text):
+        taken.append(mt.span())
+        after = _tokens(text[mt.end() :])[:3]
+        nxt = " ".join(t for t, _, _ in after)
+        value = float(mt.group(1)) * (SQ_FT_M2 if "f" in mt.group(2) or mt.group(2) == "sf" else 1.0)
+        if any(nxt.startswith(f) and voc.forms[f][0].kind == "room" for f in _prefixes(nxt) if f in voc.forms):
+            p.room_areas.append((mt.end(), value))
+            continue
+        if p.total_m2 is None and value > 0:
+            p.total_m2 = value
+
+
+def _prefixes(phrase: str) -> list[str]:
+    words = phrase.split()
+    return [" ".join(words[:n]) for n in range(len(words), 0, -1)]
+
+
+def _size_words(kb: KnowledgeBase, text: str, start: int, p: Parsed) -> None:
+    """Size words (programs.yaml sizes.words) among the few words before the building
+    word, within its clause ("a tiny off-grid cabin", "a grand old mansion")."""
+    words = ((kb.raw("programs").get("sizes") or {}).get("words")) or {}
+    for tok, _, _ in reversed(_tokens(text[:start])[-4:]):
+        if not tok.isalpha() or tok in ("with", "and", "or", "but", "of", "for"):
+            break
+        if (words.get(tok) or {}).get("total_m2") and tok not in p.size_words:
+            p.size_words.append(tok)
 
 
 def _apply_codes(text: str, p: Parsed, taken: list[tuple[int, int]]) -> None:
@@ -793,7 +843,7 @@ def _open_vocabulary(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[
     unknown: list[str] = []
     for phrase, s, e in found:
         words = phrase.split()
-        while words and words[0] in SIZE_WORDS:
+        while words and words[0] in size_factors(kb):
             words = words[1:]
         if not words:
             continue
@@ -802,11 +852,11 @@ def _open_vocabulary(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[
         kind, mo = ov.classify(name, kb)
         if kind == "room" and mo is not None:
             m = Mention("room", "", name, s, e, plural=plural, concept=mo.key, open_vocab=True)
-            _look_back(m, text, tokens, spans, keep_words=False)
+            _look_back(m, text, tokens, spans, keep_words=False, kb=kb)
             mentions.append(m)
             continue
         m = Mention("object", mo.key if mo else "", name, s, e, plural=plural, open_vocab=True)
-        _look_back(m, text, tokens, spans, keep_words=False)
+        _look_back(m, text, tokens, spans, keep_words=False, kb=kb)
         m.plural = m.plural or plural
         if mo is None:
             unknown.append(name)
@@ -953,6 +1003,7 @@ def parse(text: str, kb: KnowledgeBase | None = None) -> Parsed:
     taken: list[tuple[int, int]] = []
     _apply_codes(norm, p, taken)
     _find_levels(norm, p)
+    _stated_area(kb, norm, p, taken)
     span = _parse_building(kb, norm, p, taken)
     if span:
         taken.append(span)
@@ -960,7 +1011,7 @@ def parse(text: str, kb: KnowledgeBase | None = None) -> Parsed:
     tokens = _tokens(norm)
     spans = taken + [(m.start, m.end) for m in mentions]
     for m in mentions:
-        _look_back(m, norm, tokens, spans, keep_words=True)
+        _look_back(m, norm, tokens, spans, keep_words=True, kb=kb)
         if m.kind == "room":
             kept = []
             for w in m.words:
@@ -971,7 +1022,7 @@ def parse(text: str, kb: KnowledgeBase | None = None) -> Parsed:
         if m.words:
             m.name = " ".join(m.words + [m.name])
     mentions = _open_vocabulary(kb, norm, p, taken, mentions, tokens)
-    _apply_negation(norm, mentions)
+    _apply_negation(norm, mentions, kb)
     _check_counts(p, mentions)
     _total_rooms(norm, p, mentions)
     if _ONE_ROOM.search(norm):
@@ -979,6 +1030,10 @@ def parse(text: str, kb: KnowledgeBase | None = None) -> Parsed:
     _assign_rooms(norm, mentions)
     _apply_arrangements(norm, mentions)
     p.rooms = [m for m in mentions if m.kind == "room"]
+    for end, value in p.room_areas:  # "a 12 m2 bedroom": the next room word's own area
+        room = next((m for m in p.rooms if m.start >= end and len(_tokens(norm[end : m.start])) <= 2), None)
+        if room is not None and value > 0:
+            room.area_m2 = value
     p.objects = [m for m in mentions if m.kind == "object"]
     _find_styles(kb, norm, p)
     _find_materials(kb, norm, p, p.rooms)

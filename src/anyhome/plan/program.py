@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import re
 import unicodedata
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -55,6 +56,8 @@ class Slot:
     optional: bool = False
     extra_groups: list[str] = field(default_factory=list)
     level: int = 0  # storey: 0 ground, 1 up, -1 basement
+    area_from: str = "type"  # where area_range came from: type | program | name | kind
+    need: float = 0.0  # floor its furniture needs (set when a total is fitted)
 
 
 def _type_info(kb: KnowledgeBase, room_type: str) -> dict:
@@ -65,7 +68,9 @@ def _type_info(kb: KnowledgeBase, room_type: str) -> dict:
 def _slot_from_entry(kb: KnowledgeBase, e: dict) -> Slot:
     t = e["type"] if e["type"] in ROOM_TYPES else "other"
     area = e.get("area") or _type_info(kb, t)["area"]
-    return Slot(e.get("name", t.replace("_", " ")), t, e.get("furnish", t), tuple(area), key=e.get("key", ""))
+    s = Slot(e.get("name", t.replace("_", " ")), t, e.get("furnish", t), tuple(area), key=e.get("key", ""))
+    s.area_from = "program" if e.get("area") else "type"
+    return s
 
 
 def _concept_info(kb: KnowledgeBase, furnish: str) -> dict:
@@ -88,6 +93,10 @@ def _slot_from_mention(kb: KnowledgeBase, m: Mention, idx: int) -> Slot:
     area = info.get("area") or _type_info(kb, t)["area"]
     name = m.name if m.words or m.concept or not info.get("name") else info["name"]
     s = Slot(name, t, info.get("furnish", t), tuple(area), mention=idx, generic_name=False, size=m.size)
+    s.area_from = "name" if info.get("area") else "type"
+    if m.area_m2 is not None:  # "a 12 m2 bedroom": that area, whatever the norms and words say
+        a = float(np.clip(m.area_m2, *AREA_LIMITS_M2))
+        s.area_range, s.area_from, s.size = (a, a), "stated", 1.0
     return s
 
 
@@ -110,13 +119,16 @@ def choose_program(kb: KnowledgeBase, parsed: Parsed) -> tuple[str | None, list[
     return DEFAULT_PROGRAM, []
 
 
-def plan_rooms(kb: KnowledgeBase, parsed: Parsed, program: str | None, rng: np.random.Generator, warnings: list[str]) -> tuple[list[Slot], str | None]:
-    """Rooms of the house; returns the slots and the key of the program's main room."""
+def plan_rooms(kb: KnowledgeBase, parsed: Parsed, program: str | None, rng: np.random.Generator, warnings: list[str], sizing: Sizing | None = None) -> tuple[list[Slot], str | None]:
+    """Rooms of the house; returns the slots and the key of the program's main room.
+    ``sizing`` (:func:`sizing`): the building kind's room sizes and the total the rooms
+    must reach, which may drop or add rooms."""
     prog = kb.raw("programs")["programs"].get(program) if program else None
     slots: list[Slot] = []
     if prog is not None:
+        counts = sizing.kind.get("counts", {}) if sizing is not None else {}
         for e in prog["rooms"]:
-            n = _sample_count(e.get("count", 1), rng)
+            n = _sample_count(counts.get(e["type"], e.get("count", 1)), rng)  # a mansion has more bedrooms
             opt = e.get("optional")
             if opt is not None and rng.random() >= float(opt):
                 n = 0
@@ -148,6 +160,8 @@ def plan_rooms(kb: KnowledgeBase, parsed: Parsed, program: str | None, rng: np.r
             warnings.append(
                 f"the text rules out {', '.join(ruled_out)} and names no other room; planned a {s.name}"
             )
+    if sizing is not None:
+        apply_kind(kb, slots, sizing)
     _name_main_room(parsed, slots, prog)
     assign_levels(kb, parsed, slots, warnings)
     _name_and_number(slots)
@@ -212,7 +226,9 @@ def _claim_mentions(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], fixed:
             target.generic_name = generic
             if not generic or target.type != proto.type:
                 target.furnish, target.type = proto.furnish, proto.type
-                target.area_range = proto.area_range
+                target.area_range, target.area_from = proto.area_range, proto.area_from
+            elif proto.area_from == "stated":  # "a 30 m2 living room"
+                target.area_range, target.area_from = proto.area_range, proto.area_from
             first = first or target
 
 
@@ -424,10 +440,14 @@ def _name_and_number(slots: list[Slot]) -> None:
         s.id = rid
 
 
-def sample_areas(slots: list[Slot], building_size: float, rng: np.random.Generator) -> None:
+def sample_areas(slots: list[Slot], building_size: float, rng: np.random.Generator, kb: KnowledgeBase | None = None) -> None:
+    """Draw each room's area from its range, times its size words; with ``kb``, never
+    below its type's norm (``min_area_m2``, or its own smaller range)."""
     for s in slots:
         lo, hi = s.area_range
         a = float(rng.uniform(lo, hi)) * s.size * building_size
+        if kb is not None:
+            a = max(a, _least(kb, s))
         s.area = float(np.clip(a, *AREA_LIMITS_M2))
 
 
@@ -560,3 +580,240 @@ def connect_levels(kb: KnowledgeBase, slots: list[Slot], entrance_types: list[st
             s.area = STAIRWELL_AREA_M2
     entrance = [e for e in edges if e[1] == "outside"]
     return [e for e in edges if e[1] != "outside"] + entrance
+# ---------------------------------------------------------------- sizes
+# How big the rooms are (docs/space_standards.md): the building kind's typical room
+# sizes, and the total floor area a size word ("tiny", "grand") or a stated total ("a
+# 50 m2 flat") sets. The rooms are dropped or added before the areas are drawn; the
+# drawn areas are then scaled to the total, each within its type's norms.
+
+STATED_TOLERANCE = 0.05
+"""A stated total is aimed at within this fraction (the bar is 10 %: furniture may
+still grow a room)."""
+
+
+@dataclass
+class Sizing:
+    """What sets the rooms' sizes: the building kind and the total they must reach."""
+
+    program: str | None
+    kind: dict = field(default_factory=dict)  # programs.yaml sizes.kinds entry
+    band: tuple[float, float] | None = None  # the total floor area to land in, m2
+    what: str = ""  # "the stated 50 m2", "a tiny home": how a warning names the band
+    stretch: float = 1.6
+    add: list[dict] = field(default_factory=list)
+    circulation_share: float = 1.0
+    scale: float = 1.0  # the size word's factor on every room's range
+
+
+def _sizes(kb: KnowledgeBase) -> dict:
+    return kb.raw("programs").get("sizes") or {}
+
+
+def sizing(kb: KnowledgeBase, parsed: Parsed, program: str | None) -> Sizing:
+    """The building kind's sizes and the total the text asks for; a home that must stay
+    below ``compact.below_m2`` and has no bedrooms asked for becomes the compact program
+    (one main room and a bathroom)."""
+    sizes = _sizes(kb)
+    homes = set(sizes.get("homes", []))
+    kind: dict = {}
+    if parsed.building is not None:
+        key = kb.raw("programs")["buildings"][parsed.building].get("kind")
+        kind = sizes.get("kinds", {}).get(key, {}) if key else {}
+    sz = Sizing(program, kind, stretch=float(sizes.get("stretch", 1.6)),
+                add=[*kind.get("add", []), *sizes.get("add", [])] if program in homes else [],
+                circulation_share=float(sizes.get("circulation_share", 1.0)) if program in homes else 1.0)  # fmt: skip
+    word_band = None
+    for w in parsed.size_words:
+        if sizes.get("words", {}).get(w, {}).get("total_m2"):
+            word_band = tuple(sizes["words"][w]["total_m2"])
+            sz.scale = float(sizes["words"][w].get("scale", 1.0)) if program in homes else 1.0
+            sz.what = f"a {w} {'home' if program in homes else 'building'}"
+            break
+    if parsed.total_m2 is not None:
+        t = float(parsed.total_m2)
+        sz.band = (t * (1 - STATED_TOLERANCE), t * (1 + STATED_TOLERANCE))
+        sz.what = f"the stated {t:.0f} m2"
+    elif program in homes and word_band is not None:
+        kt = kind.get("total_m2")
+        lo, hi = word_band
+        if kt and max(lo, kt[0]) <= min(hi, kt[1]):  # "a grand mansion": both hold
+            lo, hi = max(lo, kt[0]), min(hi, kt[1])
+        sz.band = (float(lo), float(hi))
+    elif program in homes and kind.get("total_m2"):
+        sz.band = (float(kind["total_m2"][0]), float(kind["total_m2"][1]))
+        sz.what = f"a {parsed.building_word or 'home'}"
+    compact = sizes.get("compact")
+    asks_bedrooms = parsed.bedrooms or parsed.people or any(
+        not m.negated and _slot_from_mention(kb, m, i).type == "bedroom" for i, m in enumerate(parsed.rooms)
+    )
+    if (
+        compact and sz.band is not None and sz.band[1] <= float(compact["below_m2"]) and program in homes
+        and program != compact["program"] and not asks_bedrooms
+    ):  # fmt: skip
+        sz.program = compact["program"]
+    return sz
+
+
+def _least(kb: KnowledgeBase, s: Slot) -> float:
+    """Smallest area the room may shrink to: its type's norm, or its own smaller range
+    (a booth, a cubicle)."""
+    if s.area_from == "stated":  # "a 12 m2 bedroom" stays 12 m2
+        return float(s.area_range[0])
+    return float(max(min(float(_type_info(kb, s.type)["min_area_m2"]), s.area_range[0]), s.need))
+
+
+def _most(kb: KnowledgeBase, s: Slot, sz: Sizing) -> float:
+    """Largest area the room may grow to; circulation never grows to fill a total."""
+    if s.area_from == "stated":
+        return float(s.area_range[1])
+    if _type_info(kb, s.type).get("circulation"):
+        return max(s.area, s.area_range[1])
+    return float(min(s.area_range[1] * sz.stretch, AREA_LIMITS_M2[1]))
+
+
+def apply_kind(kb: KnowledgeBase, slots: list[Slot], sz: Sizing) -> None:
+    """A building kind's area ranges replace the type defaults ("a cabin's bedroom" is
+    smaller than a mansion's); its scale and the size word's multiply the other rooms'
+    ranges."""
+    areas = sz.kind.get("areas", {})
+    for s in slots:
+        scale = sz.scale * float(sz.kind.get("scale", 1.0))
+        if s.area_from == "type" and s.type in areas:  # the kind's own sizes already say how big
+            s.area_range, s.area_from, scale = tuple(float(x) for x in areas[s.type]), "kind", 1.0
+        if scale != 1.0:
+            lo, hi = s.area_range
+            s.area_range = (max(lo * scale, min(lo, _least(kb, s))), hi * scale)
+
+
+def _mid(s: Slot) -> float:
+    return max((s.area_range[0] + s.area_range[1]) / 2 * s.size, s.need)
+
+
+def fit_rooms(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], sz: Sizing, prog: dict | None, need: Callable[[Slot], float]) -> None:
+    """Drop or add rooms so that the total can reach ``sz.band``: optional rooms the text
+    did not ask for go first when the rooms are too big for it, then repeated rooms it
+    did not count; rooms of the kind's (then the homes') ``add`` list join when they are
+    too few. ``need(slot)``: the floor its furniture needs. Rooms keep their names and
+    ids; call :func:`renumber` after."""
+    if sz.band is None or not slots:
+        return
+    for s in slots:
+        s.need = need(s)
+    lo, hi = sz.band
+    main = (prog or {}).get("main")
+    fixed = _fixed_counts(kb, parsed)
+
+    def droppable(strict: bool) -> list[Slot]:
+        out = [s for s in reversed(slots) if s.optional and s.mention is None and s.key != main]
+        if strict:
+            seen: set[str] = set()
+            extra = []
+            for s in slots:
+                if s.type in seen and s.mention is None and s.type not in fixed and s.key != main:
+                    extra.append(s)
+                seen.add(s.type)
+            out += list(reversed(extra))
+            out += [s for s in slots if _type_info(kb, s.type).get("circulation") and s.mention is None and s not in out]
+        return out
+
+    while sum(_mid(s) for s in slots) > hi and (victims := droppable(False)):
+        slots.remove(victims[0])
+    while sum(_mid(s) for s in slots) > hi * 1.15 and (victims := droppable(True)) and len(slots) > 2:
+        slots.remove(victims[0])
+    while sum(_least(kb, s) for s in slots) > hi and (victims := droppable(True)) and len(slots) > 1:
+        slots.remove(victims[0])
+    adds = list(sz.add)
+    while sum(_mid(s) for s in slots) < lo * 0.9 and adds and len(slots) < MAX_ROOMS:
+        e = adds.pop(0)
+        if sum(x.type == e["type"] for x in slots) >= min(int(e.get("up_to", 1)), int(_type_info(kb, e["type"]).get("max", 6))):
+            continue
+        new = _slot_from_entry(kb, {k: v for k, v in e.items() if k != "up_to"})
+        if _ruled_out(kb, parsed, new):
+            continue
+        apply_kind(kb, [new], sz)
+        new.need = need(new)
+        slots.append(new)
+
+
+def renumber(slots: list[Slot]) -> None:
+    """Unique names and ids again after rooms were added: the rooms planned before keep
+    theirs, an added "bathroom" becomes the next free "bathroom 3"."""
+    used: set[str] = set()
+    for s in slots:
+        if s.name in used:
+            k = 2
+            while f"{s.name} {k}" in used:
+                k += 1
+            s.name = f"{s.name} {k}"
+        used.add(s.name)
+    ids: set[str] = set()
+    for s in slots:
+        base = _slug(s.name)
+        rid, k = base, 2
+        while rid in ids:
+            rid, k = f"{base}_{k}", k + 1
+        ids.add(rid)
+        s.id = rid
+
+
+def _scale_to(kb: KnowledgeBase, slots: list[Slot], target: float, sz: Sizing, floors: dict[int, float]) -> None:
+    """Scale the rooms' areas so that the total is ``target``, each within [_least (or
+    its floor in ``floors``), _most] (a room that hits a bound keeps it and the others
+    take the rest)."""
+    pinned: set[int] = set()
+    for _ in range(len(slots) + 1):
+        free = [s for s in slots if id(s) not in pinned]
+        rest = sum(s.area for s in slots if id(s) in pinned)
+        base = sum(s.area for s in free)
+        if not free or base <= 0:
+            return
+        f = max(target - rest, 0.0) / base
+        hit = False
+        for s in free:
+            a = s.area * f
+            lo = max(_least(kb, s), floors.get(id(s), 0.0))
+            hi = max(_most(kb, s, sz), lo, s.area if f < 1 else 0.0)
+            if a < lo or a > hi:
+                s.area, hit = float(np.clip(a, lo, hi)), True
+                pinned.add(id(s))
+        if not hit:
+            for s in free:
+                s.area = s.area * f
+            return
+
+
+def fit_areas(kb: KnowledgeBase, slots: list[Slot], sz: Sizing, warnings: list[str] | None = None, pinned: set[int] | None = None) -> None:
+    """Scale the drawn areas into ``sz.band`` and keep the circulation's share of a
+    home at most ``sz.circulation_share``; ``warnings`` (the last fit) says when the
+    rooms cannot reach the band within their norms. ``pinned``: rooms that may grow
+    but not shrink (the furniture grew them)."""
+    pinned = set(pinned or ())
+    for s in slots:
+        if s.area_from != "stated":
+            s.area = max(s.area, s.need)
+    circ = [s for s in slots if _type_info(kb, s.type).get("circulation")]
+    total = sum(s.area for s in slots)
+    if circ and sz.circulation_share < 1.0:
+        cap = sz.circulation_share * total
+        have = sum(s.area for s in circ)
+        if have > cap:
+            for s in circ:
+                s.area = max(_least(kb, s), s.area * cap / have)
+    if sz.band is None:
+        return
+    lo, hi = sz.band
+    total = sum(s.area for s in slots)
+    target = float(np.clip(total, lo, hi))
+    if abs(target - total) > 1e-6:
+        _scale_to(kb, slots, target, sz, {id(s): s.area for s in slots if id(s) in pinned})
+    for s in slots:
+        s.area = round(s.area, 2)
+    total = sum(s.area for s in slots)
+    if warnings is not None and not lo * (1 - STATED_TOLERANCE) <= total <= hi * (1 + STATED_TOLERANCE):
+        if total > hi:
+            warnings.append(
+                f"{sz.what} cannot hold the rooms asked for ({len(slots)} rooms need at least "
+                f"{sum(_least(kb, s) if id(s) not in pinned else s.area for s in slots):.0f} m2 within the space standards); planned {total:.0f} m2"
+            )
+        else:
+            warnings.append(f"{sz.what} is more than the rooms asked for can fill within their norms; planned {total:.0f} m2")

@@ -49,7 +49,8 @@ def test_llama_cpp_server_holds_items_to_their_rules_params(stage: str, llama_se
     furniture = ["sofa", "coffee table"]
     values = dict(text=CAT, building="cafe", name="cat lounge", type="cafe", area_m2="30", max_groups=2,
                   furniture=", ".join(furniture), max_ornaments=3)  # fmt: skip
-    schema = json_schema(stage, targets=furniture)
+    cap = values["max_groups"] if stage == "furniture" else values["max_ornaments"]
+    schema = json_schema(stage, targets=furniture, max_items=int(cap))  # as the planner asks: the prompt's cap
     reply = client.chat_json(messages(stage, **values), schema, stage, seed=2)
     assert client.mode == "json_object_schema"  # the server took the schema (no fallback to plain JSON)
     data = json.loads(reply.content)
