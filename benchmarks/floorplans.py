@@ -40,6 +40,7 @@ from anyhome.errors import AnyHomeError
 from anyhome.evaluate import evaluate_house
 from anyhome.evaluate.plan_metrics import PlanMetrics, signatures_share_most
 from anyhome.floorplan import solve_floorplan
+from anyhome.floorplan.levels import solve_levels
 from anyhome.pipeline import generate
 from anyhome.plan.knowledge import knowledge_base
 from anyhome.stages import Stages
@@ -68,16 +69,18 @@ def pct(xs: list[float], q: float) -> float:
 
 
 class TimedFloorplan:
-    """``solve_floorplan`` with its wall time recorded per call."""
+    """The default floorplan stage (``floorplan.levels.solve_levels``: one storey is
+    ``solve_floorplan`` itself) with its wall time recorded per call."""
 
     def __init__(self) -> None:
         self.times_s: list[float] = []
 
     def __call__(self, spec: Any, rng: np.random.Generator) -> Any:
         t0 = time.perf_counter()
-        out = solve_floorplan(spec, rng)
-        self.times_s.append(time.perf_counter() - t0)
-        return out
+        try:
+            return solve_levels(spec, rng)
+        finally:
+            self.times_s.append(time.perf_counter() - t0)
 
 
 def run_set(name: str, prompts: list[tuple[str, str]], seeds: list[int],
@@ -86,9 +89,15 @@ def run_set(name: str, prompts: list[tuple[str, str]], seeds: list[int],
     timer = TimedFloorplan()
     stages = Stages(floorplan=timer)
     rows: list[tuple[str, int, PlanMetrics, int]] = []
+    failures: list[str] = []
     for pid, prompt in prompts:
         for seed in seeds:
-            house = generate(prompt, seed=seed, stages=stages, knowledge=kb)
+            try:
+                house = generate(prompt, seed=seed, stages=stages, knowledge=kb)
+            except AnyHomeError as e:  # counted, not fatal: the table reports failures
+                failures.append(f"{pid} seed {seed}: {e}")
+                log(f"{name:<12} {pid:<28} seed {seed}: FAILED {e}")
+                continue
             rep = evaluate_house(house, kb=kb)
             assert rep.plan is not None
             rows.append((pid, seed, rep.plan, len(rep.violations)))
@@ -96,7 +105,9 @@ def run_set(name: str, prompts: list[tuple[str, str]], seeds: list[int],
                 f"{rep.plan.total_area_m2:6.1f} m2 circ {rep.plan.circulation_share:.2f} "
                 f"corr {rep.plan.longest_corridor_m:4.1f} m fp {1000 * timer.times_s[-1]:.0f} ms "
                 f"viol {len(rep.violations)}")
-    return summarise(name, rows, timer.times_s)
+    summary = summarise(name, rows, timer.times_s)
+    summary["failures"] = failures
+    return summary
 
 
 def summarise(name: str, rows: list[tuple[str, int, PlanMetrics, int]], fp_times: list[float]) -> dict[str, Any]:
@@ -189,6 +200,7 @@ def table(results: list[dict[str, Any]], seeds: list[int]) -> str:
         lines.append(f"| {label} | {bar} | " + " | ".join(fmt(r) for r in results) + " |")
 
     row("houses (homes)", "", lambda r: f"{r['houses']} ({r['homes']})")
+    row("prompts x seeds that failed (FloorplanError...)", "0", lambda r: str(len(r["failures"])))
     row("circulation share, homes: median", "<= 0.12", lambda r: f"{r['circ_median']:.3f}")
     row("circulation share, homes: p90", "<= 0.18", lambda r: f"{r['circ_p90']:.3f}")
     row("longest corridor, homes of <= 8 rooms (m)", "<= 8", lambda r: f"{r['longest_corridor_small_home_m']:.1f}")

@@ -196,6 +196,7 @@ class Floorplan(_Model):
     windows: list[Window] = Field(default_factory=list)
     connections: list[tuple[str, str]] = Field(default_factory=list)
     levels: list[Level] = Field(default_factory=list)
+    warnings: list[str] = Field(default_factory=list, description="what the stage could not do as planned (the house's warnings)")
 
     def room(self, room_id: str) -> Room:
         for r in self.rooms:

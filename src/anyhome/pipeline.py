@@ -178,7 +178,7 @@ def generate_from_spec(
         objects=objects,
         levels=floorplan.levels,
         dropped=result.dropped,
-        warnings=spec.warnings,
+        warnings=[*spec.warnings, *floorplan.warnings],
         plan=spec.model_dump(mode="json", exclude={"provenance"}),
         provenance=spec.provenance,
     )

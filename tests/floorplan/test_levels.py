@@ -123,3 +123,15 @@ def test_each_storey_has_its_birdseye_and_rerender_keeps_the_folder_ours(townhou
                           capture_output=True, text=True, timeout=300)
     assert proc.returncode == 0, proc.stderr
     assert (out / "birdseye-2.png").is_file()
+
+
+def test_storeys_that_cannot_stack_become_one_valid_storey_with_a_warning():
+    """An attic cottage whose ground-floor stairwell never comes out large enough for a
+    flight (seed 1, measured): the house is laid out on the ground floor, its stairwells
+    joined by a door, and says so."""
+    h = generate("a cozy cottage with an attic bedroom", 1)
+    assert h.level_numbers() == [0] and not h.levels
+    assert not [o for o in h.objects if o.category == "stairs"]
+    assert any("could not stack the storeys" in w for w in h.warnings)
+    report = evaluate_house(h)
+    assert report.violations == [] and report.metrics["connections_realized"] == 1.0

@@ -31,9 +31,9 @@ size words, stated total
 open air
     A room whose ``open_air`` flag is set, whose type is an open-air type
     (:data:`OPEN_AIR_TYPES`) or whose name says so (:data:`OPEN_AIR_NAME`). It "has a
-    ceiling" when its ``ceiling`` field says so; a house without that field: when its
-    ``open_air`` flag is not set (a house without either field: always, as every room
-    of such a house is built with a ceiling).
+    ceiling" when its ``open_air`` flag is not set (the format builds every other room
+    with a ceiling, whatever shape its ``ceiling`` field gives; a house from before the
+    flag existed: always).
 levels, reachability
     Distinct ``room.level`` (1 for a house without levels). Every room must be reachable
     from a room with a door to the outside through doors, and between levels through
@@ -344,13 +344,10 @@ def _is_open_air(room: Any, kb: KnowledgeBase) -> bool:
 
 
 def _has_ceiling(room: Any) -> bool:
-    fields = type(room).model_fields
-    if "ceiling" in fields:
-        c = room.ceiling
-        return bool(c) if not isinstance(c, str) else c.strip().lower() not in ("", "none", "open", "sky")
-    if "open_air" in fields:
-        return not room.open_air
-    return True
+    """The house format: a room is built with a ceiling unless ``open_air`` (``ceiling``
+    is its shape, flat, pitched or vaulted; an open-air room has none whatever it says).
+    A house from before ``open_air`` existed has a ceiling in every room."""
+    return getattr(room, "open_air", False) is not True
 
 
 def _level(room: Any) -> int:

@@ -25,6 +25,7 @@ import numpy as np
 from anyhome.errors import FloorplanError
 from anyhome.floorplan.options import FloorplanOptions
 from anyhome.floorplan.solver import solve_floorplan
+from anyhome.geometry import opening_zone
 from anyhome.house import Door, Floorplan, HouseObject, Level, Room, Window
 from anyhome.plan.spec import HouseSpec
 
@@ -57,6 +58,19 @@ def solve_levels(spec: HouseSpec, rng: np.random.Generator, options: FloorplanOp
         return solve_floorplan(spec, rng, options)
     if 0 not in numbers:
         raise FloorplanError("a house of several storeys needs rooms on the ground floor (level 0)")
+    attempts = (options or FloorplanOptions()).level_attempts
+    why = ""
+    for _ in range(attempts):
+        try:
+            plan = _stacked(spec, numbers, rng, options)
+            stairs_objects(plan)  # a flight fits where both stairwells meet, clear of their doors
+            return plan
+        except FloorplanError as e:
+            why = str(e)
+    return _one_storey(spec, rng, options, why)
+
+
+def _stacked(spec: HouseSpec, numbers: list[int], rng: np.random.Generator, options: FloorplanOptions | None) -> Floorplan:
     plans: dict[int, Floorplan] = {}
     for k in numbers:
         plans[k] = _solve_storey(spec, k, rng, options)
@@ -71,6 +85,22 @@ def solve_levels(spec: HouseSpec, rng: np.random.Generator, options: FloorplanOp
     for k in sorted((n for n in numbers if n < 0), reverse=True):
         elevation[k] = elevation[k + 1] - heights[k]
     return _joined(spec, plans, [Level(level=k, elevation_m=round(elevation[k], 4), height_m=round(heights[k], 4)) for k in numbers])
+
+
+ONE_STOREY_NOTE = "could not stack the storeys"
+"""Start of the floorplan's note when a house of several storeys was laid out on one."""
+
+
+def _one_storey(spec: HouseSpec, rng: np.random.Generator, options: FloorplanOptions | None, why: str) -> Floorplan:
+    """Every room on the ground floor, each stairwell joined to the one above it by a
+    door: a valid house where the storeys would not stack (the pipeline warns)."""
+    rooms = [r.model_copy(update={"level": 0}) for r in spec.rooms]
+    numbers = sorted({r.level for r in spec.rooms})
+    links = list(spec.connections)
+    links += [(stair_room(spec, a), stair_room(spec, b)) for a, b in zip(numbers, numbers[1:])]
+    flat = spec.model_copy(update={"rooms": rooms, "connections": links})
+    plan = solve_floorplan(flat, rng, options)
+    return plan.model_copy(update={"warnings": [*plan.warnings, f"{ONE_STOREY_NOTE} ({why}); every room is on the ground floor"]})
 
 
 def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options: FloorplanOptions | None) -> Floorplan:
@@ -125,13 +155,19 @@ def _moved(plan: Floorplan, dx: float, dy: float) -> Floorplan:
     return _map(plan, lambda p: (p[0] + dx, p[1] + dy))
 
 
-def _flight_box(plan: Floorplan, stair: str) -> tuple[float, float, float, float, float] | None:
+def _flight_box(plan: Floorplan, stair: str, upper: str | None = None) -> tuple[float, float, float, float, float] | None:
     """(x0, y0, x1, y1, yaw) of a flight along a long wall of the stairwell, its top end
-    against a short wall, touching no door of the stairwell (None: every place does)."""
+    against a short wall, touching no door of either stairwell (None: every place does).
+    The flight stays inside the rectangle both stairwells share (they have the same
+    south-west corner), so its top lands in the upper one."""
     from shapely.geometry import LineString, box
 
     x0, y0, w, h = _rect(plan.room(stair))
-    doors = [LineString(d.segment) for d in plan.doors if stair in d.rooms]
+    if upper is not None:
+        ux0, uy0, uw, uh = _rect(plan.room(upper))
+        w, h = min(w, ux0 + uw - x0), min(h, uy0 + uh - y0)
+    doors = [opening_zone(d.segment).union(LineString(d.segment)) for d in plan.doors
+             if stair in d.rooms or (upper is not None and upper in d.rooms)]  # its swing, on both sides
     for ya, yb in ((y0, y0 + FLIGHT_WIDTH_M), (y0 + h - FLIGHT_WIDTH_M, y0 + h)):
         for xa, yaw in ((x0, 0.0), (x0 + w - FLIGHT_MIN_LENGTH_M, math.pi)):
             run = box(xa, ya, xa + FLIGHT_MIN_LENGTH_M, yb).buffer(0.05)
@@ -163,8 +199,8 @@ def stairs_objects(plan: Floorplan) -> list[HouseObject]:
     for lo, hi in zip(numbers, numbers[1:]):
         low = _stairwell(plan, lo)
         up = _stairwell(plan, hi)
-        fb = _flight_box(plan, low.id)
-        if fb is None or up is None:
+        fb = _flight_box(plan, low.id, up.id)
+        if fb is None:
             raise FloorplanError(f"no room for a flight of stairs in {low.id!r}")
         xa, ya, xb, yb, yaw = fb
         rise = elev[hi] - elev[lo]

@@ -555,7 +555,7 @@ def assign_levels(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], warnings
         slots.remove(victim)
         warnings.append(f"a house has at most {MAX_ROOMS} rooms with its stairwells; dropped the {victim.name}")
     for k in levels:
-        s = Slot("stairwell", "hallway", "hallway", (STAIRWELL_AREA_M2, STAIRWELL_AREA_M2), key=STAIRWELL_KEY)
+        s = Slot("stairwell", "stairwell", "hallway", (STAIRWELL_AREA_M2, STAIRWELL_AREA_M2), key=STAIRWELL_KEY)
         s.level = k
         slots.append(s)
 
