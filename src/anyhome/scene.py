@@ -154,7 +154,7 @@ class _SceneBuilder:
         return textured_mesh(mesh.vertices, mesh.faces, pbr_material(spec, self.textures), spec.tile_m)
 
     def room(self, room: Room, parent: str = ROOT_NODE) -> None:
-        base = {"room": room.id, "room_name": room.name, "room_type": room.type}
+        base: dict[str, str | bool] = {"room": room.id, "room_name": room.name, "room_type": room.type}
         if room.open_air:  # no ceiling node: open to the sky
             base["open_air"] = True
         elif room.ceiling != "flat":

@@ -30,7 +30,7 @@ if TYPE_CHECKING:
 def footprint_rect(footprint: object) -> tuple[float, float, float, float]:
     """(x0, y0, x1, y1) of a rectangular footprint (shapely polygon or list of points)."""
     try:
-        poly = footprint if isinstance(footprint, BaseGeometry) else Polygon(footprint)  # type: ignore[arg-type]
+        poly = footprint if isinstance(footprint, BaseGeometry) else Polygon(footprint)
     except (TypeError, ValueError) as e:
         raise FloorplanError(f"footprint is not a polygon: {e}") from None
     if not isinstance(poly, Polygon) or poly.is_empty or not poly.is_valid:

@@ -16,7 +16,7 @@ import re
 from dataclasses import dataclass
 from functools import lru_cache
 
-from anyhome.house import is_habitable
+from anyhome.house import CeilingShape, is_habitable
 from anyhome.plan.kb import KnowledgeBase
 from anyhome.plan.parse import Parsed
 
@@ -33,7 +33,7 @@ _CLAUSE_BREAK = re.compile(r"[,.;:!?]")
 @dataclass(frozen=True)
 class RoomHeight:
     height_m: float
-    ceiling: str = "flat"
+    ceiling: CeilingShape = "flat"
 
 
 @lru_cache(maxsize=8)
@@ -86,7 +86,8 @@ def room_heights(kb: KnowledgeBase, parsed: Parsed, types: list[str], mentions: 
         if rt.open_air:
             out.append(RoomHeight(rt.height_m))
             continue
-        height, add, ceiling = rt.height_m * scale, 0.0, "flat"
+        ceiling: CeilingShape = "flat"
+        height, add = rt.height_m * scale, 0.0
         for w in per_room[k]:
             height *= w.scale
             add += w.add_m

@@ -679,7 +679,8 @@ def apply_kind(kb: KnowledgeBase, slots: list[Slot], sz: Sizing) -> None:
     for s in slots:
         scale = sz.scale * float(sz.kind.get("scale", 1.0))
         if s.area_from == "type" and s.type in areas:  # the kind's own sizes already say how big
-            s.area_range, s.area_from, scale = tuple(float(x) for x in areas[s.type]), "kind", 1.0
+            lo_m2, hi_m2 = (float(x) for x in areas[s.type])
+            s.area_range, s.area_from, scale = (lo_m2, hi_m2), "kind", 1.0
         if scale != 1.0:
             lo, hi = s.area_range
             s.area_range = (max(lo * scale, min(lo, _least(kb, s))), hi * scale)
