@@ -50,7 +50,9 @@ SETS = {
     "public": HERE.parent / "tests" / "data" / "public_prompts.jsonl",
     "heldout_c": HERE / "prompts" / "heldout_c.jsonl",
     "heldout_plan": HERE / "prompts" / "heldout_plan.jsonl",
+    "dev": HERE / "prompts" / "dev.jsonl",
 }
+"""``dev`` is the set to tune on; the held-out sets are for measuring only."""
 SMALL_HOME_ROOMS = 8
 """The corridor bar applies to homes of at most this many rooms."""
 
