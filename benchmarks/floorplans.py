@@ -53,6 +53,8 @@ SETS = {
     "dev": HERE / "prompts" / "dev.jsonl",
 }
 """``dev`` is the set to tune on; the held-out sets are for measuring only."""
+OVERHANG_TOL_M2 = 1.0
+"""An upper storey may hang over nothing by this much (wall thickness, rounding)."""
 SMALL_HOME_ROOMS = 8
 """The corridor bar applies to homes of at most this many rooms."""
 
@@ -151,6 +153,8 @@ def summarise(name: str, rows: list[tuple[str, int, PlanMetrics, int]], fp_times
         "reuse_share": shared / len(pairs) if pairs else 0.0,
         "max_levels": max((p.levels for p in plans), default=1),
         "multi_level": sum(p.levels > 1 for p in plans),
+        "overhanging": sum(p.overhang_m2 > OVERHANG_TOL_M2 for p in plans),
+        "overhang_m2": sum(p.overhang_m2 for p in plans),
         "all_reachable": sum(p.all_reachable for p in plans),
         "max_rooms": max((p.n_rooms for p in plans), default=0),
         "violations": sum(v for *_, v in rows),
@@ -219,6 +223,8 @@ def table(results: list[dict[str, Any]], seeds: list[int]) -> str:
     row("pairs of different prompts sharing most room sizes", "<= 3 %",
         lambda r: f"{100 * r['reuse_share']:.1f} % ({r['reuse_pairs']}/{r['pairs']})")
     row("most levels / houses with > 1 level", "", lambda r: f"{r['max_levels']} / {r['multi_level']}")
+    row(f"houses with > {OVERHANG_TOL_M2:g} m2 of upper floor over nothing (m2 in all)", "",
+        lambda r: f"{_frac(r['overhanging'], r['multi_level'])} ({r['overhang_m2']:.0f})")
     row("houses with every room reachable (doors, stairs)", "all", lambda r: _frac(r["all_reachable"], r["houses"]))
     row("most rooms in a house", "", lambda r: str(r["max_rooms"]))
     row("validity violations (houses with any)", "0", lambda r: f"{r['violations']} ({r['houses_with_violations']})")

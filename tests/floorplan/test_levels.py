@@ -135,3 +135,71 @@ def test_storeys_that_cannot_stack_become_one_valid_storey_with_a_warning():
     assert any("could not stack the storeys" in w for w in h.warnings)
     report = evaluate_house(h)
     assert report.violations == [] and report.metrics["connections_realized"] == 1.0
+
+
+def test_overhang_counts_upper_floor_over_no_room_below():
+    from types import SimpleNamespace as R
+
+    from anyhome.floorplan.levels import overhang_m2
+
+    ground = R(polygon=[(0, 0), (6, 0), (6, 4), (0, 4)], level=0)
+    inside = R(polygon=[(1, 1), (5, 1), (5, 4), (1, 4)], level=1)
+    out = R(polygon=[(4, 2), (8, 2), (8, 5), (4, 5)], level=1)  # 12 m2, of which 4 over the ground room
+    cellar = R(polygon=[(-3, 0), (0, 0), (0, 2), (-3, 2)], level=-1)  # under the ground: not an overhang
+    assert overhang_m2([ground, inside, cellar]) == pytest.approx(0.0)
+    assert overhang_m2([ground, out]) == pytest.approx(8.0)
+
+
+def test_upper_storey_of_many_bedrooms_opens_onto_a_landing():
+    """Four bedrooms upstairs: they open onto a landing, not all onto the stairwell (whose
+    walls would then hold no flight: the house failed to lay out before)."""
+    text = "a two-storey family house with four bedrooms upstairs"
+    for seed in (0, 1, 2):
+        house = generate(text, seed=seed)
+        up = [r for r in house.rooms if r.level == 1]
+        assert sum(r.type == "bedroom" for r in up) == 4
+        landing = next(r for r in up if r.type == "hallway")
+        stair = next(r for r in up if r.type == "stairwell")
+        opens = {tuple(sorted(d.rooms)) for d in house.doors}
+        assert tuple(sorted((landing.id, stair.id))) in opens
+        assert sum(stair.id in d.rooms for d in house.doors) <= 2
+        assert reachable_rooms(house) == {r.id for r in house.rooms}
+        assert evaluate_house(house).violations == []
+
+
+def test_storey_is_placed_where_it_hangs_least():
+    """Of the mirror images and corner placements of an upper storey, the one kept hangs
+    over nothing no more than the plain south-west-corner placement."""
+    import numpy as np
+
+    from anyhome.floorplan import levels
+    from anyhome.plan import get_planner
+    from anyhome.plan.knowledge import knowledge_base
+    from anyhome.stages import stage_rngs
+
+    kb = knowledge_base()
+    compared = 0
+    for text, seed in (("a three-storey townhouse", 0), ("a three-storey townhouse", 1), ("a two-storey farmhouse with a big kitchen", 1),
+                       ("a two-storey farmhouse with a big kitchen", 2)):  # fmt: skip
+        spec = get_planner("offline", kb).plan(text, stage_rngs(seed)["plan"])
+        rng = np.random.default_rng(seed)
+        ground = levels._solve_storey(spec, 0, rng, None)
+        upper = levels._solve_storey(spec, 1, rng, None)
+        placed = levels._best_placed(spec, {0: ground}, upper, 1, 0)
+        gx, gy = levels._rect(ground.room(levels.stair_room(spec, 0)))[:2]
+        ux, uy = levels._rect(upper.room(levels.stair_room(spec, 1)))[:2]
+        plain = levels._moved(upper, gx - ux, gy - uy)
+
+        def hang(p):
+            return levels.overhang_m2([*(levels._Storeyed(r.polygon, 0) for r in ground.rooms),
+                                       *(levels._Storeyed(r.polygon, 1) for r in p.rooms)])
+
+        def flight(p):
+            pair = ground.model_copy(update={"rooms": [*ground.rooms, *p.rooms], "doors": [*ground.doors, *p.doors]})
+            return levels._flight_box(pair, levels.stair_room(spec, 0), levels.stair_room(spec, 1))
+
+        assert flight(placed) is not None
+        if flight(plain) is not None:  # the plain placement was one of the candidates
+            compared += 1
+            assert hang(placed) <= hang(plain) + 1e-6
+    assert compared >= 1

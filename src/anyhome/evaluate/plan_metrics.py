@@ -40,6 +40,9 @@ levels, reachability
     objects of category ``stairs``: a stair in room R joins R to the rooms one level up
     or down whose polygon contains the stair's position (a stairwell of the same
     footprint on each level).
+overhang
+    Area of the rooms of each storey above the ground floor that lies over no room of
+    the storey below (:func:`overhang_m2`).
 signature
     The sorted (short side, long side) of every room's minimum rotated rectangle,
     rounded to 0.5 m; :func:`signature_overlap` says how much two signatures coincide.
@@ -63,7 +66,7 @@ import shapely
 from shapely.geometry import Polygon
 
 from anyhome.evaluate.polygons import is_usable, room_polygon
-from anyhome.floorplan.levels import reachable_rooms
+from anyhome.floorplan.levels import overhang_m2, reachable_rooms
 from anyhome.house import House, is_habitable
 from anyhome.plan.kb import KnowledgeBase
 
@@ -175,6 +178,8 @@ class PlanMetrics:
     n_open_air: int
     n_open_air_with_ceiling: int
     levels: int
+    overhang_m2: float
+    """Floor of storeys above the ground floor that is not over a room of the storey below."""
     all_reachable: bool
     n_unreachable: int
     signature: tuple[tuple[float, float], ...]
@@ -206,7 +211,8 @@ class PlanMetrics:
             f"stated {verdict(self.stated_area_ok)}, mansion/grand {verdict(self.mansion_ok)}",
             f"  open-air rooms with a ceiling: {self.n_open_air_with_ceiling}/{self.n_open_air}; "
             f"reachable through doors and stairs: "
-            f"{'all' if self.all_reachable else f'{self.n_unreachable} rooms not'}",
+            f"{'all' if self.all_reachable else f'{self.n_unreachable} rooms not'}; "
+            f"upper floor over nothing: {self.overhang_m2:.1f} m2",
         ]
 
 
@@ -444,6 +450,7 @@ def plan_metrics(house: House, kb: KnowledgeBase) -> PlanMetrics:
         tiny_ok=tiny_ok, stated_area_ok=stated_ok, mansion_ok=mansion_ok,
         n_open_air=len(open_air), n_open_air_with_ceiling=sum(m.has_ceiling for m in open_air),
         levels=len({_level(r) for r in house.rooms}) or 1,
+        overhang_m2=overhang_m2([r for r in house.rooms if r.id in usable]),
         all_reachable=len(reached) == len(house.rooms) and bool(house.rooms),
         n_unreachable=len(house.rooms) - len(reached),
         signature=tuple(sorted(signature)),

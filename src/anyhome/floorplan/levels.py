@@ -5,20 +5,25 @@ floorplan, byte for byte). Otherwise every storey is solved as a house of its ow
 upper storey or a basement gets a stand-in entrance through its stairwell, dropped
 afterwards), until its stairwell comes out as a rectangle at least
 :data:`STAIRWELL_MIN_LONG_M` x :data:`STAIRWELL_MIN_SHORT_M`. Each storey is then turned
-(a quarter turn when needed) so its stairwell's long side runs east-west and moved so
-that every stairwell has the same south-west corner: the stairwells overlap in a
-rectangle that holds a straight flight beside a landing strip. The flight is a
+(a quarter turn when needed) so its stairwell's long side runs east-west, and placed on
+(a basement: under) the storey next to it toward the ground with a corner of its
+stairwell on the same corner of that one's: the stairwells overlap in a rectangle that
+holds a straight flight clear of their doors. The flight is a
 ``stairs`` object in the lower storey's stairwell (:func:`stairs_objects`).
 
 The narrow interface (:func:`solve_levels`, :func:`stairs_objects`) is what the pipeline
 sees; a solver that takes a footprint and a fixed stairwell rectangle can replace the
-per-storey solve without changing it. Storeys are not yet kept inside the ground floor's
-footprint (an upper storey may overhang).
+per-storey solve without changing it. Storeys are not solved inside the floor below: of a
+few layouts of each, mirrored and with its stairwell on any corner of the one below, the
+one hanging least over nothing is kept (:func:`overhang_m2`; an upper storey may still
+overhang).
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -71,13 +76,28 @@ def solve_levels(spec: HouseSpec, rng: np.random.Generator, options: FloorplanOp
 
 
 def _stacked(spec: HouseSpec, numbers: list[int], rng: np.random.Generator, options: FloorplanOptions | None) -> Floorplan:
-    plans: dict[int, Floorplan] = {}
-    for k in numbers:
-        plans[k] = _solve_storey(spec, k, rng, options)
-    ox, oy = _rect(plans[0].room(stair_room(spec, 0)))[:2]
-    for k in numbers:
-        x0, y0 = _rect(plans[k].room(stair_room(spec, k)))[:2]
-        plans[k] = _moved(plans[k], ox - x0, oy - y0)
+    opts = options or FloorplanOptions()
+    plans: dict[int, Floorplan] = {0: _solve_storey(spec, 0, rng, options)}
+    outward = [n for n in numbers if n > 0] + sorted((n for n in numbers if n < 0), reverse=True)
+    for k in outward:  # each storey on (or under) the one next to it toward the ground
+        ref = k - 1 if k > 0 else k + 1
+        best: tuple[float, Floorplan] | None = None
+        why = ""
+        for _ in range(opts.storey_candidates):  # a few layouts of the storey; the one that sits best
+            try:
+                placed = _best_placed(spec, plans, _solve_storey(spec, k, rng, options), k, ref)
+            except FloorplanError as e:
+                why = str(e)
+                continue
+            hang = overhang_m2([*(_Storeyed(r.polygon, 0) for r in plans[ref].rooms),
+                                *(_Storeyed(r.polygon, 1) for r in placed.rooms)])
+            if best is None or hang < best[0] - 1e-6:
+                best = (hang, placed)
+            if hang <= opts.overhang_ok_m2:
+                break
+        if best is None:
+            raise FloorplanError(why)
+        plans[k] = best[1]
     heights = {k: max(r.height_m for r in spec.rooms if r.level == k) + SLAB_M for k in numbers}
     elevation = {0: 0.0}
     for k in (n for n in numbers if n > 0):
@@ -85,6 +105,88 @@ def _stacked(spec: HouseSpec, numbers: list[int], rng: np.random.Generator, opti
     for k in sorted((n for n in numbers if n < 0), reverse=True):
         elevation[k] = elevation[k + 1] - heights[k]
     return _joined(spec, plans, [Level(level=k, elevation_m=round(elevation[k], 4), height_m=round(heights[k], 4)) for k in numbers])
+
+
+MIRRORS = ((False, False), (True, False), (False, True), (True, True))
+"""The four mirror images of a storey: as laid out, flipped east-west, north-south, both."""
+
+
+def _mirrored(plan: Floorplan, stair: str, flip_x: bool, flip_y: bool) -> Floorplan:
+    """``plan`` mirrored about its stairwell's centre lines (the stairwell stays put)."""
+    x0, y0, w, h = _rect(plan.room(stair))
+    return _mirrored_about(plan, x0 + w / 2, y0 + h / 2, flip_x, flip_y)
+
+
+def _mirrored_about(plan: Floorplan, cx: float, cy: float, flip_x: bool, flip_y: bool) -> Floorplan:
+    """``plan`` mirrored about the lines x = ``cx`` and/or y = ``cy`` (outlines are
+    reversed to stay counter-clockwise)."""
+    if not (flip_x or flip_y):
+        return plan
+    out = _map(plan, lambda p: (round(2 * cx - p[0], 6) if flip_x else p[0], round(2 * cy - p[1], 6) if flip_y else p[1]))
+    if flip_x != flip_y:  # one reflection turns outlines clockwise
+        out = out.model_copy(update={"rooms": [r.model_copy(update={"polygon": list(reversed(r.polygon))}) for r in out.rooms]})
+    return out
+
+
+def _best_placed(spec: HouseSpec, plans: dict[int, Floorplan], plan: Floorplan, k: int, ref: int) -> Floorplan:
+    """Storey ``k`` (``plan``) placed on (a basement: under) storey ``ref``: of its four mirror
+    images (:data:`MIRRORS`), each with a corner of its stairwell on the same corner of
+    the stairwell of ``ref``, the one whose floor lies most over (under) ``ref``'s, among
+    those where a flight fits in both stairwells clear of their doors."""
+    stair, ref_stair = stair_room(spec, k), stair_room(spec, ref)
+    rx, ry, rw, rh = _rect(plans[ref].room(ref_stair))
+    best: tuple[float, Floorplan] | None = None
+    for fx, fy in MIRRORS:
+        mirrored = _mirrored(plan, stair, fx, fy)
+        x0, y0, w, h = _rect(mirrored.room(stair))
+        for cx, cy in ((0, 0), (1, 0), (0, 1), (1, 1)):  # south-west, south-east, north-west, north-east
+            cand = _moved(mirrored, rx + cx * rw - (x0 + cx * w), ry + cy * rh - (y0 + cy * h))
+            lo, hi = (plans[ref], cand) if k > ref else (cand, plans[ref])
+            pair = Floorplan.model_construct(rooms=[*lo.rooms, *hi.rooms], doors=[*lo.doors, *hi.doors], windows=[],
+                                             connections=[], levels=[], warnings=[])
+            if _flight_box(pair, *((ref_stair, stair) if k > ref else (stair, ref_stair))) is None:
+                continue
+            hang = overhang_m2([*(_Storeyed(r.polygon, 0) for r in plans[ref].rooms),
+                                *(_Storeyed(r.polygon, 1) for r in cand.rooms)])  # cand's floor outside ref's
+            if best is None or hang < best[0] - 1e-6:
+                best = (hang, cand)
+    if best is None:
+        raise FloorplanError(f"no room for a flight of stairs between {ref_stair!r} and {stair!r}")
+    return best[1]
+
+
+@dataclass(frozen=True)
+class _Storeyed:
+    polygon: list
+    level: int
+
+
+def overhang_m2(rooms: Iterable) -> float:
+    """Area of the rooms of each storey above the ground floor that lies over no room of
+    the storey below (floor hanging in the air). ``rooms``: objects with ``polygon`` and
+    ``level`` (a missing level is 0)."""
+    from shapely.geometry import Polygon
+    from shapely.ops import unary_union
+
+    by_level: dict[int, list] = {}
+    for r in rooms:
+        by_level.setdefault(getattr(r, "level", 0) or 0, []).append(Polygon(r.polygon).buffer(0))
+    out = 0.0
+    for k in sorted(by_level):
+        if k > 0:
+            below = unary_union(by_level.get(k - 1, [])).buffer(1e-6)
+            out += unary_union(by_level[k]).difference(below).area
+    return float(out)
+
+
+def _storey_spec(spec: HouseSpec, k: int) -> HouseSpec:
+    """Storey ``k`` of ``spec`` as a house of its own: an upper storey or a basement gets a
+    stand-in entrance through its stairwell (the stairs come in there; dropped after)."""
+    ids = {r.id for r in spec.rooms if r.level == k}
+    links = [c for c in spec.connections if c[0] in ids and (c[1] in ids or (k == 0 and c[1] == "outside"))]
+    if k != 0:
+        links.append((stair_room(spec, k), "outside"))
+    return spec.model_copy(update={"rooms": [r for r in spec.rooms if r.level == k], "connections": links})
 
 
 ONE_STOREY_NOTE = "could not stack the storeys"
@@ -104,12 +206,8 @@ def _one_storey(spec: HouseSpec, rng: np.random.Generator, options: FloorplanOpt
 
 
 def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options: FloorplanOptions | None) -> Floorplan:
-    ids = {r.id for r in spec.rooms if r.level == k}
     stair = stair_room(spec, k)
-    links = [c for c in spec.connections if c[0] in ids and (c[1] in ids or (k == 0 and c[1] == "outside"))]
-    if k != 0:
-        links.append((stair, "outside"))  # stand-in entrance: the stairs come in here
-    sub = spec.model_copy(update={"rooms": [r for r in spec.rooms if r.level == k], "connections": links})
+    sub = _storey_spec(spec, k)
     why = "its stairwell never came out as a rectangle large enough for a flight"
     attempts = (options or FloorplanOptions()).level_attempts
     for _ in range(attempts):
@@ -158,14 +256,20 @@ def _moved(plan: Floorplan, dx: float, dy: float) -> Floorplan:
 def _flight_box(plan: Floorplan, stair: str, upper: str | None = None) -> tuple[float, float, float, float, float] | None:
     """(x0, y0, x1, y1, yaw) of a flight along a long wall of the stairwell, its top end
     against a short wall, touching no door of either stairwell (None: every place does).
-    The flight stays inside the rectangle both stairwells share (they have the same
-    south-west corner), so its top lands in the upper one."""
+    The flight stays inside the rectangle where both stairwells overlap, so its top
+    lands in the upper one."""
     from shapely.geometry import LineString, box
 
     x0, y0, w, h = _rect(plan.room(stair))
-    if upper is not None:
+    if upper is not None:  # where the two stairwells overlap
         ux0, uy0, uw, uh = _rect(plan.room(upper))
-        w, h = min(w, ux0 + uw - x0), min(h, uy0 + uh - y0)
+        if uw <= 0:
+            return None
+        ax, ay = max(x0, ux0), max(y0, uy0)
+        w, h = min(x0 + w, ux0 + uw) - ax, min(y0 + h, uy0 + uh) - ay
+        x0, y0 = ax, ay
+        if w < FLIGHT_MIN_LENGTH_M - 1e-6 or h < FLIGHT_WIDTH_M - 1e-6:
+            return None
     doors = [opening_zone(d.segment).union(LineString(d.segment)) for d in plan.doors
              if stair in d.rooms or (upper is not None and upper in d.rooms)]  # its swing, on both sides
     for ya, yb in ((y0, y0 + FLIGHT_WIDTH_M), (y0 + h - FLIGHT_WIDTH_M, y0 + h)):

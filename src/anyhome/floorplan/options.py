@@ -56,6 +56,10 @@ class FloorplanOptions:
     """Attempts before giving up with a FloorplanError."""
     level_attempts: int = _opt(8, 1, 1_000)
     """Solves per storey of a house of several storeys before a FloorplanError."""
+    storey_candidates: int = _opt(3, 1, 100)
+    """Layouts tried of each storey off the ground; the one hanging least over nothing is kept."""
+    overhang_ok_m2: float = _opt(1.0, 0.0, 1_000.0)
+    """A storey hanging over nothing by at most this much (m2) is kept at once."""
     slicing_max_rooms: int = _opt(6, 1, 1_000)
     """Programs up to this many rooms try the slicing search first; larger ones go to the spine."""
     slicing_attempts: int = _opt(10, 0, 10_000)

@@ -508,6 +508,10 @@ UP_TYPES = ("bedroom", "closet", "study", "playroom")
 """Room types that go upstairs in a house of several storeys (bathrooms follow them)."""
 BASEMENT_TYPES = ("storage", "cellar", "gym", "laundry")
 """Room types that go down to a basement."""
+LANDING_MIN_ROOMS = 3
+"""A storey above or below the ground floor with this many rooms besides its stairwell
+gets a landing (a hallway) they open onto: a stairwell has wall for a flight and about
+two doors, not one per bedroom."""
 ATTIC_TYPES = ("bedroom", "storage", "study")
 """Room types an attic takes (the first of them the plan has)."""
 
@@ -558,6 +562,12 @@ def assign_levels(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], warnings
         s = Slot("stairwell", "stairwell", "hallway", (STAIRWELL_AREA_M2, STAIRWELL_AREA_M2), key=STAIRWELL_KEY)
         s.level = k
         slots.append(s)
+        on = [x for x in slots if x.level == k and x is not s]
+        if k != 0 and len(on) >= LANDING_MIN_ROOMS and not any(x.type == "hallway" for x in on) \
+                and len(slots) < MAX_ROOMS:
+            landing = _slot_from_entry(kb, {"type": "hallway", "name": "landing"})
+            landing.level = k
+            slots.append(landing)
 
 
 def connect_levels(kb: KnowledgeBase, slots: list[Slot], entrance_types: list[str]) -> list[tuple[str, str]]:

@@ -47,7 +47,7 @@ def test_llama_cpp_server_holds_items_to_their_rules_params(stage: str, llama_se
     item, exactly its rule's parameters."""
     client = LLMClient(_config(tmp_path, llama_server.base_url, max_tokens=STAGE_MAX_TOKENS[stage]))
     furniture = ["sofa", "coffee table"]
-    values = dict(text=CAT, building="cafe", name="cat lounge", type="cafe", area_m2="30", max_groups=2,
+    values = dict(text=CAT, building="cafe", name="cat lounge", type="cafe", area_m2="30", max_groups=1,
                   furniture=", ".join(furniture), max_ornaments=3)  # fmt: skip
     cap = values["max_groups"] if stage == "furniture" else values["max_ornaments"]
     schema = json_schema(stage, targets=furniture, max_items=int(cap))  # as the planner asks: the prompt's cap
