@@ -69,9 +69,7 @@ class FloorplanOptions:
     max_room_aspect_ratio: float = _opt(2.5, 1.0, 20.0)
     """Longest/shortest side of a service room (hallways excepted): checked, and penalised in slicing and tuning."""
     max_habitable_aspect_ratio: float = _opt(1.95, 1.0, 20.0)
-    """Longest/shortest side of a habitable room: a hard check. Issue 13 allows at most twice the
-    short side; 1.95 keeps a margin, so rooms are not drawn exactly at the limit (which a measure
-    of width by inscribed circle reads as just over 2)."""
+    """Longest/shortest side of a habitable room: a hard check (issue 13: at most 2; 1.95 keeps a margin, rooms at exactly 2:1 read as just over)."""
     max_narrow_share_frac: float = _opt(0.08, 0.0, 1.0)
     """Share of a room's floor allowed in arms narrower than its minimum side."""
     precheck_wall_per_door_m: float = _opt(1.2, 0.0, 10.0)
