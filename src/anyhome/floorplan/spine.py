@@ -18,7 +18,7 @@ from __future__ import annotations
 import numpy as np
 
 from anyhome.floorplan.grid import FREE, OUTSIDE, min_side_cells
-from anyhome.floorplan.program import Program
+from anyhome.floorplan.program import CORRIDOR_TYPES, Program
 
 Column = list[int]  # rooms stacked from the spine side outwards
 
@@ -55,24 +55,33 @@ def spine_owner(prog: Program, rng: np.random.Generator) -> np.ndarray | str:
         side_depth = [_pick_depth(side, base_depth[i], cap, prog) for i, side in enumerate(sides)]
         widths = [[[_column_width(c, side_depth[i], prog) for c in b] for b in side] for i, side in enumerate(sides)]
         lengths = [sum(sum(bw) for bw in side) for side in widths]
-        own_len = _spine_length(prog, s, max(lengths), rng)
+        end = _end_room(s, root, spine, sides, widths, side_depth, children, prog) if s == spine[-1] else None
+        if end:
+            sides, widths = end[2], end[3]
+        own_len = end[0] if end else _spine_length(prog, s, max(lengths), rng)
         seg_len = max(own_len, *lengths)
-        window_gap = (prog.habitable(s) or s == root) and all(lengths)
+        # a hall whose end wall is outside takes the entrance there: no stretch kept free
+        entrance_end = s == root and not prog.habitable(s) and (s == spine[0] or (s == spine[-1] and not end))
+        window_gap = (prog.habitable(s) or (s == root and not entrance_end)) and all(lengths)
         if window_gap:  # both sides taken: leave an outside stretch for its windows
             seg_len = max(seg_len, max(lengths) + _cells(prog.options.spine_window_gap_m, prog))
-        d = _spine_depth(prog, s, seg_len)
+        d = _spine_depth(prog, s, own_len if end else seg_len)
         y0 = -(d // 2)
-        rects[s] = (x, y0, x + seg_len, y0 + d)
-        align_end = rng.random() < 0.5
+        rects[s] = (x, y0, x + (own_len if end else seg_len), y0 + d)
+        align_end = rng.random() < 0.5 and not end
         for side_i, (side, side_w) in enumerate(zip(sides, widths)):
             slack = seg_len - lengths[side_i]
-            if not window_gap:
+            if not window_gap and not end:
                 align_end = rng.random() < 0.5
             cx = x + (slack if align_end else 0)
             for block_cols, block_w in zip(side, side_w):
                 for col, w in zip(block_cols, block_w):
                     _place_column(col, w, cx, y0, d, side_depth[side_i], side_i, prog, rects)
                     cx += w
+        if end:  # the last column's first room closes the hall's end
+            k = end[1]
+            x0, ry0, x1, ry1 = rects[k]
+            rects[k] = (x0, y0, x1, ry1) if ry0 >= y0 + d else (x0, ry0, x1, y0 + d)
         x += seg_len
     owner = _rasterize(rects, prog.n)
     return _random_symmetry(owner, rng)
@@ -178,6 +187,73 @@ def _split_sides(
         sides[side].append(blocks[i])
         totals[side] += area(blocks[i])
     return sides
+
+
+# ------------------------------------------------------------ the hall's end
+def _end_room(
+    s: int, root: int, spine: list[int], sides: tuple[list[list[Column]], list[list[Column]]],
+    widths: list[list[list[int]]], depth: list[int], children: list[list[int]], prog: Program,
+) -> tuple[int, int, tuple[list[list[Column]], list[list[Column]]], list[list[list[int]]]] | None:
+    """A hall only as long as its doors need: (hall length, room, sides, widths) where the
+    room, in the last column of one side, closes the hall's far end (it grows across the
+    hall's width, keeping its type's proportions) and every other room with a door on the
+    hall keeps ``shared_wall_min_m`` of wall along it; the sides' blocks come back reordered
+    (and mirrored) so that the hall is shortest. None where the spine room is not a hallway,
+    is the root in the middle of the spine, or no room fits."""
+    if prog.types[s] not in CORRIDOR_TYPES or (s == root and s != spine[0]):
+        return None  # a root in the middle keeps its outside stretch for the entrance
+    need = _cells(prog.options.shared_wall_min_m, prog)
+
+    def door_col(block: list[Column]) -> int:
+        """Index of the block's column whose room has its door on the hall."""
+        return next((i for i, col in enumerate(block) if any(k in children[s] for k in col)), 0)
+
+    def oriented(block: list[Column], bw: list[int]) -> tuple[list[Column], list[int]]:
+        """The block mirrored if that brings its hall door nearer the hall's start."""
+        i = door_col(block)
+        if sum(bw[:i]) > sum(bw[i + 1:]):
+            return block[::-1], bw[::-1]
+        return block, bw
+
+    def packed(side_i: int, last: int | None) -> tuple[list[list[Column]], list[list[int]], int]:
+        """The side's blocks in the order that brings the latest hall door earliest (the
+        block ``last`` at the end, not mirrored); and where that door's wall ends."""
+        items = [oriented(b, w) for i, (b, w) in enumerate(zip(sides[side_i], widths[side_i])) if i != last]
+        items.sort(key=lambda bw: sum(bw[1]) - sum(bw[1][: door_col(bw[0])]))
+        if last is not None:
+            items.append((sides[side_i][last], widths[side_i][last]))
+        reach, start = 0, 0
+        for bi, (block, bw) in enumerate(items):
+            i = door_col(block)
+            if not (last is not None and bi == len(items) - 1 and i == len(block) - 1):
+                reach = max(reach, start + sum(bw[:i]) + need)
+            start += sum(bw)
+        return [b for b, _ in items], [w for _, w in items], reach
+
+    best = None
+    for side_i in (0, 1):
+        other = 1 - side_i
+        o_blocks, o_widths, o_reach = packed(other, None)
+        for last in range(len(sides[side_i])):
+            blocks, bws, reach = packed(side_i, last)
+            end_col, w_end = blocks[-1][-1], bws[-1][-1]
+            if sum(map(sum, bws)) - w_end == 0 and not o_blocks:
+                continue
+            hall = sum(map(sum, bws)) - w_end
+            if max(reach, o_reach) > hall:
+                continue
+            d = _spine_depth(prog, s, hall)
+            k = end_col[0]
+            h = _column_heights(end_col, depth[side_i], prog)[0] + d
+            if d < need or _aspect_fault(k, w_end, h, prog):
+                continue
+            if best is None or hall < best[0]:
+                new_sides: list[list[list[Column]]] = [[], []]
+                new_widths: list[list[list[int]]] = [[], []]
+                new_sides[side_i], new_widths[side_i] = blocks, bws
+                new_sides[other], new_widths[other] = o_blocks, o_widths
+                best = (hall, k, (new_sides[0], new_sides[1]), new_widths)
+    return best
 
 
 # ----------------------------------------------------------------- the sizes
