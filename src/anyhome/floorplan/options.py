@@ -214,6 +214,8 @@ class FloorplanOptions:
     """Deeper steps tried for one side of a spine segment (its rooms too long a row)."""
     spine_depth_step_frac: float = _opt(0.1, 0.01, 1.0)
     """Each step deepens the side by this share of its base depth."""
+    spine_hall_splits: int = _opt(12, 0, 100_000)
+    """Splits of a hall's rooms between its two sides tried for the shortest hall (an end room closing it)."""
     spine_aspect_min: float = _opt(1.0, 1.0, 20.0)
     """Least long/short side ratio of a spine room that has no blocks to size it."""
     spine_aspect_max: float = _opt(1.5, 1.0, 20.0)

@@ -50,14 +50,11 @@ def spine_owner(prog: Program, rng: np.random.Generator) -> np.ndarray | str:
     x = 0
     for s in spine:
         sides = _split_sides(blocks[s], prog, rng)
-        base_depth = [max([depth, *(_deep_enough(col, prog) for b in side for col in b)]) for side in sides]
-        cap = _segment_cap(prog, s)
-        side_depth = [_pick_depth(side, base_depth[i], cap, prog) for i, side in enumerate(sides)]
-        widths = [[[_column_width(c, side_depth[i], prog) for c in b] for b in side] for i, side in enumerate(sides)]
+        side_depth, widths = _sized(sides, s, depth, prog)
+        end = None
+        if s == spine[-1]:
+            end, sides, side_depth, widths = _shortest_hall(s, root, spine, blocks[s], sides, depth, children, prog, rng)
         lengths = [sum(sum(bw) for bw in side) for side in widths]
-        end = _end_room(s, root, spine, sides, widths, side_depth, children, prog) if s == spine[-1] else None
-        if end:
-            sides, widths = end[2], end[3]
         own_len = end[0] if end else _spine_length(prog, s, max(lengths), rng)
         seg_len = max(own_len, *lengths)
         # a hall whose end wall is outside takes the entrance there: no stretch kept free
@@ -65,7 +62,7 @@ def spine_owner(prog: Program, rng: np.random.Generator) -> np.ndarray | str:
         window_gap = (prog.habitable(s) or (s == root and not entrance_end)) and all(lengths)
         if window_gap:  # both sides taken: leave an outside stretch for its windows
             seg_len = max(seg_len, max(lengths) + _cells(prog.options.spine_window_gap_m, prog))
-        d = _spine_depth(prog, s, own_len if end else seg_len)
+        d = _hall_width(prog) if end else _spine_depth(prog, s, seg_len)
         y0 = -(d // 2)
         rects[s] = (x, y0, x + (own_len if end else seg_len), y0 + d)
         align_end = rng.random() < 0.5 and not end
@@ -190,10 +187,48 @@ def _split_sides(
 
 
 # ------------------------------------------------------------ the hall's end
+Sides = tuple[list[list[Column]], list[list[Column]]]
+
+
+def _sized(sides: Sides, s: int, depth: int, prog: Program) -> tuple[list[int], list[list[list[int]]]]:
+    """Depth of each side of spine room ``s`` and the widths of its blocks' columns."""
+    base_depth = [max([depth, *(_deep_enough(col, prog) for b in side for col in b)]) for side in sides]
+    cap = _segment_cap(prog, s)
+    side_depth = [_pick_depth(side, base_depth[i], cap, prog) for i, side in enumerate(sides)]
+    widths = [[[_column_width(c, side_depth[i], prog) for c in b] for b in side] for i, side in enumerate(sides)]
+    return side_depth, widths
+
+
+def _shortest_hall(
+    s: int, root: int, spine: list[int], blocks: list[list[Column]], sides: Sides, depth: int,
+    children: list[list[int]], prog: Program, rng: np.random.Generator,
+) -> tuple[tuple[int, int, Sides, list[list[list[int]]]] | None, Sides, list[int], list[list[list[int]]]]:
+    """The end of the spine: the split of its blocks between the two sides (the drawn
+    one first, then every other, up to ``spine_hall_splits``) whose hall, closed by an
+    end room (:func:`_end_room`), is shortest; the drawn split unchanged when none closes."""
+    side_depth, widths = _sized(sides, s, depth, prog)
+    best = _end_room(s, root, spine, sides, widths, side_depth, children, prog)
+    out = (best, best[2], side_depth, best[3]) if best else (None, sides, side_depth, widths)
+    soft = _cells(prog.options.spine_corridor_soft_length_m, prog)
+    if prog.types[s] not in CORRIDOR_TYPES or len(blocks) < 2 or (best and best[0] <= soft):
+        return out
+    masks = list(range(1, 2 ** len(blocks) - 1))
+    rng.shuffle(masks)
+    for mask in masks[: prog.options.spine_hall_splits]:
+        if out[0] is not None and out[0][0] <= soft:
+            break
+        split: Sides = ([b for i, b in enumerate(blocks) if mask >> i & 1], [b for i, b in enumerate(blocks) if not mask >> i & 1])
+        sd, ws = _sized(split, s, depth, prog)
+        end = _end_room(s, root, spine, split, ws, sd, children, prog)
+        if end and (out[0] is None or end[0] < out[0][0]):
+            out = (end, end[2], sd, end[3])
+    return out
+
+
 def _end_room(
-    s: int, root: int, spine: list[int], sides: tuple[list[list[Column]], list[list[Column]]],
+    s: int, root: int, spine: list[int], sides: Sides,
     widths: list[list[list[int]]], depth: list[int], children: list[list[int]], prog: Program,
-) -> tuple[int, int, tuple[list[list[Column]], list[list[Column]]], list[list[list[int]]]] | None:
+) -> tuple[int, int, Sides, list[list[list[int]]]] | None:
     """A hall only as long as its doors need: (hall length, room, sides, widths) where the
     room, in the last column of one side, closes the hall's far end (it grows across the
     hall's width, keeping its type's proportions) and every other room with a door on the
@@ -242,7 +277,7 @@ def _end_room(
             hall = sum(map(sum, bws)) - w_end
             if max(reach, o_reach) > hall:
                 continue
-            d = _spine_depth(prog, s, hall)
+            d = _hall_width(prog)
             k = end_col[0]
             h = _column_heights(end_col, depth[side_i], prog)[0] + d
             if d < need or _aspect_fault(k, w_end, h, prog):
@@ -352,6 +387,12 @@ def _spine_length(prog: Program, s: int, blocks_len: int, rng) -> int:
     if prog.types[s] == "hallway" and blocks_len:
         return blocks_len
     return max(natural, _min_side(prog, s))
+
+
+def _hall_width(prog: Program) -> int:
+    """Width of a hall closed by an end room: the narrowest spine hallway, and wide
+    enough for the end room's door in its end wall."""
+    return max(_cells(prog.options.spine_hallway_min_m, prog), _cells(prog.options.shared_wall_min_m, prog))
 
 
 def _spine_depth(prog: Program, s: int, length: int) -> int:
