@@ -75,10 +75,16 @@ def spine_owner(prog: Program, rng: np.random.Generator) -> np.ndarray | str:
                 for col, w in zip(block_cols, block_w):
                     _place_column(col, w, cx, y0, d, side_depth[side_i], side_i, prog, rects)
                     cx += w
-        if end:  # the last column's first room closes the hall's end
-            k = end[1]
-            x0, ry0, x1, ry1 = rects[k]
-            rects[k] = (x0, y0, x1, ry1) if ry0 >= y0 + d else (x0, ry0, x1, y0 + d)
+        if end:  # the last column's first room closes the hall's end: it grows across the
+            # hall's width, or (were it then out of proportion) its column moves in by as much
+            col, grow = end[1], end[4]
+            for i, k in enumerate(col):
+                x0, ry0, x1, ry1 = rects[k]
+                north = ry0 >= y0 + d
+                if grow:
+                    rects[k] = (x0, y0, x1, ry1) if north else (x0, ry0, x1, y0 + d)
+                    break
+                rects[k] = (x0, ry0 - d, x1, ry1 - d) if north else (x0, ry0 + d, x1, ry1 + d)
         x += seg_len
     owner = _rasterize(rects, prog.n)
     return _random_symmetry(owner, rng)
@@ -202,7 +208,7 @@ def _sized(sides: Sides, s: int, depth: int, prog: Program) -> tuple[list[int], 
 def _shortest_hall(
     s: int, root: int, spine: list[int], blocks: list[list[Column]], sides: Sides, depth: int,
     children: list[list[int]], prog: Program, rng: np.random.Generator,
-) -> tuple[tuple[int, int, Sides, list[list[list[int]]]] | None, Sides, list[int], list[list[list[int]]]]:
+) -> tuple[tuple[int, Column, Sides, list[list[list[int]]], bool] | None, Sides, list[int], list[list[list[int]]]]:
     """The end of the spine: the split of its blocks between the two sides (the drawn
     one first, then every other, up to ``spine_hall_splits``) whose hall, closed by an
     end room (:func:`_end_room`), is shortest; the drawn split unchanged when none closes."""
@@ -228,7 +234,7 @@ def _shortest_hall(
 def _end_room(
     s: int, root: int, spine: list[int], sides: Sides,
     widths: list[list[list[int]]], depth: list[int], children: list[list[int]], prog: Program,
-) -> tuple[int, int, Sides, list[list[list[int]]]] | None:
+) -> tuple[int, Column, Sides, list[list[list[int]]], bool] | None:
     """A hall only as long as its doors need: (hall length, room, sides, widths) where the
     room, in the last column of one side, closes the hall's far end (it grows across the
     hall's width, keeping its type's proportions) and every other room with a door on the
@@ -280,14 +286,15 @@ def _end_room(
             d = _hall_width(prog)
             k = end_col[0]
             h = _column_heights(end_col, depth[side_i], prog)[0] + d
-            if d < need or _aspect_fault(k, w_end, h, prog):
+            if d < need:
                 continue
+            grow = not _aspect_fault(k, w_end, h, prog)
             if best is None or hall < best[0]:
                 new_sides: list[list[list[Column]]] = [[], []]
                 new_widths: list[list[list[int]]] = [[], []]
                 new_sides[side_i], new_widths[side_i] = blocks, bws
                 new_sides[other], new_widths[other] = o_blocks, o_widths
-                best = (hall, k, (new_sides[0], new_sides[1]), new_widths)
+                best = (hall, end_col, (new_sides[0], new_sides[1]), new_widths, grow)
     return best
 
 
