@@ -54,9 +54,14 @@ def spine_owner(prog: Program, rng: np.random.Generator) -> np.ndarray | str:
         end = None
         if s == spine[-1]:
             end, sides, side_depth, widths = _shortest_hall(s, root, spine, blocks[s], sides, depth, children, prog, rng)
+        over = None
+        if s == spine[0] and len(spine) > 1 and not prog.habitable(s):
+            over = _overhang(s, sides, widths, children, prog, rng)
+            if over:
+                sides, widths = over[1], over[2]
         lengths = [sum(sum(bw) for bw in side) for side in widths]
-        own_len = end[0] if end else _spine_length(prog, s, max(lengths), rng)
-        seg_len = max(own_len, *lengths)
+        own_len = end[0] if end else over[0] if over else _spine_length(prog, s, max(lengths), rng)
+        seg_len = own_len if over else max(own_len, *lengths)
         # a hall whose end wall is outside takes the entrance there: no stretch kept free
         entrance_end = s == root and not prog.habitable(s) and (s == spine[0] or (s == spine[-1] and not end))
         window_gap = (prog.habitable(s) or (s == root and not entrance_end)) and all(lengths)
@@ -65,10 +70,10 @@ def spine_owner(prog: Program, rng: np.random.Generator) -> np.ndarray | str:
         d = _hall_width(prog) if end else _spine_depth(prog, s, seg_len)
         y0 = -(d // 2)
         rects[s] = (x, y0, x + (own_len if end else seg_len), y0 + d)
-        align_end = rng.random() < 0.5 and not end
+        align_end = (rng.random() < 0.5 and not end) or bool(over)
         for side_i, (side, side_w) in enumerate(zip(sides, widths)):
-            slack = seg_len - lengths[side_i]
-            if not window_gap and not end:
+            slack = seg_len - lengths[side_i]  # negative where the blocks reach out past its start
+            if not window_gap and not end and not over:
                 align_end = rng.random() < 0.5
             cx = x + (slack if align_end else 0)
             for block_cols, block_w in zip(side, side_w):
@@ -231,6 +236,60 @@ def _shortest_hall(
     return out
 
 
+def _door_col(block: list[Column], s: int, children: list[list[int]]) -> int:
+    """Index of the block's column whose room has its door on spine room ``s``."""
+    return next((i for i, col in enumerate(block) if any(k in children[s] for k in col)), 0)
+
+
+def _packed(
+    blocks: list[list[Column]], widths: list[list[int]], s: int, children: list[list[int]], need: int,
+    last: int | None = None,
+) -> tuple[list[list[Column]], list[list[int]], int]:
+    """One side's blocks in the order (each mirrored where that helps) that brings the
+    latest door on spine room ``s`` nearest the side's start, the block ``last`` kept at
+    the end as it is; and where that door's ``need`` of wall ends (a door in the last
+    column of the block ``last`` excepted: it opens in the hall's end wall)."""
+    items = []
+    for i, (b, w) in enumerate(zip(blocks, widths)):
+        if i == last:
+            continue
+        k = _door_col(b, s, children)
+        items.append((b[::-1], w[::-1]) if sum(w[:k]) > sum(w[k + 1:]) else (b, w))
+    items.sort(key=lambda bw: sum(bw[1]) - sum(bw[1][: _door_col(bw[0], s, children)]))
+    if last is not None:
+        items.append((blocks[last], widths[last]))
+    reach, start = 0, 0
+    for bi, (block, bw) in enumerate(items):
+        k = _door_col(block, s, children)
+        if not (last is not None and bi == len(items) - 1 and k == len(block) - 1):
+            reach = max(reach, start + sum(bw[:k]) + need)
+        start += sum(bw)
+    return [b for b, _ in items], [w for _, w in items], reach
+
+
+def _overhang(
+    s: int, sides: Sides, widths: list[list[list[int]]], children: list[list[int]], prog: Program, rng,
+) -> tuple[int, Sides, list[list[list[int]]]] | None:
+    """The first spine room (nothing lies beyond its start) kept to its own length, its
+    blocks reaching out past its start: (its length, sides, widths), each side's blocks
+    ordered and mirrored so their doors on it come at its far end; None where that is
+    no shorter than the length its blocks would stretch it to."""
+    need = _cells(prog.options.shared_wall_min_m, prog)
+    out_sides: list[list[list[Column]]] = [[], []]
+    out_widths: list[list[list[int]]] = [[], []]
+    reach = need
+    for i in (0, 1):
+        blocks, bws, r = _packed(sides[i], widths[i], s, children, need)
+        out_sides[i] = [b[::-1] for b in reversed(blocks)]
+        out_widths[i] = [w[::-1] for w in reversed(bws)]
+        reach = max(reach, r)
+    natural = need if prog.types[s] in CORRIDOR_TYPES else _spine_length(prog, s, 0, rng)
+    own = max(reach, natural)
+    if own >= max(sum(map(sum, w)) for w in widths):
+        return None
+    return own, (out_sides[0], out_sides[1]), out_widths
+
+
 def _end_room(
     s: int, root: int, spine: list[int], sides: Sides,
     widths: list[list[list[int]]], depth: list[int], children: list[list[int]], prog: Program,
@@ -245,31 +304,8 @@ def _end_room(
         return None  # a root in the middle keeps its outside stretch for the entrance
     need = _cells(prog.options.shared_wall_min_m, prog)
 
-    def door_col(block: list[Column]) -> int:
-        """Index of the block's column whose room has its door on the hall."""
-        return next((i for i, col in enumerate(block) if any(k in children[s] for k in col)), 0)
-
-    def oriented(block: list[Column], bw: list[int]) -> tuple[list[Column], list[int]]:
-        """The block mirrored if that brings its hall door nearer the hall's start."""
-        i = door_col(block)
-        if sum(bw[:i]) > sum(bw[i + 1:]):
-            return block[::-1], bw[::-1]
-        return block, bw
-
     def packed(side_i: int, last: int | None) -> tuple[list[list[Column]], list[list[int]], int]:
-        """The side's blocks in the order that brings the latest hall door earliest (the
-        block ``last`` at the end, not mirrored); and where that door's wall ends."""
-        items = [oriented(b, w) for i, (b, w) in enumerate(zip(sides[side_i], widths[side_i])) if i != last]
-        items.sort(key=lambda bw: sum(bw[1]) - sum(bw[1][: door_col(bw[0])]))
-        if last is not None:
-            items.append((sides[side_i][last], widths[side_i][last]))
-        reach, start = 0, 0
-        for bi, (block, bw) in enumerate(items):
-            i = door_col(block)
-            if not (last is not None and bi == len(items) - 1 and i == len(block) - 1):
-                reach = max(reach, start + sum(bw[:i]) + need)
-            start += sum(bw)
-        return [b for b, _ in items], [w for _, w in items], reach
+        return _packed(sides[side_i], widths[side_i], s, children, need, last)
 
     best = None
     for side_i in (0, 1):
