@@ -82,3 +82,24 @@ def test_a_hall_home_of_eight_rooms_or_fewer_has_a_hall_of_8_m_at_most(bedrooms,
     spec = _hall_home(bedrooms, bathrooms, areas, open_plan)
     fp = solve_floorplan(spec, np.random.default_rng(seed))
     assert _problems(fp) == []
+
+
+CIRCULATION_SHARE_P90 = 0.18
+"""Issue 13's bar for the circulation share of homes (90th percentile)."""
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_an_entry_is_not_stretched_along_the_rooms_beside_it(seed):
+    """A mudroom whose one neighbour leads on to three more rooms stays a mudroom, not a
+    corridor as long as those rooms."""
+    spec = OfflinePlanner().plan(
+        "A ranch house with a mudroom, a laundry room, a kitchen, a living room and two bedrooms.",
+        np.random.default_rng(seed),
+    )
+    fp = solve_floorplan(spec, np.random.default_rng(seed))
+    areas = {r.id: Polygon(r.polygon).area for r in fp.rooms}
+    circ = sum(a for r in fp.rooms for a in [areas[r.id]] if r.type in CIRCULATION)
+    assert circ / sum(areas.values()) <= CIRCULATION_SHARE_P90
+    for r in spec.rooms:
+        if r.type == "entry":
+            assert areas[r.id] <= 1.5 * r.area_m2
