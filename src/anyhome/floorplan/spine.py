@@ -124,13 +124,19 @@ def _subtree_size(k: int, children: list[list[int]]) -> int:
     return 1 + sum(_subtree_size(c, children) for c in children[k])
 
 
+def _must_join(k: int, children: list[list[int]]) -> bool:
+    """True if room ``k`` or one of its descendants has more than two sub-rooms (a block
+    beside the spine holds at most two): the spine must run through it."""
+    return len(children[k]) > 2 or any(_must_join(c, children) for c in children[k])
+
+
 def _chain_from(start: int, children: list[list[int]]) -> list[int]:
     chain, cur = [start], start
     while True:
-        branching = [c for c in children[cur] if len(children[c]) >= 2]
+        branching = [c for c in children[cur] if len(children[c]) >= 2 or _must_join(c, children)]
         if not branching:
             return chain
-        cur = max(branching, key=lambda c: _subtree_size(c, children))
+        cur = max(branching, key=lambda c: (_must_join(c, children), _subtree_size(c, children)))
         chain.append(cur)
 
 
@@ -138,10 +144,10 @@ def _spine(root: int, children: list[list[int]]) -> list[int]:
     """The chain of branching rooms through the root: the root's biggest branching
     child leads east; a second branching child of the root leads west."""
     east = _chain_from(root, children)
-    branching = [c for c in children[root] if len(children[c]) >= 2 and c not in east]
+    branching = [c for c in children[root] if (len(children[c]) >= 2 or _must_join(c, children)) and c not in east]
     if not branching:
         return east
-    west = _chain_from(max(branching, key=lambda c: _subtree_size(c, children)), children)
+    west = _chain_from(max(branching, key=lambda c: (_must_join(c, children), _subtree_size(c, children))), children)
     return list(reversed(west)) + east
 
 
