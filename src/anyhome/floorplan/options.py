@@ -72,8 +72,8 @@ class FloorplanOptions:
     """Allowed relative deviation of a room's area from its target (0.25: 25 %)."""
     max_room_aspect_ratio: float = _opt(2.5, 1.0, 20.0)
     """Longest/shortest side of a service room (hallways excepted): checked, and penalised in slicing and tuning."""
-    max_habitable_aspect_ratio: float = _opt(2.0, 1.0, 20.0)
-    """Longest/shortest side of a habitable room: a hard check (issue 13: at most twice the short side)."""
+    max_habitable_aspect_ratio: float = _opt(1.95, 1.0, 20.0)
+    """Longest/shortest side of a habitable room: a hard check (issue 13: at most 2; 1.95 keeps a margin, rooms at exactly 2:1 read as just over)."""
     max_narrow_share_frac: float = _opt(0.08, 0.0, 1.0)
     """Share of a room's floor allowed in arms narrower than its minimum side."""
     precheck_wall_per_door_m: float = _opt(1.2, 0.0, 10.0)
@@ -218,6 +218,8 @@ class FloorplanOptions:
     """Deeper steps tried for one side of a spine segment (its rooms too long a row)."""
     spine_depth_step_frac: float = _opt(0.1, 0.01, 1.0)
     """Each step deepens the side by this share of its base depth."""
+    spine_hall_splits: int = _opt(12, 0, 100_000)
+    """Splits of a hall's rooms between its two sides tried for the shortest hall (an end room closing it)."""
     spine_aspect_min: float = _opt(1.0, 1.0, 20.0)
     """Least long/short side ratio of a spine room that has no blocks to size it."""
     spine_aspect_max: float = _opt(1.5, 1.0, 20.0)

@@ -18,7 +18,7 @@ from __future__ import annotations
 import numpy as np
 
 from anyhome.floorplan.grid import FREE, OUTSIDE, min_side_cells
-from anyhome.floorplan.program import Program
+from anyhome.floorplan.program import CORRIDOR_TYPES, Program
 
 Column = list[int]  # rooms stacked from the spine side outwards
 
@@ -50,29 +50,49 @@ def spine_owner(prog: Program, rng: np.random.Generator) -> np.ndarray | str:
     x = 0
     for s in spine:
         sides = _split_sides(blocks[s], prog, rng)
-        base_depth = [max([depth, *(_deep_enough(col, prog) for b in side for col in b)]) for side in sides]
-        cap = _segment_cap(prog, s)
-        side_depth = [_pick_depth(side, base_depth[i], cap, prog) for i, side in enumerate(sides)]
-        widths = [[[_column_width(c, side_depth[i], prog) for c in b] for b in side] for i, side in enumerate(sides)]
+        side_depth, widths = _sized(sides, s, depth, prog)
+        end = None
+        if s == spine[-1]:
+            end, sides, side_depth, widths = _shortest_hall(s, root, spine, blocks[s], sides, depth, children, prog, rng)
+        over = None
+        first, last = s == spine[0] and len(spine) > 1, s == spine[-1] and s != spine[0] and not end
+        if (first or last) and not prog.habitable(s):
+            over = _overhang(s, sides, widths, children, prog, rng, at_start=first)
+            if over:
+                sides, widths = over[1], over[2]
         lengths = [sum(sum(bw) for bw in side) for side in widths]
-        own_len = _spine_length(prog, s, max(lengths), rng)
-        seg_len = max(own_len, *lengths)
-        window_gap = (prog.habitable(s) or s == root) and all(lengths)
+        own_len = end[0] if end else over[0] if over else _spine_length(prog, s, max(lengths), rng)
+        seg_len = own_len if over else max(own_len, *lengths)
+        # a hall whose end wall is outside takes the entrance there: no stretch kept free
+        entrance_end = s == root and not prog.habitable(s) and (s == spine[0] or (s == spine[-1] and not end))
+        window_gap = (prog.habitable(s) or (s == root and not entrance_end)) and all(lengths)
         if window_gap:  # both sides taken: leave an outside stretch for its windows
             seg_len = max(seg_len, max(lengths) + _cells(prog.options.spine_window_gap_m, prog))
-        d = _spine_depth(prog, s, seg_len)
+        d = _hall_width(prog) if end else _spine_depth(prog, s, seg_len)
         y0 = -(d // 2)
-        rects[s] = (x, y0, x + seg_len, y0 + d)
-        align_end = rng.random() < 0.5
+        rects[s] = (x, y0, x + (own_len if end else seg_len), y0 + d)
+        align_end = (rng.random() < 0.5 and not end) or bool(over and first)
+        if over and not first:  # the last spine room's blocks reach out past its end
+            align_end = False
         for side_i, (side, side_w) in enumerate(zip(sides, widths)):
-            slack = seg_len - lengths[side_i]
-            if not window_gap:
+            slack = seg_len - lengths[side_i]  # negative where the blocks reach out past its start
+            if not window_gap and not end and not over:
                 align_end = rng.random() < 0.5
             cx = x + (slack if align_end else 0)
             for block_cols, block_w in zip(side, side_w):
                 for col, w in zip(block_cols, block_w):
                     _place_column(col, w, cx, y0, d, side_depth[side_i], side_i, prog, rects)
                     cx += w
+        if end:  # the last column's first room closes the hall's end: it grows across the
+            # hall's width, or (were it then out of proportion) its column moves in by as much
+            col, grow = end[1], end[4]
+            for i, k in enumerate(col):
+                x0, ry0, x1, ry1 = rects[k]
+                north = ry0 >= y0 + d
+                if grow:
+                    rects[k] = (x0, y0, x1, ry1) if north else (x0, ry0, x1, y0 + d)
+                    break
+                rects[k] = (x0, ry0 - d, x1, ry1 - d) if north else (x0, ry0 + d, x1, ry1 + d)
         x += seg_len
     owner = _rasterize(rects, prog.n)
     return _random_symmetry(owner, rng)
@@ -107,13 +127,19 @@ def _subtree_size(k: int, children: list[list[int]]) -> int:
     return 1 + sum(_subtree_size(c, children) for c in children[k])
 
 
+def _must_join(k: int, children: list[list[int]]) -> bool:
+    """True if room ``k`` or one of its descendants has more than two sub-rooms (a block
+    beside the spine holds at most two): the spine must run through it."""
+    return len(children[k]) > 2 or any(_must_join(c, children) for c in children[k])
+
+
 def _chain_from(start: int, children: list[list[int]]) -> list[int]:
     chain, cur = [start], start
     while True:
-        branching = [c for c in children[cur] if len(children[c]) >= 2]
+        branching = [c for c in children[cur] if len(children[c]) >= 2 or _must_join(c, children)]
         if not branching:
             return chain
-        cur = max(branching, key=lambda c: _subtree_size(c, children))
+        cur = max(branching, key=lambda c: (_must_join(c, children), _subtree_size(c, children)))
         chain.append(cur)
 
 
@@ -121,10 +147,10 @@ def _spine(root: int, children: list[list[int]]) -> list[int]:
     """The chain of branching rooms through the root: the root's biggest branching
     child leads east; a second branching child of the root leads west."""
     east = _chain_from(root, children)
-    branching = [c for c in children[root] if len(children[c]) >= 2 and c not in east]
+    branching = [c for c in children[root] if (len(children[c]) >= 2 or _must_join(c, children)) and c not in east]
     if not branching:
         return east
-    west = _chain_from(max(branching, key=lambda c: _subtree_size(c, children)), children)
+    west = _chain_from(max(branching, key=lambda c: (_must_join(c, children), _subtree_size(c, children))), children)
     return list(reversed(west)) + east
 
 
@@ -178,6 +204,145 @@ def _split_sides(
         sides[side].append(blocks[i])
         totals[side] += area(blocks[i])
     return sides
+
+
+# ------------------------------------------------------------ the hall's end
+Sides = tuple[list[list[Column]], list[list[Column]]]
+
+
+def _sized(sides: Sides, s: int, depth: int, prog: Program) -> tuple[list[int], list[list[list[int]]]]:
+    """Depth of each side of spine room ``s`` and the widths of its blocks' columns."""
+    base_depth = [max([depth, *(_deep_enough(col, prog) for b in side for col in b)]) for side in sides]
+    cap = _segment_cap(prog, s)
+    side_depth = [_pick_depth(side, base_depth[i], cap, prog) for i, side in enumerate(sides)]
+    widths = [[[_column_width(c, side_depth[i], prog) for c in b] for b in side] for i, side in enumerate(sides)]
+    return side_depth, widths
+
+
+def _shortest_hall(
+    s: int, root: int, spine: list[int], blocks: list[list[Column]], sides: Sides, depth: int,
+    children: list[list[int]], prog: Program, rng: np.random.Generator,
+) -> tuple[tuple[int, Column, Sides, list[list[list[int]]], bool] | None, Sides, list[int], list[list[list[int]]]]:
+    """The end of the spine: the split of its blocks between the two sides (the drawn
+    one first, then every other, up to ``spine_hall_splits``) whose hall, closed by an
+    end room (:func:`_end_room`), is shortest; the drawn split unchanged when none closes."""
+    side_depth, widths = _sized(sides, s, depth, prog)
+    best = _end_room(s, root, spine, sides, widths, side_depth, children, prog)
+    out = (best, best[2], side_depth, best[3]) if best else (None, sides, side_depth, widths)
+    soft = _cells(prog.options.spine_corridor_soft_length_m, prog)
+    if prog.types[s] not in CORRIDOR_TYPES or len(blocks) < 2 or (best and best[0] <= soft):
+        return out
+    masks = list(range(1, 2 ** len(blocks) - 1))
+    rng.shuffle(masks)
+    for mask in masks[: prog.options.spine_hall_splits]:
+        if out[0] is not None and out[0][0] <= soft:
+            break
+        split: Sides = ([b for i, b in enumerate(blocks) if mask >> i & 1], [b for i, b in enumerate(blocks) if not mask >> i & 1])
+        sd, ws = _sized(split, s, depth, prog)
+        end = _end_room(s, root, spine, split, ws, sd, children, prog)
+        if end and (out[0] is None or end[0] < out[0][0]):
+            out = (end, end[2], sd, end[3])
+    return out
+
+
+def _door_col(block: list[Column], s: int, children: list[list[int]]) -> int:
+    """Index of the block's column whose room has its door on spine room ``s``."""
+    return next((i for i, col in enumerate(block) if any(k in children[s] for k in col)), 0)
+
+
+def _packed(
+    blocks: list[list[Column]], widths: list[list[int]], s: int, children: list[list[int]], need: int,
+    last: int | None = None,
+) -> tuple[list[list[Column]], list[list[int]], int]:
+    """One side's blocks in the order (each mirrored where that helps) that brings the
+    latest door on spine room ``s`` nearest the side's start, the block ``last`` kept at
+    the end as it is; and where that door's ``need`` of wall ends (a door in the last
+    column of the block ``last`` excepted: it opens in the hall's end wall)."""
+    items = []
+    for i, (b, w) in enumerate(zip(blocks, widths)):
+        if i == last:
+            continue
+        k = _door_col(b, s, children)
+        items.append((b[::-1], w[::-1]) if sum(w[:k]) > sum(w[k + 1:]) else (b, w))
+    items.sort(key=lambda bw: sum(bw[1]) - sum(bw[1][: _door_col(bw[0], s, children)]))
+    if last is not None:
+        items.append((blocks[last], widths[last]))
+    reach, start = 0, 0
+    for bi, (block, bw) in enumerate(items):
+        k = _door_col(block, s, children)
+        if not (last is not None and bi == len(items) - 1 and k == len(block) - 1):
+            reach = max(reach, start + sum(bw[:k]) + need)
+        start += sum(bw)
+    return [b for b, _ in items], [w for _, w in items], reach
+
+
+def _overhang(
+    s: int, sides: Sides, widths: list[list[list[int]]], children: list[list[int]], prog: Program, rng,
+    at_start: bool = True,
+) -> tuple[int, Sides, list[list[list[int]]]] | None:
+    """The first (``at_start``) or last spine room, where nothing lies beyond its start or
+    end, kept to its own length, its blocks reaching out past it: (its length, sides,
+    widths), each side's blocks ordered (and mirrored) so their doors on it come next to
+    the rest of the spine; None where that is no shorter than the length its blocks
+    would stretch it to."""
+    need = _cells(prog.options.shared_wall_min_m, prog)
+    out_sides: list[list[list[Column]]] = [[], []]
+    out_widths: list[list[list[int]]] = [[], []]
+    reach = need
+    for i in (0, 1):
+        blocks, bws, r = _packed(sides[i], widths[i], s, children, need)
+        out_sides[i] = [b[::-1] for b in reversed(blocks)] if at_start else blocks
+        out_widths[i] = [w[::-1] for w in reversed(bws)] if at_start else bws
+        reach = max(reach, r)
+    natural = need if prog.types[s] in CORRIDOR_TYPES else _spine_length(prog, s, 0, rng)
+    own = max(reach, natural)
+    if own >= max(sum(map(sum, w)) for w in widths):
+        return None
+    return own, (out_sides[0], out_sides[1]), out_widths
+
+
+def _end_room(
+    s: int, root: int, spine: list[int], sides: Sides,
+    widths: list[list[list[int]]], depth: list[int], children: list[list[int]], prog: Program,
+) -> tuple[int, Column, Sides, list[list[list[int]]], bool] | None:
+    """A hall only as long as its doors need: (hall length, room, sides, widths) where the
+    room, in the last column of one side, closes the hall's far end (it grows across the
+    hall's width, keeping its type's proportions) and every other room with a door on the
+    hall keeps ``shared_wall_min_m`` of wall along it; the sides' blocks come back reordered
+    (and mirrored) so that the hall is shortest. None where the spine room is not a hallway,
+    is the root in the middle of the spine, or no room fits."""
+    if prog.types[s] not in CORRIDOR_TYPES or (s == root and s != spine[0]):
+        return None  # a root in the middle keeps its outside stretch for the entrance
+    need = _cells(prog.options.shared_wall_min_m, prog)
+
+    def packed(side_i: int, last: int | None) -> tuple[list[list[Column]], list[list[int]], int]:
+        return _packed(sides[side_i], widths[side_i], s, children, need, last)
+
+    best = None
+    for side_i in (0, 1):
+        other = 1 - side_i
+        o_blocks, o_widths, o_reach = packed(other, None)
+        for last in range(len(sides[side_i])):
+            blocks, bws, reach = packed(side_i, last)
+            end_col, w_end = blocks[-1][-1], bws[-1][-1]
+            if sum(map(sum, bws)) - w_end == 0 and not o_blocks:
+                continue
+            hall = sum(map(sum, bws)) - w_end
+            if max(reach, o_reach) > hall:
+                continue
+            d = _hall_width(prog)
+            k = end_col[0]
+            h = _column_heights(end_col, depth[side_i], prog)[0] + d
+            if d < need:
+                continue
+            grow = not _aspect_fault(k, w_end, h, prog)
+            if best is None or hall < best[0]:
+                new_sides: list[list[list[Column]]] = [[], []]
+                new_widths: list[list[list[int]]] = [[], []]
+                new_sides[side_i], new_widths[side_i] = blocks, bws
+                new_sides[other], new_widths[other] = o_blocks, o_widths
+                best = (hall, end_col, (new_sides[0], new_sides[1]), new_widths, grow)
+    return best
 
 
 # ----------------------------------------------------------------- the sizes
@@ -276,6 +441,12 @@ def _spine_length(prog: Program, s: int, blocks_len: int, rng) -> int:
     if prog.types[s] == "hallway" and blocks_len:
         return blocks_len
     return max(natural, _min_side(prog, s))
+
+
+def _hall_width(prog: Program) -> int:
+    """Width of a hall closed by an end room: the narrowest spine hallway, and wide
+    enough for the end room's door in its end wall."""
+    return max(_cells(prog.options.spine_hallway_min_m, prog), _cells(prog.options.shared_wall_min_m, prog))
 
 
 def _spine_depth(prog: Program, s: int, length: int) -> int:
