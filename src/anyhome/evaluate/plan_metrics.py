@@ -43,6 +43,11 @@ levels, reachability
 signature
     The sorted (short side, long side) of every room's minimum rotated rectangle,
     rounded to 0.5 m; :func:`signature_overlap` says how much two signatures coincide.
+footprint shape, courtyards
+    See :mod:`anyhome.evaluate.footprint`: the ground level's building outline as
+    rectangle, L, T, U, step, courtyard or other; for each courtyard, the share of its
+    perimeter on its level's outline (below ``footprint.INSIDE_MAX_SHARE``: inside the
+    footprint, rooms on at least three sides).
 home
     See :func:`is_home`: ``house.building`` is a dwelling (:data:`HOME_BUILDINGS`), or a
     building word of programs.yaml whose program is one, or (a word the knowledge does
@@ -62,6 +67,7 @@ import numpy as np
 import shapely
 from shapely.geometry import Polygon
 
+from anyhome.evaluate import footprint
 from anyhome.evaluate.polygons import is_usable, room_polygon
 from anyhome.floorplan.levels import reachable_rooms
 from anyhome.house import House, is_habitable
@@ -179,12 +185,25 @@ class PlanMetrics:
     n_unreachable: int
     signature: tuple[tuple[float, float], ...]
     rooms: tuple[RoomMetrics, ...]
+    footprint: str = "other"
+    """The ground level's outline shape (:data:`anyhome.evaluate.footprint.SHAPES`)."""
+    courtyard_shares: tuple[float, ...] = ()
+    """Per courtyard: the share of its perimeter on its level's outline."""
+
+    @property
+    def n_courtyards_inside(self) -> int:
+        return sum(s < footprint.INSIDE_MAX_SHARE for s in self.courtyard_shares)
+
+    @property
+    def n_courtyards_enclosed(self) -> int:
+        return sum(s < footprint.ENCLOSED_MAX_SHARE for s in self.courtyard_shares)
 
     def to_dict(self) -> dict[str, Any]:
         d = asdict(self)
         d["size_words"] = list(self.size_words)
         d["signature"] = [list(s) for s in self.signature]
         d["rooms"] = [{**asdict(r), "below_norm": r.below_norm} for r in self.rooms]
+        d["courtyard_shares"] = list(self.courtyard_shares)
         return d
 
     def summary_lines(self) -> list[str]:
@@ -207,6 +226,9 @@ class PlanMetrics:
             f"  open-air rooms with a ceiling: {self.n_open_air_with_ceiling}/{self.n_open_air}; "
             f"reachable through doors and stairs: "
             f"{'all' if self.all_reachable else f'{self.n_unreachable} rooms not'}",
+            f"  footprint {self.footprint}; courtyards inside the footprint: "
+            f"{self.n_courtyards_inside}/{len(self.courtyard_shares)} "
+            f"(rooms on every side: {self.n_courtyards_enclosed})",
         ]
 
 
@@ -448,7 +470,25 @@ def plan_metrics(house: House, kb: KnowledgeBase) -> PlanMetrics:
         n_unreachable=len(house.rooms) - len(reached),
         signature=tuple(sorted(signature)),
         rooms=tuple(rooms),
+        footprint=footprint.footprint_shape(
+            p for r in house.rooms if _level(r) == 0 and r.id in usable and not _is_open_air(r, kb)
+            for p in (usable[r.id],)),
+        courtyard_shares=_courtyard_shares(house, usable, kb),
     )
+
+
+def _courtyard_shares(house: House, usable: dict[str, Polygon], kb: KnowledgeBase) -> tuple[float, ...]:
+    """Boundary share of every courtyard (open air, of an ``enclosed`` type or of type
+    courtyard), against the outline of its own level."""
+    types = kb.rooms.types
+    out: list[float] = []
+    for level in sorted({_level(r) for r in house.rooms}):
+        rooms = {r.id: usable[r.id] for r in house.rooms if _level(r) == level and r.id in usable}
+        courts = [r.id for r in house.rooms if r.id in rooms and _is_open_air(r, kb) and (
+            r.type == "courtyard" or getattr(types.get(r.type), "enclosed", False))]
+        if courts:
+            out += footprint.courtyard_shares(rooms, courts).values()
+    return tuple(out)
 
 
 def signatures_share_most(a: Iterable[Sequence[float]], b: Iterable[Sequence[float]],
