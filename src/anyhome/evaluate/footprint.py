@@ -6,7 +6,8 @@ building outline
     The union of a level's rooms that are not open-air (the roofed part of the house).
 footprint shape
     Of the ground level's building outline (:func:`footprint_shape`): ``courtyard`` when
-    it has a hole (an open court, or nothing, walled in on every side); else from the
+    it has a hole (an open court, or nothing, walled in on every side) or a courtyard of
+    the level lies inside the footprint (see below); else from the
     *notches*, the pieces of its bounding box it leaves empty (pieces under
     :data:`NOTCH_MIN_M2` ignored): none ``rectangle``; one at a corner ``L``; one in the
     middle of a side ``U``; two at the corners of one side ``T``; two at opposite corners
@@ -49,9 +50,12 @@ def outline(polys: Iterable[Polygon]) -> Polygon | MultiPolygon:
     return merged.buffer(_TOL_M, join_style="mitre").buffer(-_TOL_M, join_style="mitre")
 
 
-def footprint_shape(built: Iterable[Polygon]) -> str:
-    """The shape class (:data:`SHAPES`) of the outline of ``built`` (see the module doc)."""
+def footprint_shape(built: Iterable[Polygon], inner_court: bool = False) -> str:
+    """The shape class (:data:`SHAPES`) of the outline of ``built`` (see the module doc);
+    ``inner_court``: a courtyard lies inside the footprint."""
     shape = outline(built)
+    if inner_court:
+        return "courtyard"
     if shape.is_empty:
         return "other"
     if isinstance(shape, MultiPolygon):

@@ -450,6 +450,7 @@ def plan_metrics(house: House, kb: KnowledgeBase) -> PlanMetrics:
     mansion_ok = total >= MANSION_MIN_M2 if home and ("mansion" in words or "grand" in words) else None
     stated_ok = abs(total - stated) <= STATED_TOL * stated if stated else None
     open_air = [m for m in rooms if m.open_air]
+    shares = _courtyard_shares(house, usable, kb)
     reached = reachable_rooms(house)  # through doors and stairs, as the validity check reads them
     return PlanMetrics(
         building=building, is_home=home, n_rooms=len(house.rooms), total_area_m2=total,
@@ -471,24 +472,24 @@ def plan_metrics(house: House, kb: KnowledgeBase) -> PlanMetrics:
         signature=tuple(sorted(signature)),
         rooms=tuple(rooms),
         footprint=footprint.footprint_shape(
-            p for r in house.rooms if _level(r) == 0 and r.id in usable and not _is_open_air(r, kb)
-            for p in (usable[r.id],)),
-        courtyard_shares=_courtyard_shares(house, usable, kb),
+            (usable[r.id] for r in house.rooms if _level(r) == 0 and r.id in usable and not _is_open_air(r, kb)),
+            inner_court=any(s < footprint.INSIDE_MAX_SHARE for s in shares.get(0, ()))),
+        courtyard_shares=tuple(s for level in sorted(shares) for s in shares[level]),
     )
 
 
-def _courtyard_shares(house: House, usable: dict[str, Polygon], kb: KnowledgeBase) -> tuple[float, ...]:
-    """Boundary share of every courtyard (open air, of an ``enclosed`` type or of type
-    courtyard), against the outline of its own level."""
+def _courtyard_shares(house: House, usable: dict[str, Polygon], kb: KnowledgeBase) -> dict[int, list[float]]:
+    """Level -> boundary share of each of its courtyards (open air, of an ``enclosed``
+    type or of type courtyard), against the outline of that level."""
     types = kb.rooms.types
-    out: list[float] = []
+    out: dict[int, list[float]] = {}
     for level in sorted({_level(r) for r in house.rooms}):
         rooms = {r.id: usable[r.id] for r in house.rooms if _level(r) == level and r.id in usable}
         courts = [r.id for r in house.rooms if r.id in rooms and _is_open_air(r, kb) and (
             r.type == "courtyard" or getattr(types.get(r.type), "enclosed", False))]
         if courts:
-            out += footprint.courtyard_shares(rooms, courts).values()
-    return tuple(out)
+            out[level] = list(footprint.courtyard_shares(rooms, courts).values())
+    return out
 
 
 def signatures_share_most(a: Iterable[Sequence[float]], b: Iterable[Sequence[float]],
