@@ -18,6 +18,9 @@ Definitions (see also anyhome/evaluate/plan_metrics.py):
 - reuse: the share of pairs of houses of DIFFERENT prompts (all seeds) whose room-size
   signatures mostly coincide: at least 70 % of the smaller signature's rooms match a
   room of the other (short and long side each within 0.5 m, each room matched once);
+- courtyards inside the footprint, footprint shapes: see
+  anyhome/evaluate/footprint.py (a courtyard is inside when less than 30 % of its
+  perimeter lies on its level's outline: rooms on at least three sides);
 - the 40-room timing: a hotel-floor spec of 40 rooms (a corridor, 19 guest rooms,
   19 bathrooms, a linen room) given to the floorplan stage, when HouseSpec accepts it.
 """
@@ -38,6 +41,7 @@ import numpy as np
 
 from anyhome.errors import AnyHomeError
 from anyhome.evaluate import evaluate_house
+from anyhome.evaluate.footprint import INSIDE_MAX_SHARE, SHAPES
 from anyhome.evaluate.plan_metrics import PlanMetrics, signatures_share_most
 from anyhome.floorplan import solve_floorplan
 from anyhome.floorplan.levels import solve_levels
@@ -159,6 +163,10 @@ def summarise(name: str, rows: list[tuple[str, int, PlanMetrics, int]], fp_times
         "max_rooms": max((p.n_rooms for p in plans), default=0),
         "violations": sum(v for *_, v in rows),
         "houses_with_violations": sum(v > 0 for *_, v in rows),
+        "courtyards": sum(len(p.courtyard_shares) for p in plans),
+        "courtyards_inside": sum(p.n_courtyards_inside for p in plans),
+        "courtyards_enclosed": sum(p.n_courtyards_enclosed for p in plans),
+        "shapes": {k: sum(p.footprint == k for p in plans) for k in SHAPES},
         "fp_median_ms": 1000 * statistics.median(fp_times),
         "fp_p90_ms": 1000 * pct(fp_times, 90),
         "fp_max_ms": 1000 * max(fp_times),
@@ -222,6 +230,10 @@ def table(results: list[dict[str, Any]], seeds: list[int]) -> str:
     row('"mansion"/"grand" homes >= 300 m2 (met/asked)', "all", lambda r: _frac(*r["verdicts"]["mansion_ok"]))
     row("pairs of different prompts sharing most room sizes", "<= 3 %",
         lambda r: f"{100 * r['reuse_share']:.1f} % ({r['reuse_pairs']}/{r['pairs']})")
+    row(f"courtyards inside the footprint (< {100 * INSIDE_MAX_SHARE:.0f} % of the perimeter on the outline)", "",
+        lambda r: _frac(r["courtyards_inside"], r["courtyards"]))
+    row("courtyards with rooms on every side", "", lambda r: _frac(r["courtyards_enclosed"], r["courtyards"]))
+    row("footprints: " + " / ".join(SHAPES), "", lambda r: " / ".join(str(r["shapes"][k]) for k in SHAPES))
     row("most levels / houses with > 1 level", "", lambda r: f"{r['max_levels']} / {r['multi_level']}")
     row(f"houses with > {OVERHANG_TOL_M2:g} m2 of upper floor over nothing (m2 in all)", "",
         lambda r: f"{_frac(r['overhanging'], r['multi_level'])} ({r['overhang_m2']:.0f})")

@@ -9,7 +9,9 @@ Rule 5
     connection has a door (or opening) between the same two rooms.
 Windows
     Every window lies on its room's exterior boundary (on the room's boundary and on no
-    other room's), and every habitable room (:func:`house.is_habitable`) has one.
+    other enclosed room's: a wall shared with an open-air room, a courtyard the house
+    wraps around or a terrace, is an outer wall for a window), and every habitable room
+    (:func:`house.is_habitable`) has one.
 """
 
 from __future__ import annotations
@@ -55,14 +57,15 @@ def connections_realized(house: House) -> float:
 
 
 def on_exterior(polys: dict[str, Polygon], room_id: str, segment: Sequence[Sequence[float]],
-                bands: _Bands | None = None) -> bool:
-    """The segment lies on ``room_id``'s boundary and runs along no other room's wall."""
+                bands: _Bands | None = None, outdoors: frozenset[str] = frozenset()) -> bool:
+    """The segment lies on ``room_id``'s boundary and runs along no other room's wall
+    (rooms in ``outdoors``, open to the sky, excepted)."""
     if not geometry.on_boundary(polys[room_id], segment):
         return False
     line = LineString(segment)
     bands = bands if bands is not None else _Bands(polys)
     for rid, band in bands.near(line):
-        if rid == room_id:
+        if rid == room_id or rid in outdoors:
             continue
         if line.intersects(band) and line.intersection(band).length > SHARED_WALL_MIN_M:
             return False
@@ -187,6 +190,7 @@ def _check_connections(house: House) -> list[Violation]:
 def check_windows(house: House) -> list[Violation]:
     polys = {r.id: room_polygon(r.polygon) for r in house.rooms}
     bands = _Bands(polys)
+    outdoors = frozenset(r.id for r in house.rooms if r.open_air)
     out = []
     lit: set[str] = set()
     for win in house.windows:
@@ -194,7 +198,7 @@ def check_windows(house: House) -> list[Violation]:
             out.append(Violation("windows", "bad_window_room",
                                  f"window {win.id} lights unknown room {win.room!r}", (win.id,)))
             continue
-        if _degenerate(win.segment) or not on_exterior(polys, win.room, win.segment, bands):
+        if _degenerate(win.segment) or not on_exterior(polys, win.room, win.segment, bands, outdoors):
             out.append(Violation("windows", "window_off_boundary",
                                  f"window {win.id} is not on an exterior wall of room {win.room}",
                                  (win.id, win.room)))

@@ -46,6 +46,11 @@ overhang
 signature
     The sorted (short side, long side) of every room's minimum rotated rectangle,
     rounded to 0.5 m; :func:`signature_overlap` says how much two signatures coincide.
+footprint shape, courtyards
+    See :mod:`anyhome.evaluate.footprint`: the ground level's building outline as
+    rectangle, L, T, U, step, courtyard or other; for each courtyard, the share of its
+    perimeter on its level's outline (below ``footprint.INSIDE_MAX_SHARE``: inside the
+    footprint, rooms on at least three sides).
 home
     See :func:`is_home`: ``house.building`` is a dwelling (:data:`HOME_BUILDINGS`), or a
     building word of programs.yaml whose program is one, or (a word the knowledge does
@@ -65,6 +70,7 @@ import numpy as np
 import shapely
 from shapely.geometry import Polygon
 
+from anyhome.evaluate import footprint
 from anyhome.evaluate.polygons import is_usable, room_polygon
 from anyhome.floorplan.levels import overhang_m2, reachable_rooms
 from anyhome.house import House, is_habitable
@@ -184,12 +190,25 @@ class PlanMetrics:
     n_unreachable: int
     signature: tuple[tuple[float, float], ...]
     rooms: tuple[RoomMetrics, ...]
+    footprint: str = "other"
+    """The ground level's outline shape (:data:`anyhome.evaluate.footprint.SHAPES`)."""
+    courtyard_shares: tuple[float, ...] = ()
+    """Per courtyard: the share of its perimeter on its level's outline."""
+
+    @property
+    def n_courtyards_inside(self) -> int:
+        return sum(s < footprint.INSIDE_MAX_SHARE for s in self.courtyard_shares)
+
+    @property
+    def n_courtyards_enclosed(self) -> int:
+        return sum(s < footprint.ENCLOSED_MAX_SHARE for s in self.courtyard_shares)
 
     def to_dict(self) -> dict[str, Any]:
         d = asdict(self)
         d["size_words"] = list(self.size_words)
         d["signature"] = [list(s) for s in self.signature]
         d["rooms"] = [{**asdict(r), "below_norm": r.below_norm} for r in self.rooms]
+        d["courtyard_shares"] = list(self.courtyard_shares)
         return d
 
     def summary_lines(self) -> list[str]:
@@ -213,6 +232,9 @@ class PlanMetrics:
             f"reachable through doors and stairs: "
             f"{'all' if self.all_reachable else f'{self.n_unreachable} rooms not'}; "
             f"upper floor over nothing: {self.overhang_m2:.1f} m2",
+            f"  footprint {self.footprint}; courtyards inside the footprint: "
+            f"{self.n_courtyards_inside}/{len(self.courtyard_shares)} "
+            f"(rooms on every side: {self.n_courtyards_enclosed})",
         ]
 
 
@@ -434,6 +456,7 @@ def plan_metrics(house: House, kb: KnowledgeBase) -> PlanMetrics:
     mansion_ok = total >= MANSION_MIN_M2 if home and ("mansion" in words or "grand" in words) else None
     stated_ok = abs(total - stated) <= STATED_TOL * stated if stated else None
     open_air = [m for m in rooms if m.open_air]
+    shares = _courtyard_shares(house, usable, kb)
     reached = reachable_rooms(house)  # through doors and stairs, as the validity check reads them
     return PlanMetrics(
         building=building, is_home=home, n_rooms=len(house.rooms), total_area_m2=total,
@@ -455,7 +478,25 @@ def plan_metrics(house: House, kb: KnowledgeBase) -> PlanMetrics:
         n_unreachable=len(house.rooms) - len(reached),
         signature=tuple(sorted(signature)),
         rooms=tuple(rooms),
+        footprint=footprint.footprint_shape(
+            (usable[r.id] for r in house.rooms if _level(r) == 0 and r.id in usable and not _is_open_air(r, kb)),
+            inner_court=any(s < footprint.INSIDE_MAX_SHARE for s in shares.get(0, ()))),
+        courtyard_shares=tuple(s for level in sorted(shares) for s in shares[level]),
     )
+
+
+def _courtyard_shares(house: House, usable: dict[str, Polygon], kb: KnowledgeBase) -> dict[int, list[float]]:
+    """Level -> boundary share of each of its courtyards (open air, of an ``enclosed``
+    type or of type courtyard), against the outline of that level."""
+    types = kb.rooms.types
+    out: dict[int, list[float]] = {}
+    for level in sorted({_level(r) for r in house.rooms}):
+        rooms = {r.id: usable[r.id] for r in house.rooms if _level(r) == level and r.id in usable}
+        courts = [r.id for r in house.rooms if r.id in rooms and _is_open_air(r, kb) and (
+            r.type == "courtyard" or getattr(types.get(r.type), "enclosed", False))]
+        if courts:
+            out[level] = list(footprint.courtyard_shares(rooms, courts).values())
+    return out
 
 
 def signatures_share_most(a: Iterable[Sequence[float]], b: Iterable[Sequence[float]],

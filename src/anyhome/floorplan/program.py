@@ -33,6 +33,9 @@ class Program:
     options: FloorplanOptions
     min_width_m: tuple[float, ...] = ()
     circulation: tuple[bool, ...] = ()
+    enclosed: tuple[bool, ...] = ()
+    """Per room: an open-air room the building wraps around (rooms.yaml ``enclosed``: a
+    courtyard); the rooms around it may take their windows from it."""
 
     @classmethod
     def from_spec(cls, spec: HouseSpec, options: FloorplanOptions, kb: KnowledgeBase | None = None) -> Program:
@@ -41,9 +44,11 @@ class Program:
         types = kb.rooms.types if kb is not None else {}
         widths = tuple(types[r.type].min_width_m if r.type in types else 0.0 for r in spec.rooms)
         circulation = tuple(bool(types[r.type].circulation) if r.type in types else False for r in spec.rooms)
+        enclosed = tuple(bool(types[r.type].enclosed) and r.open_air if r.type in types else False for r in spec.rooms)
         return cls(
             min_width_m=widths,
             circulation=circulation,
+            enclosed=enclosed,
             ids=ids,
             types=tuple(r.type for r in spec.rooms),
             areas_m2=np.array([r.area_m2 for r in spec.rooms], dtype=float),

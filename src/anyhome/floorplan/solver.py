@@ -337,8 +337,9 @@ def _bridge(prog, runs, cell_m, doors, reached, missing, rng) -> PlacedDoor | No
 
 def _place_windows(prog, runs, doors, cell_m) -> list[PlacedWindow] | str:
     windows: list[PlacedWindow] = []
+    courts = frozenset(k for k in range(prog.n) if prog.enclosed and prog.enclosed[k])
     for k in range(prog.n):
-        slots = free_slots(k, runs, doors, cell_m, prog.options)
+        slots = free_slots(k, runs, doors, cell_m, prog.options, courts)
         placed = place_windows(k, prog.habitable(k), prog.types[k] == "bathroom", slots, prog.options)
         if prog.habitable(k) and not placed:
             return f"habitable room {prog.ids[k]!r} has no exterior wall for a window"

@@ -36,12 +36,15 @@ class PlacedWindow:
 
 
 def free_slots(
-    room: int, runs: list[Run], doors: list[PlacedDoor], cell_m: float, opts: FloorplanOptions
+    room: int, runs: list[Run], doors: list[PlacedDoor], cell_m: float, opts: FloorplanOptions,
+    outdoors: frozenset[int] = frozenset(),
 ) -> list[tuple[float, Opening]]:
-    """Free stretches of ``room``'s exterior walls as (run length, stretch), longest first."""
+    """Free stretches of ``room``'s exterior walls as (run length, stretch), longest first;
+    a wall onto a room of ``outdoors`` (an open-air courtyard) counts as exterior."""
     slots = []
     for run in runs:
-        if not (run.touches(room) and run.touches(OUTSIDE)):
+        other = run.b if run.a == room else run.a
+        if not (run.touches(room) and (other == OUTSIDE or other in outdoors)):
             continue
         line, start, end = run_bounds_m(run, cell_m)
         blocked = [

@@ -193,6 +193,7 @@ class RoomType(_Model):
     circulation: bool = Field(default=False, description="a room for passing through (entry, hallway)")
     height_m: Annotated[float, Field(ge=2.1, le=12, description="floor-to-ceiling height (heights.yaml adjusts it)")]
     open_air: bool = Field(default=False, description="no roof: no ceiling, railings on its exterior sides")
+    enclosed: bool = Field(default=False, description="open_air inside the footprint: rooms around it, not at the edge")
 
     _r = field_validator("area")(classmethod(lambda cls, v: _ordered(v)))
 

@@ -477,6 +477,8 @@ def connect(kb: KnowledgeBase, slots: list[Slot], entrance_types: list[str]) -> 
 
         free = [p for p in placed if degree[p.id] < cap(p)]
         ranked = [p for t in attach for p in free if p.type == t]
+        if _type_info(kb, s.type).get("habitable"):  # rooms open onto the courtyard they wrap
+            ranked = [p for p in free if _type_info(kb, p.type).get("enclosed")] + ranked
         by_degree = sorted(placed, key=lambda p: degree[p.id])
         parent = (
             ranked
