@@ -213,9 +213,25 @@ class RoomName(_Model):
     _r = field_validator("area")(classmethod(lambda cls, v: _ordered(v)))
 
 
+class OpenAirWords(_Model):
+    """Words that say a room is open to the sky (rooms.yaml ``open_air``)."""
+
+    words: dict[str, str] = Field(description="word or phrase -> the open-air room type it stands for")
+    not_before: list[str] = Field(default_factory=list, description="a word followed by one of these is no open air ('garden room')")
+    enclosed: list[str] = Field(default_factory=list, description="names with such a word that are enclosed ('winter garden')")
+
+
 class RoomsFile(_Model):
     types: dict[str, RoomType]
     names: dict[str, RoomName]
+    open_air: OpenAirWords | None = None
+
+    @model_validator(mode="after")
+    def _open_air_types(self) -> RoomsFile:
+        for word, t in (self.open_air.words.items() if self.open_air else ()):
+            if t not in self.types or not self.types[t].open_air:
+                raise ValueError(f"open_air word {word!r} names {t!r}, not an open_air room type")
+        return self
 
 
 # ------------------------------------------------------------------ heights.yaml

@@ -33,6 +33,7 @@ from anyhome.plan.program import (
     connect_levels,
     fit_areas,
     fit_rooms,
+    open_air_by_name,
     plan_rooms,
     renumber,
     sample_areas,
@@ -105,6 +106,7 @@ class OfflinePlanner:
         if sz.band is not None:
             fit_rooms(kb, parsed, slots, sz, kb.raw("programs")["programs"].get(program or ""), _furnished_need(kb))
             renumber(slots)
+            open_air_by_name(kb, slots)
         if parsed.one_room and len(slots) > 1:
             warnings.append(
                 f"the text asks for a one-room building but names {len(slots)} rooms; planned the named rooms"
@@ -372,7 +374,7 @@ def _room_spec(kb: KnowledgeBase, s: Slot, groups: list[fu.Group], ornaments: li
         area_m2=round(float(np.clip(s.area, 0.6, 400.0)), 2),
         level=s.level,
         height_m=height.height_m,
-        open_air=rt.open_air,
+        open_air=rt.open_air or s.open_air,
         ceiling=height.ceiling,
         style=look.describe,
         materials=materials,

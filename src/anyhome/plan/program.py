@@ -58,6 +58,7 @@ class Slot:
     level: int = 0  # storey: 0 ground, 1 up, -1 basement
     area_from: str = "type"  # where area_range came from: type | program | name | kind
     need: float = 0.0  # floor its furniture needs (set when a total is fitted)
+    open_air: bool = False  # open to the sky whatever its type (its name says so)
 
 
 def _type_info(kb: KnowledgeBase, room_type: str) -> dict:
@@ -165,7 +166,41 @@ def plan_rooms(kb: KnowledgeBase, parsed: Parsed, program: str | None, rng: np.r
     _name_main_room(parsed, slots, prog)
     assign_levels(kb, parsed, slots, warnings)
     _name_and_number(slots)
+    open_air_by_name(kb, slots)
     return slots, (prog or {}).get("main")
+
+
+def open_air_word(kb: KnowledgeBase, name: str) -> str | None:
+    """The open-air room type a room's name says it is ("roof terrace" -> roof_terrace,
+    "the riad's courtyard" -> courtyard), or None (rooms.yaml ``open_air``: "garden
+    room", "winter garden" and the like are enclosed). The longest word wins."""
+    oa = kb.raw("rooms").get("open_air") or {}
+    text = " ".join(re.findall(r"[a-z0-9']+", name.lower()))
+    if any(re.search(rf"\b{re.escape(e)}\b", text) for e in oa.get("enclosed", [])):
+        return None
+    after = "|".join(re.escape(w) for w in oa.get("not_before", []))
+    for word in sorted(oa.get("words", {}), key=len, reverse=True):
+        tail = rf"(?!\s+(?:{after})\b)" if after else ""
+        if re.search(rf"\b{re.escape(word)}\b{tail}", text):
+            return str(oa["words"][word])
+    return None
+
+
+def open_air_by_name(kb: KnowledgeBase, slots: list[Slot]) -> None:
+    """Rooms whose name says they are open to the sky are built open: a room of an
+    enclosed, non-habitable type takes the open-air type its name gives (keeping its
+    furnishing and size); a habitable one ("a courtyard cafe") keeps its type and is
+    marked ``open_air``."""
+    for s in slots:
+        if _type_info(kb, s.type).get("open_air"):
+            continue
+        t = open_air_word(kb, s.name)
+        if t is None:
+            continue
+        if _type_info(kb, s.type).get("habitable") or _type_info(kb, s.type).get("circulation"):
+            s.open_air = True
+        else:
+            s.type = t
 
 
 VENUE_TYPES = frozenset({"shop", "cafe", "restaurant", "bar", "gym", "studio", "gallery", "hall", "library", "playroom"})
