@@ -151,17 +151,31 @@ class Compact(_Model):
     below_m2: Area
 
 
+class SizeDraw(_Model):
+    """programs.yaml ``sizes.draw``: the seeded variation of a plan's room sizes."""
+
+    house: AreaRange = Field(description="factor on every room of one house, log-uniform in [lo, hi]")
+    room: AreaRange = Field(description="factor on each room on top of it, log-uniform in [lo, hi]")
+    per_bedroom: dict[str, Annotated[float, Field(ge=-0.5, le=0.5)]] = Field(
+        default_factory=dict, description="room type -> share its area grows per bedroom past the second")
+
+    _r = field_validator("house", "room")(classmethod(lambda cls, v: _ordered(v)))
+
+
 class Sizes(_Model):
     """programs.yaml ``sizes``: how big dwellings are (docs/space_standards.md)."""
 
     homes: list[str] = Field(min_length=1, description="programs the size words and stated totals resize")
     compact: Compact
     stretch: Annotated[float, Field(ge=1, le=4)] = Field(description="most a room grows past its range's top")
+    stated_stretch: Annotated[float, Field(ge=1, le=4)] | None = Field(
+        default=None, description="most a room grows past its range's top to fill a total the text states")
     circulation_share: Annotated[float, Field(gt=0, le=1)] = Field(
         default=1.0, description="most of a home's planned area its entries and hallways take")
     add: list[AddedRoom] = Field(default_factory=list, description="rooms a home gains when its total needs more")
     words: dict[Word, SizeWord] = Field(default_factory=dict)
     kinds: dict[Word, BuildingKind] = Field(default_factory=dict)
+    draw: SizeDraw | None = Field(default=None, description="how far one house's rooms vary from the ranges' draws")
 
 
 class ProgramsFile(_Model):
