@@ -35,7 +35,13 @@ def test_the_built_house_holds_the_stated_total(text, m2):
 
 @pytest.mark.parametrize(
     ("text", "m2"),
-    [("About 30 square meters studio flat", 30.0), ("a 45 m2 studio apartment", 45.0), ("A house of about 140 m^2", 140.0)],
+    [
+        ("About 30 square meters studio flat", 30.0),
+        ("a 45 m2 studio apartment", 45.0),
+        ("A house of about 140 m^2", 140.0),
+        ("A seventy square metre flat", 70.0),
+        ("a sixty-square-metre cottage", 60.0),
+    ],
 )
 def test_an_area_before_a_building_word_is_the_total(text, m2):
     assert parse(text).total_m2 == pytest.approx(m2)
@@ -44,6 +50,9 @@ def test_an_area_before_a_building_word_is_the_total(text, m2):
 def test_an_area_before_a_room_word_is_the_rooms():
     p = parse("a house with a 20 m2 studio")
     assert p.total_m2 is None
+    p = parse("a flat with a thirty square metre living room and two bedrooms")
+    assert p.total_m2 is None and p.room_areas[0][1] == 30.0
+    assert any(m.key == "bedroom" and m.count == 2 for m in p.rooms)
 
 
 def test_same_text_and_seed_give_the_same_sizes():
