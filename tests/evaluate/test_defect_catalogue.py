@@ -418,7 +418,8 @@ def unreachable_area(h):
     x0, y0, x1, y1 = bounds(hall)
     ent = h.doors[entrance(h)]
     ey = (ent.segment[0][1] + ent.segment[1][1]) / 2
-    add_object(h, "partition", hall, ((x0 + x1) / 2, ey - 1.5, 0), (x1 - x0 - 0.02, 0.2, 1.0))
+    y = ey + 1.5 if ey - y0 < y1 - ey else ey - 1.5  # 1.5 m into the hallway from the entrance
+    add_object(h, "partition", hall, ((x0 + x1) / 2, y, 0), (x1 - x0 - 0.02, 0.2, 1.0))
 
 
 @dataclass(frozen=True)

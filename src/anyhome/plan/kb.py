@@ -151,17 +151,31 @@ class Compact(_Model):
     below_m2: Area
 
 
+class SizeDraw(_Model):
+    """programs.yaml ``sizes.draw``: the seeded variation of a plan's room sizes."""
+
+    house: AreaRange = Field(description="factor on every room of one house, log-uniform in [lo, hi]")
+    room: AreaRange = Field(description="factor on each room on top of it, log-uniform in [lo, hi]")
+    per_bedroom: dict[str, Annotated[float, Field(ge=-0.5, le=0.5)]] = Field(
+        default_factory=dict, description="room type -> share its area grows per bedroom past the second")
+
+    _r = field_validator("house", "room")(classmethod(lambda cls, v: _ordered(v)))
+
+
 class Sizes(_Model):
     """programs.yaml ``sizes``: how big dwellings are (docs/space_standards.md)."""
 
     homes: list[str] = Field(min_length=1, description="programs the size words and stated totals resize")
     compact: Compact
     stretch: Annotated[float, Field(ge=1, le=4)] = Field(description="most a room grows past its range's top")
+    stated_stretch: Annotated[float, Field(ge=1, le=4)] | None = Field(
+        default=None, description="most a room grows past its range's top to fill a total the text states")
     circulation_share: Annotated[float, Field(gt=0, le=1)] = Field(
         default=1.0, description="most of a home's planned area its entries and hallways take")
     add: list[AddedRoom] = Field(default_factory=list, description="rooms a home gains when its total needs more")
     words: dict[Word, SizeWord] = Field(default_factory=dict)
     kinds: dict[Word, BuildingKind] = Field(default_factory=dict)
+    draw: SizeDraw | None = Field(default=None, description="how far one house's rooms vary from the ranges' draws")
 
 
 class ProgramsFile(_Model):
@@ -214,9 +228,25 @@ class RoomName(_Model):
     _r = field_validator("area")(classmethod(lambda cls, v: _ordered(v)))
 
 
+class OpenAirWords(_Model):
+    """Words that say a room is open to the sky (rooms.yaml ``open_air``)."""
+
+    words: dict[str, str] = Field(description="word or phrase -> the open-air room type it stands for")
+    not_before: list[str] = Field(default_factory=list, description="a word followed by one of these is no open air ('garden room')")
+    enclosed: list[str] = Field(default_factory=list, description="names with such a word that are enclosed ('winter garden')")
+
+
 class RoomsFile(_Model):
     types: dict[str, RoomType]
     names: dict[str, RoomName]
+    open_air: OpenAirWords | None = None
+
+    @model_validator(mode="after")
+    def _open_air_types(self) -> RoomsFile:
+        for word, t in (self.open_air.words.items() if self.open_air else ()):
+            if t not in self.types or not self.types[t].open_air:
+                raise ValueError(f"open_air word {word!r} names {t!r}, not an open_air room type")
+        return self
 
 
 # ------------------------------------------------------------------ heights.yaml

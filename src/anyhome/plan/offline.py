@@ -33,9 +33,11 @@ from anyhome.plan.program import (
     connect_levels,
     fit_areas,
     fit_rooms,
+    open_air_by_name,
     plan_rooms,
     renumber,
     sample_areas,
+    size_rng,
     sizing,
 )
 from anyhome.plan.spec import GroupSpec, HouseSpec, ItemSpec, RoomSpec, kb_context
@@ -105,11 +107,12 @@ class OfflinePlanner:
         if sz.band is not None:
             fit_rooms(kb, parsed, slots, sz, kb.raw("programs")["programs"].get(program or ""), _furnished_need(kb))
             renumber(slots)
+            open_air_by_name(kb, slots)
         if parsed.one_room and len(slots) > 1:
             warnings.append(
                 f"the text asks for a one-room building but names {len(slots)} rooms; planned the named rooms"
             )
-        sample_areas(slots, parsed.building_size, rng, kb)
+        sample_areas(slots, parsed.building_size, size_rng(rng, text), kb)
         prog = kb.raw("programs")["programs"].get(program or "", {})
         connections = connect_levels(kb, slots, prog.get("entrance", []))
         fit_areas(kb, slots, sz)
@@ -134,11 +137,72 @@ class OfflinePlanner:
         heights = room_heights(kb, parsed, [s.type for s in slots], [s.mention for s in slots])
         specs = [_room_spec(kb, s, g, o, look, rng, h) for s, (g, o), h in zip(slots, rooms, heights)]
         log.debug("planned %d rooms for %r", len(specs), text[:60])
-        return HouseSpec.model_validate(
+        spec = HouseSpec.model_validate(
             {"prompt": text, "building": building, "style": look.describe, "styles": look.styles,
              "palette": look.palette, "rooms": specs, "connections": connections, "warnings": warnings},
             context=kb_context(kb),
         )
+        if parsed.total_m2 is not None and not any(sz.what in w for w in warnings):
+            spec = calibrate_total(kb, spec, slots, float(parsed.total_m2), np.random.default_rng(int(rng.integers(2**32))))
+        return spec
+
+
+CALIBRATION_PROBES = 2
+"""Floorplans laid out per round to see how large a stated total's rooms come out."""
+CALIBRATION_ROUNDS = 3
+"""Most rounds of scaling the rooms towards a stated total."""
+CALIBRATION_TOLERANCE = 0.06
+"""A stated total is met when the probes' mean built area is within this fraction of it."""
+
+
+def built_area_m2(spec: HouseSpec, rng: np.random.Generator) -> float | None:
+    """Total floor area of ``spec`` as the default floorplan stage lays it out (all
+    storeys), or None when it cannot be laid out."""
+    from shapely.geometry import Polygon
+
+    from anyhome.errors import AnyHomeError
+    from anyhome.floorplan.levels import solve_levels
+
+    try:
+        plan = solve_levels(spec, rng)
+    except AnyHomeError:
+        return None
+    return float(sum(Polygon(r.polygon).area for r in plan.rooms))
+
+
+def calibrate_total(kb: KnowledgeBase, spec: HouseSpec, slots: list[Slot], target_m2: float,
+                    rng: np.random.Generator) -> HouseSpec:
+    """The rooms' areas scaled so that the built house, not only the plan, holds the
+    stated total: the floorplan grows rooms to fill its footprint (a spine's rooms reach
+    the depth of their block) and may add a hallway, so the plan is laid out a few times
+    (:data:`CALIBRATION_PROBES` per round, ``rng``) and its rooms scaled by the stated
+    total over the mean built one, never below their type's ``min_area_m2`` (nor a room
+    whose area the text states, nor a stairwell). Up to :data:`CALIBRATION_ROUNDS`
+    rounds; the plan that came closest is kept."""
+    best, best_err = spec, float("inf")
+    keep = {s.id for s in slots if s.area_from == "stated" or s.key == STAIRWELL_KEY}
+    types = kb.rooms.types
+    for _ in range(CALIBRATION_ROUNDS):
+        built = [built_area_m2(spec, rng) for _ in range(CALIBRATION_PROBES)]
+        if any(a is None for a in built):  # scaled too far for the solver: keep the last plan that laid out
+            break
+        mean = float(np.mean([a for a in built if a is not None]))
+        err = abs(mean - target_m2) / target_m2
+        if err < best_err:
+            best, best_err = spec, err
+        if err <= CALIBRATION_TOLERANCE:
+            break
+        f = target_m2 / mean
+        rooms = []
+        for r in spec.rooms:
+            if r.id in keep:
+                rooms.append(r)
+                continue
+            rt = types.get(r.type, types["other"])
+            least = min(rt.min_area_m2, r.area_m2)
+            rooms.append(r.model_copy(update={"area_m2": round(float(np.clip(r.area_m2 * f, least, 400.0)), 2)}))
+        spec = spec.model_copy(update={"rooms": rooms})
+    return best
 
 
 def _furnished_need(kb: KnowledgeBase) -> Any:
@@ -372,7 +436,7 @@ def _room_spec(kb: KnowledgeBase, s: Slot, groups: list[fu.Group], ornaments: li
         area_m2=round(float(np.clip(s.area, 0.6, 400.0)), 2),
         level=s.level,
         height_m=height.height_m,
-        open_air=rt.open_air,
+        open_air=rt.open_air or s.open_air,
         ceiling=height.ceiling,
         style=look.describe,
         materials=materials,

@@ -569,8 +569,13 @@ def _merge_adjacent(text: str, found: list[Mention]) -> list[Mention]:
     return out
 
 
+_AREA_WORDS = ("ten", "eleven", "twelve", "thirteen", "fourteen", "fifteen", "sixteen", "seventeen", "eighteen",
+               "nineteen", "twenty", "thirty", "forty", "fifty", "sixty", "seventy", "eighty", "ninety", "hundred")
+"""Number words an area may be written with ("thirty square metres"; number phrases
+such as "one hundred and twenty" are figures by then, see :func:`rewrite_numbers`)."""
+
 _AREA = re.compile(
-    r"\b(\d{1,6}(?:\.\d+)?)\s*(m2|m²|sqm|sq\.? ?m(?:et(?:er|re)s?)?\.?|square met(?:er|re)s?|m(?:et(?:er|re)s?)? squared|"
+    r"\b(\d{1,6}(?:\.\d+)?|" + "|".join(_AREA_WORDS) + r")[\s-]*(m2|m²|m\^2|sqm|sq\.? ?m(?:et(?:er|re)s?)?\.?|square met(?:er|re)s?|m(?:et(?:er|re)s?)? squared|"
     r"sq\.? ?ft\.?|sqft|square f(?:ee|oo)t|ft2|ft²|sf)(?![\w²])"
 )
 """A stated floor area: a number and a unit ("50 m2", "30 square meters", "500 sq ft")."""
@@ -588,12 +593,20 @@ def _stated_area(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[int,
         taken.append(mt.span())
         after = _tokens(text[mt.end() :])[:3]
         nxt = " ".join(t for t, _, _ in after)
-        value = float(mt.group(1)) * (SQ_FT_M2 if "f" in mt.group(2) or mt.group(2) == "sf" else 1.0)
-        if any(nxt.startswith(f) and voc.forms[f][0].kind == "room" for f in _prefixes(nxt) if f in voc.forms):
+        num = mt.group(1)
+        value = float(NUMBER_WORDS[num] if num in NUMBER_WORDS else num) * (SQ_FT_M2 if "f" in mt.group(2) or mt.group(2) == "sf" else 1.0)
+        room = max((len(f) for f in _prefixes(nxt) if f in voc.forms and voc.forms[f][0].kind == "room"), default=0)
+        building = max((len(f) for f in _prefixes(nxt) if f in _building_words(kb)), default=0)
+        if room and room > building:  # "a 12 m2 bedroom"; "a 30 m2 studio flat" is the flat's
             p.room_areas.append((mt.end(), value))
             continue
         if p.total_m2 is None and value > 0:
             p.total_m2 = value
+
+
+def _building_words(kb: KnowledgeBase) -> frozenset[str]:
+    """Every word and phrase programs.yaml names a building with ("studio flat")."""
+    return frozenset(w.lower() for b in kb.raw("programs")["buildings"] for w in b.get("words", []))
 
 
 def _prefixes(phrase: str) -> list[str]:

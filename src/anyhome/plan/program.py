@@ -7,8 +7,10 @@ bubble diagram with one entrance.
 
 from __future__ import annotations
 
+import math
 import re
 import unicodedata
+import zlib
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
@@ -58,6 +60,7 @@ class Slot:
     level: int = 0  # storey: 0 ground, 1 up, -1 basement
     area_from: str = "type"  # where area_range came from: type | program | name | kind
     need: float = 0.0  # floor its furniture needs (set when a total is fitted)
+    open_air: bool = False  # open to the sky whatever its type (its name says so)
 
 
 def _type_info(kb: KnowledgeBase, room_type: str) -> dict:
@@ -165,7 +168,41 @@ def plan_rooms(kb: KnowledgeBase, parsed: Parsed, program: str | None, rng: np.r
     _name_main_room(parsed, slots, prog)
     assign_levels(kb, parsed, slots, warnings)
     _name_and_number(slots)
+    open_air_by_name(kb, slots)
     return slots, (prog or {}).get("main")
+
+
+def open_air_word(kb: KnowledgeBase, name: str) -> str | None:
+    """The open-air room type a room's name says it is ("roof terrace" -> roof_terrace,
+    "the riad's courtyard" -> courtyard), or None (rooms.yaml ``open_air``: "garden
+    room", "winter garden" and the like are enclosed). The longest word wins."""
+    oa = kb.raw("rooms").get("open_air") or {}
+    text = " ".join(re.findall(r"[a-z0-9']+", name.lower()))
+    if any(re.search(rf"\b{re.escape(e)}\b", text) for e in oa.get("enclosed", [])):
+        return None
+    after = "|".join(re.escape(w) for w in oa.get("not_before", []))
+    for word in sorted(oa.get("words", {}), key=len, reverse=True):
+        tail = rf"(?!\s+(?:{after})\b)" if after else ""
+        if re.search(rf"\b{re.escape(word)}\b{tail}", text):
+            return str(oa["words"][word])
+    return None
+
+
+def open_air_by_name(kb: KnowledgeBase, slots: list[Slot]) -> None:
+    """Rooms whose name says they are open to the sky are built open: a room of an
+    enclosed, non-habitable type takes the open-air type its name gives (keeping its
+    furnishing and size); a habitable one ("a courtyard cafe") keeps its type and is
+    marked ``open_air``."""
+    for s in slots:
+        if _type_info(kb, s.type).get("open_air"):
+            continue
+        t = open_air_word(kb, s.name)
+        if t is None:
+            continue
+        if _type_info(kb, s.type).get("habitable") or _type_info(kb, s.type).get("circulation"):
+            s.open_air = True
+        else:
+            s.type = t
 
 
 VENUE_TYPES = frozenset({"shop", "cafe", "restaurant", "bar", "gym", "studio", "gallery", "hall", "library", "playroom"})
@@ -442,13 +479,42 @@ def _name_and_number(slots: list[Slot]) -> None:
 
 def sample_areas(slots: list[Slot], building_size: float, rng: np.random.Generator, kb: KnowledgeBase | None = None) -> None:
     """Draw each room's area from its range, times its size words; with ``kb``, never
-    below its type's norm (``min_area_m2``, or its own smaller range)."""
+    below its type's norm (``min_area_m2``, or its own smaller range), and varied by the
+    knowledge's ``sizes.draw`` (programs.yaml): a factor for the whole house, one per
+    room, and the shared rooms' growth with the bedrooms. A room whose area the text
+    states keeps it."""
+    draw = (_sizes(kb).get("draw") or {}) if kb is not None else {}
+    house = _log_uniform(rng, draw.get("house"))
+    bedrooms = sum(s.type == "bedroom" for s in slots)
+    grow = draw.get("per_bedroom", {})
     for s in slots:
         lo, hi = s.area_range
         a = float(rng.uniform(lo, hi)) * s.size * building_size
+        if s.area_from != "stated" and s.key != STAIRWELL_KEY:
+            a *= house * _log_uniform(rng, draw.get("room")) * (1 + float(grow.get(s.type, 0.0)) * max(0, bedrooms - 2))
         if kb is not None:
             a = max(a, _least(kb, s))
         s.area = float(np.clip(a, *AREA_LIMITS_M2))
+
+
+def _log_uniform(rng: np.random.Generator, span: list[float] | tuple[float, float] | None) -> float:
+    """A factor log-uniform in ``span`` (1.0 without one)."""
+    if not span:
+        return 1.0
+    lo, hi = float(span[0]), float(span[1])
+    return float(np.exp(rng.uniform(np.log(lo), np.log(hi)))) if hi > lo else lo
+
+
+def size_rng(rng: np.random.Generator, text: str) -> np.random.Generator:
+    """The generator the room sizes are drawn from: one draw of the plan's ``rng`` (the
+    seed) with the text's own words, so that one seed gives different sizes to different
+    texts and one text different sizes under different seeds (both deterministic)."""
+    words = " ".join(re.findall(r"[a-z0-9]+", text.lower()))
+    try:  # a child of the seed: the plan's own later draws (furniture, looks) stay as they were
+        seed = int(rng.spawn(1)[0].integers(2**32))
+    except (TypeError, ValueError):  # a generator made without a seed sequence
+        seed = int(rng.integers(2**32))
+    return np.random.default_rng([seed, zlib.crc32(words.encode())])
 
 
 def connect(kb: KnowledgeBase, slots: list[Slot], entrance_types: list[str]) -> list[tuple[str, str]]:
@@ -645,6 +711,7 @@ def sizing(kb: KnowledgeBase, parsed: Parsed, program: str | None) -> Sizing:
         t = float(parsed.total_m2)
         sz.band = (t * (1 - STATED_TOLERANCE), t * (1 + STATED_TOLERANCE))
         sz.what = f"the stated {t:.0f} m2"
+        sz.stretch = max(sz.stretch, float(sizes.get("stated_stretch", sz.stretch)))  # the text says how big
     elif program in homes and word_band is not None:
         kt = kind.get("total_m2")
         lo, hi = word_band
@@ -735,12 +802,19 @@ def fit_rooms(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], sz: Sizing, 
         slots.remove(victims[0])
     while sum(_least(kb, s) for s in slots) > hi and (victims := droppable(True)) and len(slots) > 1:
         slots.remove(victims[0])
-    adds = list(sz.add)
+    # a home gains the kind's and the homes' adds; another building the optional rooms
+    # of its program the draw left out ("an office of 200 m2" has its reception)
+    keys = {s.key for s in slots}
+    adds = list(sz.add) or [
+        {**e, "_key": True} for e in (prog or {}).get("rooms", []) if e.get("optional") is not None and e.get("key") not in keys
+    ]
     while sum(_mid(s) for s in slots) < lo * 0.9 and adds and len(slots) < MAX_ROOMS:
         e = adds.pop(0)
-        if sum(x.type == e["type"] for x in slots) >= min(int(e.get("up_to", 1)), int(_type_info(kb, e["type"]).get("max", 6))):
+        if e.get("_key") and any(x.key == e.get("key") for x in slots):
             continue
-        new = _slot_from_entry(kb, {k: v for k, v in e.items() if k != "up_to"})
+        if not e.get("_key") and sum(x.type == e["type"] for x in slots) >= min(int(e.get("up_to", 1)), int(_type_info(kb, e["type"]).get("max", 6))):
+            continue
+        new = _slot_from_entry(kb, {k: v for k, v in e.items() if k not in ("up_to", "_key", "optional", "count")})
         if _ruled_out(kb, parsed, new):
             continue
         apply_kind(kb, [new], sz)
@@ -822,6 +896,11 @@ def fit_areas(kb: KnowledgeBase, slots: list[Slot], sz: Sizing, warnings: list[s
     for s in slots:
         s.area = round(s.area, 2)
     total = sum(s.area for s in slots)
+    off = lo - total if total < lo else hi - total if total > hi else 0.0
+    if slots and 0 < abs(off) < 0.01 * len(slots):  # the rounding pushed it out of the band
+        big = max(slots, key=lambda s: s.area)
+        big.area = round(big.area + off + math.copysign(0.01, off), 2)
+        total = sum(s.area for s in slots)
     if warnings is not None and not lo * (1 - STATED_TOLERANCE) <= total <= hi * (1 + STATED_TOLERANCE):
         if total > hi:
             warnings.append(
