@@ -125,10 +125,17 @@ def test_each_storey_has_its_birdseye_and_rerender_keeps_the_folder_ours(townhou
     assert (out / "birdseye-2.png").is_file()
 
 
-def test_storeys_that_cannot_stack_become_one_valid_storey_with_a_warning():
-    """An attic cottage whose ground-floor stairwell never comes out large enough for a
-    flight (seed 1, measured): the house is laid out on the ground floor, its stairwells
-    joined by a door, and says so."""
+def test_storeys_that_cannot_stack_become_one_valid_storey_with_a_warning(monkeypatch):
+    """Storeys that never stack (every try raises, as when no stairwell comes out large
+    enough for a flight): the house is laid out on the ground floor, its stairwells joined
+    by a door, and says so."""
+    from anyhome.errors import FloorplanError
+    from anyhome.floorplan import levels
+
+    def never(*_a, **_k):
+        raise FloorplanError("no room for a flight of stairs in 'stairwell'")
+
+    monkeypatch.setattr(levels, "_stacked", never)
     h = generate("a cozy cottage with an attic bedroom", 1)
     assert h.level_numbers() == [0] and not h.levels
     assert not [o for o in h.objects if o.category == "stairs"]
