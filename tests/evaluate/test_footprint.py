@@ -60,32 +60,28 @@ def test_a_window_may_look_onto_an_open_air_courtyard() -> None:
     assert [v.code for v in check_windows(_court_house(open_air=False))] == ["window_off_boundary", "habitable_without_window"]
 
 
-def test_plan_metrics_report_courtyards_and_footprint() -> None:
-    kb = knowledge_base()
-    ring = [(x, y) for x in range(3) for y in range(3) if (x, y) != (1, 1)]
+def _grid_around_court(prompt: str, missing: tuple[tuple[int, int], ...]) -> House:
+    """4 m square bedrooms on a 3 x 3 grid less ``missing``, a courtyard in the middle."""
+    cells = [(x, y) for x in range(3) for y in range(3) if (x, y) != (1, 1) and (x, y) not in missing]
     rooms = [Room(id=f"r{x}{y}", name="bedroom", type="bedroom", polygon=[(4 * x, 4 * y), (4 * x + 4, 4 * y),
-                  (4 * x + 4, 4 * y + 4), (4 * x, 4 * y + 4)]) for x, y in ring]
+                  (4 * x + 4, 4 * y + 4), (4 * x, 4 * y + 4)]) for x, y in cells]
     rooms.append(Room(id="court", name="courtyard", type="courtyard", open_air=True,
                       polygon=[(4, 4), (8, 4), (8, 8), (4, 8)]))
-    house = House(prompt="a riad", seed=0, rooms=rooms, objects=[],
-                  doors=[Door(id="d0", rooms=("r00", "outside"), segment=((0, 1), (0, 2)))])
-    m = plan_metrics(house, kb)
+    return House(prompt=prompt, seed=0, rooms=rooms, objects=[],
+                 doors=[Door(id="d0", rooms=("r00", "outside"), segment=((0, 1), (0, 2)))])
+
+
+def test_plan_metrics_report_courtyards_and_footprint() -> None:
+    m = plan_metrics(_grid_around_court("a riad", ()), knowledge_base())
     assert m.footprint == "courtyard"
     assert m.courtyard_shares == (pytest.approx(0.0),)
     assert m.n_courtyards_inside == 1 and m.n_courtyards_enclosed == 1
 
 
 def test_a_courtyard_open_on_one_side_is_still_inside() -> None:
-    kb = knowledge_base()
-    u = [(x, y) for x in range(3) for y in range(3) if (x, y) not in ((1, 1), (1, 2))]
-    rooms = [Room(id=f"r{x}{y}", name="bedroom", type="bedroom", polygon=[(4 * x, 4 * y), (4 * x + 4, 4 * y),
-                  (4 * x + 4, 4 * y + 4), (4 * x, 4 * y + 4)]) for x, y in u]
-    rooms.append(Room(id="court", name="courtyard", type="courtyard", open_air=True,
-                      polygon=[(4, 4), (8, 4), (8, 8), (4, 8)]))
-    house = House(prompt="a house around a courtyard", seed=0, rooms=rooms, objects=[],
-                  doors=[Door(id="d0", rooms=("r00", "outside"), segment=((0, 1), (0, 2)))])
-    m = plan_metrics(house, kb)
+    house = _grid_around_court("a house around a courtyard", ((1, 2),))
+    m = plan_metrics(house, knowledge_base())
     assert m.courtyard_shares == (pytest.approx(0.25, abs=0.01),)
     assert m.n_courtyards_inside == 1 and m.n_courtyards_enclosed == 0
     assert m.footprint == "courtyard"
-    assert footprint_shape([Polygon(r.polygon) for r in rooms if not r.open_air]) == "U"
+    assert footprint_shape([Polygon(r.polygon) for r in house.rooms if not r.open_air]) == "U"

@@ -192,14 +192,13 @@ def test_storey_is_placed_where_it_hangs_least():
         rng = np.random.default_rng(seed)
         ground = levels._solve_storey(spec, 0, rng, None)
         upper = levels._solve_storey(spec, 1, rng, None)
-        placed = levels._best_placed(spec, {0: ground}, upper, 1, 0)
+        placed = levels._best_placed(spec, {0: ground}, upper, 1, 0)[1]
         gx, gy = levels._rect(ground.room(levels.stair_room(spec, 0)))[:2]
         ux, uy = levels._rect(upper.room(levels.stair_room(spec, 1)))[:2]
         plain = levels._moved(upper, gx - ux, gy - uy)
 
         def hang(p):
-            return levels.overhang_m2([*(levels._Storeyed(r.polygon, 0) for r in ground.rooms),
-                                       *(levels._Storeyed(r.polygon, 1) for r in p.rooms)])
+            return levels.overhang_m2([*ground.rooms, *(r.model_copy(update={"level": 1}) for r in p.rooms)])
 
         def flight(p):
             pair = ground.model_copy(update={"rooms": [*ground.rooms, *p.rooms], "doors": [*ground.doors, *p.doors]})

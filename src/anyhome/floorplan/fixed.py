@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from collections import Counter
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -61,7 +60,7 @@ def rect_grid(width_m: float, depth_m: float, prog: Program) -> Grid:
 def solve_in_footprint(prog: Program, rng: np.random.Generator, footprint: object | None,
                        fixed: dict[str, tuple[float, float, float, float]]) -> Layout:
     """The best valid layout of ``prog`` filling ``footprint`` (see the module doc)."""
-    from anyhome.floorplan.solver import _attempt
+    from anyhome.floorplan.solver import _attempt, best_attempt
 
     if fixed:
         raise FloorplanError(f"rooms at fixed places ({', '.join(sorted(fixed))}) are not supported yet")
@@ -71,22 +70,6 @@ def solve_in_footprint(prog: Program, rng: np.random.Generator, footprint: objec
     grid = rect_grid(x1 - x0, y1 - y0, prog)
     scale = (x1 - x0) * (y1 - y0) / float(prog.areas_m2.sum())
     scaled = dataclasses.replace(prog, areas_m2=prog.areas_m2 * scale)
-    opts = prog.options
-    failures: Counter[str] = Counter()
-    found: list[Layout] = []
-    for _ in range(opts.max_attempts):
-        result = _attempt(scaled, rng, opts, grid)
-        if isinstance(result, str):
-            failures[result] += 1
-            continue
-        found.append(result)
-        if len(found) >= opts.wanted_candidates:
-            break
-    if not found:
-        reason, count = failures.most_common(1)[0]
-        raise FloorplanError(
-            f"could not lay out the {prog.n}-room program in the {x1 - x0:g} x {y1 - y0:g} m footprint "
-            f"in {opts.max_attempts} attempts (most often: {reason}, {count}x)"
-        )
-    best = min(found, key=lambda lay: lay.score)
+    best = best_attempt(lambda _: _attempt(scaled, rng, prog.options, grid), prog.n, prog.options,
+                        f" in the {x1 - x0:g} x {y1 - y0:g} m footprint")
     return dataclasses.replace(best, origin=(x0, y0))

@@ -23,7 +23,6 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterable
-from dataclasses import dataclass
 
 import numpy as np
 
@@ -85,12 +84,10 @@ def _stacked(spec: HouseSpec, numbers: list[int], rng: np.random.Generator, opti
         why = ""
         for _ in range(opts.storey_candidates):  # a few layouts of the storey; the one that sits best
             try:
-                placed = _best_placed(spec, plans, _solve_storey(spec, k, rng, options), k, ref)
+                hang, placed = _best_placed(spec, plans, _solve_storey(spec, k, rng, options), k, ref)
             except FloorplanError as e:
                 why = str(e)
                 continue
-            hang = overhang_m2([*(_Storeyed(r.polygon, 0) for r in plans[ref].rooms),
-                                *(_Storeyed(r.polygon, 1) for r in placed.rooms)])
             if best is None or hang < best[0] - 1e-6:
                 best = (hang, placed)
             if hang <= opts.overhang_ok_m2:
@@ -112,27 +109,25 @@ MIRRORS = ((False, False), (True, False), (False, True), (True, True))
 
 
 def _mirrored(plan: Floorplan, stair: str, flip_x: bool, flip_y: bool) -> Floorplan:
-    """``plan`` mirrored about its stairwell's centre lines (the stairwell stays put)."""
-    x0, y0, w, h = _rect(plan.room(stair))
-    return _mirrored_about(plan, x0 + w / 2, y0 + h / 2, flip_x, flip_y)
-
-
-def _mirrored_about(plan: Floorplan, cx: float, cy: float, flip_x: bool, flip_y: bool) -> Floorplan:
-    """``plan`` mirrored about the lines x = ``cx`` and/or y = ``cy`` (outlines are
-    reversed to stay counter-clockwise)."""
+    """``plan`` mirrored about its stairwell's centre lines, so the stairwell stays put
+    (outlines are reversed to stay counter-clockwise)."""
     if not (flip_x or flip_y):
         return plan
+    x0, y0, w, h = _rect(plan.room(stair))
+    cx, cy = x0 + w / 2, y0 + h / 2
     out = _map(plan, lambda p: (round(2 * cx - p[0], 6) if flip_x else p[0], round(2 * cy - p[1], 6) if flip_y else p[1]))
     if flip_x != flip_y:  # one reflection turns outlines clockwise
         out = out.model_copy(update={"rooms": [r.model_copy(update={"polygon": list(reversed(r.polygon))}) for r in out.rooms]})
     return out
 
 
-def _best_placed(spec: HouseSpec, plans: dict[int, Floorplan], plan: Floorplan, k: int, ref: int) -> Floorplan:
+def _best_placed(spec: HouseSpec, plans: dict[int, Floorplan], plan: Floorplan, k: int,
+                 ref: int) -> tuple[float, Floorplan]:
     """Storey ``k`` (``plan``) placed on (a basement: under) storey ``ref``: of its four mirror
     images (:data:`MIRRORS`), each with a corner of its stairwell on the same corner of
     the stairwell of ``ref``, the one whose floor lies most over (under) ``ref``'s, among
-    those where a flight fits in both stairwells clear of their doors."""
+    those where a flight fits in both stairwells clear of their doors; with the area of
+    its floor outside ``ref``'s (m2)."""
     stair, ref_stair = stair_room(spec, k), stair_room(spec, ref)
     rx, ry, rw, rh = _rect(plans[ref].room(ref_stair))
     best: tuple[float, Floorplan] | None = None
@@ -146,37 +141,31 @@ def _best_placed(spec: HouseSpec, plans: dict[int, Floorplan], plan: Floorplan, 
                                              connections=[], levels=[], warnings=[])
             if _flight_box(pair, *((ref_stair, stair) if k > ref else (stair, ref_stair))) is None:
                 continue
-            hang = overhang_m2([*(_Storeyed(r.polygon, 0) for r in plans[ref].rooms),
-                                *(_Storeyed(r.polygon, 1) for r in cand.rooms)])  # cand's floor outside ref's
+            hang = _outside_m2([r.polygon for r in cand.rooms], [r.polygon for r in plans[ref].rooms])
             if best is None or hang < best[0] - 1e-6:
                 best = (hang, cand)
     if best is None:
         raise FloorplanError(f"no room for a flight of stairs between {ref_stair!r} and {stair!r}")
-    return best[1]
+    return best
 
 
-@dataclass(frozen=True)
-class _Storeyed:
-    polygon: list
-    level: int
+def _outside_m2(outlines: Iterable, below: Iterable) -> float:
+    """Area of the union of ``outlines`` that lies outside the union of ``below``."""
+    from shapely.geometry import Polygon
+    from shapely.ops import unary_union
+
+    floor = unary_union([Polygon(p).buffer(0) for p in outlines])
+    return float(floor.difference(unary_union([Polygon(p).buffer(0) for p in below]).buffer(1e-6)).area)
 
 
 def overhang_m2(rooms: Iterable) -> float:
     """Area of the rooms of each storey above the ground floor that lies over no room of
     the storey below (floor hanging in the air). ``rooms``: objects with ``polygon`` and
     ``level`` (a missing level is 0)."""
-    from shapely.geometry import Polygon
-    from shapely.ops import unary_union
-
     by_level: dict[int, list] = {}
     for r in rooms:
-        by_level.setdefault(getattr(r, "level", 0) or 0, []).append(Polygon(r.polygon).buffer(0))
-    out = 0.0
-    for k in sorted(by_level):
-        if k > 0:
-            below = unary_union(by_level.get(k - 1, [])).buffer(1e-6)
-            out += unary_union(by_level[k]).difference(below).area
-    return float(out)
+        by_level.setdefault(getattr(r, "level", 0) or 0, []).append(r.polygon)
+    return sum((_outside_m2(by_level[k], by_level.get(k - 1, [])) for k in by_level if k > 0), 0.0)
 
 
 def _storey_spec(spec: HouseSpec, k: int) -> HouseSpec:

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import logging
 from collections import Counter
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
 import numpy as np
@@ -101,11 +101,22 @@ def solve_floorplan(
 
         lay = solve_in_footprint(prog, rng, footprint, dict(fixed or {}))
         return _to_floorplan(spec, prog, lay)
+    slicing_attempts = opts.slicing_attempts if prog.n <= opts.slicing_max_rooms else 0
+    best = best_attempt(
+        lambda i: _attempt(prog, rng, opts) if i < slicing_attempts else _spine_attempt(prog, rng, opts),
+        prog.n, opts)
+    return _to_floorplan(spec, prog, best)
+
+
+def best_attempt(attempt: Callable[[int], Layout | str], n_rooms: int, opts: FloorplanOptions,
+                 where: str = "") -> Layout:
+    """The best-scoring of the first ``opts.wanted_candidates`` valid layouts that
+    ``attempt(i)`` (a layout, or why it failed) gives in ``opts.max_attempts`` tries; a
+    FloorplanError naming the commonest failure when none is valid."""
     failures: Counter[str] = Counter()
     found: list[Layout] = []
-    slicing_attempts = opts.slicing_attempts if prog.n <= opts.slicing_max_rooms else 0
-    for attempt in range(opts.max_attempts):
-        result = _attempt(prog, rng, opts) if attempt < slicing_attempts else _spine_attempt(prog, rng, opts)
+    for i in range(opts.max_attempts):
+        result = attempt(i)
         if isinstance(result, str):
             failures[result] += 1
             continue
@@ -115,12 +126,11 @@ def solve_floorplan(
     if not found:
         reason, count = failures.most_common(1)[0]
         raise FloorplanError(
-            f"could not lay out the {prog.n}-room program in {opts.max_attempts} attempts "
+            f"could not lay out the {n_rooms}-room program{where} in {opts.max_attempts} attempts "
             f"(most often: {reason}, {count}x)"
         )
-    log.debug("floorplan: %d attempts, failures %s", attempt + 1, dict(failures))
-    best = min(found, key=lambda lay: lay.score)
-    return _to_floorplan(spec, prog, best)
+    log.debug("floorplan: %d attempts, failures %s", i + 1, dict(failures))
+    return min(found, key=lambda lay: lay.score)
 
 
 def floorplan_errors(spec: HouseSpec) -> list[str]:

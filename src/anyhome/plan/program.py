@@ -456,6 +456,18 @@ def _slug(text: str) -> str:
     return re.sub(r"[^a-z0-9]+", "_", ascii_text.lower())[:48].strip("_") or "room"
 
 
+def _assign_ids(slots: list[Slot]) -> None:
+    """Ids from the names, unique in order: "bedroom", "bedroom_2"."""
+    ids: set[str] = set()
+    for s in slots:
+        base = _slug(s.name)
+        rid, k = base, 2
+        while rid in ids:
+            rid, k = f"{base}_{k}", k + 1
+        ids.add(rid)
+        s.id = rid
+
+
 def _name_and_number(slots: list[Slot]) -> None:
     """Unique names ("bedroom", "bedroom 2") and ids; a master bedroom when several."""
     bedrooms = [s for s in slots if s.type == "bedroom" and s.furnish == "bedroom"]
@@ -467,14 +479,7 @@ def _name_and_number(slots: list[Slot]) -> None:
         seen[s.name] = seen.get(s.name, 0) + 1
         if seen[s.name] > 1:
             s.name = f"{s.name} {seen[s.name]}"
-    ids: set[str] = set()
-    for s in slots:
-        base = _slug(s.name)
-        rid, k = base, 2
-        while rid in ids:
-            rid, k = f"{base}_{k}", k + 1
-        ids.add(rid)
-        s.id = rid
+    _assign_ids(slots)
 
 
 def sample_areas(slots: list[Slot], building_size: float, rng: np.random.Generator, kb: KnowledgeBase | None = None) -> None:
@@ -833,14 +838,7 @@ def renumber(slots: list[Slot]) -> None:
                 k += 1
             s.name = f"{s.name} {k}"
         used.add(s.name)
-    ids: set[str] = set()
-    for s in slots:
-        base = _slug(s.name)
-        rid, k = base, 2
-        while rid in ids:
-            rid, k = f"{base}_{k}", k + 1
-        ids.add(rid)
-        s.id = rid
+    _assign_ids(slots)
 
 
 def _scale_to(kb: KnowledgeBase, slots: list[Slot], target: float, sz: Sizing, floors: dict[int, float]) -> None:
