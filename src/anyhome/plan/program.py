@@ -726,6 +726,8 @@ def _least(kb: KnowledgeBase, s: Slot) -> float:
     (a booth, a cubicle)."""
     if s.area_from == "stated":  # "a 12 m2 bedroom" stays 12 m2
         return float(s.area_range[0])
+    if s.key == STAIRWELL_KEY:  # it holds its flight whatever the total
+        return STAIRWELL_AREA_M2
     return float(max(min(float(_type_info(kb, s.type)["min_area_m2"]), s.area_range[0]), s.need))
 
 
@@ -733,6 +735,8 @@ def _most(kb: KnowledgeBase, s: Slot, sz: Sizing) -> float:
     """Largest area the room may grow to; circulation never grows to fill a total."""
     if s.area_from == "stated":
         return float(s.area_range[1])
+    if s.key == STAIRWELL_KEY:
+        return STAIRWELL_AREA_M2
     if _type_info(kb, s.type).get("circulation"):
         return max(s.area, s.area_range[1])
     return float(min(s.area_range[1] * sz.stretch, AREA_LIMITS_M2[1]))
@@ -866,7 +870,10 @@ def fit_areas(kb: KnowledgeBase, slots: list[Slot], sz: Sizing, warnings: list[s
     for s in slots:
         if s.area_from != "stated":
             s.area = max(s.area, s.need)
-    circ = [s for s in slots if _type_info(kb, s.type).get("circulation")]
+    for s in slots:
+        if s.key == STAIRWELL_KEY:  # a stairwell holds its flight: never capped nor scaled
+            s.area = STAIRWELL_AREA_M2
+    circ = [s for s in slots if _type_info(kb, s.type).get("circulation") and s.key != STAIRWELL_KEY]
     total = sum(s.area for s in slots)
     if circ and sz.circulation_share < 1.0:
         cap = sz.circulation_share * total
