@@ -97,3 +97,12 @@ def test_a_stated_total_of_several_storeys_is_built():
     spec = plan("A 150 m2 three-storey townhouse with four bedrooms", 1)
     area = built_area_m2(spec, stage_rngs(1)["floorplan"])
     assert area is not None and abs(area - 150.0) <= 0.15 * 150.0, area
+
+
+def test_a_tiny_home_is_built_tiny():
+    """A size word's range holds in the built house too (the solver grew this one to
+    48 m2 before)."""
+    for seed in (0, 1):
+        spec = plan("A tiny home for two with a sleeping loft and a reading nook", seed)
+        area = built_area_m2(spec, stage_rngs(seed)["floorplan"])
+        assert area is not None and area <= 45.0, (seed, area)

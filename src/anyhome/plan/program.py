@@ -669,6 +669,7 @@ class Sizing:
     add: list[dict] = field(default_factory=list)
     circulation_share: float = 1.0
     scale: float = 1.0  # the size word's factor on every room's range
+    source: str = ""  # what set the band: "stated" | "word" | "kind" ("" without one)
 
 
 def _sizes(kb: KnowledgeBase) -> dict:
@@ -699,6 +700,7 @@ def sizing(kb: KnowledgeBase, parsed: Parsed, program: str | None) -> Sizing:
         t = float(parsed.total_m2)
         sz.band = (t * (1 - STATED_TOLERANCE), t * (1 + STATED_TOLERANCE))
         sz.what = f"the stated {t:.0f} m2"
+        sz.source = "stated"
         sz.stretch = max(sz.stretch, float(sizes.get("stated_stretch", sz.stretch)))  # the text says how big
     elif program in homes and word_band is not None:
         kt = kind.get("total_m2")
@@ -706,9 +708,11 @@ def sizing(kb: KnowledgeBase, parsed: Parsed, program: str | None) -> Sizing:
         if kt and max(lo, kt[0]) <= min(hi, kt[1]):  # "a grand mansion": both hold
             lo, hi = max(lo, kt[0]), min(hi, kt[1])
         sz.band = (float(lo), float(hi))
+        sz.source = "word"
     elif program in homes and kind.get("total_m2"):
         sz.band = (float(kind["total_m2"][0]), float(kind["total_m2"][1]))
         sz.what = f"a {parsed.building_word or 'home'}"
+        sz.source = "kind"
     compact = sizes.get("compact")
     asks_bedrooms = parsed.bedrooms or parsed.people or any(
         not m.negated and _slot_from_mention(kb, m, i).type == "bedroom" for i, m in enumerate(parsed.rooms)
