@@ -79,3 +79,30 @@ def test_shared_rooms_grow_with_the_bedrooms():
         return statistics.median(r.area_m2 for s in range(24) for r in plan(text, s).rooms if r.type == "living_room")
 
     assert living("a five-bedroom house") > living("a one-bedroom house")
+
+
+def test_a_stated_total_keeps_the_stairwells_whole():
+    """A stairwell holds its flight: a stated total neither caps it as circulation nor
+    scales it (before, the squeezed stairwells could not stack and the floorplan failed)."""
+    from anyhome.plan.program import STAIRWELL_AREA_M2
+
+    for seed in (0, 1):
+        spec = plan("A 150 m2 three-storey townhouse with four bedrooms", seed)
+        wells = [r for r in spec.rooms if r.type == "stairwell"]
+        assert len(wells) == 3
+        assert all(r.area_m2 == pytest.approx(STAIRWELL_AREA_M2) for r in wells), [r.area_m2 for r in wells]
+
+
+def test_a_stated_total_of_several_storeys_is_built():
+    spec = plan("A 150 m2 three-storey townhouse with four bedrooms", 1)
+    area = built_area_m2(spec, stage_rngs(1)["floorplan"])
+    assert area is not None and abs(area - 150.0) <= 0.15 * 150.0, area
+
+
+def test_a_tiny_home_is_built_tiny():
+    """A size word's range holds in the built house too (the solver grew this one to
+    48 m2 before)."""
+    for seed in (0, 1):
+        spec = plan("A tiny home for two with a sleeping loft and a reading nook", seed)
+        area = built_area_m2(spec, stage_rngs(seed)["floorplan"])
+        assert area is not None and area <= 45.0, (seed, area)

@@ -183,8 +183,8 @@ def test_any_stated_home_total_is_met_or_explained(m2, word):
     spec = plan(f"a {m2} m2 {word}")
     area = built_area_m2(spec, stage_rngs(0)["floorplan"])
     assert area is not None
-    err = abs(area - m2) / m2
-    assert err <= 0.10 or any(f"stated {m2} m2" in w for w in spec.warnings), (total(spec), spec.warnings)
+    err = abs(area - m2) / m2  # the built house, within issue 13's 15 %
+    assert err <= 0.15 or any(f"stated {m2} m2" in w for w in spec.warnings), (area, total(spec), spec.warnings)
 
 
 # ------------------------------------------------------------------ kinds and diversity

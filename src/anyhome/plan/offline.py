@@ -142,8 +142,13 @@ class OfflinePlanner:
              "palette": look.palette, "rooms": specs, "connections": connections, "warnings": warnings},
             context=kb_context(kb),
         )
-        if parsed.total_m2 is not None and not any(sz.what in w for w in warnings):
-            spec = calibrate_total(kb, spec, slots, float(parsed.total_m2), np.random.default_rng(int(rng.integers(2**32))))
+        if sz.band is not None and sz.source in ("stated", "word") and not any(sz.what in w for w in warnings):
+            if parsed.total_m2 is not None:  # aim at the stated figure itself
+                t = float(parsed.total_m2)
+                band = (t * (1 - CALIBRATION_TOLERANCE), t * (1 + CALIBRATION_TOLERANCE))
+            else:  # "a tiny cabin": anywhere in the word's range
+                band = sz.band
+            spec = calibrate_total(kb, spec, slots, band, np.random.default_rng(int(rng.integers(2**32))))
         return spec
 
 
@@ -152,7 +157,8 @@ CALIBRATION_PROBES = 2
 CALIBRATION_ROUNDS = 3
 """Most rounds of scaling the rooms towards a stated total."""
 CALIBRATION_TOLERANCE = 0.06
-"""A stated total is met when the probes' mean built area is within this fraction of it."""
+"""A stated total is met when the probes' mean built area is within this fraction of it
+(the bar is 15 %: one layout differs from the probes' mean)."""
 
 
 def built_area_m2(spec: HouseSpec, rng: np.random.Generator) -> float | None:
@@ -170,15 +176,19 @@ def built_area_m2(spec: HouseSpec, rng: np.random.Generator) -> float | None:
     return float(sum(Polygon(r.polygon).area for r in plan.rooms))
 
 
-def calibrate_total(kb: KnowledgeBase, spec: HouseSpec, slots: list[Slot], target_m2: float,
+def calibrate_total(kb: KnowledgeBase, spec: HouseSpec, slots: list[Slot], band: tuple[float, float],
                     rng: np.random.Generator) -> HouseSpec:
-    """The rooms' areas scaled so that the built house, not only the plan, holds the
-    stated total: the floorplan grows rooms to fill its footprint (a spine's rooms reach
-    the depth of their block) and may add a hallway, so the plan is laid out a few times
-    (:data:`CALIBRATION_PROBES` per round, ``rng``) and its rooms scaled by the stated
-    total over the mean built one, never below their type's ``min_area_m2`` (nor a room
-    whose area the text states, nor a stairwell). Up to :data:`CALIBRATION_ROUNDS`
-    rounds; the plan that came closest is kept."""
+    """The rooms' areas scaled so that the built house, not only the plan, lands in
+    ``band`` (m2: a stated total within :data:`CALIBRATION_TOLERANCE`, a size word's
+    range): the floorplan grows rooms to fill its footprint (a spine's rooms reach the
+    depth of their block) and may add a hallway, so the plan is laid out a few times
+    (:data:`CALIBRATION_PROBES` per round, ``rng``) and, when the mean built area falls
+    outside the band, its rooms are scaled by the band's nearest part over that mean
+    (the band's middle for a narrow band, otherwise 3 % inside its edge), never below
+    their type's ``min_area_m2`` (a room whose area the text states and the stairwells
+    keep theirs). Up to :data:`CALIBRATION_ROUNDS` rounds; the plan whose layouts came
+    closest is kept, and a scaled plan the solver cannot lay out is never kept."""
+    lo, hi = band
     best, best_err = spec, float("inf")
     keep = {s.id for s in slots if s.area_from == "stated" or s.key == STAIRWELL_KEY}
     types = kb.rooms.types
@@ -187,12 +197,14 @@ def calibrate_total(kb: KnowledgeBase, spec: HouseSpec, slots: list[Slot], targe
         if any(a is None for a in built):  # scaled too far for the solver: keep the last plan that laid out
             break
         mean = float(np.mean([a for a in built if a is not None]))
-        err = abs(mean - target_m2) / target_m2
+        err = max(lo - mean, mean - hi, 0.0) / max(lo, 1e-6)
         if err < best_err:
             best, best_err = spec, err
-        if err <= CALIBRATION_TOLERANCE:
+        if err == 0.0:
             break
-        f = target_m2 / mean
+        narrow = hi - lo <= 2 * CALIBRATION_TOLERANCE * (lo + hi) / 2
+        target = (lo + hi) / 2 if narrow else (lo * 1.03 if mean < lo else hi * 0.97)
+        f = target / mean
         rooms = []
         for r in spec.rooms:
             if r.id in keep:

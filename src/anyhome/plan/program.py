@@ -686,6 +686,7 @@ class Sizing:
     add: list[dict] = field(default_factory=list)
     circulation_share: float = 1.0
     scale: float = 1.0  # the size word's factor on every room's range
+    source: str = ""  # what set the band: "stated" | "word" | "kind" ("" without one)
 
 
 def _sizes(kb: KnowledgeBase) -> dict:
@@ -716,6 +717,7 @@ def sizing(kb: KnowledgeBase, parsed: Parsed, program: str | None) -> Sizing:
         t = float(parsed.total_m2)
         sz.band = (t * (1 - STATED_TOLERANCE), t * (1 + STATED_TOLERANCE))
         sz.what = f"the stated {t:.0f} m2"
+        sz.source = "stated"
         sz.stretch = max(sz.stretch, float(sizes.get("stated_stretch", sz.stretch)))  # the text says how big
     elif program in homes and word_band is not None:
         kt = kind.get("total_m2")
@@ -723,9 +725,11 @@ def sizing(kb: KnowledgeBase, parsed: Parsed, program: str | None) -> Sizing:
         if kt and max(lo, kt[0]) <= min(hi, kt[1]):  # "a grand mansion": both hold
             lo, hi = max(lo, kt[0]), min(hi, kt[1])
         sz.band = (float(lo), float(hi))
+        sz.source = "word"
     elif program in homes and kind.get("total_m2"):
         sz.band = (float(kind["total_m2"][0]), float(kind["total_m2"][1]))
         sz.what = f"a {parsed.building_word or 'home'}"
+        sz.source = "kind"
     compact = sizes.get("compact")
     asks_bedrooms = parsed.bedrooms or parsed.people or any(
         not m.negated and _slot_from_mention(kb, m, i).type == "bedroom" for i, m in enumerate(parsed.rooms)
@@ -743,6 +747,8 @@ def _least(kb: KnowledgeBase, s: Slot) -> float:
     (a booth, a cubicle)."""
     if s.area_from == "stated":  # "a 12 m2 bedroom" stays 12 m2
         return float(s.area_range[0])
+    if s.key == STAIRWELL_KEY:  # it holds its flight whatever the total
+        return STAIRWELL_AREA_M2
     return float(max(min(float(_type_info(kb, s.type)["min_area_m2"]), s.area_range[0]), s.need))
 
 
@@ -750,6 +756,8 @@ def _most(kb: KnowledgeBase, s: Slot, sz: Sizing) -> float:
     """Largest area the room may grow to; circulation never grows to fill a total."""
     if s.area_from == "stated":
         return float(s.area_range[1])
+    if s.key == STAIRWELL_KEY:
+        return STAIRWELL_AREA_M2
     if _type_info(kb, s.type).get("circulation"):
         return max(s.area, s.area_range[1])
     return float(min(s.area_range[1] * sz.stretch, AREA_LIMITS_M2[1]))
@@ -876,7 +884,10 @@ def fit_areas(kb: KnowledgeBase, slots: list[Slot], sz: Sizing, warnings: list[s
     for s in slots:
         if s.area_from != "stated":
             s.area = max(s.area, s.need)
-    circ = [s for s in slots if _type_info(kb, s.type).get("circulation")]
+    for s in slots:
+        if s.key == STAIRWELL_KEY:  # a stairwell holds its flight: never capped nor scaled
+            s.area = STAIRWELL_AREA_M2
+    circ = [s for s in slots if _type_info(kb, s.type).get("circulation") and s.key != STAIRWELL_KEY]
     total = sum(s.area for s in slots)
     if circ and sz.circulation_share < 1.0:
         cap = sz.circulation_share * total
