@@ -221,16 +221,18 @@ def _shortest_hall(
     children: list[list[int]], prog: Program, rng: np.random.Generator,
 ) -> tuple[tuple[int, Column, Sides, list[list[list[int]]], bool] | None, Sides, list[int], list[list[list[int]]]]:
     """The end of the spine: the split of its blocks between the two sides (the drawn
-    one first, then every other, up to ``spine_hall_splits``) whose hall, closed by an
-    end room (:func:`_end_room`), is shortest; the drawn split unchanged when none closes."""
+    one first, then others, up to ``spine_hall_splits``, for halls of at most
+    ``spine_hall_split_max_blocks`` blocks) whose hall, closed by an end room
+    (:func:`_end_room`), is shortest; the drawn split unchanged when none closes."""
     side_depth, widths = _sized(sides, s, depth, prog)
     best = _end_room(s, root, spine, sides, widths, side_depth, children, prog)
     out = (best, best[2], side_depth, best[3]) if best else (None, sides, side_depth, widths)
     soft = _cells(prog.options.spine_corridor_soft_length_m, prog)
     if prog.types[s] not in CORRIDOR_TYPES or len(blocks) < 2 or (best and best[0] <= soft):
         return out
-    masks = list(range(1, 2 ** len(blocks) - 1))
-    rng.shuffle(masks)
+    if len(blocks) > prog.options.spine_hall_split_max_blocks:
+        return out
+    masks = rng.permutation(np.arange(1, 2 ** len(blocks) - 1)).tolist()
     for mask in masks[: prog.options.spine_hall_splits]:
         if out[0] is not None and out[0][0] <= soft:
             break
