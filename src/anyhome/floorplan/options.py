@@ -220,6 +220,8 @@ class FloorplanOptions:
     """Each step deepens the side by this share of its base depth."""
     spine_hall_splits: int = _opt(12, 0, 100_000)
     """Splits of a hall's rooms between its two sides tried for the shortest hall (an end room closing it)."""
+    spine_hall_split_max_blocks: int = _opt(8, 0, 30)
+    """Halls with more blocks of rooms than this keep the drawn split (a long hall of a hotel floor: too many splits, little to gain)."""
     spine_aspect_min: float = _opt(1.0, 1.0, 20.0)
     """Least long/short side ratio of a spine room that has no blocks to size it."""
     spine_aspect_max: float = _opt(1.5, 1.0, 20.0)

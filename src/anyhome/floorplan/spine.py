@@ -55,9 +55,8 @@ def spine_owner(prog: Program, rng: np.random.Generator) -> np.ndarray | str:
         if s == spine[-1]:
             end, sides, side_depth, widths = _shortest_hall(s, root, spine, blocks[s], sides, depth, children, prog, rng)
         over = None
-        first, last = s == spine[0] and len(spine) > 1, s == spine[-1] and s != spine[0] and not end
-        if (first or last) and not prog.habitable(s):
-            over = _overhang(s, sides, widths, children, prog, rng, at_start=first)
+        if s == spine[0] and len(spine) > 1 and not prog.habitable(s):
+            over = _overhang(s, sides, widths, children, prog, rng)
             if over:
                 sides, widths = over[1], over[2]
         lengths = [sum(sum(bw) for bw in side) for side in widths]
@@ -71,9 +70,7 @@ def spine_owner(prog: Program, rng: np.random.Generator) -> np.ndarray | str:
         d = _hall_width(prog) if end else _spine_depth(prog, s, seg_len)
         y0 = -(d // 2)
         rects[s] = (x, y0, x + (own_len if end else seg_len), y0 + d)
-        align_end = (rng.random() < 0.5 and not end) or bool(over and first)
-        if over and not first:  # the last spine room's blocks reach out past its end
-            align_end = False
+        align_end = (rng.random() < 0.5 and not end) or bool(over)
         for side_i, (side, side_w) in enumerate(zip(sides, widths)):
             slack = seg_len - lengths[side_i]  # negative where the blocks reach out past its start
             if not window_gap and not end and not over:
@@ -224,16 +221,18 @@ def _shortest_hall(
     children: list[list[int]], prog: Program, rng: np.random.Generator,
 ) -> tuple[tuple[int, Column, Sides, list[list[list[int]]], bool] | None, Sides, list[int], list[list[list[int]]]]:
     """The end of the spine: the split of its blocks between the two sides (the drawn
-    one first, then every other, up to ``spine_hall_splits``) whose hall, closed by an
-    end room (:func:`_end_room`), is shortest; the drawn split unchanged when none closes."""
+    one first, then others, up to ``spine_hall_splits``, for halls of at most
+    ``spine_hall_split_max_blocks`` blocks) whose hall, closed by an end room
+    (:func:`_end_room`), is shortest; the drawn split unchanged when none closes."""
     side_depth, widths = _sized(sides, s, depth, prog)
     best = _end_room(s, root, spine, sides, widths, side_depth, children, prog)
     out = (best, best[2], side_depth, best[3]) if best else (None, sides, side_depth, widths)
     soft = _cells(prog.options.spine_corridor_soft_length_m, prog)
     if prog.types[s] not in CORRIDOR_TYPES or len(blocks) < 2 or (best and best[0] <= soft):
         return out
-    masks = list(range(1, 2 ** len(blocks) - 1))
-    rng.shuffle(masks)
+    if len(blocks) > prog.options.spine_hall_split_max_blocks:
+        return out
+    masks = rng.permutation(np.arange(1, 2 ** len(blocks) - 1)).tolist()
     for mask in masks[: prog.options.spine_hall_splits]:
         if out[0] is not None and out[0][0] <= soft:
             break
@@ -278,21 +277,19 @@ def _packed(
 
 def _overhang(
     s: int, sides: Sides, widths: list[list[list[int]]], children: list[list[int]], prog: Program, rng,
-    at_start: bool = True,
 ) -> tuple[int, Sides, list[list[list[int]]]] | None:
-    """The first (``at_start``) or last spine room, where nothing lies beyond its start or
-    end, kept to its own length, its blocks reaching out past it: (its length, sides,
-    widths), each side's blocks ordered (and mirrored) so their doors on it come next to
-    the rest of the spine; None where that is no shorter than the length its blocks
-    would stretch it to."""
+    """The first spine room (nothing lies beyond its start) kept to its own length, its
+    blocks reaching out past its start: (its length, sides, widths), each side's blocks
+    ordered and mirrored so their doors on it come at its far end; None where that is
+    no shorter than the length its blocks would stretch it to."""
     need = _cells(prog.options.shared_wall_min_m, prog)
     out_sides: list[list[list[Column]]] = [[], []]
     out_widths: list[list[list[int]]] = [[], []]
     reach = need
     for i in (0, 1):
         blocks, bws, r = _packed(sides[i], widths[i], s, children, need)
-        out_sides[i] = [b[::-1] for b in reversed(blocks)] if at_start else blocks
-        out_widths[i] = [w[::-1] for w in reversed(bws)] if at_start else bws
+        out_sides[i] = [b[::-1] for b in reversed(blocks)]
+        out_widths[i] = [w[::-1] for w in reversed(bws)]
         reach = max(reach, r)
     natural = need if prog.types[s] in CORRIDOR_TYPES else _spine_length(prog, s, 0, rng)
     own = max(reach, natural)
