@@ -176,14 +176,31 @@ def test_levels_joined_by_stairs(kb) -> None:
 def test_signature_overlap() -> None:
     a = [(3.5, 4.0), (3.5, 4.0), (1.5, 2.0)]
     assert signature_overlap(a, a) == 1.0
-    assert signature_overlap(a, [(3.5, 4.5), (4.0, 4.0)]) == 1.0  # both small rooms match one of a's
-    assert signature_overlap(a, [(3.5, 4.0)] * 1 + [(9.0, 9.0)]) == 0.5
+    # both of the two-room plan's rooms match one of a's: all of the smaller, 2/3 of the larger
+    b = [(3.5, 4.5), (4.0, 4.0)]
+    assert signature_overlap(a, b, of="smaller") == 1.0
+    assert signature_overlap(a, b) == pytest.approx(2 / 3)
+    assert signature_overlap(a, [(3.5, 4.0)] * 1 + [(9.0, 9.0)], of="smaller") == 0.5
     assert signature_overlap(a, [(6.0, 6.0)]) == 0.0
     assert signature_overlap([], a) == 0.0
     # each room is matched once: two (3.5, 4) rooms cannot both use one partner
-    assert signature_overlap([(3.5, 4.0), (3.5, 4.0)], [(3.5, 4.0), (8.0, 8.0), (9.0, 9.0)]) == 0.5
-    assert signatures_share_most(a, [(3.5, 4.0), (3.5, 4.0), (1.5, 2.0), (7.0, 8.0)])
+    assert signature_overlap([(3.5, 4.0), (3.5, 4.0)], [(3.5, 4.0), (8.0, 8.0), (9.0, 9.0)], of="smaller") == 0.5
+    # sides are compared as they are, within 0.5 m: 3.26 and 3.74 coincide, 3.24 and 3.76 do not
+    # (rounding both to 0.5 m first would have made 3.26 and 4.24 coincide)
+    assert signature_overlap([(3.26, 4.0)], [(3.74, 4.0)]) == 1.0
+    assert signature_overlap([(3.24, 4.0)], [(3.76, 4.0)]) == 0.0
+    assert signature_overlap([(3.26, 4.0)], [(4.24, 4.0)]) == 0.0
+
+
+def test_share_most_counts_the_rooms_of_both_plans() -> None:
+    a = [(3.5, 4.0), (3.5, 4.0), (1.5, 2.0)]
+    assert signatures_share_most(a, [(3.5, 4.0), (3.5, 4.0), (1.5, 2.0), (7.0, 8.0)])  # 3 of 4, 3 of 3
     assert not signatures_share_most(a, [(3.5, 4.0), (7.0, 8.0), (9.0, 9.0)])
+    # a one-room studio whose room is one of a ten-room house's is not that house's plan
+    studio = [(3.5, 4.0)]
+    house = [(3.5, 4.0)] + [(2.0 + 0.6 * i, 5.0) for i in range(9)]
+    assert signatures_share_most(studio, house, of="smaller")
+    assert not signatures_share_most(studio, house)
 
 
 def test_an_invalid_polygon_is_left_out(kb) -> None:

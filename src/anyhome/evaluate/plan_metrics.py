@@ -44,8 +44,9 @@ overhang
     Area of the rooms of each storey above the ground floor that lies over no room of
     the storey below (:func:`overhang_m2`).
 signature
-    The sorted (short side, long side) of every room's minimum rotated rectangle,
-    rounded to 0.5 m; :func:`signature_overlap` says how much two signatures coincide.
+    The sorted (short side, long side) of every room's minimum rotated rectangle, in
+    metres to the centimetre; :func:`signature_overlap` says how much two signatures
+    coincide (two rooms coincide when each side is within 0.5 m of the other's).
 footprint shape, courtyards
     See :mod:`anyhome.evaluate.footprint`: the ground level's building outline as
     rectangle, L, T, U, step, courtyard or other; for each courtyard, the share of its
@@ -104,8 +105,15 @@ MIC_TOL_M = 0.001
 """Tolerance of the maximum-inscribed-circle search."""
 RECTANGLE_FILL = 0.98
 """A polygon filling this share of its minimum rotated rectangle counts as a rectangle."""
-SIGNATURE_STEP_M = 0.5
-"""Room sizes of a signature are rounded to this."""
+SIGNATURE_DECIMALS = 2
+"""Room sides of a signature are kept to this many decimals (centimetres)."""
+SIGNATURE_TOL_M = 0.5
+"""Two rooms of two signatures coincide when each side is within this of the other's.
+(Until 2026-11-24 sides were first rounded to 0.5 m, which let sides up to about 1 m
+apart coincide: twice the tolerance stated.)"""
+REUSE_SHARE = 0.7
+"""Two plans "share most of their room sizes" when this share of EACH plan's rooms has a
+coinciding room in the other."""
 
 TINY_MAX_M2 = 45.0
 """A "tiny" home has at most this total area."""
@@ -331,15 +339,15 @@ def corridor_length_m(poly: Polygon) -> float:
     return quarter + math.sqrt(disc) if disc >= 0 else long
 
 
-def _snap(x: float) -> float:
-    return round(x / SIGNATURE_STEP_M) * SIGNATURE_STEP_M
-
-
 def signature_overlap(a: Sequence[Sequence[float]], b: Sequence[Sequence[float]],
-                      tol_m: float = SIGNATURE_STEP_M) -> float:
-    """Share of the smaller of two signatures whose rooms have a partner in the other
-    (short and long side each within ``tol_m``), each room matched at most once (a
-    maximum bipartite matching); 0.0 when either is empty."""
+                      tol_m: float = SIGNATURE_TOL_M, of: str = "larger") -> float:
+    """Share of the rooms of the ``of`` ("larger" or "smaller") of two signatures that
+    have a partner in the other (short and long side each within ``tol_m``), each room
+    matched at most once (a maximum bipartite matching); 0.0 when either is empty.
+
+    "larger" is the share of both plans' rooms that coincide (the matching pairs rooms,
+    so it is the least of the two plans' shares); "smaller" lets a one-room studio
+    "share most of its rooms" with any house holding a room of its size."""
     small, big = (a, b) if len(a) <= len(b) else (b, a)
     if not small:
         return 0.0
@@ -358,7 +366,7 @@ def signature_overlap(a: Sequence[Sequence[float]], b: Sequence[Sequence[float]]
         return False
 
     n = sum(augment(i, set()) for i in range(len(small)))
-    return n / len(small)
+    return n / (len(big) if of == "larger" else len(small))
 
 
 # ---------------------------------------------------------------------- metrics
@@ -443,7 +451,7 @@ def plan_metrics(house: House, kb: KnowledgeBase) -> PlanMetrics:
             habitable=is_habitable(r.type), circulation=circ,
             open_air=_is_open_air(r, kb), has_ceiling=_has_ceiling(r),
         ))
-        signature.append((_snap(short), _snap(long)))
+        signature.append((round(short, SIGNATURE_DECIMALS), round(long, SIGNATURE_DECIMALS)))
     total = sum(m.area_m2 for m in rooms)
     circ_area = sum(m.area_m2 for m in rooms if m.circulation)
     habitable = [m for m in rooms if m.habitable]
@@ -500,6 +508,7 @@ def _courtyard_shares(house: House, usable: dict[str, Polygon], kb: KnowledgeBas
 
 
 def signatures_share_most(a: Iterable[Sequence[float]], b: Iterable[Sequence[float]],
-                          share: float = 0.7) -> bool:
-    """Two signatures "mostly coincide": at least ``share`` of the smaller matches."""
-    return signature_overlap(list(a), list(b)) >= share
+                          share: float = REUSE_SHARE, of: str = "larger") -> bool:
+    """Two signatures "mostly coincide": at least ``share`` of the rooms of each (of the
+    smaller one with ``of="smaller"``) have a coinciding room in the other."""
+    return signature_overlap(list(a), list(b), of=of) >= share
