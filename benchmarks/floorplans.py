@@ -19,7 +19,8 @@ Definitions (see also anyhome/evaluate/plan_metrics.py):
   signatures mostly coincide: at least 70 % of the rooms of EACH house match a room of
   the other (short and long side each within 0.5 m, each room matched once). The table
   also gives the looser figure over the smaller house's rooms only (a one-room studio
-  whose room matches one of a mansion's counts there);
+  whose room matches one of a mansion's counts there), and the same figure for pairs of
+  seeds of ONE prompt (how much the seed changes the plan);
 - courtyards inside the footprint, footprint shapes: see
   anyhome/evaluate/footprint.py (a courtyard is inside when less than 30 % of its
   perimeter lies on its level's outline: rooms on at least three sides);
@@ -133,6 +134,8 @@ def summarise(name: str, rows: list[tuple[str, int, PlanMetrics, int]], fp_times
         verdicts[key] = (sum(vs), len(vs))
     pairs = [(a, b) for a, b in itertools.combinations(rows, 2) if a[0] != b[0]]
     shared = sum(signatures_share_most(a[2].signature, b[2].signature) for a, b in pairs)
+    same = [(a, b) for a, b in itertools.combinations(rows, 2) if a[0] == b[0]]
+    same_shared = sum(signatures_share_most(a[2].signature, b[2].signature) for a, b in same)
     shared_small = sum(signatures_share_most(a[2].signature, b[2].signature, of="smaller") for a, b in pairs)
     return {
         "set": name,
@@ -159,6 +162,8 @@ def summarise(name: str, rows: list[tuple[str, int, PlanMetrics, int]], fp_times
         "reuse_pairs": shared,
         "reuse_share": shared / len(pairs) if pairs else 0.0,
         "reuse_pairs_smaller": shared_small,
+        "seed_pairs": len(same),
+        "seed_pairs_shared": same_shared,
         "max_levels": max((p.levels for p in plans), default=1),
         "multi_level": sum(p.levels > 1 for p in plans),
         "overhanging": sum(p.overhang_m2 > OVERHANG_TOL_M2 for p in plans),
@@ -234,8 +239,10 @@ def table(results: list[dict[str, Any]], seeds: list[int]) -> str:
     row('"mansion"/"grand" homes >= 300 m2 (met/asked)', "all", lambda r: _frac(*r["verdicts"]["mansion_ok"]))
     row("pairs of different prompts sharing most room sizes", "<= 3 %",
         lambda r: f"{100 * r['reuse_share']:.1f} % ({r['reuse_pairs']}/{r['pairs']})")
-    row("... most of the smaller house's room sizes", "",
+    row("... different prompts, most of the smaller house's room sizes", "",
         lambda r: f"{100 * r['reuse_pairs_smaller'] / max(r['pairs'], 1):.1f} % ({r['reuse_pairs_smaller']}/{r['pairs']})")
+    row("pairs of seeds of one prompt sharing most room sizes", "",
+        lambda r: _frac(r["seed_pairs_shared"], r["seed_pairs"]))
     row(f"courtyards inside the footprint (< {100 * INSIDE_MAX_SHARE:.0f} % of the perimeter on the outline)", "",
         lambda r: _frac(r["courtyards_inside"], r["courtyards"]))
     row("courtyards with rooms on every side", "", lambda r: _frac(r["courtyards_enclosed"], r["courtyards"]))
