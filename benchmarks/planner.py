@@ -36,9 +36,8 @@ import yaml
 from anyhome.evaluate import evaluate_house, load_expectations
 from anyhome.house import is_habitable
 from anyhome.pipeline import generate
-from anyhome.plan import concepts
+from anyhome.plan import concepts, get_planner
 from anyhome.plan.embed import ENV_BACKEND, available_backends, get_embedder
-from anyhome.plan.offline import OfflinePlanner
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
@@ -96,7 +95,7 @@ def plan_times(backend: str, prompts: list[str]) -> dict:
         concepts.index(kind, backend)
     load_s = emb.load_s + time.perf_counter() - t0
     os.environ[ENV_BACKEND] = backend  # the planner asks get_embedder() for its backend
-    planner = OfflinePlanner()
+    planner = get_planner("offline")
     times = []
     for text in prompts:
         t = time.perf_counter()

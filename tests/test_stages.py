@@ -5,6 +5,7 @@ from __future__ import annotations
 from dataclasses import fields, replace
 
 import pytest
+from shapely.geometry import Polygon
 
 import anyhome
 from anyhome.errors import AnyHomeError, PlanError
@@ -89,3 +90,30 @@ def test_a_replaced_plan_and_layout_stage() -> None:
     assert house.style == "gothic" and house.plan["style"] == "gothic"
     assert house.objects == [] and house.dropped == []
     assert [r.id for r in house.rooms] == [r.id for r in anyhome.generate(TEXTS[1]).rooms]
+
+
+def test_the_planner_meets_a_stated_total_with_the_run_s_floorplan_stage() -> None:
+    """The plan stage lays its plan out with the run's floorplan stage (passed in, never
+    imported by the planner): a stage that builds 20 % larger houses gets smaller rooms
+    planned, and its house still lands near the stated total."""
+    calls: list[int] = []
+
+    def larger(spec, rng):
+        calls.append(1)
+        plan = solve_levels(spec, rng)
+        for r in plan.rooms:
+            r.polygon = [(1.2 ** 0.5 * x, 1.2 ** 0.5 * y) for x, y in r.polygon]
+        return plan
+
+    text = "a 60 m2 two-bedroom apartment"
+    spec = get_planner("offline").plan(text, stage_rngs(0)["plan"])
+    run = get_planner("offline", floorplan=larger)
+    scaled = run.plan(text, stage_rngs(0)["plan"])
+    assert calls, "the planner never laid its plan out with the stage it was given"
+    assert sum(r.area_m2 for r in scaled.rooms) < 0.92 * sum(r.area_m2 for r in spec.rooms)
+    built = sum(Polygon(r.polygon).area for r in larger(scaled, stage_rngs(0)["floorplan"]).rooms)
+    assert built == pytest.approx(60, rel=0.15)
+    # the same stage reaches the planner through generate's Stages
+    calls.clear()
+    anyhome.generate(text, seed=0, stages=Stages(floorplan=larger))
+    assert len(calls) > 1  # the plan's probes, then the floorplan stage itself

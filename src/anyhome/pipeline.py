@@ -104,7 +104,7 @@ def generate(
     seed = _check_seed(seed)
     stages = stages or Stages()
     kb = _knowledge(knowledge)
-    planner = get_planner(planner, kb) if isinstance(planner, str) else planner
+    planner = get_planner(planner, kb, stages.floorplan) if isinstance(planner, str) else planner
     timings: dict[str, float] = {}
     with _stage("plan", timings, progress):
         spec = stages.plan(text, stage_rngs(seed)["plan"], planner)

@@ -14,7 +14,7 @@ from shapely.geometry import Polygon
 from anyhome.evaluate.plan_metrics import LONG_ASPECT, corridor_length_m, min_width_m, rect_sides_m
 from anyhome.floorplan.solver import solve_floorplan
 from anyhome.house import is_habitable
-from anyhome.plan.offline import OfflinePlanner
+from anyhome.plan import get_planner
 from anyhome.plan.spec import HouseSpec, RoomSpec
 
 SMALL_HOME_CORRIDOR_M = 8.0
@@ -45,7 +45,7 @@ def _problems(fp) -> list[str]:
     ],
 )
 def test_small_homes_have_short_halls_and_no_strips(prompt):
-    planner = OfflinePlanner()
+    planner = get_planner("offline")
     for seed in range(3):
         spec = planner.plan(prompt, np.random.default_rng(seed))
         fp = solve_floorplan(spec, np.random.default_rng(seed))
@@ -92,7 +92,7 @@ CIRCULATION_SHARE_P90 = 0.18
 def test_an_entry_is_not_stretched_along_the_rooms_beside_it(seed):
     """A mudroom whose one neighbour leads on to three more rooms stays a mudroom, not a
     corridor as long as those rooms."""
-    spec = OfflinePlanner().plan(
+    spec = get_planner("offline").plan(
         "A ranch house with a mudroom, a laundry room, a kitchen, a living room and two bedrooms.",
         np.random.default_rng(seed),
     )

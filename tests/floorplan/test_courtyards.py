@@ -13,22 +13,22 @@ from anyhome.floorplan.grid import FREE, OUTSIDE
 from anyhome.floorplan.options import FloorplanOptions
 from anyhome.floorplan.walls import wall_runs
 from anyhome.floorplan.windows import free_slots
+from anyhome.plan import get_planner
 from anyhome.plan.knowledge import knowledge_base
-from anyhome.plan.offline import OfflinePlanner
 from tests.floorplan.test_solver import check_floorplan
 
 KB = knowledge_base()
 
 
 def _plan(text: str, seed: int):
-    spec = OfflinePlanner(KB).plan(text, np.random.default_rng(seed))
+    spec = get_planner("offline", KB).plan(text, np.random.default_rng(seed))
     return spec, solve_floorplan(spec, np.random.default_rng(seed))
 
 
 @pytest.mark.parametrize("text", ["a riad", "an atrium house", "a monastery"])
 def test_courtyard_buildings_have_a_courtyard(text: str) -> None:
     """The knowledge says these buildings are built around an open court."""
-    spec = OfflinePlanner(KB).plan(text, np.random.default_rng(0))
+    spec = get_planner("offline", KB).plan(text, np.random.default_rng(0))
     courts = [r for r in spec.rooms if r.type == "courtyard"]
     assert len(courts) == 1 and courts[0].open_air
 

@@ -7,15 +7,15 @@ import numpy as np
 import pytest
 
 from anyhome.errors import KnowledgeError
+from anyhome.plan import get_planner
 from anyhome.plan.knowledge import knowledge_base
-from anyhome.plan.offline import OfflinePlanner
 from anyhome.plan.spec import RoomSpec
 
 pytestmark = pytest.mark.usefixtures("no_knowledge_overlay")  # tests/conftest.py
 
 
 def _plan(text: str, seed: int = 0):
-    return OfflinePlanner().plan(text, np.random.default_rng(seed))
+    return get_planner("offline").plan(text, np.random.default_rng(seed))
 
 
 def test_every_type_has_a_height_and_open_air_types_are_not_habitable() -> None:

@@ -11,18 +11,18 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from anyhome.plan import get_planner
 from anyhome.plan.offline import (
     MAX_HOUSE_OBJECTS,
     MAX_ROOM_AREA_M2,
     MAX_ROOM_OBJECTS,
-    OfflinePlanner,
 )
 from anyhome.plan.parse import parse, rewrite_numbers
 from anyhome.plan.spec import MAX_COUNT, MAX_ROOMS, HouseSpec, ItemSpec, RoomSpec
 
 
 def plan(text, seed=0):
-    return OfflinePlanner().plan(text, np.random.default_rng(seed))
+    return get_planner("offline").plan(text, np.random.default_rng(seed))
 
 
 def objects_in(room):

@@ -9,7 +9,7 @@ from public_prompts import PUBLIC_PROMPTS
 
 from anyhome.errors import PlanError
 from anyhome.house import ROOM_TYPES
-from anyhome.plan.offline import OfflinePlanner
+from anyhome.plan import get_planner
 from anyhome.plan.spec import MAX_ROOMS, HouseSpec
 
 PUBLIC = [json.loads(line) for line in PUBLIC_PROMPTS.read_text().splitlines() if line.strip()]
@@ -17,7 +17,7 @@ TEXTS = [p["prompt"] for p in PUBLIC]
 
 
 def plan(text, seed=0):
-    return OfflinePlanner().plan(text, np.random.default_rng(seed))
+    return get_planner("offline").plan(text, np.random.default_rng(seed))
 
 
 def _connected(h: HouseSpec) -> bool:

@@ -8,14 +8,14 @@ import copy
 import pytest
 
 from anyhome.errors import KnowledgeError
+from anyhome.plan import get_planner
 from anyhome.plan.kb import KnowledgeBase
 from anyhome.plan.knowledge import KNOWLEDGE_FILES, knowledge_base, load
-from anyhome.plan.offline import OfflinePlanner
 from anyhome.plan.program import open_air_word
 from anyhome.stages import stage_rngs
 
 KB = knowledge_base()
-PLANNER = OfflinePlanner()
+PLANNER = get_planner("offline")
 
 
 def plan(text: str, seed: int = 0):

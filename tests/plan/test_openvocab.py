@@ -3,14 +3,14 @@
 import numpy as np
 import pytest
 
-from anyhome.plan.offline import OfflinePlanner
+from anyhome.plan import get_planner
 from anyhome.plan.openvocab import find_object_phrases, first_noun_phrase
 from anyhome.plan.parse import _tokens, parse, parse_number
 from anyhome.plan.spec import MAX_COUNT
 
 
 def plan(text, seed=0):
-    return OfflinePlanner().plan(text, np.random.default_rng(seed))
+    return get_planner("offline").plan(text, np.random.default_rng(seed))
 
 
 def items(room):

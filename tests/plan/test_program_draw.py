@@ -7,11 +7,13 @@ import statistics
 
 import pytest
 
-from anyhome.plan.offline import OfflinePlanner, built_area_m2
+from anyhome.floorplan.levels import solve_levels
+from anyhome.plan import get_planner
+from anyhome.plan.offline import built_area_m2
 from anyhome.plan.parse import parse
 from anyhome.stages import stage_rngs
 
-PLANNER = OfflinePlanner()
+PLANNER = get_planner("offline")
 
 
 def plan(text: str, seed: int = 0):
@@ -29,7 +31,7 @@ def plan(text: str, seed: int = 0):
 def test_the_built_house_holds_the_stated_total(text, m2):
     for seed in (0, 1):
         spec = plan(text, seed)
-        area = built_area_m2(spec, stage_rngs(seed)["floorplan"])
+        area = built_area_m2(spec, stage_rngs(seed)["floorplan"], solve_levels)
         assert area is not None and abs(area - m2) <= 0.15 * m2, (seed, area, spec.warnings)
 
 
@@ -95,7 +97,7 @@ def test_a_stated_total_keeps_the_stairwells_whole():
 
 def test_a_stated_total_of_several_storeys_is_built():
     spec = plan("A 150 m2 three-storey townhouse with four bedrooms", 1)
-    area = built_area_m2(spec, stage_rngs(1)["floorplan"])
+    area = built_area_m2(spec, stage_rngs(1)["floorplan"], solve_levels)
     assert area is not None and abs(area - 150.0) <= 0.15 * 150.0, area
 
 
@@ -104,5 +106,5 @@ def test_a_tiny_home_is_built_tiny():
     48 m2 before)."""
     for seed in (0, 1):
         spec = plan("A tiny home for two with a sleeping loft and a reading nook", seed)
-        area = built_area_m2(spec, stage_rngs(seed)["floorplan"])
+        area = built_area_m2(spec, stage_rngs(seed)["floorplan"], solve_levels)
         assert area is not None and area <= 45.0, (seed, area)

@@ -5,9 +5,9 @@ from __future__ import annotations
 import pytest
 from pydantic import ValidationError
 
+from anyhome.plan import get_planner
 from anyhome.plan.appearance import look_for, room_materials, style_keys
 from anyhome.plan.knowledge import knowledge_base, load
-from anyhome.plan.offline import OfflinePlanner
 from anyhome.plan.spec import HouseSpec, RoomSpec
 
 STYLES = load("styles")["styles"]
@@ -20,7 +20,7 @@ def _room(**kw) -> RoomSpec:
 def test_offline_plan_carries_the_keys() -> None:
     import numpy as np
 
-    spec = OfflinePlanner().plan("a gothic victorian house with two bedrooms", np.random.default_rng(0))
+    spec = get_planner("offline").plan("a gothic victorian house with two bedrooms", np.random.default_rng(0))
     assert spec.styles == ["gothic", "victorian"]
     assert "gothic" in spec.style  # the words stay, for display
 

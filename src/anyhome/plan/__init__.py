@@ -11,6 +11,7 @@ from anyhome.plan.spec import GroupSpec, HouseSpec, ItemSpec, RoomSpec
 
 if TYPE_CHECKING:
     from anyhome.plan.kb import KnowledgeBase
+    from anyhome.plan.offline import FloorplanStage
 
 __all__ = ["GroupSpec", "HouseSpec", "ItemSpec", "Planner", "RoomSpec", "get_planner", "plan_house"]
 
@@ -26,18 +27,25 @@ class Planner(Protocol):
 PLANNERS = ("offline", "llm")
 
 
-def get_planner(name: str = "offline", kb: KnowledgeBase | None = None) -> Planner:
+def get_planner(name: str = "offline", kb: KnowledgeBase | None = None,
+                floorplan: FloorplanStage | None = None) -> Planner:
     """A planner by name, reading the knowledge base ``kb`` (None: the one in force);
-    "llm" takes its settings from the environment and config file."""
+    "llm" takes its settings from the environment and config file. ``floorplan`` is the
+    run's floorplan stage, which the planner lays plans out with to meet stated totals
+    (None: the default, ``anyhome.floorplan.levels.solve_levels``)."""
+    if floorplan is None:
+        from anyhome.floorplan.levels import solve_levels
+
+        floorplan = solve_levels
     if name == "offline":
         from anyhome.plan.offline import OfflinePlanner
 
-        return OfflinePlanner(kb)
+        return OfflinePlanner(kb, floorplan=floorplan)
     if name == "llm":
         from anyhome.floorplan import floorplan_errors
         from anyhome.plan.llm import LLMPlanner, load_config
 
-        return LLMPlanner(load_config(), floorplan_check=floorplan_errors, kb=kb)
+        return LLMPlanner(load_config(), floorplan_check=floorplan_errors, kb=kb, floorplan=floorplan)
     raise PlanError(f"unknown planner {name!r} (available: {', '.join(PLANNERS)})")
 
 

@@ -12,12 +12,13 @@ the same plan. The knowledge lives in YAML files under ``knowledge/``
 from __future__ import annotations
 
 import logging
+from collections.abc import Callable
 from typing import Any
 
 import numpy as np
 
 from anyhome.errors import PlanError
-from anyhome.house import is_habitable
+from anyhome.house import Floorplan, is_habitable
 from anyhome.plan import furnish as fu
 from anyhome.plan.appearance import Look, choose_look, item_material, room_materials
 from anyhome.plan.heights import RoomHeight, room_heights
@@ -78,14 +79,26 @@ MAX_HOUSE_OBJECTS = 400
 about 180), so that generation stays within seconds."""
 
 
+FloorplanStage = Callable[[HouseSpec, np.random.Generator], Floorplan]
+"""floorplan(spec, rng) -> Floorplan: the run's floorplan stage (``Stages.floorplan``)."""
+
+
 class OfflinePlanner:
     """Plans a house from text with the knowledge base ``kb`` (None: the one in force
-    when the planner is made: shipped files, ``$ANYHOME_KNOWLEDGE_PATH``, ``--knowledge``)."""
+    when the planner is made: shipped files, ``$ANYHOME_KNOWLEDGE_PATH``, ``--knowledge``).
+
+    ``floorplan`` is the floorplan stage a plan is laid out with to meet a stated total
+    ("a 50 m2 flat") or a size word ("tiny", "grand") in the built house
+    (:func:`calibrate_total`); whoever builds the planner passes the run's stage
+    (``anyhome.plan.get_planner``, ``anyhome.generate``). None: the totals are met by the
+    planned room areas only, which the floorplan stage grows (halls, rooms reaching the
+    depth of their block)."""
 
     name = "offline"
 
-    def __init__(self, kb: KnowledgeBase | None = None) -> None:
+    def __init__(self, kb: KnowledgeBase | None = None, floorplan: FloorplanStage | None = None) -> None:
         self.kb = resolve(kb)
+        self.floorplan = floorplan
 
     def plan(self, text: str, rng: np.random.Generator) -> HouseSpec:
         kb = self.kb
@@ -142,13 +155,15 @@ class OfflinePlanner:
              "palette": look.palette, "rooms": specs, "connections": connections, "warnings": warnings},
             context=kb_context(kb),
         )
-        if sz.band is not None and sz.source in ("stated", "word") and not any(sz.what in w for w in warnings):
+        if (self.floorplan is not None and sz.band is not None and sz.source in ("stated", "word")
+                and not any(sz.what in w for w in warnings)):
             if parsed.total_m2 is not None:  # aim at the stated figure itself
                 t = float(parsed.total_m2)
                 band = (t * (1 - CALIBRATION_TOLERANCE), t * (1 + CALIBRATION_TOLERANCE))
             else:  # "a tiny cabin": anywhere in the word's range
                 band = sz.band
-            spec = calibrate_total(kb, spec, slots, band, np.random.default_rng(int(rng.integers(2**32))))
+            spec = calibrate_total(kb, spec, slots, band, np.random.default_rng(int(rng.integers(2**32))),
+                                   self.floorplan)
         return spec
 
 
@@ -161,26 +176,25 @@ CALIBRATION_TOLERANCE = 0.06
 (the bar is 15 %: one layout differs from the probes' mean)."""
 
 
-def built_area_m2(spec: HouseSpec, rng: np.random.Generator) -> float | None:
-    """Total floor area of ``spec`` as the default floorplan stage lays it out (all
-    storeys), or None when it cannot be laid out."""
+def built_area_m2(spec: HouseSpec, rng: np.random.Generator, floorplan: FloorplanStage) -> float | None:
+    """Total floor area of ``spec`` as ``floorplan`` lays it out (all storeys), or None
+    when it cannot be laid out."""
     from shapely.geometry import Polygon
 
     from anyhome.errors import AnyHomeError
-    from anyhome.floorplan.levels import solve_levels
 
     try:
-        plan = solve_levels(spec, rng)
+        plan = floorplan(spec, rng)
     except AnyHomeError:
         return None
     return float(sum(Polygon(r.polygon).area for r in plan.rooms))
 
 
 def calibrate_total(kb: KnowledgeBase, spec: HouseSpec, slots: list[Slot], band: tuple[float, float],
-                    rng: np.random.Generator) -> HouseSpec:
+                    rng: np.random.Generator, floorplan: FloorplanStage) -> HouseSpec:
     """The rooms' areas scaled so that the built house, not only the plan, lands in
     ``band`` (m2: a stated total within :data:`CALIBRATION_TOLERANCE`, a size word's
-    range): the floorplan grows rooms to fill its footprint (a spine's rooms reach the
+    range): ``floorplan`` grows rooms to fill its footprint (a spine's rooms reach the
     depth of their block) and may add a hallway, so the plan is laid out a few times
     (:data:`CALIBRATION_PROBES` per round, ``rng``) and, when the mean built area falls
     outside the band, its rooms are scaled by the band's nearest part over that mean
@@ -193,7 +207,7 @@ def calibrate_total(kb: KnowledgeBase, spec: HouseSpec, slots: list[Slot], band:
     keep = {s.id for s in slots if s.area_from == "stated" or s.key == STAIRWELL_KEY}
     types = kb.rooms.types
     for _ in range(CALIBRATION_ROUNDS):
-        built = [built_area_m2(spec, rng) for _ in range(CALIBRATION_PROBES)]
+        built = [built_area_m2(spec, rng, floorplan) for _ in range(CALIBRATION_PROBES)]
         if any(a is None for a in built):  # scaled too far for the solver: keep the last plan that laid out
             break
         mean = float(np.mean([a for a in built if a is not None]))

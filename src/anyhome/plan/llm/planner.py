@@ -53,7 +53,13 @@ from anyhome.plan.llm.schemas import (
     max_groups,
     max_ornaments,
 )
-from anyhome.plan.offline import OfflinePlanner, fallback_room, item_spec, offline_look
+from anyhome.plan.offline import (
+    FloorplanStage,
+    OfflinePlanner,
+    fallback_room,
+    item_spec,
+    offline_look,
+)
 from anyhome.plan.spec import MAX_ROOMS, RELATIVE_RULES, GroupSpec, HouseSpec, RoomSpec, kb_context
 from anyhome.sanitize import clean_text
 
@@ -151,14 +157,16 @@ class LLMPlanner:
     name = "llm"
 
     def __init__(self, config: LLMConfig, floorplan_check: FloorplanCheck | None = None,
-                 kb: KnowledgeBase | None = None) -> None:
+                 kb: KnowledgeBase | None = None, floorplan: FloorplanStage | None = None) -> None:
         """``floorplan_check(spec)`` lists why a program's rooms and connections cannot be
         laid out ([] when they can); the program reply is checked with it too. None skips
         that check: whoever builds the planner passes the floorplan stage's check (see
         ``anyhome.plan.get_planner`` and ``anyhome.floorplan.floorplan_errors``). ``kb``:
         the knowledge base the offline fallbacks and the reply checks read (None: the one in
-        force)."""
+        force). ``floorplan``: the floorplan stage the offline fallback meets stated totals
+        with (see :class:`~anyhome.plan.offline.OfflinePlanner`)."""
         self.config = config
+        self.floorplan = floorplan
         self.kb = resolve(kb)
         self.floorplan_check = floorplan_check
         self.client: LLMClient | None = None  # of the last run: usage for the summary
@@ -213,7 +221,7 @@ class LLMPlanner:
 
     # ------------------------------------------------------------------ the plan
     def plan(self, text: str, rng: np.random.Generator) -> HouseSpec:
-        offline = OfflinePlanner(self.kb).plan(text, rng)  # the fallback of every stage (raises on empty text)
+        offline = OfflinePlanner(self.kb, self.floorplan).plan(text, rng)  # the fallback of every stage (raises on empty text)
         seed = int(rng.integers(2**31 - 1))
         look = offline_look(self.kb, text, np.random.default_rng(seed))
         self.client = LLMClient(self.config, ReplyCache(self.config.cache_dir, enabled=self.config.cache))
