@@ -50,13 +50,18 @@ def layout_house(spec: HouseSpec, floorplan: Floorplan, rng: np.random.Generator
         ``dropped``, one entry per object copy that found no valid spot.
     """
     result = LayoutResult()
+    held = {h for r in floorplan.rooms for h in r.merged}
     for rs in spec.rooms:
+        if rs.id in held:  # laid out in the open-plan room that holds it
+            continue
         try:
             room = floorplan.room(rs.id)
         except KeyError:
             for item in _items(rs):
                 result.dropped.append(Dropped(room=rs.id, name=item.name, reason="room is missing from the floorplan"))
             continue
+        if room.merged:
+            rs = with_merged(rs, [r for r in spec.rooms if r.id in room.merged])
         if room.open_air:  # no ceiling to hang a chandelier, a fan or a pendant from
             rs, hung = _without_ceiling_hung(rs)
             result.dropped += [Dropped(room=rs.id, name=n, reason="an open-air room has no ceiling to hang it from")
@@ -76,6 +81,16 @@ def furnish_room(st: RoomState) -> None:
         else:
             arrangements.place_free(st, g)
     ornaments.place_ornaments(st)
+
+
+def with_merged(rs: RoomSpec, others: list[RoomSpec]) -> RoomSpec:
+    """The planned room ``rs`` holding the groups and ornaments of ``others`` too (an
+    open-plan room merged from several, :attr:`anyhome.house.Room.merged`): its own
+    groups first among those of the same priority."""
+    if not others:
+        return rs
+    return rs.model_copy(update={"groups": [*rs.groups, *(g for o in others for g in o.groups)],
+                                 "ornaments": [*rs.ornaments, *(o for other in others for o in other.ornaments)]})
 
 
 CEILING_HUNG = frozenset({"chandelier", "ceiling_fan", "pendant_light"})
