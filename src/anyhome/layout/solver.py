@@ -16,11 +16,13 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
+from shapely.geometry import Polygon
 
-from anyhome.house import Dropped, Floorplan, HouseObject
+from anyhome.house import Dropped, Floorplan, HouseObject, Room
 from anyhome.layout import arrangements, ornaments
 from anyhome.layout.options import DEFAULT_OPTIONS, LayoutOptions
 from anyhome.layout.state import RoomState
+from anyhome.layout.zones import arm_zones
 from anyhome.plan.spec import HouseSpec, ItemSpec, RoomSpec
 
 
@@ -60,13 +62,16 @@ def layout_house(spec: HouseSpec, floorplan: Floorplan, rng: np.random.Generator
             for item in _items(rs):
                 result.dropped.append(Dropped(room=rs.id, name=item.name, reason="room is missing from the floorplan"))
             continue
+        zones: dict[int, Polygon] = {}
         if room.merged:
-            rs = with_merged(rs, [r for r in spec.rooms if r.id in room.merged])
+            others = [r for r in spec.rooms if r.id in room.merged]
+            zones = _group_zones(room, rs, others)
+            rs = with_merged(rs, others)
         if room.open_air:  # no ceiling to hang a chandelier, a fan or a pendant from
             rs, hung = _without_ceiling_hung(rs)
             result.dropped += [Dropped(room=rs.id, name=n, reason="an open-air room has no ceiling to hang it from")
                                for n in hung]
-        st = RoomState(floorplan, room, rs, rng, options)
+        st = RoomState(floorplan, room, rs, rng, options, group_zones=zones)
         furnish_room(st)
         result.objects.extend(st.space.objects)
         result.dropped.extend(st.dropped)
@@ -75,12 +80,24 @@ def layout_house(spec: HouseSpec, floorplan: Floorplan, rng: np.random.Generator
 
 def furnish_room(st: RoomState) -> None:
     """The room's groups in priority order, each by its arrangement, then its ornaments."""
-    for g in sorted(st.spec.groups, key=lambda g: g.priority):
+    for i, g in sorted(enumerate(st.spec.groups), key=lambda ig: ig[1].priority):
+        st.zone = st.group_zones.get(i)
         if g.arrangement == "rows":
             arrangements.place_rows(st, g)
         else:
             arrangements.place_free(st, g)
+    st.zone = None
     ornaments.place_ornaments(st)
+
+
+def _group_zones(room: Room, rs: RoomSpec, others: list[RoomSpec]) -> dict[int, Polygon]:
+    """Index of a group of ``with_merged(rs, others)`` -> the arm of ``room`` it belongs in
+    (:func:`anyhome.layout.zones.arm_zones`); {} when the room has no arms."""
+    arms = arm_zones(room, [rs, *others])
+    if arms is None:
+        return {}
+    n_own = len(rs.groups)
+    return {i: arms[0] if i < n_own else arms[1] for i in range(n_own + len(others[0].groups))}
 
 
 def with_merged(rs: RoomSpec, others: list[RoomSpec]) -> RoomSpec:
