@@ -544,7 +544,12 @@ def _problems(h: House) -> Iterator[str]:
             yield f"levels[{i}].elevation_m: must be a finite number within {MAX_COORD_M:g} m"
         if err := _check_height(f"levels[{i}].height_m", lv.height_m):
             yield err
+    room_ids = {r.id for r in h.rooms}
     for i, r in enumerate(h.rooms):
+        for j, held in enumerate(r.merged):
+            if not is_safe_id(held) or held in room_ids:
+                yield (f"rooms[{i}].merged[{j}]: {_short(held)} must be a valid id (letters, digits and "
+                       f"_ . : - only) and no room's own id")
         if not MIN_LEVEL <= r.level <= MAX_LEVEL:
             yield f"rooms[{i}].level: must be from {MIN_LEVEL} to {MAX_LEVEL}"
         elif r.level != 0 and r.level not in listed:

@@ -7,13 +7,12 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
+from shapely.geometry import Polygon
 
 from anyhome.house import Dropped, Floorplan, HouseObject, Room
 from anyhome.layout.options import LayoutOptions
 from anyhome.layout.rules import wrap
 from anyhome.plan.spec import ItemSpec, RoomSpec
-from shapely.geometry import Polygon
-
 from anyhome.space import NavGrid, Placed, RoomSpace, Wall, nav_blocks, rect_corners
 
 SLUG_MAX_CHARS = 40
