@@ -17,16 +17,7 @@ from functools import lru_cache
 from pathlib import Path
 from typing import Any, Final, Literal
 
-from pydantic import (
-    BaseModel,
-    ConfigDict,
-    Field,
-    PrivateAttr,
-    SerializerFunctionWrapHandler,
-    ValidationError,
-    model_serializer,
-    model_validator,
-)
+from pydantic import BaseModel, ConfigDict, Field, PrivateAttr, ValidationError, model_validator
 from shapely.geometry import Polygon
 
 from anyhome.errors import HouseFormatError
@@ -131,17 +122,10 @@ class Room(_Model):
     ceiling: CeilingShape = Field(default="flat", description="ceiling shape; meaningless (and kept 'flat') "
                                   "when open_air")
     level: int = Field(default=0, description="storey: 0 ground, 1 the first floor up, -1 a basement")
-    merged: list[str] = Field(default_factory=list, description="ids of the planned rooms (plan.rooms) this "
-                              "room also holds: an open-plan room merged from several (anyhome.floorplan.merge); "
-                              "their furniture is laid out here. Written only when not empty")
-
-    @model_serializer(mode="wrap")
-    def _without_empty_merged(self, handler: SerializerFunctionWrapHandler) -> dict[str, Any]:
-        """``merged`` is left out when empty, so houses without merged rooms read as before."""
-        data = handler(self)
-        if not self.merged:
-            data.pop("merged", None)
-        return data
+    merged: list[str] = Field(default_factory=list, exclude_if=lambda v: not v,
+                              description="ids of the planned rooms (plan.rooms) this room also holds: an "
+                              "open-plan room merged from several (anyhome.floorplan.merge); their furniture is "
+                              "laid out here. Written only when not empty, so other houses read as before")
 
 
 class Level(_Model):

@@ -11,7 +11,13 @@ from shapely.geometry import LineString, Polygon
 
 import anyhome
 from anyhome.evaluate.validity import check_validity
-from anyhome.floorplan.merge import asks_open_plan, l_aspect, l_polygon, merge_open_plan, merge_rooms
+from anyhome.floorplan.merge import (
+    asks_open_plan,
+    l_aspect,
+    l_polygon,
+    merge_open_plan,
+    merge_rooms,
+)
 from anyhome.floorplan.options import FloorplanOptions
 from anyhome.house import Door, Floorplan, House, Room, Window
 from anyhome.plan.spec import HouseSpec, RoomSpec

@@ -6,8 +6,8 @@ import pytest
 from shapely.geometry import Polygon
 
 import anyhome
-from anyhome.layout.zones import arm_zones, reflex_corner
 from anyhome.house import Room
+from anyhome.layout.zones import arm_zones, reflex_corner
 from anyhome.plan.spec import RoomSpec
 
 L_OUTLINE = [(0.0, 0.0), (8.0, 0.0), (8.0, 3.0), (5.0, 3.0), (5.0, 4.0), (0.0, 4.0)]

@@ -258,7 +258,7 @@ class FloorplanOptions:
     """Most windows in one room."""
 
     # ------------------------------------------------- open-plan L rooms (merge.py)
-    open_plan_probability: float = _opt(0.35, 0.0, 1.0)
+    open_plan_probability: float = _opt(0.5, 0.0, 1.0)
     """Chance that a house whose plan allows an open-plan L room gets one (its words not asking for it)."""
     open_plan_words_probability: float = _opt(1.0, 0.0, 1.0)
     """The same chance when the prompt or style asks for open plan (``open_plan.yaml`` words)."""
