@@ -2,10 +2,13 @@
 
 A post-solve step on a finished one-storey :class:`~anyhome.house.Floorplan`: where a
 pair of rooms of ``open_plan.yaml``'s ``pairs`` (living + dining, kitchen + dining,
-living + kitchen) is joined by a door and their two rectangles share a wall over only
-part of the longer one's side, the two are replaced by their union, a 6-corner CCW
-L polygon. Only some houses get one: always when the prompt or style says open plan
+living + kitchen) is joined by a door and their two rectangles, flush at one end,
+share a wall over only part of one room's side, the two are replaced by their union,
+a 6-corner CCW L polygon. Only some houses get one: always when the prompt or style says open plan
 (``words``), else with the seeded chance ``FloorplanOptions.open_plan_probability``.
+It runs on one-storey houses (:func:`anyhome.floorplan.levels.solve_levels` calls it
+after the solver); the storeys of a house of several keep their rectangles, since the
+stacking matches rooms across storeys by their planned ids.
 
 Design (issue 13): the plan (``HouseSpec``) is left as it is, both rooms and their
 furniture groups stay planned rooms; the floorplan records the merge instead. The
@@ -13,7 +16,9 @@ merged room keeps the first room of the pair (its id, type, materials; the name 
 both names, "Living Room and Dining Room") and lists the other in
 :attr:`anyhome.house.Room.merged`; the layout stage furnishes such a room with the
 groups and ornaments of every planned room it holds (:func:`anyhome.layout.solver.
-layout_house`), so nothing planned is lost and ``relayout`` of the room lays out both.
+layout_house`), each planned room's groups preferring their own arm of the L
+(:mod:`anyhome.layout.zones`), so nothing planned is lost and ``relayout`` of the room
+lays out both.
 
 Doors and windows stay where the solver put them, which keeps them consistent: the
 doors between the two rooms (on the wall that goes) are removed, every other door and
@@ -82,9 +87,10 @@ def merge_open_plan(floorplan: Floorplan, spec: HouseSpec, rng: np.random.Genera
     into L rooms (see the module doc); ``rng`` draws whether this house gets any (one
     draw, made only when some pair could merge)."""
     opts = options or FloorplanOptions()
+    if opts.open_plan_max_rooms == 0:
+        return floorplan
     data = open_plan_data()
-    pairs = l_candidates(floorplan, data, opts)
-    if not pairs or opts.open_plan_max_rooms == 0:
+    if not l_candidates(floorplan, data, opts):
         return floorplan
     chance = opts.open_plan_words_probability if asks_open_plan(spec, data) else opts.open_plan_probability
     if rng.random() >= chance:
