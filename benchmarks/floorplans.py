@@ -176,6 +176,8 @@ def summarise(name: str, rows: list[tuple[str, int, PlanMetrics, int]], fp_times
         "courtyards_inside": sum(p.n_courtyards_inside for p in plans),
         "courtyards_enclosed": sum(p.n_courtyards_enclosed for p in plans),
         "shapes": {k: sum(p.footprint == k for p in plans) for k in SHAPES},
+        "l_rooms": sum(p.n_l_rooms for p in plans),
+        "houses_with_l": sum(p.n_l_rooms > 0 for p in plans),
         "fp_median_ms": 1000 * statistics.median(fp_times),
         "fp_p90_ms": 1000 * pct(fp_times, 90),
         "fp_max_ms": 1000 * max(fp_times),
@@ -247,6 +249,7 @@ def table(results: list[dict[str, Any]], seeds: list[int]) -> str:
         lambda r: _frac(r["courtyards_inside"], r["courtyards"]))
     row("courtyards with rooms on every side", "", lambda r: _frac(r["courtyards_enclosed"], r["courtyards"]))
     row("footprints: " + " / ".join(SHAPES), "", lambda r: " / ".join(str(r["shapes"][k]) for k in SHAPES))
+    row("L-shaped (non-rectangular) rooms (houses with one)", "", lambda r: f"{r['l_rooms']} ({r['houses_with_l']})")
     row("most levels / houses with > 1 level", "", lambda r: f"{r['max_levels']} / {r['multi_level']}")
     row(f"houses with > {OVERHANG_TOL_M2:g} m2 of upper floor over nothing (m2 in all)", "",
         lambda r: f"{_frac(r['overhanging'], r['multi_level'])} ({r['overhang_m2']:.0f})")

@@ -76,7 +76,7 @@ def test_new_ids_never_clash_with_kept_ones(house: House) -> None:
     taken = house.objects_in(room)[0].id
     data = json.loads(house.to_json())
     victim = next(o for o in data["objects"] if o["room"] == other and o["support"] == "floor"
-                  and not any(x["support"] == o["id"] for x in data["objects"]))
+                  and not any(o["id"] in (x["support"], x["anchor"]) for x in data["objects"]))
     for o in data["objects"]:
         if o["id"] == taken:
             o["id"] = f"{taken}-old"

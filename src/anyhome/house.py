@@ -122,6 +122,10 @@ class Room(_Model):
     ceiling: CeilingShape = Field(default="flat", description="ceiling shape; meaningless (and kept 'flat') "
                                   "when open_air")
     level: int = Field(default=0, description="storey: 0 ground, 1 the first floor up, -1 a basement")
+    merged: list[str] = Field(default_factory=list, exclude_if=lambda v: not v,
+                              description="ids of the planned rooms (plan.rooms) this room also holds: an "
+                              "open-plan room merged from several (anyhome.floorplan.merge); their furniture is "
+                              "laid out here. Written only when not empty, so other houses read as before")
 
 
 class Level(_Model):
@@ -524,7 +528,12 @@ def _problems(h: House) -> Iterator[str]:
             yield f"levels[{i}].elevation_m: must be a finite number within {MAX_COORD_M:g} m"
         if err := _check_height(f"levels[{i}].height_m", lv.height_m):
             yield err
+    room_ids = {r.id for r in h.rooms}
     for i, r in enumerate(h.rooms):
+        for j, held in enumerate(r.merged):
+            if not is_safe_id(held) or held in room_ids:
+                yield (f"rooms[{i}].merged[{j}]: {_short(held)} must be a valid id (letters, digits and "
+                       f"_ . : - only) and no room's own id")
         if not MIN_LEVEL <= r.level <= MAX_LEVEL:
             yield f"rooms[{i}].level: must be from {MIN_LEVEL} to {MAX_LEVEL}"
         elif r.level != 0 and r.level not in listed:

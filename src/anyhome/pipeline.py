@@ -287,7 +287,8 @@ def relayout(
     floorplan = house.floorplan
     rngs = stage_rngs(seed)
     timings: dict[str, float] = {}
-    sub = spec.model_copy(update={"rooms": [rs for rs in spec.rooms if rs.id in chosen]})
+    held = {h for r in house.rooms if r.id in chosen for h in r.merged}  # an open-plan room's other planned rooms
+    sub = spec.model_copy(update={"rooms": [rs for rs in spec.rooms if rs.id in chosen | held]})
     kept = [o for o in house.objects if o.room not in chosen]
     with _stage("layout", timings, _quiet):
         result = stages.layout(sub, floorplan, rngs["layout"])

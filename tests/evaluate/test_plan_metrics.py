@@ -265,3 +265,16 @@ def test_evaluate_house_carries_plan(house: House) -> None:
     report = evaluate_house(house)
     assert report.plan is not None and report.plan.n_rooms == 2
     assert report.to_dict()["plan"]["levels"] == 1
+
+
+def test_l_rooms_are_counted(kb) -> None:
+    ell = [(0, 0), (7.5, 0), (7.5, 3), (5, 3), (5, 4), (0, 4)]
+    collinear = [(0, 0), (2, 0), (4, 0), (4, 3), (0, 3)]  # a rectangle with a point on a side
+    h = house_of([Room(id="liv", name="living room and dining room", type="living_room", polygon=ell,
+                       merged=["din"]),
+                  Room(id="bed", name="bedroom", type="bedroom", polygon=[(x, y + 4) for x, y in collinear])])
+    m = plan_metrics(h, kb)
+    assert m.n_l_rooms == 1
+    assert any("L-shaped rooms: 1" in line for line in m.summary_lines())
+    # the L's aspect: its 7.5 m long side over the 4 m disc of its wide arm
+    assert m.rooms[0].aspect == pytest.approx(7.5 / 4, abs=0.01)

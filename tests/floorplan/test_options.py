@@ -37,6 +37,7 @@ KEPT_CONSTANTS = {
     "DOOR_WIDTH_M", "ENTRANCE_WIDTH_M", "DOOR_HEIGHT_M", "OPENING_HEADROOM_M",
     "WINDOW_SILL_M", "WINDOW_HEIGHT_M", "BATH_WINDOW_WIDTH_M", "BATH_WINDOW_SILL_M", "BATH_WINDOW_HEIGHT_M",
     "STAIRWELL_MIN_LONG_M", "STAIRWELL_MIN_SHORT_M", "FLIGHT_WIDTH_M", "FLIGHT_MIN_LENGTH_M", "SLAB_M",  # stairs (Approved Document K)
+    "L_CORNERS", "INSCRIBED_TOL_M",  # merge.py: an L's corner count; the widest-disc search's precision
 }
 
 

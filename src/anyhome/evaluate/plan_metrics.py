@@ -52,6 +52,10 @@ footprint shape, courtyards
     rectangle, L, T, U, step, courtyard or other; for each courtyard, the share of its
     perimeter on its level's outline (below ``footprint.INSIDE_MAX_SHARE``: inside the
     footprint, rooms on at least three sides).
+L rooms
+    Rooms whose outline has more than 4 corners (:func:`corner_count`): the open-plan
+    L rooms of :mod:`anyhome.floorplan.merge`. Their aspect is defined as above (the
+    bounding rectangle's long side over the elbow disc), stricter than either arm's.
 home
     See :func:`is_home`: ``house.building`` is a dwelling (:data:`HOME_BUILDINGS`), or a
     building word of programs.yaml whose program is one, or (a word the knowledge does
@@ -202,6 +206,9 @@ class PlanMetrics:
     """The ground level's outline shape (:data:`anyhome.evaluate.footprint.SHAPES`)."""
     courtyard_shares: tuple[float, ...] = ()
     """Per courtyard: the share of its perimeter on its level's outline."""
+    n_l_rooms: int = 0
+    """Rooms whose outline is not a rectangle (more than 4 corners once points on a
+    straight side are dropped): the open-plan L rooms (anyhome.floorplan.merge)."""
 
     @property
     def n_courtyards_inside(self) -> int:
@@ -242,7 +249,7 @@ class PlanMetrics:
             f"upper floor over nothing: {self.overhang_m2:.1f} m2",
             f"  footprint {self.footprint}; courtyards inside the footprint: "
             f"{self.n_courtyards_inside}/{len(self.courtyard_shares)} "
-            f"(rooms on every side: {self.n_courtyards_enclosed})",
+            f"(rooms on every side: {self.n_courtyards_enclosed}); L-shaped rooms: {self.n_l_rooms}",
         ]
 
 
@@ -490,7 +497,16 @@ def plan_metrics(house: House, kb: KnowledgeBase) -> PlanMetrics:
             (usable[r.id] for r in house.rooms if _level(r) == 0 and r.id in usable and not _is_open_air(r, kb)),
             inner_court=any(s < footprint.INSIDE_MAX_SHARE for s in shares.get(0, ()))),
         courtyard_shares=tuple(s for level in sorted(shares) for s in shares[level]),
+        n_l_rooms=sum(corner_count(p) > 4 for p in usable.values()),
     )
+
+
+def corner_count(poly: Polygon) -> int:
+    """Corners of a polygon's outline, points on a straight side not counted."""
+    pts = list(poly.exterior.coords)[:-1]
+    n = len(pts)
+    return sum(abs((pts[i][0] - pts[i - 1][0]) * (pts[(i + 1) % n][1] - pts[i][1])
+                   - (pts[i][1] - pts[i - 1][1]) * (pts[(i + 1) % n][0] - pts[i][0])) > 1e-9 for i in range(n))
 
 
 def _courtyard_shares(house: House, usable: dict[str, Polygon], kb: KnowledgeBase) -> dict[int, list[float]]:

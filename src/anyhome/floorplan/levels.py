@@ -27,6 +27,7 @@ from collections.abc import Iterable
 import numpy as np
 
 from anyhome.errors import FloorplanError
+from anyhome.floorplan.merge import merge_open_plan
 from anyhome.floorplan.options import FloorplanOptions
 from anyhome.floorplan.solver import solve_floorplan
 from anyhome.geometry import opening_zone
@@ -59,7 +60,7 @@ def solve_levels(spec: HouseSpec, rng: np.random.Generator, options: FloorplanOp
     """Lay out every storey of ``spec`` (see the module doc); one storey: solve_floorplan."""
     numbers = sorted({r.level for r in spec.rooms})
     if numbers == [0]:
-        return solve_floorplan(spec, rng, options)
+        return merge_open_plan(solve_floorplan(spec, rng, options), spec, rng, options)
     if 0 not in numbers:
         raise FloorplanError("a house of several storeys needs rooms on the ground floor (level 0)")
     attempts = (options or FloorplanOptions()).level_attempts

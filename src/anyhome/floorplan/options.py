@@ -257,6 +257,14 @@ class FloorplanOptions:
     max_windows_per_room: int = _opt(3, 1, 100)
     """Most windows in one room."""
 
+    # ------------------------------------------------- open-plan L rooms (merge.py)
+    open_plan_probability: float = _opt(0.5, 0.0, 1.0)
+    """Chance that a house whose plan allows an open-plan L room gets one (its words not asking for it)."""
+    open_plan_words_probability: float = _opt(1.0, 0.0, 1.0)
+    """The same chance when the prompt or style asks for open plan (``open_plan.yaml`` words)."""
+    open_plan_max_rooms: int = _opt(1, 0, 100)
+    """Most L rooms merged in one house (0: none, every room stays a rectangle)."""
+
     def __post_init__(self) -> None:
         for f in fields(self):
             v = getattr(self, f.name)

@@ -28,6 +28,9 @@ class LayoutOptions:
     """Floor objects taller than this avoid windows."""
     group_room_bonus: float = 0.8
     """Score added to anchor poses that leave room for the whole group around them."""
+    zone_bonus: float = 1.0
+    """Score added to floor poses inside the arm of an open-plan room that belongs to the
+    planned room whose group is being placed (:mod:`anyhome.layout.zones`)."""
     group_room_height_m: float = 0.9
     """Height up to which the room around an anchor is checked for its group."""
     near_m: float = 1.0

@@ -7,6 +7,7 @@ import math
 from collections.abc import Sequence
 
 import numpy as np
+import shapely
 
 from anyhome.geometry import boxes_collide, footprint_polygon, inside
 from anyhome.house import HouseObject
@@ -30,6 +31,8 @@ def rank(st: RoomState, c: Cands, size: Sequence[float], kind: str, noise: float
     score = c.pref[idx] + noise * st.rng.random(idx.size)
     if spacing and kind == "floor":
         score += o.spacing_weight * st.space.clearance(corners[idx], o.spacing_cap_m) / o.spacing_cap_m
+    if kind == "floor" and st.zone is not None:
+        score += o.zone_bonus * shapely.contains_xy(st.zone, c.xy[idx, 0], c.xy[idx, 1])
     if kind == "floor" and size[2] > o.tall_m:
         score -= o.window_penalty * st.space.window_penalty(corners[idx])
     return idx[np.argsort(-score, kind="stable")]

@@ -16,11 +16,13 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
+from shapely.geometry import Polygon
 
-from anyhome.house import Dropped, Floorplan, HouseObject
+from anyhome.house import Dropped, Floorplan, HouseObject, Room
 from anyhome.layout import arrangements, ornaments
 from anyhome.layout.options import DEFAULT_OPTIONS, LayoutOptions
 from anyhome.layout.state import RoomState
+from anyhome.layout.zones import arm_zones
 from anyhome.plan.spec import HouseSpec, ItemSpec, RoomSpec
 
 
@@ -50,18 +52,26 @@ def layout_house(spec: HouseSpec, floorplan: Floorplan, rng: np.random.Generator
         ``dropped``, one entry per object copy that found no valid spot.
     """
     result = LayoutResult()
+    held = {h for r in floorplan.rooms for h in r.merged}
     for rs in spec.rooms:
+        if rs.id in held:  # laid out in the open-plan room that holds it
+            continue
         try:
             room = floorplan.room(rs.id)
         except KeyError:
             for item in _items(rs):
                 result.dropped.append(Dropped(room=rs.id, name=item.name, reason="room is missing from the floorplan"))
             continue
+        zones: dict[int, Polygon] = {}
+        if room.merged:
+            others = [r for r in spec.rooms if r.id in room.merged]
+            zones = _group_zones(room, rs, others)
+            rs = with_merged(rs, others)
         if room.open_air:  # no ceiling to hang a chandelier, a fan or a pendant from
             rs, hung = _without_ceiling_hung(rs)
             result.dropped += [Dropped(room=rs.id, name=n, reason="an open-air room has no ceiling to hang it from")
                                for n in hung]
-        st = RoomState(floorplan, room, rs, rng, options)
+        st = RoomState(floorplan, room, rs, rng, options, group_zones=zones)
         furnish_room(st)
         result.objects.extend(st.space.objects)
         result.dropped.extend(st.dropped)
@@ -70,12 +80,34 @@ def layout_house(spec: HouseSpec, floorplan: Floorplan, rng: np.random.Generator
 
 def furnish_room(st: RoomState) -> None:
     """The room's groups in priority order, each by its arrangement, then its ornaments."""
-    for g in sorted(st.spec.groups, key=lambda g: g.priority):
+    for i, g in sorted(enumerate(st.spec.groups), key=lambda ig: ig[1].priority):
+        st.zone = st.group_zones.get(i)
         if g.arrangement == "rows":
             arrangements.place_rows(st, g)
         else:
             arrangements.place_free(st, g)
+    st.zone = None
     ornaments.place_ornaments(st)
+
+
+def _group_zones(room: Room, rs: RoomSpec, others: list[RoomSpec]) -> dict[int, Polygon]:
+    """Index of a group of ``with_merged(rs, others)`` -> the arm of ``room`` it belongs in
+    (:func:`anyhome.layout.zones.arm_zones`); {} when the room has no arms."""
+    arms = arm_zones(room, [rs, *others])
+    if arms is None:
+        return {}
+    n_own = len(rs.groups)
+    return {i: arms[0] if i < n_own else arms[1] for i in range(n_own + len(others[0].groups))}
+
+
+def with_merged(rs: RoomSpec, others: list[RoomSpec]) -> RoomSpec:
+    """The planned room ``rs`` holding the groups and ornaments of ``others`` too (an
+    open-plan room merged from several, :attr:`anyhome.house.Room.merged`): its own
+    groups first among those of the same priority."""
+    if not others:
+        return rs
+    return rs.model_copy(update={"groups": [*rs.groups, *(g for o in others for g in o.groups)],
+                                 "ornaments": [*rs.ornaments, *(o for other in others for o in other.ornaments)]})
 
 
 CEILING_HUNG = frozenset({"chandelier", "ceiling_fan", "pendant_light"})

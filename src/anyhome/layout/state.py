@@ -7,6 +7,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
+from shapely.geometry import Polygon
 
 from anyhome.house import Dropped, Floorplan, HouseObject, Room
 from anyhome.layout.options import LayoutOptions
@@ -53,6 +54,11 @@ class RoomState:
     counters: dict[str, int] = field(default_factory=dict)
     rows_wall: Wall | None = None
     """The wall a ``rows`` arrangement faces, once one is laid out."""
+    group_zones: dict[int, Polygon] = field(default_factory=dict)
+    """Index of a group in ``spec.groups`` -> the arm of an open-plan room it belongs in
+    (:mod:`anyhome.layout.zones`)."""
+    zone: Polygon | None = None
+    """The arm of the group being placed: floor poses inside it score higher."""
 
     def __post_init__(self) -> None:
         self.space = RoomSpace(self.floorplan, self.room)
