@@ -3,12 +3,15 @@
 A plan whose rooms all sit on level 0 goes straight to :func:`solve_floorplan` (the same
 floorplan, byte for byte). Otherwise every storey is solved as a house of its own (an
 upper storey or a basement gets a stand-in entrance through its stairwell, dropped
-afterwards), until its stairwell comes out as a rectangle at least
-:data:`STAIRWELL_MIN_LONG_M` x :data:`STAIRWELL_MIN_SHORT_M`. Each storey is then turned
-(a quarter turn when needed) so its stairwell's long side runs east-west, and placed on
-(a basement: under) the storey next to it toward the ground with a corner of its
-stairwell on the same corner of that one's: the stairwells overlap in a rectangle that
-holds a straight flight clear of their doors. The flight is a
+afterwards), until its stairwell comes out as a rectangle that holds the house's dog-leg stair
+(:mod:`anyhome.floorplan.stairs`: two flights side by side, the half landing at one end)
+and the strip of floor in front of it (:func:`stairwell_min_m`). Each storey is then
+turned (a quarter turn when needed) so its stairwell's long side runs east-west, and
+placed on (a basement: under) the storey next to it toward the ground with a corner of
+its stairwell on the same corner of that one's, where the stairwells of all storeys
+overlap in a rectangle that holds the stair and its strip clear of their doors
+(:func:`stack_box`). Every flight stands on that same box, storey over storey (as in a
+real stairwell: the flight above runs a storey over the one below); each is a
 ``stairs`` object in the lower storey's stairwell (:func:`stairs_objects`).
 
 The narrow interface (:func:`solve_levels`, :func:`stairs_objects`) is what the pipeline
@@ -29,22 +32,19 @@ import numpy as np
 from anyhome.errors import FloorplanError
 from anyhome.floorplan.options import FloorplanOptions
 from anyhome.floorplan.solver import solve_floorplan
+from anyhome.floorplan.stairs import STRIP_M, DogLeg, dogleg, is_dogleg_box
 from anyhome.geometry import opening_zone
 from anyhome.house import Door, Floorplan, HouseObject, Level, Room, Window
 from anyhome.plan.spec import HouseSpec
 
-STAIRWELL_MIN_LONG_M = 3.5
-"""Shortest long side of a stairwell: a 3.3 m flight (a 2.9 m storey in 15 risers of
-0.193 m and 14 goings of 0.236 m: within UK Approved Document K for a private stair,
-rise <= 220 mm, going >= 220 mm, pitch <= 42 deg)."""
-STAIRWELL_MIN_SHORT_M = 1.95
-"""Shortest short side of a stairwell: a 0.9 m flight (Document K's usual minimum width)
-beside a landing strip."""
-FLIGHT_WIDTH_M = 0.9
-FLIGHT_MIN_LENGTH_M = 3.3
 SLAB_M = 0.2
 """Floor structure between a storey's ceiling and the next storey's floor."""
 STAIRS_CATEGORY = "stairs"
+STAIRWELL_SPARE_M = 0.3
+"""A stairwell is planned at least this much wider than its stair (the solver's rooms
+come out a little off their target)."""
+STACK_SLIDE_M = 0.1
+"""Step of the places tried for the stair along a stairwell longer than it needs."""
 
 
 def stair_room(spec: HouseSpec, level: int) -> str:
@@ -53,6 +53,26 @@ def stair_room(spec: HouseSpec, level: int) -> str:
         if r.level == level and ("stair" in r.id.lower() or "stair" in r.name.lower()):
             return r.id
     raise FloorplanError(f"level {level} has no stairwell room (a room named 'stairwell')")
+
+
+def storey_heights_m(spec: HouseSpec) -> dict[int, float]:
+    """Floor-to-floor height of every storey of ``spec``: its tallest room and the slab."""
+    return {k: max(r.height_m for r in spec.rooms if r.level == k) + SLAB_M for k in {r.level for r in spec.rooms}}
+
+
+def house_stair(spec: HouseSpec) -> DogLeg:
+    """The dog-leg stair sized for the tallest rise between two storeys of ``spec``:
+    every flight of the house stands on its box (stacked storey over storey)."""
+    heights = storey_heights_m(spec)
+    rises = [heights[k] for k in heights if k + 1 in heights] or [max(heights.values())]
+    return dogleg(max(rises))
+
+
+def stairwell_min_m(spec: HouseSpec) -> tuple[float, float]:
+    """(long, short) sides a stairwell needs: the stair's box and the strip of floor at
+    its foot end (where a flight starts and the one below arrives)."""
+    d = house_stair(spec)
+    return (round(d.length_m + STRIP_M, 4), d.width_m)
 
 
 def solve_levels(spec: HouseSpec, rng: np.random.Generator, options: FloorplanOptions | None = None) -> Floorplan:
@@ -95,7 +115,7 @@ def _stacked(spec: HouseSpec, numbers: list[int], rng: np.random.Generator, opti
         if best is None:
             raise FloorplanError(why)
         plans[k] = best[1]
-    heights = {k: max(r.height_m for r in spec.rooms if r.level == k) + SLAB_M for k in numbers}
+    heights = storey_heights_m(spec)
     elevation = {0: 0.0}
     for k in (n for n in numbers if n > 0):
         elevation[k] = elevation[k - 1] + heights[k - 1]
@@ -126,8 +146,8 @@ def _best_placed(spec: HouseSpec, plans: dict[int, Floorplan], plan: Floorplan, 
     """Storey ``k`` (``plan``) placed on (a basement: under) storey ``ref``: of its four mirror
     images (:data:`MIRRORS`), each with a corner of its stairwell on the same corner of
     the stairwell of ``ref``, the one whose floor lies most over (under) ``ref``'s, among
-    those where a flight fits in both stairwells clear of their doors; with the area of
-    its floor outside ``ref``'s (m2)."""
+    those where the stair fits in the stairwells of every storey placed so far, clear of
+    their doors (:func:`stack_box`); with the area of its floor outside ``ref``'s (m2)."""
     stair, ref_stair = stair_room(spec, k), stair_room(spec, ref)
     rx, ry, rw, rh = _rect(plans[ref].room(ref_stair))
     best: tuple[float, Floorplan] | None = None
@@ -136,10 +156,7 @@ def _best_placed(spec: HouseSpec, plans: dict[int, Floorplan], plan: Floorplan, 
         x0, y0, w, h = _rect(mirrored.room(stair))
         for cx, cy in ((0, 0), (1, 0), (0, 1), (1, 1)):  # south-west, south-east, north-west, north-east
             cand = _moved(mirrored, rx + cx * rw - (x0 + cx * w), ry + cy * rh - (y0 + cy * h))
-            lo, hi = (plans[ref], cand) if k > ref else (cand, plans[ref])
-            pair = Floorplan.model_construct(rooms=[*lo.rooms, *hi.rooms], doors=[*lo.doors, *hi.doors], windows=[],
-                                             connections=[], levels=[], warnings=[])
-            if _flight_box(pair, *((ref_stair, stair) if k > ref else (stair, ref_stair))) is None:
+            if stack_box([*plans.values(), cand], house_stair(spec)) is None:
                 continue
             hang = _outside_m2([r.polygon for r in cand.rooms], [r.polygon for r in plans[ref].rooms])
             if best is None or hang < best[0] - 1e-6:
@@ -173,9 +190,14 @@ def _storey_spec(spec: HouseSpec, k: int) -> HouseSpec:
     stand-in entrance through its stairwell (the stairs come in there; dropped after)."""
     ids = {r.id for r in spec.rooms if r.level == k}
     links = [c for c in spec.connections if c[0] in ids and (c[1] in ids or (k == 0 and c[1] == "outside"))]
+    stair = stair_room(spec, k)
     if k != 0:
-        links.append((stair_room(spec, k), "outside"))
-    return spec.model_copy(update={"rooms": [r for r in spec.rooms if r.level == k], "connections": links})
+        links.append((stair, "outside"))
+    long_m, short_m = stairwell_min_m(spec)
+    least_m2 = round(long_m * (short_m + STAIRWELL_SPARE_M), 2)  # a stair for a tall storey needs a longer well
+    rooms = [r.model_copy(update={"area_m2": max(r.area_m2, least_m2)}) if r.id == stair else r
+             for r in spec.rooms if r.level == k]
+    return spec.model_copy(update={"rooms": rooms, "connections": links})
 
 
 ONE_STOREY_NOTE = "could not stack the storeys"
@@ -197,11 +219,13 @@ def _one_storey(spec: HouseSpec, rng: np.random.Generator, options: FloorplanOpt
 def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options: FloorplanOptions | None) -> Floorplan:
     stair = stair_room(spec, k)
     sub = _storey_spec(spec, k)
-    why = "its stairwell never came out as a rectangle large enough for a flight"
+    d = house_stair(spec)
+    long_m, short_m = stairwell_min_m(spec)
+    why = f"its stairwell never came out as a rectangle of at least {long_m:g} x {short_m:g} m for the stair"
     attempts = (options or FloorplanOptions()).level_attempts
     for _ in range(attempts):
         try:
-            plan = solve_floorplan(sub, rng, options)
+            plan = solve_floorplan(sub, rng, options, min_length_m={stair: long_m})
         except FloorplanError as e:
             why = str(e)
             continue
@@ -211,8 +235,7 @@ def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options: Fl
         if w < h:
             plan = _turned(plan)
             x0, y0, w, h = _rect(plan.room(stair))
-        top = k == max(r.level for r in spec.rooms)
-        if w >= STAIRWELL_MIN_LONG_M - 1e-6 and h >= STAIRWELL_MIN_SHORT_M - 1e-6 and (top or _flight_box(plan, stair)):
+        if w >= long_m - 1e-6 and h >= short_m - 1e-6 and stack_box([plan], d) is not None:
             return plan
     raise FloorplanError(f"could not lay out level {k} in {attempts} attempts ({why})")
 
@@ -242,31 +265,52 @@ def _moved(plan: Floorplan, dx: float, dy: float) -> Floorplan:
     return _map(plan, lambda p: (p[0] + dx, p[1] + dy))
 
 
-def _flight_box(plan: Floorplan, stair: str, upper: str | None = None) -> tuple[float, float, float, float, float] | None:
-    """(x0, y0, x1, y1, yaw) of a flight along a long wall of the stairwell, its top end
-    against a short wall, touching no door of either stairwell (None: every place does).
-    The flight stays inside the rectangle where both stairwells overlap, so its top
-    lands in the upper one."""
+def _stairwells(plans: list[Floorplan]) -> list[tuple[Room, list[Door]]]:
+    """The stairwell of every storey in ``plans`` (laid out in one frame: the first room
+    of its level named like a stair, as :func:`stair_room`) with its doors."""
+    out = []
+    for plan in plans:
+        seen: set[int] = set()
+        for r in plan.rooms:
+            if r.level not in seen and _is_stair(r):
+                seen.add(r.level)
+                out.append((r, [dr for dr in plan.doors if r.id in dr.rooms]))
+    return out
+
+
+def stack_box(plans: list[Floorplan], stair: DogLeg) -> tuple[float, float, float, float, float] | None:
+    """(x0, y0, x1, y1, yaw) of the box every flight of ``stair`` stands on: inside the
+    rectangle where the stairwells of all of ``plans`` overlap, against one of its long
+    walls, its foot end (local +x, turned by ``yaw``) toward the strip of floor
+    (:data:`~anyhome.floorplan.stairs.STRIP_M`) that also lies in that rectangle (in a
+    longer rectangle, slid along it by :data:`STACK_SLIDE_M`); the box touching no door
+    of any stairwell nor its swing (None: no such place)."""
     from shapely.geometry import LineString, box
 
-    x0, y0, w, h = _rect(plan.room(stair))
-    if upper is not None:  # where the two stairwells overlap
-        ux0, uy0, uw, uh = _rect(plan.room(upper))
-        if uw <= 0:
-            return None
-        ax, ay = max(x0, ux0), max(y0, uy0)
-        w, h = min(x0 + w, ux0 + uw) - ax, min(y0 + h, uy0 + uh) - ay
-        x0, y0 = ax, ay
-        if w < FLIGHT_MIN_LENGTH_M - 1e-6 or h < FLIGHT_WIDTH_M - 1e-6:
-            return None
-    doors = [opening_zone(d.segment).union(LineString(d.segment)) for d in plan.doors
-             if stair in d.rooms or (upper is not None and upper in d.rooms)]  # its swing, on both sides
-    for ya, yb in ((y0, y0 + FLIGHT_WIDTH_M), (y0 + h - FLIGHT_WIDTH_M, y0 + h)):
-        for xa, yaw in ((x0, 0.0), (x0 + w - FLIGHT_MIN_LENGTH_M, math.pi)):
-            run = box(xa, ya, xa + FLIGHT_MIN_LENGTH_M, yb).buffer(0.05)
-            if not any(run.intersects(d) for d in doors):
-                return (xa, ya, xa + FLIGHT_MIN_LENGTH_M, yb, yaw)
+    wells = _stairwells(plans)
+    if not wells:
+        return None
+    rects = [_rect(r) for r, _ in wells]
+    if any(w <= 0 for _, _, w, _ in rects):
+        return None
+    x0, y0 = max(r[0] for r in rects), max(r[1] for r in rects)
+    x1, y1 = min(r[0] + r[2] for r in rects), min(r[1] + r[3] for r in rects)
+    length, width = stair.length_m, stair.width_m
+    if x1 - x0 < length + STRIP_M - 1e-6 or y1 - y0 < width - 1e-6:
+        return None
+    zones = [opening_zone(dr.segment).union(LineString(dr.segment)) for _, doors in wells for dr in doors]
+    spare = x1 - x0 - length - STRIP_M
+    shifts = [i * STACK_SLIDE_M for i in range(int(spare / STACK_SLIDE_M + 1e-6) + 1)] + [spare]
+    for ya in (y0, y1 - width):
+        for shift in shifts:
+            for xa, yaw in ((x0 + shift, 0.0), (x1 - length - shift, math.pi)):  # the strip toward +x, -x
+                if not any(box(xa, ya, xa + length, ya + width).buffer(0.05).intersects(z) for z in zones):
+                    return (round(xa, 6), round(ya, 6), round(xa + length, 6), round(ya + width, 6), yaw)
     return None
+
+
+def _is_stair(room: Room) -> bool:
+    return "stair" in room.id.lower() or "stair" in room.name.lower()
 
 
 def _joined(spec: HouseSpec, plans: dict[int, Floorplan], levels: list[Level]) -> Floorplan:
@@ -281,27 +325,33 @@ def _joined(spec: HouseSpec, plans: dict[int, Floorplan], levels: list[Level]) -
 
 
 def stairs_objects(plan: Floorplan) -> list[HouseObject]:
-    """One straight flight per pair of storeys, in the lower stairwell, rising to the
-    upper storey's floor (its height is the difference of the two elevations). Its
-    ``position`` is, as for every object, relative to its room's floor."""
+    """One dog-leg stair per pair of storeys, in the lower stairwell, rising to the upper
+    storey's floor (its height is the difference of the two elevations); all of them on
+    the same box (:func:`stack_box`), storey over storey. Its ``position`` is, as for
+    every object, relative to its room's floor."""
     if not plan.levels:
         return []
-    out = []
     numbers = [lv.level for lv in plan.levels]
     elev = {lv.level: lv.elevation_m for lv in plan.levels}
-    for lo, hi in zip(numbers, numbers[1:]):
+    rises = [elev[hi] - elev[lo] for lo, hi in zip(numbers, numbers[1:])]
+    if not rises:
+        return []
+    stair = dogleg(max(rises))
+    wells = [_stairwell(plan, k) for k in numbers]
+    fb = stack_box([plan.model_copy(update={"rooms": wells})], stair)
+    if fb is None:
+        raise FloorplanError(f"no room for the stairs in {', '.join(repr(w.id) for w in wells)}")
+    xa, ya, xb, yb, yaw = fb
+    out = []
+    for (lo, hi), rise in zip(zip(numbers, numbers[1:]), rises):
         low = _stairwell(plan, lo)
-        up = _stairwell(plan, hi)
-        fb = _flight_box(plan, low.id, up.id)
-        if fb is None:
-            raise FloorplanError(f"no room for a flight of stairs in {low.id!r}")
-        xa, ya, xb, yb, yaw = fb
-        rise = elev[hi] - elev[lo]
+        d = dogleg(rise)
         out.append(HouseObject(
             id=f"{low.id}-stairs", room=low.id, name="stairs", category=STAIRS_CATEGORY,
-            description=f"a straight flight from level {lo} up to level {hi}",
+            description=(f"a dog-leg stair from level {lo} up to level {hi}: {d.risers} risers of "
+                         f"{d.riser_m:.3f} m, goings of {d.going_m:.2f} m, a half landing"),
             position=(round((xa + xb) / 2, 4), round((ya + yb) / 2, 4), 0.0),
-            size=(FLIGHT_MIN_LENGTH_M, FLIGHT_WIDTH_M, round(rise, 4)),
+            size=(round(xb - xa, 4), round(yb - ya, 4), round(rise, 4)),
             yaw=yaw, rule="place_wall", tags=["equipment"],
         ))
     return out
@@ -309,7 +359,7 @@ def stairs_objects(plan: Floorplan) -> list[HouseObject]:
 
 def _stairwell(plan: Floorplan, level: int) -> Room:
     for r in plan.rooms:
-        if r.level == level and ("stair" in r.id.lower() or "stair" in r.name.lower()):
+        if r.level == level and _is_stair(r):
             return r
     raise FloorplanError(f"level {level} has no stairwell room")
 
@@ -329,8 +379,11 @@ def stair_link(plan: Floorplan, obj: HouseObject) -> tuple[str, str] | None:
         return None
     x, y, _ = obj.position
     c, s = math.cos(obj.yaw), math.sin(obj.yaw)
-    half = obj.size[0] / 2 - 0.1
-    top = Point(x - c * half, y - s * half)  # the flight rises toward its local -x
+    if is_dogleg_box(obj.size[0], obj.size[1]):  # a dog-leg ends at its foot end, on its +y half
+        lx, ly = obj.size[0] / 2 - 0.1, obj.size[1] / 4
+    else:  # a straight flight rises toward its local -x
+        lx, ly = -(obj.size[0] / 2 - 0.1), 0.0
+    top = Point(x + c * lx - s * ly, y + s * lx + c * ly)
     for r in plan.rooms:
         if r.level == above[0] and Polygon(r.polygon).buffer(1e-6).contains(top):
             return (here.id, r.id)

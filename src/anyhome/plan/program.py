@@ -573,10 +573,11 @@ def connect(kb: KnowledgeBase, slots: list[Slot], entrance_types: list[str]) -> 
 STAIRWELL_KEY = "stairwell"
 """Program key (and name) of the stairwell room planned on every storey of a house of
 several; the floorplan stage (anyhome.floorplan.levels) stacks them."""
-STAIRWELL_AREA_M2 = 12.5
-"""Floor of a stairwell: a straight flight 0.9 m wide and 3.3 m long (a 2.9 m storey:
-15 risers of 0.193 m, goings of 0.236 m, within UK Approved Document K for a private
-stair) beside a landing strip; the floorplan solver makes it about 3.5 m square."""
+STAIRWELL_AREA_M2 = 8.5
+"""Floor of a stairwell: a dog-leg stair (two 0.9 m flights side by side, 1.85 m, and a
+half landing: 2.65 m long for a 2.9 m storey in 16 risers of 0.181 m and goings of
+0.25 m, within UK Approved Document K for a private stair) and a 0.9 m strip of floor
+at its foot end (anyhome.floorplan.stairs); the floorplan solver makes it about 2 x 4 m."""
 UP_TYPES = ("bedroom", "closet", "study", "playroom")
 """Room types that go upstairs in a house of several storeys (bathrooms follow them)."""
 BASEMENT_TYPES = ("storage", "cellar", "gym", "laundry")
@@ -796,6 +797,10 @@ def fit_rooms(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], sz: Sizing, 
     main = (prog or {}).get("main")
     fixed = _fixed_counts(kb, parsed)
 
+    def keeps_storey(s: Slot) -> bool:
+        """A stairwell, or the last room besides it on a storey above or below the ground."""
+        return s.key == STAIRWELL_KEY or (s.level != 0 and sum(x.level == s.level and x.key != STAIRWELL_KEY for x in slots) <= 1)
+
     def droppable(strict: bool) -> list[Slot]:
         out = [s for s in reversed(slots) if s.optional and s.mention is None and s.key != main]
         if strict:
@@ -807,7 +812,7 @@ def fit_rooms(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], sz: Sizing, 
                 seen.add(s.type)
             out += list(reversed(extra))
             out += [s for s in slots if _type_info(kb, s.type).get("circulation") and s.mention is None and s not in out]
-        return out
+        return [s for s in out if not keeps_storey(s)]
 
     while sum(_mid(s) for s in slots) > hi and (victims := droppable(False)):
         slots.remove(victims[0])
