@@ -30,9 +30,10 @@ from collections.abc import Iterable
 import numpy as np
 
 from anyhome.errors import FloorplanError
+from anyhome.floorplan.grid import SNAP_M
 from anyhome.floorplan.options import FloorplanOptions
 from anyhome.floorplan.solver import solve_floorplan
-from anyhome.floorplan.stairs import STRIP_M, DogLeg, dogleg, is_dogleg_box
+from anyhome.floorplan.stairs import DOOR_CORNER_M, STAIR_CLEAR_M, STRIP_M, DogLeg, dogleg, is_dogleg_box
 from anyhome.geometry import opening_zone
 from anyhome.house import Door, Floorplan, HouseObject, Level, Room, Window
 from anyhome.plan.spec import HouseSpec
@@ -40,11 +41,6 @@ from anyhome.plan.spec import HouseSpec
 SLAB_M = 0.2
 """Floor structure between a storey's ceiling and the next storey's floor."""
 STAIRS_CATEGORY = "stairs"
-STAIRWELL_SPARE_M = 0.3
-"""A stairwell is planned at least this much wider than its stair (the solver's rooms
-come out a little off their target)."""
-STACK_SLIDE_M = 0.1
-"""Step of the places tried for the stair along a stairwell longer than it needs."""
 
 
 def stair_room(spec: HouseSpec, level: int) -> str:
@@ -185,7 +181,7 @@ def overhang_m2(rooms: Iterable) -> float:
     return sum((_outside_m2(by_level[k], by_level.get(k - 1, [])) for k in by_level if k > 0), 0.0)
 
 
-def _storey_spec(spec: HouseSpec, k: int) -> HouseSpec:
+def _storey_spec(spec: HouseSpec, k: int, opts: FloorplanOptions) -> HouseSpec:
     """Storey ``k`` of ``spec`` as a house of its own: an upper storey or a basement gets a
     stand-in entrance through its stairwell (the stairs come in there; dropped after)."""
     ids = {r.id for r in spec.rooms if r.level == k}
@@ -194,7 +190,7 @@ def _storey_spec(spec: HouseSpec, k: int) -> HouseSpec:
     if k != 0:
         links.append((stair, "outside"))
     long_m, short_m = stairwell_min_m(spec)
-    least_m2 = round(long_m * (short_m + STAIRWELL_SPARE_M), 2)  # a stair for a tall storey needs a longer well
+    least_m2 = round(long_m * (short_m + opts.stairwell_spare_m), 2)  # a stair for a tall storey needs a longer well
     rooms = [r.model_copy(update={"area_m2": max(r.area_m2, least_m2)}) if r.id == stair else r
              for r in spec.rooms if r.level == k]
     return spec.model_copy(update={"rooms": rooms, "connections": links})
@@ -218,7 +214,7 @@ def _one_storey(spec: HouseSpec, rng: np.random.Generator, options: FloorplanOpt
 
 def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options: FloorplanOptions | None) -> Floorplan:
     stair = stair_room(spec, k)
-    sub = _storey_spec(spec, k)
+    sub = _storey_spec(spec, k, options or FloorplanOptions())
     d = house_stair(spec)
     long_m, short_m = stairwell_min_m(spec)
     why = f"its stairwell never came out as a rectangle of at least {long_m:g} x {short_m:g} m for the stair"
@@ -235,9 +231,45 @@ def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options: Fl
         if w < h:
             plan = _turned(plan)
             x0, y0, w, h = _rect(plan.room(stair))
-        if w >= long_m - 1e-6 and h >= short_m - 1e-6 and stack_box([plan], d) is not None:
-            return plan
+        if w >= long_m - 1e-6 and h >= short_m - 1e-6:
+            if stack_box([plan], d) is None:
+                plan = _doors_to_strip(plan, stair)
+            if stack_box([plan], d) is not None:
+                return plan
     raise FloorplanError(f"could not lay out level {k} in {attempts} attempts ({why})")
+
+
+def _doors_to_strip(plan: Floorplan, stair: str) -> Floorplan:
+    """``plan`` with the doors in the long walls of its stairwell ``stair`` (running
+    east-west) slid along their wall to its end where the strip at the stair's foot will
+    be (the end whose end wall has a door; else the east end), :data:`DOOR_CORNER_M` from
+    the corner, where the wall is still shared with the same room and no other door is
+    near; doors that cannot move stay."""
+    from shapely.geometry import LineString, Polygon
+
+    x0, y0, w, h = _rect(plan.room(stair))
+    x1 = x0 + w
+    mine = [d for d in plan.doors if stair in d.rooms]
+    ends = {round(d.segment[0][0], 6) for d in mine if abs(d.segment[0][0] - d.segment[1][0]) < 1e-6}
+    if len(ends) > 1:
+        return plan
+    east = not ends or abs(next(iter(ends)) - x1) < 1e-6
+    doors = list(plan.doors)
+    for i, d in enumerate(doors):
+        (ax, ay), (bx, by) = d.segment
+        if stair not in d.rooms or abs(ay - by) > 1e-6 or min(abs(ay - y0), abs(ay - y0 - h)) > 1e-6:
+            continue
+        width = abs(bx - ax)
+        lo = x1 - DOOR_CORNER_M - width if east else x0 + DOOR_CORNER_M
+        seg = ((lo, ay), (lo + width, ay)) if ax < bx else ((lo + width, ay), (lo, ay))
+        other = next((r for r in plan.rooms if r.id in d.rooms and r.id != stair), None)
+        line = LineString(seg)
+        if other is None or not Polygon(other.polygon).exterior.buffer(1e-6).contains(line):
+            continue
+        if any(j != i and LineString(e.segment).distance(line) < 0.1 for j, e in enumerate(doors)):
+            continue
+        doors[i] = d.model_copy(update={"segment": (tuple(round(v, 6) for v in seg[0]), tuple(round(v, 6) for v in seg[1]))})
+    return plan.model_copy(update={"doors": doors})
 
 
 def _rect(room: Room) -> tuple[float, float, float, float]:
@@ -283,7 +315,7 @@ def stack_box(plans: list[Floorplan], stair: DogLeg) -> tuple[float, float, floa
     rectangle where the stairwells of all of ``plans`` overlap, against one of its long
     walls, its foot end (local +x, turned by ``yaw``) toward the strip of floor
     (:data:`~anyhome.floorplan.stairs.STRIP_M`) that also lies in that rectangle (in a
-    longer rectangle, slid along it by :data:`STACK_SLIDE_M`); the box touching no door
+    longer rectangle, slid along it on the 5 cm grid); the box touching no door
     of any stairwell nor its swing (None: no such place)."""
     from shapely.geometry import LineString, box
 
@@ -300,11 +332,11 @@ def stack_box(plans: list[Floorplan], stair: DogLeg) -> tuple[float, float, floa
         return None
     zones = [opening_zone(dr.segment).union(LineString(dr.segment)) for _, doors in wells for dr in doors]
     spare = x1 - x0 - length - STRIP_M
-    shifts = [i * STACK_SLIDE_M for i in range(int(spare / STACK_SLIDE_M + 1e-6) + 1)] + [spare]
+    shifts = [i * SNAP_M for i in range(int(spare / SNAP_M + 1e-6) + 1)] + [spare]
     for ya in (y0, y1 - width):
         for shift in shifts:
             for xa, yaw in ((x0 + shift, 0.0), (x1 - length - shift, math.pi)):  # the strip toward +x, -x
-                if not any(box(xa, ya, xa + length, ya + width).buffer(0.05).intersects(z) for z in zones):
+                if not any(box(xa, ya, xa + length, ya + width).buffer(STAIR_CLEAR_M).intersects(z) for z in zones):
                     return (round(xa, 6), round(ya, 6), round(xa + length, 6), round(ya + width, 6), yaw)
     return None
 

@@ -29,8 +29,14 @@ FLIGHT_WIDTH_M = 0.85
 """Width of one flight (Document K sets no minimum for a private stair; 0.8-0.9 m is usual)."""
 WELL_GAP_M = 0.05
 """Gap between the two flights (the well: a balustrade or a thin wall)."""
-STRIP_M = 0.9
-"""Depth of the floor in front of the box where a flight starts and the one below arrives."""
+STRIP_M = 1.0
+"""Depth of the floor in front of the box where a flight starts and the one below
+arrives: a flight's width at least, and room for a 0.9 m door in a long wall of the
+stairwell (:data:`DOOR_CORNER_M` from the corner, :data:`STAIR_CLEAR_M` clear of the stair)."""
+STAIR_CLEAR_M = 0.03
+"""Gap kept between the stair's box and a door or the floor its leaf swings over."""
+DOOR_CORNER_M = 0.05
+"""Wall left between a door moved to the strip and the stairwell's corner."""
 HEADROOM_MIN_M = 2.0
 """Clear height over a flight's pitch line (Document K)."""
 STAIR_DEPTH_M = 0.25

@@ -586,6 +586,12 @@ LANDING_MIN_ROOMS = 3
 """A storey above or below the ground floor with this many rooms besides its stairwell
 gets a landing (a hallway) they open onto: a stairwell has wall for a flight and about
 two doors, not one per bedroom."""
+LANDING_KEY = "landing"
+"""Program key of the landing :func:`assign_levels` adds to a storey."""
+LANDING_BASE_M2 = 1.0
+LANDING_M2_PER_DOOR = 0.8
+"""A landing's floor: this base plus this much per door along it (a 1.2 m wide strip
+with doors on both sides, about 0.9 m of wall per door and its margins)."""
 ATTIC_TYPES = ("bedroom", "storage", "study")
 """Room types an attic takes (the first of them the plan has)."""
 
@@ -640,6 +646,7 @@ def assign_levels(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], warnings
         if k != 0 and len(on) >= LANDING_MIN_ROOMS and not any(x.type == "hallway" for x in on) \
                 and len(slots) < MAX_ROOMS:
             landing = _slot_from_entry(kb, {"type": "hallway", "name": "landing"})
+            landing.key = LANDING_KEY
             landing.level = k
             slots.append(landing)
 
@@ -658,7 +665,12 @@ def connect_levels(kb: KnowledgeBase, slots: list[Slot], entrance_types: list[st
             continue
         stair = next(s for s in on if s.key == STAIRWELL_KEY)
         on.remove(stair)
-        edges += [e for e in connect(kb, [stair, *on], ["hallway"]) if e[1] != "outside"]
+        here = [e for e in connect(kb, [stair, *on], ["hallway"]) if e[1] != "outside"]
+        edges += here
+        for s in on:
+            if s.key == LANDING_KEY:  # a landing is as large as its doors need, no more
+                doors = sum(s.id in e for e in here)
+                s.area = LANDING_BASE_M2 + LANDING_M2_PER_DOOR * doors
     for s in slots:
         if s.key == STAIRWELL_KEY:
             s.area = STAIRWELL_AREA_M2

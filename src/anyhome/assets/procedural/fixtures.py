@@ -217,15 +217,15 @@ def _draw_dogleg(b: Builder, L: float, B: float, H: float, p) -> None:
                 (land_x, B / 2 - 0.05, z_land), (L / 2, B / 2, H - 0.045), (L / 2, B / 2 - 0.05, H - 0.045),
                 (L / 2, B / 2, H - 0.3), (L / 2, B / 2 - 0.05, H - 0.3)], p.primary)
     rail_h = min(0.9, 0.4 * H)
+    roof = H - 0.03  # rails stay inside the box (the floor above has its own guard)
     for y, xs, z0 in ((-WELL_GAP_M / 2, (L / 2 - 0.5 * g, land_x), 0.0), (WELL_GAP_M / 2, (land_x, L / 2), z_land)):
         x_a, x_b = xs
-        z_a = z0 + r + rail_h
-        z_b = min(H, (z_land if z0 == 0 else H) + rail_h)
-        if z0 > 0:  # second flight: stop where the rail would leave the box
-            frac = max(0.0, min(1.0, (H - z_a) / max(1e-6, (H + rail_h) - z_a)))
-            x_b, z_b = x_a + frac * (x_b - x_a), z_a + frac * ((H + rail_h) - z_a)
-        b.box((x_a - 0.04, y - 0.04, z0), (x_a + 0.04, y + 0.04, min(H, z_a + 0.05)), p.secondary)  # newel
-        if x_b != x_a:
+        z_a = min(roof, z0 + r + rail_h)
+        z_end = (z_land if z0 == 0 else H) + rail_h
+        frac = max(0.0, min(1.0, (roof - z_a) / max(1e-6, z_end - z_a))) if z_end > roof else 1.0
+        x_b, z_b = x_a + frac * (x_b - x_a), z_a + frac * (z_end - z_a)
+        b.box((x_a - 0.04, y - 0.04, z0), (x_a + 0.04, y + 0.04, z_a), p.secondary)  # newel
+        if abs(x_b - x_a) > 0.05:
             b.rod((x_a, y, z_a), (x_b, y, z_b), 0.025, p.secondary, sections=8)
 
 
