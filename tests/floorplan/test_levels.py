@@ -201,7 +201,7 @@ def test_storey_is_placed_where_it_hangs_least():
             return levels.overhang_m2([*ground.rooms, *(r.model_copy(update={"level": 1}) for r in p.rooms)])
 
         def flight(p):
-            return levels.stack_box([ground, p], levels.house_stair(spec))
+            return levels.stack_box([(0, ground), (1, p)], levels.storey_heights_m(spec))
 
         assert flight(placed) is not None
         if flight(plain) is not None:  # the plain placement was one of the candidates
@@ -257,7 +257,7 @@ def test_townhouse_stairwells_are_compact_and_their_flights_fit_on_every_level(s
         level = h.room_level(o.room)
         assert o.size[2] == pytest.approx(elev[level + 1] - elev[level], abs=1e-3)  # it rises a whole storey
     lower, upper = stairs
-    assert _footprint(lower).symmetric_difference(_footprint(upper)).area < 1e-6  # stacked
+    assert _footprint(lower).symmetric_difference(_footprint(upper)).area < 1e-6  # stacked (storeys of one height)
     assert lower.size[2] - STAIR_DEPTH_M >= HEADROOM_MIN_M  # the flight above runs a storey higher
     report = evaluate_house(h)
     assert report.violations == []

@@ -33,7 +33,7 @@ from anyhome.errors import FloorplanError
 from anyhome.floorplan.grid import SNAP_M
 from anyhome.floorplan.options import FloorplanOptions
 from anyhome.floorplan.solver import solve_floorplan
-from anyhome.floorplan.stairs import DOOR_CORNER_M, STAIR_CLEAR_M, STRIP_M, DogLeg, dogleg, is_dogleg_box
+from anyhome.floorplan.stairs import DOOR_CORNER_M, STAIR_CLEAR_M, STRIP_M, dogleg, is_dogleg_box
 from anyhome.geometry import opening_zone
 from anyhome.house import Door, Floorplan, HouseObject, Level, Room, Window
 from anyhome.plan.spec import HouseSpec
@@ -56,19 +56,18 @@ def storey_heights_m(spec: HouseSpec) -> dict[int, float]:
     return {k: max(r.height_m for r in spec.rooms if r.level == k) + SLAB_M for k in {r.level for r in spec.rooms}}
 
 
-def house_stair(spec: HouseSpec) -> DogLeg:
-    """The dog-leg stair sized for the tallest rise between two storeys of ``spec``:
-    every flight of the house stands on its box (stacked storey over storey)."""
-    heights = storey_heights_m(spec)
-    rises = [heights[k] for k in heights if k + 1 in heights] or [max(heights.values())]
-    return dogleg(max(rises))
+def flight_length_m(heights: dict[int, float], k: int) -> float:
+    """Length of the stair box the stairwell of storey ``k`` holds: the longer of the
+    dog-leg flights that start or arrive there (their rises: the storeys' heights)."""
+    rises = [heights[j] for j in (k - 1, k) if j in heights and j + 1 in heights]
+    return max(dogleg(r).length_m for r in rises or [heights[k]])
 
 
-def stairwell_min_m(spec: HouseSpec) -> tuple[float, float]:
-    """(long, short) sides a stairwell needs: the stair's box and the strip of floor at
-    its foot end (where a flight starts and the one below arrives)."""
-    d = house_stair(spec)
-    return (round(d.length_m + STRIP_M, 4), d.width_m)
+def stairwell_min_m(spec: HouseSpec, k: int) -> tuple[float, float]:
+    """(long, short) sides the stairwell of storey ``k`` needs: its stair box
+    (:func:`flight_length_m`) and the strip of floor at the stair's foot (where a flight
+    starts and the one below arrives), by the two flights' width."""
+    return (round(flight_length_m(storey_heights_m(spec), k) + STRIP_M, 4), dogleg(2.9).width_m)
 
 
 def solve_levels(spec: HouseSpec, rng: np.random.Generator, options: FloorplanOptions | None = None) -> Floorplan:
@@ -152,7 +151,7 @@ def _best_placed(spec: HouseSpec, plans: dict[int, Floorplan], plan: Floorplan, 
         x0, y0, w, h = _rect(mirrored.room(stair))
         for cx, cy in ((0, 0), (1, 0), (0, 1), (1, 1)):  # south-west, south-east, north-west, north-east
             cand = _moved(mirrored, rx + cx * rw - (x0 + cx * w), ry + cy * rh - (y0 + cy * h))
-            if stack_box([*plans.values(), cand], house_stair(spec)) is None:
+            if stack_box([*plans.items(), (k, cand)], storey_heights_m(spec)) is None:
                 continue
             hang = _outside_m2([r.polygon for r in cand.rooms], [r.polygon for r in plans[ref].rooms])
             if best is None or hang < best[0] - 1e-6:
@@ -189,7 +188,7 @@ def _storey_spec(spec: HouseSpec, k: int, opts: FloorplanOptions) -> HouseSpec:
     stair = stair_room(spec, k)
     if k != 0:
         links.append((stair, "outside"))
-    long_m, short_m = stairwell_min_m(spec)
+    long_m, short_m = stairwell_min_m(spec, k)
     least_m2 = round(long_m * (short_m + opts.stairwell_spare_m), 2)  # a stair for a tall storey needs a longer well
     rooms = [r.model_copy(update={"area_m2": max(r.area_m2, least_m2)}) if r.id == stair else r
              for r in spec.rooms if r.level == k]
@@ -215,8 +214,8 @@ def _one_storey(spec: HouseSpec, rng: np.random.Generator, options: FloorplanOpt
 def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options: FloorplanOptions | None) -> Floorplan:
     stair = stair_room(spec, k)
     sub = _storey_spec(spec, k, options or FloorplanOptions())
-    d = house_stair(spec)
-    long_m, short_m = stairwell_min_m(spec)
+    heights = storey_heights_m(spec)
+    long_m, short_m = stairwell_min_m(spec, k)
     why = f"its stairwell never came out as a rectangle of at least {long_m:g} x {short_m:g} m for the stair"
     attempts = (options or FloorplanOptions()).level_attempts
     for _ in range(attempts):
@@ -232,9 +231,9 @@ def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options: Fl
             plan = _turned(plan)
             x0, y0, w, h = _rect(plan.room(stair))
         if w >= long_m - 1e-6 and h >= short_m - 1e-6:
-            if stack_box([plan], d) is None:
+            if stack_box([(k, plan)], heights) is None:
                 plan = _doors_to_strip(plan, stair)
-            if stack_box([plan], d) is not None:
+            if stack_box([(k, plan)], heights) is not None:
                 return plan
     raise FloorplanError(f"could not lay out level {k} in {attempts} attempts ({why})")
 
@@ -297,48 +296,60 @@ def _moved(plan: Floorplan, dx: float, dy: float) -> Floorplan:
     return _map(plan, lambda p: (p[0] + dx, p[1] + dy))
 
 
-def _stairwells(plans: list[Floorplan]) -> list[tuple[Room, list[Door]]]:
-    """The stairwell of every storey in ``plans`` (laid out in one frame: the first room
-    of its level named like a stair, as :func:`stair_room`) with its doors."""
+def _stairwells(plans: list[tuple[int, Floorplan]]) -> list[tuple[int, Room, list[Door]]]:
+    """The stairwell of every storey ``k`` of ``plans`` (laid out in one frame: the first
+    room of that storey named like a stair, as :func:`stair_room`) with its doors."""
     out = []
-    for plan in plans:
-        seen: set[int] = set()
-        for r in plan.rooms:
-            if r.level not in seen and _is_stair(r):
-                seen.add(r.level)
-                out.append((r, [dr for dr in plan.doors if r.id in dr.rooms]))
+    for k, plan in plans:
+        r = next((r for r in plan.rooms if _is_stair(r) and (r.level == k or not any(x.level for x in plan.rooms))), None)
+        if r is not None:
+            out.append((k, r, [dr for dr in plan.doors if r.id in dr.rooms]))
     return out
 
 
-def stack_box(plans: list[Floorplan], stair: DogLeg) -> tuple[float, float, float, float, float] | None:
-    """(x0, y0, x1, y1, yaw) of the box every flight of ``stair`` stands on: inside the
-    rectangle where the stairwells of all of ``plans`` overlap, against one of its long
-    walls, its foot end (local +x, turned by ``yaw``) toward the strip of floor
-    (:data:`~anyhome.floorplan.stairs.STRIP_M`) that also lies in that rectangle (in a
-    longer rectangle, slid along it on the 5 cm grid); the box touching no door
-    of any stairwell nor its swing (None: no such place)."""
-    from shapely.geometry import LineString, box
+def stack_box(plans: list[tuple[int, Floorplan]], heights: dict[int, float]) -> tuple[float, float, float] | None:
+    """(foot_x, y0, yaw) of the stairs: every flight stands against one long wall of
+    every stairwell, on the strip ``y0`` to ``y0`` + the flights' width, its foot end (local
+    +x, turned by ``yaw``) at ``foot_x``, with the strip of floor at the foot
+    (:data:`~anyhome.floorplan.stairs.STRIP_M`) beyond it; the stairwell of storey ``k``
+    (``plans``: (k, its storey laid out in one frame)) holds the box of the flights that
+    start or arrive there (:func:`flight_length_m`, ``heights``: each storey's
+    floor-to-floor height) and that strip, the box touching no door of it nor its swing
+    (:data:`~anyhome.floorplan.stairs.STAIR_CLEAR_M` apart). Feet are tried on the 5 cm
+    grid from the walls in; None: no place."""
+    from shapely.geometry import LineString
 
     wells = _stairwells(plans)
     if not wells:
         return None
-    rects = [_rect(r) for r, _ in wells]
-    if any(w <= 0 for _, _, w, _ in rects):
+    rects = {k: _rect(r) for k, r, _ in wells}
+    if any(w <= 0 for _, _, w, _ in rects.values()):
         return None
-    x0, y0 = max(r[0] for r in rects), max(r[1] for r in rects)
-    x1, y1 = min(r[0] + r[2] for r in rects), min(r[1] + r[3] for r in rects)
-    length, width = stair.length_m, stair.width_m
-    if x1 - x0 < length + STRIP_M - 1e-6 or y1 - y0 < width - 1e-6:
+    width = dogleg(2.9).width_m
+    lengths = {k: flight_length_m(heights, k) for k in rects}
+    y0, y1 = max(r[1] for r in rects.values()), min(r[1] + r[3] for r in rects.values())
+    if y1 - y0 < width - 1e-6:
         return None
-    zones = [opening_zone(dr.segment).union(LineString(dr.segment)) for _, doors in wells for dr in doors]
-    spare = x1 - x0 - length - STRIP_M
-    shifts = [i * SNAP_M for i in range(int(spare / SNAP_M + 1e-6) + 1)] + [spare]
+    zones = {k: [opening_zone(dr.segment).union(LineString(dr.segment)) for dr in doors] for k, _, doors in wells}
+    east_lo = max(r[0] + lengths[k] for k, r in rects.items())  # foot toward +x: the box west of it
+    east_hi = min(r[0] + r[2] for r in rects.values()) - STRIP_M
+    west_lo = max(r[0] for r in rects.values()) + STRIP_M  # foot toward -x: the box east of it
+    west_hi = min(r[0] + r[2] - lengths[k] for k, r in rects.items())
+    tries = [(east_lo + i * SNAP_M, 0.0) for i in range(int((east_hi - east_lo) / SNAP_M + 1e-6) + 1)] if east_hi >= east_lo - 1e-6 else []
+    tries += [(west_hi - i * SNAP_M, math.pi) for i in range(int((west_hi - west_lo) / SNAP_M + 1e-6) + 1)] if west_hi >= west_lo - 1e-6 else []
     for ya in (y0, y1 - width):
-        for shift in shifts:
-            for xa, yaw in ((x0 + shift, 0.0), (x1 - length - shift, math.pi)):  # the strip toward +x, -x
-                if not any(box(xa, ya, xa + length, ya + width).buffer(STAIR_CLEAR_M).intersects(z) for z in zones):
-                    return (round(xa, 6), round(ya, 6), round(xa + length, 6), round(ya + width, 6), yaw)
+        for foot, yaw in tries:
+            if all(not any(_flight_rect(foot, ya, lengths[k], width, yaw).buffer(STAIR_CLEAR_M).intersects(z) for z in zones[k])
+                   for k in rects):
+                return (round(foot, 6), round(ya, 6), yaw)
     return None
+
+
+def _flight_rect(foot: float, y0: float, length: float, width: float, yaw: float):
+    """The box of a flight ``length`` long whose foot end is at ``foot`` (see :func:`stack_box`)."""
+    from shapely.geometry import box
+
+    return box(foot - length, y0, foot, y0 + width) if yaw == 0.0 else box(foot, y0, foot + length, y0 + width)
 
 
 def _is_stair(room: Room) -> bool:
@@ -358,32 +369,32 @@ def _joined(spec: HouseSpec, plans: dict[int, Floorplan], levels: list[Level]) -
 
 def stairs_objects(plan: Floorplan) -> list[HouseObject]:
     """One dog-leg stair per pair of storeys, in the lower stairwell, rising to the upper
-    storey's floor (its height is the difference of the two elevations); all of them on
-    the same box (:func:`stack_box`), storey over storey. Its ``position`` is, as for
-    every object, relative to its room's floor."""
+    storey's floor (its height is the difference of the two elevations); all of them
+    with their foot at the same place (:func:`stack_box`), storey over storey. Its
+    ``position`` is, as for every object, relative to its room's floor."""
     if not plan.levels:
         return []
     numbers = [lv.level for lv in plan.levels]
-    elev = {lv.level: lv.elevation_m for lv in plan.levels}
-    rises = [elev[hi] - elev[lo] for lo, hi in zip(numbers, numbers[1:])]
-    if not rises:
+    if len(numbers) < 2:
         return []
-    stair = dogleg(max(rises))
-    wells = [_stairwell(plan, k) for k in numbers]
-    fb = stack_box([plan.model_copy(update={"rooms": wells})], stair)
-    if fb is None:
-        raise FloorplanError(f"no room for the stairs in {', '.join(repr(w.id) for w in wells)}")
-    xa, ya, xb, yb, yaw = fb
+    heights = {lv.level: lv.height_m for lv in plan.levels}
+    elev = {lv.level: lv.elevation_m for lv in plan.levels}
+    found = stack_box([(k, plan) for k in numbers], heights)
+    if found is None:
+        raise FloorplanError(f"no room for the stairs in {', '.join(repr(_stairwell(plan, k).id) for k in numbers)}")
+    foot, ya, yaw = found
+    width = dogleg(2.9).width_m
     out = []
-    for (lo, hi), rise in zip(zip(numbers, numbers[1:]), rises):
+    for lo, hi in zip(numbers, numbers[1:]):
         low = _stairwell(plan, lo)
-        d = dogleg(rise)
+        d = dogleg(elev[hi] - elev[lo])
+        xa, _, xb, _ = _flight_rect(foot, ya, d.length_m, width, yaw).bounds
         out.append(HouseObject(
             id=f"{low.id}-stairs", room=low.id, name="stairs", category=STAIRS_CATEGORY,
             description=(f"a dog-leg stair from level {lo} up to level {hi}: {d.risers} risers of "
                          f"{d.riser_m:.3f} m, goings of {d.going_m:.2f} m, a half landing"),
-            position=(round((xa + xb) / 2, 4), round((ya + yb) / 2, 4), 0.0),
-            size=(round(xb - xa, 4), round(yb - ya, 4), round(rise, 4)),
+            position=(round((xa + xb) / 2, 4), round(ya + width / 2, 4), 0.0),
+            size=(round(xb - xa, 4), width, round(d.rise_m, 4)),
             yaw=yaw, rule="place_wall", tags=["equipment"],
         ))
     return out
