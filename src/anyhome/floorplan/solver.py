@@ -13,7 +13,6 @@ the best of the first few is kept. A program that fails every attempt raises
 from __future__ import annotations
 
 import dataclasses
-
 import logging
 from collections import Counter
 from collections.abc import Callable, Mapping
