@@ -573,7 +573,7 @@ def connect(kb: KnowledgeBase, slots: list[Slot], entrance_types: list[str]) -> 
 STAIRWELL_KEY = "stairwell"
 """Program key (and name) of the stairwell room planned on every storey of a house of
 several; the floorplan stage (anyhome.floorplan.levels) stacks them."""
-STAIRWELL_AREA_M2 = 7.5
+STAIRWELL_AREA_M2 = 8.5
 """Floor of a stairwell: a dog-leg stair (two 0.9 m flights side by side, 1.85 m, and a
 half landing: 2.65 m long for a 2.9 m storey in 16 risers of 0.181 m and goings of
 0.25 m, within UK Approved Document K for a private stair) and a 0.9 m strip of floor
