@@ -574,10 +574,11 @@ STAIRWELL_KEY = "stairwell"
 """Program key (and name) of the stairwell room planned on every storey of a house of
 several; the floorplan stage (anyhome.floorplan.levels) stacks them."""
 STAIRWELL_AREA_M2 = 8.5
-"""Floor of a stairwell: a dog-leg stair (two 0.9 m flights side by side, 1.85 m, and a
-half landing: 2.65 m long for a 2.9 m storey in 16 risers of 0.181 m and goings of
-0.25 m, within UK Approved Document K for a private stair) and a 0.9 m strip of floor
-at its foot end (anyhome.floorplan.stairs); the floorplan solver makes it about 2 x 4 m."""
+"""Floor of a stairwell: a dog-leg stair (two 0.85 m flights side by side, 1.75 m, and a
+half landing: 2.6 m long for a 2.9 m storey in 16 risers of 0.181 m and goings of
+0.25 m, within UK Approved Document K for a private stair) and a 1 m strip of floor at
+its foot (anyhome.floorplan.stairs): 6.3 m2 at least; the floorplan solver makes it
+about 2 x 4 m (a tall storey's stairwell grows with its stair: floorplan.levels)."""
 UP_TYPES = ("bedroom", "closet", "study", "playroom")
 """Room types that go upstairs in a house of several storeys (bathrooms follow them)."""
 BASEMENT_TYPES = ("storage", "cellar", "gym", "laundry")
