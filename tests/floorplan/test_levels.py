@@ -281,3 +281,14 @@ def test_a_small_two_storey_house_keeps_its_stairwells():
     assert h.level_numbers() == [0, 1]
     assert sum(r.type == "stairwell" for r in h.rooms) == 2
     assert reachable_rooms(h) == {r.id for r in h.rooms}
+
+
+def test_storeys_whose_compact_stairwells_do_not_stack_get_roomier_ones():
+    """A basement gym of 4.5 m: its long stair did not fit the compact stairwells the
+    first tries drew, and the house fell back to one storey; the later tries plan
+    roomier stairwells (``stairwell_roomy_m``) and the three storeys stack."""
+    h = generate("a two-storey house with a basement gym", 0)
+    assert h.level_numbers() == [-1, 0, 1]
+    assert not any("could not stack" in w for w in h.warnings)
+    assert reachable_rooms(h) == {r.id for r in h.rooms}
+    assert evaluate_house(h).violations == []

@@ -24,6 +24,7 @@ overhang).
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections.abc import Iterable
 
@@ -77,11 +78,12 @@ def solve_levels(spec: HouseSpec, rng: np.random.Generator, options: FloorplanOp
         return solve_floorplan(spec, rng, options)
     if 0 not in numbers:
         raise FloorplanError("a house of several storeys needs rooms on the ground floor (level 0)")
-    attempts = (options or FloorplanOptions()).level_attempts
+    opts = options or FloorplanOptions()
+    roomy = dataclasses.replace(opts, stairwell_spare_m=opts.stairwell_spare_m + opts.stairwell_roomy_m)
     why = ""
-    for _ in range(attempts):
+    for i in range(opts.level_attempts):  # the later half with roomier stairwells (a squarer room holds the stair)
         try:
-            plan = _stacked(spec, numbers, rng, options)
+            plan = _stacked(spec, numbers, rng, opts if i < opts.level_attempts // 2 else roomy)
             stairs_objects(plan)  # a flight fits where both stairwells meet, clear of their doors
             return plan
         except FloorplanError as e:
