@@ -3,16 +3,19 @@
 A plan whose rooms all sit on level 0 goes straight to :func:`solve_floorplan` (the same
 floorplan, byte for byte). Otherwise every storey is solved as a house of its own (an
 upper storey or a basement gets a stand-in entrance through its stairwell, dropped
-afterwards), until its stairwell comes out as a rectangle that holds the house's dog-leg stair
-(:mod:`anyhome.floorplan.stairs`: two flights side by side, the half landing at one end)
-and the strip of floor in front of it (:func:`stairwell_min_m`). Each storey is then
-turned (a quarter turn when needed) so its stairwell's long side runs east-west, and
-placed on (a basement: under) the storey next to it toward the ground with a corner of
-its stairwell on the same corner of that one's, where the stairwells of all storeys
-overlap in a rectangle that holds the stair and its strip clear of their doors
-(:func:`stack_box`). Every flight stands on that same box, storey over storey (as in a
-real stairwell: the flight above runs a storey over the one below); each is a
-``stairs`` object in the lower storey's stairwell (:func:`stairs_objects`).
+afterwards), until its stairwell comes out as a rectangle that holds its dog-leg stair
+(:mod:`anyhome.floorplan.stairs`: two flights side by side, the half landing at one end,
+as long as the taller of the storeys it joins needs) and the strip of floor at the
+stair's foot (:func:`stairwell_min_m`; the solver is asked for that long side, and the
+stairwell's doors in its long walls are slid to the strip, :func:`_doors_to_strip`).
+Each storey is then turned (a quarter turn when needed) so its stairwell's long side
+runs east-west, and placed on (a basement: under) the storey next to it toward the
+ground with a corner of its stairwell on the same corner of that one's, where the
+stairwells of all storeys overlap so that every flight fits with its foot at one place,
+clear of their doors (:func:`stack_box`): storey over storey, as in a real stairwell
+(the flight above runs a storey over the one below). Each flight is a ``stairs`` object
+in the lower storey's stairwell (:func:`stairs_objects`). Storeys that will not stack
+are tried again with roomier stairwells, then laid out on one storey.
 
 The narrow interface (:func:`solve_levels`, :func:`stairs_objects`) is what the pipeline
 sees; a solver that takes a footprint and a fixed stairwell rectangle can replace the
@@ -34,7 +37,14 @@ from anyhome.errors import FloorplanError
 from anyhome.floorplan.grid import SNAP_M
 from anyhome.floorplan.options import FloorplanOptions
 from anyhome.floorplan.solver import solve_floorplan
-from anyhome.floorplan.stairs import DOOR_CORNER_M, STAIR_CLEAR_M, STRIP_M, dogleg, is_dogleg_box
+from anyhome.floorplan.stairs import (
+    DOOR_CORNER_M,
+    STAIR_CLEAR_M,
+    STAIR_WIDTH_M,
+    STRIP_M,
+    dogleg,
+    is_dogleg_box,
+)
 from anyhome.geometry import opening_zone
 from anyhome.house import Door, Floorplan, HouseObject, Level, Room, Window
 from anyhome.plan.spec import HouseSpec
@@ -68,7 +78,7 @@ def stairwell_min_m(spec: HouseSpec, k: int) -> tuple[float, float]:
     """(long, short) sides the stairwell of storey ``k`` needs: its stair box
     (:func:`flight_length_m`) and the strip of floor at the stair's foot (where a flight
     starts and the one below arrives), by the two flights' width."""
-    return (round(flight_length_m(storey_heights_m(spec), k) + STRIP_M, 4), dogleg(2.9).width_m)
+    return (round(flight_length_m(storey_heights_m(spec), k) + STRIP_M, 4), STAIR_WIDTH_M)
 
 
 def solve_levels(spec: HouseSpec, rng: np.random.Generator, options: FloorplanOptions | None = None) -> Floorplan:
@@ -327,7 +337,7 @@ def stack_box(plans: list[tuple[int, Floorplan]], heights: dict[int, float]) -> 
     rects = {k: _rect(r) for k, r, _ in wells}
     if any(w <= 0 for _, _, w, _ in rects.values()):
         return None
-    width = dogleg(2.9).width_m
+    width = STAIR_WIDTH_M
     lengths = {k: flight_length_m(heights, k) for k in rects}
     y0, y1 = max(r[1] for r in rects.values()), min(r[1] + r[3] for r in rects.values())
     if y1 - y0 < width - 1e-6:
@@ -385,7 +395,7 @@ def stairs_objects(plan: Floorplan) -> list[HouseObject]:
     if found is None:
         raise FloorplanError(f"no room for the stairs in {', '.join(repr(_stairwell(plan, k).id) for k in numbers)}")
     foot, ya, yaw = found
-    width = dogleg(2.9).width_m
+    width = STAIR_WIDTH_M
     out = []
     for lo, hi in zip(numbers, numbers[1:]):
         low = _stairwell(plan, lo)

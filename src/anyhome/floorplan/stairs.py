@@ -29,6 +29,8 @@ FLIGHT_WIDTH_M = 0.85
 """Width of one flight (Document K sets no minimum for a private stair; 0.8-0.9 m is usual)."""
 WELL_GAP_M = 0.05
 """Gap between the two flights (the well: a balustrade or a thin wall)."""
+STAIR_WIDTH_M = round(2 * FLIGHT_WIDTH_M + WELL_GAP_M, 4)
+"""Width of a dog-leg stair's box: two flights and the well between them."""
 STRIP_M = 1.0
 """Depth of the floor in front of the box where a flight starts and the one below
 arrives: a flight's width at least, and room for a 0.9 m door in a long wall of the
@@ -78,7 +80,7 @@ class DogLeg:
     @property
     def width_m(self) -> float:
         """Box width: two flights and the well between them."""
-        return round(2 * FLIGHT_WIDTH_M + WELL_GAP_M, 4)
+        return STAIR_WIDTH_M
 
 
 def dogleg(rise_m: float) -> DogLeg:
