@@ -36,7 +36,8 @@ KEPT_CONSTANTS = {
     "SNAP_M", "OUTSIDE", "FREE",  # the format's 5 cm grid; owner-array labels
     "DOOR_WIDTH_M", "ENTRANCE_WIDTH_M", "DOOR_HEIGHT_M", "OPENING_HEADROOM_M",
     "WINDOW_SILL_M", "WINDOW_HEIGHT_M", "BATH_WINDOW_WIDTH_M", "BATH_WINDOW_SILL_M", "BATH_WINDOW_HEIGHT_M",
-    "STAIRWELL_MIN_LONG_M", "STAIRWELL_MIN_SHORT_M", "FLIGHT_WIDTH_M", "FLIGHT_MIN_LENGTH_M", "SLAB_M",  # stairs (Approved Document K)
+    "RISER_MAX_M", "GOING_M", "FLIGHT_WIDTH_M", "WELL_GAP_M", "STRIP_M", "DOOR_CORNER_M", "STAIR_CLEAR_M", "HEADROOM_MIN_M", "STAIR_DEPTH_M",
+    "SLAB_M",  # stairs (Approved Document K)
     "L_CORNERS", "INSCRIBED_TOL_M",  # merge.py: an L's corner count; the widest-disc search's precision
 }
 

@@ -3,13 +3,19 @@
 A plan whose rooms all sit on level 0 goes straight to :func:`solve_floorplan` (the same
 floorplan, byte for byte). Otherwise every storey is solved as a house of its own (an
 upper storey or a basement gets a stand-in entrance through its stairwell, dropped
-afterwards), until its stairwell comes out as a rectangle at least
-:data:`STAIRWELL_MIN_LONG_M` x :data:`STAIRWELL_MIN_SHORT_M`. Each storey is then turned
-(a quarter turn when needed) so its stairwell's long side runs east-west, and placed on
-(a basement: under) the storey next to it toward the ground with a corner of its
-stairwell on the same corner of that one's: the stairwells overlap in a rectangle that
-holds a straight flight clear of their doors. The flight is a
-``stairs`` object in the lower storey's stairwell (:func:`stairs_objects`).
+afterwards), until its stairwell comes out as a rectangle that holds its dog-leg stair
+(:mod:`anyhome.floorplan.stairs`: two flights side by side, the half landing at one end,
+as long as the taller of the storeys it joins needs) and the strip of floor at the
+stair's foot (:func:`stairwell_min_m`; the solver is asked for that long side, and the
+stairwell's doors in its long walls are slid to the strip, :func:`_doors_to_strip`).
+Each storey is then turned (a quarter turn when needed) so its stairwell's long side
+runs east-west, and placed on (a basement: under) the storey next to it toward the
+ground with a corner of its stairwell on the same corner of that one's, where the
+stairwells of all storeys overlap so that every flight fits with its foot at one place,
+clear of their doors (:func:`stack_box`): storey over storey, as in a real stairwell
+(the flight above runs a storey over the one below). Each flight is a ``stairs`` object
+in the lower storey's stairwell (:func:`stairs_objects`). Storeys that will not stack
+are tried again with roomier stairwells, then laid out on one storey.
 
 The narrow interface (:func:`solve_levels`, :func:`stairs_objects`) is what the pipeline
 sees; a solver that takes a footprint and a fixed stairwell rectangle can replace the
@@ -21,28 +27,29 @@ overhang).
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections.abc import Iterable
 
 import numpy as np
 
 from anyhome.errors import FloorplanError
+from anyhome.floorplan.grid import SNAP_M
 from anyhome.floorplan.merge import merge_open_plan
 from anyhome.floorplan.options import FloorplanOptions
 from anyhome.floorplan.solver import solve_floorplan
+from anyhome.floorplan.stairs import (
+    DOOR_CORNER_M,
+    STAIR_CLEAR_M,
+    STAIR_WIDTH_M,
+    STRIP_M,
+    dogleg,
+    is_dogleg_box,
+)
 from anyhome.geometry import opening_zone
 from anyhome.house import Door, Floorplan, HouseObject, Level, Room, Window
 from anyhome.plan.spec import HouseSpec
 
-STAIRWELL_MIN_LONG_M = 3.5
-"""Shortest long side of a stairwell: a 3.3 m flight (a 2.9 m storey in 15 risers of
-0.193 m and 14 goings of 0.236 m: within UK Approved Document K for a private stair,
-rise <= 220 mm, going >= 220 mm, pitch <= 42 deg)."""
-STAIRWELL_MIN_SHORT_M = 1.95
-"""Shortest short side of a stairwell: a 0.9 m flight (Document K's usual minimum width)
-beside a landing strip."""
-FLIGHT_WIDTH_M = 0.9
-FLIGHT_MIN_LENGTH_M = 3.3
 SLAB_M = 0.2
 """Floor structure between a storey's ceiling and the next storey's floor."""
 STAIRS_CATEGORY = "stairs"
@@ -56,6 +63,25 @@ def stair_room(spec: HouseSpec, level: int) -> str:
     raise FloorplanError(f"level {level} has no stairwell room (a room named 'stairwell')")
 
 
+def storey_heights_m(spec: HouseSpec) -> dict[int, float]:
+    """Floor-to-floor height of every storey of ``spec``: its tallest room and the slab."""
+    return {k: max(r.height_m for r in spec.rooms if r.level == k) + SLAB_M for k in {r.level for r in spec.rooms}}
+
+
+def flight_length_m(heights: dict[int, float], k: int) -> float:
+    """Length of the stair box the stairwell of storey ``k`` holds: the longer of the
+    dog-leg flights that start or arrive there (their rises: the storeys' heights)."""
+    rises = [heights[j] for j in (k - 1, k) if j in heights and j + 1 in heights]
+    return max(dogleg(r).length_m for r in rises or [heights[k]])
+
+
+def stairwell_min_m(spec: HouseSpec, k: int) -> tuple[float, float]:
+    """(long, short) sides the stairwell of storey ``k`` needs: its stair box
+    (:func:`flight_length_m`) and the strip of floor at the stair's foot (where a flight
+    starts and the one below arrives), by the two flights' width."""
+    return (round(flight_length_m(storey_heights_m(spec), k) + STRIP_M, 4), STAIR_WIDTH_M)
+
+
 def solve_levels(spec: HouseSpec, rng: np.random.Generator, options: FloorplanOptions | None = None) -> Floorplan:
     """Lay out every storey of ``spec`` (see the module doc); one storey: solve_floorplan."""
     numbers = sorted({r.level for r in spec.rooms})
@@ -63,11 +89,12 @@ def solve_levels(spec: HouseSpec, rng: np.random.Generator, options: FloorplanOp
         return merge_open_plan(solve_floorplan(spec, rng, options), spec, rng, options)
     if 0 not in numbers:
         raise FloorplanError("a house of several storeys needs rooms on the ground floor (level 0)")
-    attempts = (options or FloorplanOptions()).level_attempts
+    opts = options or FloorplanOptions()
+    roomy = dataclasses.replace(opts, stairwell_spare_m=opts.stairwell_spare_m + opts.stairwell_roomy_m)
     why = ""
-    for _ in range(attempts):
+    for i in range(opts.level_attempts):  # the later half with roomier stairwells (a squarer room holds the stair)
         try:
-            plan = _stacked(spec, numbers, rng, options)
+            plan = _stacked(spec, numbers, rng, opts if i < opts.level_attempts // 2 else roomy)
             stairs_objects(plan)  # a flight fits where both stairwells meet, clear of their doors
             return plan
         except FloorplanError as e:
@@ -96,7 +123,7 @@ def _stacked(spec: HouseSpec, numbers: list[int], rng: np.random.Generator, opti
         if best is None:
             raise FloorplanError(why)
         plans[k] = best[1]
-    heights = {k: max(r.height_m for r in spec.rooms if r.level == k) + SLAB_M for k in numbers}
+    heights = storey_heights_m(spec)
     elevation = {0: 0.0}
     for k in (n for n in numbers if n > 0):
         elevation[k] = elevation[k - 1] + heights[k - 1]
@@ -127,8 +154,8 @@ def _best_placed(spec: HouseSpec, plans: dict[int, Floorplan], plan: Floorplan, 
     """Storey ``k`` (``plan``) placed on (a basement: under) storey ``ref``: of its four mirror
     images (:data:`MIRRORS`), each with a corner of its stairwell on the same corner of
     the stairwell of ``ref``, the one whose floor lies most over (under) ``ref``'s, among
-    those where a flight fits in both stairwells clear of their doors; with the area of
-    its floor outside ``ref``'s (m2)."""
+    those where the stair fits in the stairwells of every storey placed so far, clear of
+    their doors (:func:`stack_box`); with the area of its floor outside ``ref``'s (m2)."""
     stair, ref_stair = stair_room(spec, k), stair_room(spec, ref)
     rx, ry, rw, rh = _rect(plans[ref].room(ref_stair))
     best: tuple[float, Floorplan] | None = None
@@ -137,10 +164,7 @@ def _best_placed(spec: HouseSpec, plans: dict[int, Floorplan], plan: Floorplan, 
         x0, y0, w, h = _rect(mirrored.room(stair))
         for cx, cy in ((0, 0), (1, 0), (0, 1), (1, 1)):  # south-west, south-east, north-west, north-east
             cand = _moved(mirrored, rx + cx * rw - (x0 + cx * w), ry + cy * rh - (y0 + cy * h))
-            lo, hi = (plans[ref], cand) if k > ref else (cand, plans[ref])
-            pair = Floorplan.model_construct(rooms=[*lo.rooms, *hi.rooms], doors=[*lo.doors, *hi.doors], windows=[],
-                                             connections=[], levels=[], warnings=[])
-            if _flight_box(pair, *((ref_stair, stair) if k > ref else (stair, ref_stair))) is None:
+            if stack_box([*plans.items(), (k, cand)], storey_heights_m(spec)) is None:
                 continue
             hang = _outside_m2([r.polygon for r in cand.rooms], [r.polygon for r in plans[ref].rooms])
             if best is None or hang < best[0] - 1e-6:
@@ -169,14 +193,19 @@ def overhang_m2(rooms: Iterable) -> float:
     return sum((_outside_m2(by_level[k], by_level.get(k - 1, [])) for k in by_level if k > 0), 0.0)
 
 
-def _storey_spec(spec: HouseSpec, k: int) -> HouseSpec:
+def _storey_spec(spec: HouseSpec, k: int, opts: FloorplanOptions) -> HouseSpec:
     """Storey ``k`` of ``spec`` as a house of its own: an upper storey or a basement gets a
     stand-in entrance through its stairwell (the stairs come in there; dropped after)."""
     ids = {r.id for r in spec.rooms if r.level == k}
     links = [c for c in spec.connections if c[0] in ids and (c[1] in ids or (k == 0 and c[1] == "outside"))]
+    stair = stair_room(spec, k)
     if k != 0:
-        links.append((stair_room(spec, k), "outside"))
-    return spec.model_copy(update={"rooms": [r for r in spec.rooms if r.level == k], "connections": links})
+        links.append((stair, "outside"))
+    long_m, short_m = stairwell_min_m(spec, k)
+    least_m2 = round(long_m * (short_m + opts.stairwell_spare_m), 2)  # a stair for a tall storey needs a longer well
+    rooms = [r.model_copy(update={"area_m2": max(r.area_m2, least_m2)}) if r.id == stair else r
+             for r in spec.rooms if r.level == k]
+    return spec.model_copy(update={"rooms": rooms, "connections": links})
 
 
 ONE_STOREY_NOTE = "could not stack the storeys"
@@ -197,12 +226,14 @@ def _one_storey(spec: HouseSpec, rng: np.random.Generator, options: FloorplanOpt
 
 def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options: FloorplanOptions | None) -> Floorplan:
     stair = stair_room(spec, k)
-    sub = _storey_spec(spec, k)
-    why = "its stairwell never came out as a rectangle large enough for a flight"
+    sub = _storey_spec(spec, k, options or FloorplanOptions())
+    heights = storey_heights_m(spec)
+    long_m, short_m = stairwell_min_m(spec, k)
+    why = f"its stairwell never came out as a rectangle of at least {long_m:g} x {short_m:g} m for the stair"
     attempts = (options or FloorplanOptions()).level_attempts
     for _ in range(attempts):
         try:
-            plan = solve_floorplan(sub, rng, options)
+            plan = solve_floorplan(sub, rng, options, min_length_m={stair: long_m})
         except FloorplanError as e:
             why = str(e)
             continue
@@ -212,10 +243,45 @@ def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options: Fl
         if w < h:
             plan = _turned(plan)
             x0, y0, w, h = _rect(plan.room(stair))
-        top = k == max(r.level for r in spec.rooms)
-        if w >= STAIRWELL_MIN_LONG_M - 1e-6 and h >= STAIRWELL_MIN_SHORT_M - 1e-6 and (top or _flight_box(plan, stair)):
-            return plan
+        if w >= long_m - 1e-6 and h >= short_m - 1e-6:
+            if stack_box([(k, plan)], heights) is None:
+                plan = _doors_to_strip(plan, stair)
+            if stack_box([(k, plan)], heights) is not None:
+                return plan
     raise FloorplanError(f"could not lay out level {k} in {attempts} attempts ({why})")
+
+
+def _doors_to_strip(plan: Floorplan, stair: str) -> Floorplan:
+    """``plan`` with the doors in the long walls of its stairwell ``stair`` (running
+    east-west) slid along their wall to its end where the strip at the stair's foot will
+    be (the end whose end wall has a door; else the east end), :data:`DOOR_CORNER_M` from
+    the corner, where the wall is still shared with the same room and no other door is
+    near; doors that cannot move stay."""
+    from shapely.geometry import LineString, Polygon
+
+    x0, y0, w, h = _rect(plan.room(stair))
+    x1 = x0 + w
+    mine = [d for d in plan.doors if stair in d.rooms]
+    ends = {round(d.segment[0][0], 6) for d in mine if abs(d.segment[0][0] - d.segment[1][0]) < 1e-6}
+    if len(ends) > 1:
+        return plan
+    east = not ends or abs(next(iter(ends)) - x1) < 1e-6
+    doors = list(plan.doors)
+    for i, d in enumerate(doors):
+        (ax, ay), (bx, by) = d.segment
+        if stair not in d.rooms or abs(ay - by) > 1e-6 or min(abs(ay - y0), abs(ay - y0 - h)) > 1e-6:
+            continue
+        width = abs(bx - ax)
+        lo = x1 - DOOR_CORNER_M - width if east else x0 + DOOR_CORNER_M
+        seg = ((lo, ay), (lo + width, ay)) if ax < bx else ((lo + width, ay), (lo, ay))
+        other = next((r for r in plan.rooms if r.id in d.rooms and r.id != stair), None)
+        line = LineString(seg)
+        if other is None or not Polygon(other.polygon).exterior.buffer(1e-6).contains(line):
+            continue
+        if any(j != i and LineString(e.segment).distance(line) < 0.1 for j, e in enumerate(doors)):
+            continue
+        doors[i] = d.model_copy(update={"segment": (tuple(round(v, 6) for v in seg[0]), tuple(round(v, 6) for v in seg[1]))})
+    return plan.model_copy(update={"doors": doors})
 
 
 def _rect(room: Room) -> tuple[float, float, float, float]:
@@ -243,31 +309,64 @@ def _moved(plan: Floorplan, dx: float, dy: float) -> Floorplan:
     return _map(plan, lambda p: (p[0] + dx, p[1] + dy))
 
 
-def _flight_box(plan: Floorplan, stair: str, upper: str | None = None) -> tuple[float, float, float, float, float] | None:
-    """(x0, y0, x1, y1, yaw) of a flight along a long wall of the stairwell, its top end
-    against a short wall, touching no door of either stairwell (None: every place does).
-    The flight stays inside the rectangle where both stairwells overlap, so its top
-    lands in the upper one."""
-    from shapely.geometry import LineString, box
+def _stairwells(plans: list[tuple[int, Floorplan]]) -> list[tuple[int, Room, list[Door]]]:
+    """The stairwell of every storey ``k`` of ``plans`` (laid out in one frame: the first
+    room of that storey named like a stair, as :func:`stair_room`) with its doors."""
+    out = []
+    for k, plan in plans:
+        r = next((r for r in plan.rooms if _is_stair(r) and (r.level == k or not any(x.level for x in plan.rooms))), None)
+        if r is not None:
+            out.append((k, r, [dr for dr in plan.doors if r.id in dr.rooms]))
+    return out
 
-    x0, y0, w, h = _rect(plan.room(stair))
-    if upper is not None:  # where the two stairwells overlap
-        ux0, uy0, uw, uh = _rect(plan.room(upper))
-        if uw <= 0:
-            return None
-        ax, ay = max(x0, ux0), max(y0, uy0)
-        w, h = min(x0 + w, ux0 + uw) - ax, min(y0 + h, uy0 + uh) - ay
-        x0, y0 = ax, ay
-        if w < FLIGHT_MIN_LENGTH_M - 1e-6 or h < FLIGHT_WIDTH_M - 1e-6:
-            return None
-    doors = [opening_zone(d.segment).union(LineString(d.segment)) for d in plan.doors
-             if stair in d.rooms or (upper is not None and upper in d.rooms)]  # its swing, on both sides
-    for ya, yb in ((y0, y0 + FLIGHT_WIDTH_M), (y0 + h - FLIGHT_WIDTH_M, y0 + h)):
-        for xa, yaw in ((x0, 0.0), (x0 + w - FLIGHT_MIN_LENGTH_M, math.pi)):
-            run = box(xa, ya, xa + FLIGHT_MIN_LENGTH_M, yb).buffer(0.05)
-            if not any(run.intersects(d) for d in doors):
-                return (xa, ya, xa + FLIGHT_MIN_LENGTH_M, yb, yaw)
+
+def stack_box(plans: list[tuple[int, Floorplan]], heights: dict[int, float]) -> tuple[float, float, float] | None:
+    """(foot_x, y0, yaw) of the stairs: every flight stands against one long wall of
+    every stairwell, on the strip ``y0`` to ``y0`` + the flights' width, its foot end (local
+    +x, turned by ``yaw``) at ``foot_x``, with the strip of floor at the foot
+    (:data:`~anyhome.floorplan.stairs.STRIP_M`) beyond it; the stairwell of storey ``k``
+    (``plans``: (k, its storey laid out in one frame)) holds the box of the flights that
+    start or arrive there (:func:`flight_length_m`, ``heights``: each storey's
+    floor-to-floor height) and that strip, the box touching no door of it nor its swing
+    (:data:`~anyhome.floorplan.stairs.STAIR_CLEAR_M` apart). Feet are tried on the 5 cm
+    grid from the walls in; None: no place."""
+    from shapely.geometry import LineString
+
+    wells = _stairwells(plans)
+    if not wells:
+        return None
+    rects = {k: _rect(r) for k, r, _ in wells}
+    if any(w <= 0 for _, _, w, _ in rects.values()):
+        return None
+    width = STAIR_WIDTH_M
+    lengths = {k: flight_length_m(heights, k) for k in rects}
+    y0, y1 = max(r[1] for r in rects.values()), min(r[1] + r[3] for r in rects.values())
+    if y1 - y0 < width - 1e-6:
+        return None
+    zones = {k: [opening_zone(dr.segment).union(LineString(dr.segment)) for dr in doors] for k, _, doors in wells}
+    east_lo = max(r[0] + lengths[k] for k, r in rects.items())  # foot toward +x: the box west of it
+    east_hi = min(r[0] + r[2] for r in rects.values()) - STRIP_M
+    west_lo = max(r[0] for r in rects.values()) + STRIP_M  # foot toward -x: the box east of it
+    west_hi = min(r[0] + r[2] - lengths[k] for k, r in rects.items())
+    tries = [(east_lo + i * SNAP_M, 0.0) for i in range(int((east_hi - east_lo) / SNAP_M + 1e-6) + 1)] if east_hi >= east_lo - 1e-6 else []
+    tries += [(west_hi - i * SNAP_M, math.pi) for i in range(int((west_hi - west_lo) / SNAP_M + 1e-6) + 1)] if west_hi >= west_lo - 1e-6 else []
+    for ya in (y0, y1 - width):
+        for foot, yaw in tries:
+            if all(not any(_flight_rect(foot, ya, lengths[k], width, yaw).buffer(STAIR_CLEAR_M).intersects(z) for z in zones[k])
+                   for k in rects):
+                return (round(foot, 6), round(ya, 6), yaw)
     return None
+
+
+def _flight_rect(foot: float, y0: float, length: float, width: float, yaw: float):
+    """The box of a flight ``length`` long whose foot end is at ``foot`` (see :func:`stack_box`)."""
+    from shapely.geometry import box
+
+    return box(foot - length, y0, foot, y0 + width) if yaw == 0.0 else box(foot, y0, foot + length, y0 + width)
+
+
+def _is_stair(room: Room) -> bool:
+    return "stair" in room.id.lower() or "stair" in room.name.lower()
 
 
 def _joined(spec: HouseSpec, plans: dict[int, Floorplan], levels: list[Level]) -> Floorplan:
@@ -282,27 +381,33 @@ def _joined(spec: HouseSpec, plans: dict[int, Floorplan], levels: list[Level]) -
 
 
 def stairs_objects(plan: Floorplan) -> list[HouseObject]:
-    """One straight flight per pair of storeys, in the lower stairwell, rising to the
-    upper storey's floor (its height is the difference of the two elevations). Its
+    """One dog-leg stair per pair of storeys, in the lower stairwell, rising to the upper
+    storey's floor (its height is the difference of the two elevations); all of them
+    with their foot at the same place (:func:`stack_box`), storey over storey. Its
     ``position`` is, as for every object, relative to its room's floor."""
     if not plan.levels:
         return []
-    out = []
     numbers = [lv.level for lv in plan.levels]
+    if len(numbers) < 2:
+        return []
+    heights = {lv.level: lv.height_m for lv in plan.levels}
     elev = {lv.level: lv.elevation_m for lv in plan.levels}
+    found = stack_box([(k, plan) for k in numbers], heights)
+    if found is None:
+        raise FloorplanError(f"no room for the stairs in {', '.join(repr(_stairwell(plan, k).id) for k in numbers)}")
+    foot, ya, yaw = found
+    width = STAIR_WIDTH_M
+    out = []
     for lo, hi in zip(numbers, numbers[1:]):
         low = _stairwell(plan, lo)
-        up = _stairwell(plan, hi)
-        fb = _flight_box(plan, low.id, up.id)
-        if fb is None:
-            raise FloorplanError(f"no room for a flight of stairs in {low.id!r}")
-        xa, ya, xb, yb, yaw = fb
-        rise = elev[hi] - elev[lo]
+        d = dogleg(elev[hi] - elev[lo])
+        xa, _, xb, _ = _flight_rect(foot, ya, d.length_m, width, yaw).bounds
         out.append(HouseObject(
             id=f"{low.id}-stairs", room=low.id, name="stairs", category=STAIRS_CATEGORY,
-            description=f"a straight flight from level {lo} up to level {hi}",
-            position=(round((xa + xb) / 2, 4), round((ya + yb) / 2, 4), 0.0),
-            size=(FLIGHT_MIN_LENGTH_M, FLIGHT_WIDTH_M, round(rise, 4)),
+            description=(f"a dog-leg stair from level {lo} up to level {hi}: {d.risers} risers of "
+                         f"{d.riser_m:.3f} m, goings of {d.going_m:.2f} m, a half landing"),
+            position=(round((xa + xb) / 2, 4), round(ya + width / 2, 4), 0.0),
+            size=(round(xb - xa, 4), width, round(d.rise_m, 4)),
             yaw=yaw, rule="place_wall", tags=["equipment"],
         ))
     return out
@@ -310,7 +415,7 @@ def stairs_objects(plan: Floorplan) -> list[HouseObject]:
 
 def _stairwell(plan: Floorplan, level: int) -> Room:
     for r in plan.rooms:
-        if r.level == level and ("stair" in r.id.lower() or "stair" in r.name.lower()):
+        if r.level == level and _is_stair(r):
             return r
     raise FloorplanError(f"level {level} has no stairwell room")
 
@@ -330,8 +435,11 @@ def stair_link(plan: Floorplan, obj: HouseObject) -> tuple[str, str] | None:
         return None
     x, y, _ = obj.position
     c, s = math.cos(obj.yaw), math.sin(obj.yaw)
-    half = obj.size[0] / 2 - 0.1
-    top = Point(x - c * half, y - s * half)  # the flight rises toward its local -x
+    if is_dogleg_box(obj.size[0], obj.size[1]):  # a dog-leg ends at its foot end, on its +y half
+        lx, ly = obj.size[0] / 2 - 0.1, obj.size[1] / 4
+    else:  # a straight flight rises toward its local -x
+        lx, ly = -(obj.size[0] / 2 - 0.1), 0.0
+    top = Point(x + c * lx - s * ly, y + s * lx + c * ly)
     for r in plan.rooms:
         if r.level == above[0] and Polygon(r.polygon).buffer(1e-6).contains(top):
             return (here.id, r.id)

@@ -60,6 +60,10 @@ class FloorplanOptions:
     """Layouts tried of each storey off the ground; the one hanging least over nothing is kept."""
     overhang_ok_m2: float = _opt(1.0, 0.0, 1_000.0)
     """A storey hanging over nothing by at most this much (m2) is kept at once."""
+    stairwell_spare_m: float = _opt(0.3, 0.0, 5.0)
+    """A stairwell is planned at least its stair's length by its width plus this (m)."""
+    stairwell_roomy_m: float = _opt(1.3, 0.0, 5.0)
+    """Added to ``stairwell_spare_m`` in the later half of the tries to stack the storeys."""
     slicing_max_rooms: int = _opt(6, 1, 1_000)
     """Programs up to this many rooms try the slicing search first; larger ones go to the spine."""
     slicing_attempts: int = _opt(10, 0, 10_000)

@@ -36,6 +36,9 @@ class Program:
     enclosed: tuple[bool, ...] = ()
     """Per room: an open-air room the building wraps around (rooms.yaml ``enclosed``: a
     courtyard); the rooms around it may take their windows from it."""
+    min_length_m: tuple[float, ...] = ()
+    """Per room: the shortest long side it may have (``solve_floorplan(min_length_m=)``:
+    a stairwell holds its stair and the floor at the stair's foot), 0 for none."""
 
     @classmethod
     def from_spec(cls, spec: HouseSpec, options: FloorplanOptions, kb: KnowledgeBase | None = None) -> Program:

@@ -12,6 +12,7 @@ the best of the first few is kept. A program that fails every attempt raises
 
 from __future__ import annotations
 
+import dataclasses
 import logging
 from collections import Counter
 from collections.abc import Callable, Mapping
@@ -67,6 +68,7 @@ def solve_floorplan(
     kb: KnowledgeBase | None = None,
     footprint: object | None = None,
     fixed: Mapping[str, tuple[float, float, float, float]] | None = None,
+    min_length_m: Mapping[str, float] | None = None,
 ) -> Floorplan:
     """Lay out ``spec``'s rooms, doors and windows.
 
@@ -82,6 +84,8 @@ def solve_floorplan(
         draws one. See :mod:`anyhome.floorplan.fixed` for what is supported.
     fixed : room id -> axis-aligned rectangle (x0, y0, x1, y1) in meters that room must
         occupy exactly (a stairwell at the same place on every level)
+    min_length_m : room id -> the shortest long side that room may have (a stairwell: its
+        stair and the floor at the stair's foot)
 
     Raises
     ------
@@ -95,6 +99,8 @@ def solve_floorplan(
 
         kb = knowledge_base()
     prog = Program.from_spec(spec, opts, kb)
+    if min_length_m:
+        prog = dataclasses.replace(prog, min_length_m=tuple(float(min_length_m.get(i, 0.0)) for i in prog.ids))
     _precheck(prog, opts)
     if footprint is not None or fixed:
         from anyhome.floorplan.fixed import solve_in_footprint
@@ -103,9 +109,22 @@ def solve_floorplan(
         return _to_floorplan(spec, prog, lay)
     slicing_attempts = opts.slicing_attempts if prog.n <= opts.slicing_max_rooms else 0
     best = best_attempt(
-        lambda i: _attempt(prog, rng, opts) if i < slicing_attempts else _spine_attempt(prog, rng, opts),
+        lambda i: _long_enough(prog, _attempt(prog, rng, opts) if i < slicing_attempts else _spine_attempt(prog, rng, opts)),
         prog.n, opts)
     return _to_floorplan(spec, prog, best)
+
+
+def _long_enough(prog: Program, lay: Layout | str) -> Layout | str:
+    """``lay``, or why not: a room whose type sets a shortest long side
+    (``Program.min_length_m``: a stairwell) must reach it."""
+    if isinstance(lay, str) or not any(prog.min_length_m):
+        return lay
+    for k, least in enumerate(prog.min_length_m):
+        if least > 0:
+            xs, ys = np.nonzero(lay.owner == k)
+            if len(xs) and max(xs.max() - xs.min() + 1, ys.max() - ys.min() + 1) * lay.cell_m < least - 1e-6:
+                return f"room {prog.ids[k]!r} too short"
+    return lay
 
 
 def best_attempt(attempt: Callable[[int], Layout | str], n_rooms: int, opts: FloorplanOptions,
@@ -220,7 +239,11 @@ def _slice_rooms(prog: Program, grid: Grid, rng: np.random.Generator, opts: Floo
     targets = np.maximum(cells, (min_side / cell) ** 2)
     if void_id is not None:
         targets[void_id] = 1.0
-    tune_rooms = TuneRooms(targets, min_side, corridor, exterior, void_id, tuple(prog.edges), cell, opts, max_aspect)
+    min_long = np.array(prog.min_length_m or (0.0,) * prog.n, dtype=float)
+    if void_id is not None:
+        min_long = np.append(min_long, 0.0)
+    tune_rooms = TuneRooms(targets, min_side, corridor, exterior, void_id, tuple(prog.edges), cell, opts, max_aspect,
+                           min_long if min_long.any() else None)
     tree = anneal(tree, (0, 0, nx, ny), tune_rooms, rng, opts)
     tune_tree(tree, (0, 0, nx, ny), tune_rooms)
     owner = np.full((nx + 2, ny + 2), OUTSIDE, dtype=np.int32)

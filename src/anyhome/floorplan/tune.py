@@ -31,6 +31,8 @@ class TuneRooms:
     opts: FloorplanOptions
     max_aspect: np.ndarray
     """Longest/shortest side each room may have (inf for corridors and the void)."""
+    min_long_m: np.ndarray | None = None
+    """Shortest long side each room may have (0: any; a stairwell holds its stair)."""
 
 
 def tune_tree(tree: Cut | int, rect: Rect, rooms: TuneRooms) -> float:
@@ -81,6 +83,8 @@ def _room_cost(k: int, r: Rect, rooms: TuneRooms) -> float:
     err = abs((r[2] - r[0]) * (r[3] - r[1]) / rooms.target_cells[k] - 1.0)
     cost = opts.tune_violation_weight * max(0.0, err - opts.tune_area_slack_frac)
     cost += opts.tune_violation_weight * max(0.0, rooms.min_side_m[k] - min(w, h))
+    if rooms.min_long_m is not None:
+        cost += opts.tune_violation_weight * max(0.0, rooms.min_long_m[k] - max(w, h))
     if not rooms.corridor[k]:
         cost += opts.tune_aspect_weight * max(0.0, max(w, h) / min(w, h) - rooms.max_aspect[k])
     return cost

@@ -573,10 +573,12 @@ def connect(kb: KnowledgeBase, slots: list[Slot], entrance_types: list[str]) -> 
 STAIRWELL_KEY = "stairwell"
 """Program key (and name) of the stairwell room planned on every storey of a house of
 several; the floorplan stage (anyhome.floorplan.levels) stacks them."""
-STAIRWELL_AREA_M2 = 12.5
-"""Floor of a stairwell: a straight flight 0.9 m wide and 3.3 m long (a 2.9 m storey:
-15 risers of 0.193 m, goings of 0.236 m, within UK Approved Document K for a private
-stair) beside a landing strip; the floorplan solver makes it about 3.5 m square."""
+STAIRWELL_AREA_M2 = 8.5
+"""Floor of a stairwell: a dog-leg stair (two 0.85 m flights side by side, 1.75 m, and a
+half landing: 2.6 m long for a 2.9 m storey in 16 risers of 0.181 m and goings of
+0.25 m, within UK Approved Document K for a private stair) and a 1 m strip of floor at
+its foot (anyhome.floorplan.stairs): 6.3 m2 at least; the floorplan solver makes it
+about 2 x 4 m (a tall storey's stairwell grows with its stair: floorplan.levels)."""
 UP_TYPES = ("bedroom", "closet", "study", "playroom")
 """Room types that go upstairs in a house of several storeys (bathrooms follow them)."""
 BASEMENT_TYPES = ("storage", "cellar", "gym", "laundry")
@@ -585,6 +587,12 @@ LANDING_MIN_ROOMS = 3
 """A storey above or below the ground floor with this many rooms besides its stairwell
 gets a landing (a hallway) they open onto: a stairwell has wall for a flight and about
 two doors, not one per bedroom."""
+LANDING_KEY = "landing"
+"""Program key of the landing :func:`assign_levels` adds to a storey."""
+LANDING_BASE_M2 = 1.0
+LANDING_M2_PER_DOOR = 0.8
+"""A landing's floor: this base plus this much per door along it (a 1.2 m wide strip
+with doors on both sides, about 0.9 m of wall per door and its margins)."""
 ATTIC_TYPES = ("bedroom", "storage", "study")
 """Room types an attic takes (the first of them the plan has)."""
 
@@ -639,6 +647,7 @@ def assign_levels(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], warnings
         if k != 0 and len(on) >= LANDING_MIN_ROOMS and not any(x.type == "hallway" for x in on) \
                 and len(slots) < MAX_ROOMS:
             landing = _slot_from_entry(kb, {"type": "hallway", "name": "landing"})
+            landing.key = LANDING_KEY
             landing.level = k
             slots.append(landing)
 
@@ -657,7 +666,12 @@ def connect_levels(kb: KnowledgeBase, slots: list[Slot], entrance_types: list[st
             continue
         stair = next(s for s in on if s.key == STAIRWELL_KEY)
         on.remove(stair)
-        edges += [e for e in connect(kb, [stair, *on], ["hallway"]) if e[1] != "outside"]
+        here = [e for e in connect(kb, [stair, *on], ["hallway"]) if e[1] != "outside"]
+        edges += here
+        for s in on:
+            if s.key == LANDING_KEY:  # a landing is as large as its doors need, no more
+                doors = sum(s.id in e for e in here)
+                s.area = LANDING_BASE_M2 + LANDING_M2_PER_DOOR * doors
     for s in slots:
         if s.key == STAIRWELL_KEY:
             s.area = STAIRWELL_AREA_M2
@@ -796,6 +810,10 @@ def fit_rooms(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], sz: Sizing, 
     main = (prog or {}).get("main")
     fixed = _fixed_counts(kb, parsed)
 
+    def keeps_storey(s: Slot) -> bool:
+        """A stairwell, or the last room besides it on a storey above or below the ground."""
+        return s.key == STAIRWELL_KEY or (s.level != 0 and sum(x.level == s.level and x.key != STAIRWELL_KEY for x in slots) <= 1)
+
     def droppable(strict: bool) -> list[Slot]:
         out = [s for s in reversed(slots) if s.optional and s.mention is None and s.key != main]
         if strict:
@@ -807,7 +825,7 @@ def fit_rooms(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], sz: Sizing, 
                 seen.add(s.type)
             out += list(reversed(extra))
             out += [s for s in slots if _type_info(kb, s.type).get("circulation") and s.mention is None and s not in out]
-        return out
+        return [s for s in out if not keeps_storey(s)]
 
     while sum(_mid(s) for s in slots) > hi and (victims := droppable(False)):
         slots.remove(victims[0])

@@ -1,5 +1,9 @@
 """Ceiling fixtures and stairs: chandelier, ceiling_fan, staircase, spiral_staircase.
 
+A ``staircase`` box wide enough for two flights side by side is built as a dog-leg stair
+(:mod:`anyhome.floorplan.stairs`: the frame, risers and goings the floorplan sized it
+for); a narrower one as a straight flight.
+
 Ceiling fixtures hang from the top of their box (z = height is the ceiling mount).
 """
 
@@ -25,6 +29,7 @@ from anyhome.assets.procedural._parts import (
     wood_tones,
 )
 from anyhome.assets.registry import register
+from anyhome.floorplan.stairs import WELL_GAP_M, dogleg_in_box, is_dogleg_box
 
 BRASS = tint("#c9a54a", "metal")
 BULB = tint("#fff1c4", "light")
@@ -134,7 +139,8 @@ def sample_staircase(rng, size, style):
     kind = "open" if style_is(style, "modern", "industrial") else str(rng.choice(["closed", "open"]))
     return make_params("staircase", rng, size, style, wood_tones(style) + ["#e8e6e0", "#9a958c"],
                        wood_tones(style) + [BLACK, METAL], ["#e8e6e0", BLACK, METAL],
-                       kind=kind, rails=str(rng.choice(["both", "one", "one"])))
+                       kind=kind, rails=str(rng.choice(["both", "one", "one"])),
+                       turn="dogleg" if is_dogleg_box(size[0], size[1]) else "straight")
 
 
 def _draw_stairs(b: Builder, L: float, B: float, H: float, p) -> None:
@@ -177,10 +183,60 @@ def _draw_stairs(b: Builder, L: float, B: float, H: float, p) -> None:
         b.box((x_first - post, y - post, 0), (x_first + post, y + post, rise + rail_h + 0.05), p.secondary)  # newel
 
 
+def _draw_dogleg(b: Builder, L: float, B: float, H: float, p) -> None:
+    """A dog-leg stair in the frame of :mod:`anyhome.floorplan.stairs`: the first flight
+    on the -y half from its foot at +x, a half landing at -x, the second flight on the
+    +y half back up to H at +x; a handrail on the well side of each flight as far as it
+    stays inside the box."""
+    d = dogleg_in_box(L, B, H)
+    r, g = d.riser_m, d.going_m
+    wf = (B - WELL_GAP_M) / 2
+    land_x = -L / 2 + d.landing_m  # where the half landing ends
+
+    def step(x0: float, x1: float, y0: float, y1: float, z: float, k: int) -> None:
+        if p.kind == "closed":
+            b.box((x0, y0, 0), (x1, y1, z - 0.03), p.primary if k % 2 else lighter(p.primary, 0.05))
+            b.box((x0, y0, z - 0.03), (x1, y1, z), p.secondary)
+        else:
+            b.box((x0, y0 + 0.04, z - 0.045), (x1, y1 - 0.04, z), p.secondary)
+
+    for k in range(d.first_risers - 1):  # first flight, toward -x
+        step(L / 2 - (k + 1) * g, L / 2 - k * g, -B / 2, -B / 2 + wf, (k + 1) * r, k)
+    z_land = d.first_risers * r
+    step(-L / 2, land_x, -B / 2, B / 2, z_land, 0)
+    for j in range(d.second_risers - 1):  # second flight, back toward +x
+        step(land_x + j * g, land_x + (j + 1) * g, B / 2 - wf, B / 2, z_land + (j + 1) * r, j)
+    top_x = land_x + (d.second_risers - 1) * g
+    b.box((min(top_x, L / 2 - 0.05), B / 2 - wf, H - 0.045), (L / 2, B / 2, H), darker(p.secondary, 0.08))  # top nosing
+    if p.kind == "open":  # a stringer under each flight's outer edge, a post under the landing
+        b.hull([(L / 2, -B / 2, 0), (L / 2, -B / 2 + 0.05, 0), (land_x, -B / 2, z_land - 0.045),
+                (land_x, -B / 2 + 0.05, z_land - 0.045), (land_x, -B / 2, z_land - 0.3),
+                (land_x, -B / 2 + 0.05, z_land - 0.3), (L / 2 - g, -B / 2, 0), (L / 2 - g, -B / 2 + 0.05, 0)], p.primary)
+        b.box((-L / 2, -0.05, 0), (-L / 2 + 0.1, 0.05, z_land - 0.045), p.primary)
+        b.hull([(land_x, B / 2, z_land - 0.3), (land_x, B / 2 - 0.05, z_land - 0.3), (land_x, B / 2, z_land),
+                (land_x, B / 2 - 0.05, z_land), (L / 2, B / 2, H - 0.045), (L / 2, B / 2 - 0.05, H - 0.045),
+                (L / 2, B / 2, H - 0.3), (L / 2, B / 2 - 0.05, H - 0.3)], p.primary)
+    rail_h = min(0.9, 0.4 * H)
+    roof = H - 0.03  # rails stay inside the box (the floor above has its own guard)
+    for y, xs, z0 in ((-WELL_GAP_M / 2, (L / 2 - 0.5 * g, land_x), 0.0), (WELL_GAP_M / 2, (land_x, L / 2), z_land)):
+        x_a, x_b = xs
+        z_a = min(roof, z0 + r + rail_h)
+        z_end = (z_land if z0 == 0 else H) + rail_h
+        frac = max(0.0, min(1.0, (roof - z_a) / max(1e-6, z_end - z_a))) if z_end > roof else 1.0
+        x_b, z_b = x_a + frac * (x_b - x_a), z_a + frac * (z_end - z_a)
+        b.box((x_a - 0.04, y - 0.04, z0), (x_a + 0.04, y + 0.04, z_a), p.secondary)  # newel
+        if abs(x_b - x_a) > 0.05:
+            b.rod((x_a, y, z_a), (x_b, y, z_b), 0.025, p.secondary, sections=8)
+
+
 def build_staircase(p):
-    """A straight flight along the longer side of the box, railings up to the box top."""
+    """A dog-leg stair (a box wide enough for two flights: ``turn``) or a straight
+    flight along the longer side of the box, railings up to the box top."""
     w, d, h = p.size
     b = Builder()
+    if getattr(p, "turn", "straight") == "dogleg":
+        _draw_dogleg(b, w, d, h, p)
+        return b.mesh(p.size)
     if w >= d:
         _draw_stairs(b, w, d, h, p)
         return b.mesh(p.size)

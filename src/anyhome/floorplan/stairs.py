@@ -1,0 +1,106 @@
+"""Dog-leg stairs: how many risers a storey's rise takes and the box its two flights fill.
+
+A dog-leg (half-turn) stair climbs one flight to a half landing at the far end of its
+box, turns back and climbs the second flight beside the first, so it ends at the same
+end of the box as it started: stacked storey over storey, every flight's foot and top
+open onto the same strip of floor in front of the box (:data:`STRIP_M`), and the flight
+above runs a full storey over the one below (headroom).
+
+Box frame (the ``stairs`` object's own, before its yaw): ``length`` along x, ``width``
+along y. The first flight runs on the -y half from its foot at +x toward -x, the half
+landing fills the -x end, the second flight runs on the +y half back toward +x and its
+top reaches the upper floor at the +x end.
+
+Dimensions follow UK Approved Document K (private stair): rise <= 220 mm, going >=
+220 mm, pitch <= 42 deg; here risers of at most :data:`RISER_MAX_M` and goings of
+:data:`GOING_M`.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+RISER_MAX_M = 0.19
+"""Highest riser: a storey's rise is split into as many equal risers as this needs."""
+GOING_M = 0.25
+"""Going (tread depth, nosing to nosing) of every step."""
+FLIGHT_WIDTH_M = 0.85
+"""Width of one flight (Document K sets no minimum for a private stair; 0.8-0.9 m is usual)."""
+WELL_GAP_M = 0.05
+"""Gap between the two flights (the well: a balustrade or a thin wall)."""
+STAIR_WIDTH_M = round(2 * FLIGHT_WIDTH_M + WELL_GAP_M, 4)
+"""Width of a dog-leg stair's box: two flights and the well between them."""
+STRIP_M = 1.0
+"""Depth of the floor in front of the box where a flight starts and the one below
+arrives: a flight's width at least, and room for a 0.9 m door in a long wall of the
+stairwell (:data:`DOOR_CORNER_M` from the corner, :data:`STAIR_CLEAR_M` clear of the stair)."""
+STAIR_CLEAR_M = 0.03
+"""Gap kept between the stair's box and a door or the floor its leaf swings over."""
+DOOR_CORNER_M = 0.05
+"""Wall left between a door moved to the strip and the stairwell's corner."""
+HEADROOM_MIN_M = 2.0
+"""Clear height over a flight's pitch line (Document K)."""
+STAIR_DEPTH_M = 0.25
+"""Structural depth of a flight under its pitch line (stringer and treads)."""
+
+
+@dataclass(frozen=True)
+class DogLeg:
+    """One dog-leg stair of a given rise (all lengths in meters)."""
+
+    rise_m: float
+    risers: int
+    """Risers in all; the first flight has the larger half."""
+    going_m: float
+
+    @property
+    def riser_m(self) -> float:
+        return self.rise_m / self.risers
+
+    @property
+    def first_risers(self) -> int:
+        """Risers of the first flight (its last one steps onto the half landing)."""
+        return (self.risers + 1) // 2
+
+    @property
+    def second_risers(self) -> int:
+        return self.risers - self.first_risers
+
+    @property
+    def landing_m(self) -> float:
+        """Depth of the half landing (as deep as a flight is wide)."""
+        return FLIGHT_WIDTH_M
+
+    @property
+    def length_m(self) -> float:
+        """Box length: the longer flight's goings plus the half landing."""
+        return round((self.first_risers - 1) * self.going_m + self.landing_m, 4)
+
+    @property
+    def width_m(self) -> float:
+        """Box width: two flights and the well between them."""
+        return STAIR_WIDTH_M
+
+
+def dogleg(rise_m: float) -> DogLeg:
+    """The dog-leg stair that climbs ``rise_m`` (a storey's floor-to-floor height)."""
+    if rise_m <= 0:
+        raise ValueError(f"a stair needs a positive rise, got {rise_m}")
+    return DogLeg(rise_m=rise_m, risers=max(2, math.ceil(rise_m / RISER_MAX_M - 1e-9)), going_m=GOING_M)
+
+
+def dogleg_in_box(length_m: float, width_m: float, rise_m: float) -> DogLeg:
+    """The dog-leg stair a ``length_m`` x ``width_m`` box of height ``rise_m`` holds:
+    as :func:`dogleg`, its goings stretched to fill the box (never shorter)."""
+    d = dogleg(rise_m)
+    steps = max(1, d.first_risers - 1)
+    going = max(d.going_m, (length_m - d.landing_m) / steps) if length_m > d.landing_m else d.going_m
+    return DogLeg(rise_m=rise_m, risers=d.risers, going_m=going)
+
+
+def is_dogleg_box(length_m: float, width_m: float) -> bool:
+    """Whether a ``stairs`` box is a dog-leg (wide enough for two flights side by side)
+    rather than a straight flight."""
+    short, long_ = sorted((length_m, width_m))
+    return short >= 2 * FLIGHT_WIDTH_M - 1e-6 and long_ <= 2.5 * short
