@@ -15,13 +15,14 @@ from __future__ import annotations
 import logging
 from collections import Counter
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 from scipy import ndimage
 
 from anyhome.errors import FloorplanError
 from anyhome.floorplan.anneal import anneal
+from anyhome.floorplan.court import court_owner
 from anyhome.floorplan.doors import PlacedDoor, door_kind, place_door
 from anyhome.floorplan.grid import FREE, OUTSIDE, Grid, make_footprint, min_side_cells
 from anyhome.floorplan.options import FloorplanOptions
@@ -101,11 +102,34 @@ def solve_floorplan(
 
         lay = solve_in_footprint(prog, rng, footprint, dict(fixed or {}))
         return _to_floorplan(spec, prog, lay)
+    ring = _court_ring(prog, rng, opts)
+    if ring is not None:
+        return _to_floorplan(spec, prog, ring)
     slicing_attempts = opts.slicing_attempts if prog.n <= opts.slicing_max_rooms else 0
-    best = best_attempt(
-        lambda i: _attempt(prog, rng, opts) if i < slicing_attempts else _spine_attempt(prog, rng, opts),
-        prog.n, opts)
+
+    def attempt(i: int) -> Layout | str:
+        if i < slicing_attempts:
+            return _attempt(prog, rng, opts)
+        return _constructed_attempt(prog, spine_owner(prog, rng), rng, opts, opts.spine_score_handicap)
+
+    best = best_attempt(attempt, prog.n, opts)
     return _to_floorplan(spec, prog, best)
+
+
+def _court_ring(prog: Program, rng: np.random.Generator, opts: FloorplanOptions) -> Layout | None:
+    """The best ring of rooms around the program's enclosed courtyard (closed, or a U at
+    ``court_open_side_probability``; a closed ring that fails is tried as a U), or None."""
+    if not any(prog.enclosed) or not opts.court_attempts:
+        return None
+    tries = replace(opts, max_attempts=opts.court_attempts)
+    shapes = [True] if rng.random() < opts.court_open_side_probability else [False, True]
+    for open_side in shapes:
+        try:
+            return best_attempt(lambda i: _constructed_attempt(prog, court_owner(prog, rng, open_side), rng, opts),
+                                prog.n, tries, " around its courtyard")
+        except FloorplanError:
+            log.debug("floorplan: no courtyard %s in %d attempts", "U" if open_side else "ring", opts.court_attempts)
+    return None
 
 
 def best_attempt(attempt: Callable[[int], Layout | str], n_rooms: int, opts: FloorplanOptions,
@@ -176,9 +200,11 @@ def _attempt(prog: Program, rng: np.random.Generator, opts: FloorplanOptions, gr
     return Layout(owner, grid.cell_m, doors, windows, score)
 
 
-def _spine_attempt(prog: Program, rng: np.random.Generator, opts: FloorplanOptions) -> Layout | str:
-    """One constructive spine layout (see :mod:`anyhome.floorplan.spine`)."""
-    owner = spine_owner(prog, rng)
+def _constructed_attempt(prog: Program, owner: np.ndarray | str, rng: np.random.Generator, opts: FloorplanOptions,
+                         handicap: float = 0.0) -> Layout | str:
+    """A constructive layout (a spine, :mod:`anyhome.floorplan.spine`, or a courtyard
+    ring, :mod:`anyhome.floorplan.court`) checked and given doors and windows; its score
+    is its area error plus ``handicap``."""
     if isinstance(owner, str):
         return owner
     cell_m = opts.spine_cell_m
@@ -193,7 +219,7 @@ def _spine_attempt(prog: Program, rng: np.random.Generator, opts: FloorplanOptio
     if isinstance(windows, str):
         return windows
     area = np.array([(owner == k).sum() for k in range(prog.n)]) * cell_m**2
-    score = float(np.abs(area / prog.areas_m2 - 1).sum()) + opts.spine_score_handicap  # slicing wins ties
+    score = float(np.abs(area / prog.areas_m2 - 1).sum()) + handicap
     return Layout(owner, cell_m, doors, windows, score)
 
 

@@ -1,0 +1,525 @@
+"""Courtyard plans: a ring of rooms around an open court (riad, atrium house, cloister).
+
+The bubble diagram is read as a tree rooted at the court (the program's enclosed
+open-air room, rooms.yaml ``enclosed``). Every room joined to the court heads a
+*block*: a row of *columns* along one side of the court, each column's rooms stacked
+from the court outwards, so the head opens onto the court and the outermost room of a
+column has an outside wall. A head that is a hallway, or has more than two sub-rooms,
+is a *gallery*: a strip along the court with its sub-rooms in a row between it and the
+outside, or in two rows (one between it and the court).
+
+The blocks are dealt to the court's four sides (three for a U of wings, the fourth
+side of the court left open), each side a *wing* whose depth makes its length match the
+court's side: the west and east wings run the full height, the north and south ones fit
+between them, so the outline is a rectangle (or a U) and every room keeps its area. Of
+``court_trials`` random deals, mirrorings and court proportions, the one with the fewest
+faults (a room out of proportion or too narrow, a door wall too short, a habitable room
+without a wall for a window) is drawn on the cell grid; the whole plan is then rotated
+or mirrored at random.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from anyhome.floorplan.grid import OUTSIDE, min_side_cells
+from anyhome.floorplan.program import CORRIDOR_TYPES, Program
+
+Rect = tuple[int, int, int, int]
+"""(x0, y0, x1, y1) in cells; the court's south-west corner is (0, 0)."""
+NORTH, SOUTH, EAST, WEST = range(4)
+
+
+@dataclass(frozen=True)
+class Segment:
+    """A piece of a wing along the court: a column of rooms (``column``, from the court
+    outwards), or a gallery ``hall`` with its sub-rooms in ``rooms`` (a row each way
+    from a gallery room, kept together)."""
+
+    column: tuple[int, ...] = ()
+    hall: int | None = None
+    rooms: tuple[tuple[int, ...], ...] = ()
+
+
+Block = list[Segment]
+
+
+def court_owner(prog: Program, rng: np.random.Generator, open_side: bool = False) -> np.ndarray | str:
+    """Padded owner array (``[x, y]``, cells of ``prog.options.spine_cell_m``) of one
+    courtyard plan, or the reason none was found; ``open_side``: wings on three sides of
+    the court only (a U)."""
+    court = next((k for k in range(prog.n) if prog.enclosed and prog.enclosed[k]), None)
+    if court is None:
+        return "no enclosed courtyard"
+    children = _tree(prog, court, rng)
+    if isinstance(children, str):
+        return children
+    blocks = []
+    for head in children[court]:
+        block = _block(head, children, prog)
+        if isinstance(block, str):
+            return block
+        blocks.append(block)
+    opts = prog.options
+    if len(blocks) < (3 if open_side else 4):
+        return f"the courtyard opens onto {len(blocks)} rooms, too few to wrap it"
+    best: tuple[tuple[int, float], dict[int, Rect], str] | None = None
+    for _ in range(opts.court_trials):
+        rects = _trial(prog, court, blocks, open_side, rng)
+        if rects is None:
+            continue
+        faults, soft, reason = _score(prog, court, rects)
+        if best is None or (faults, soft) < best[0]:
+            best = ((faults, soft), rects, reason)
+    if best is None:
+        return "no courtyard ring fits the rooms"
+    if best[0][0]:
+        return best[2]
+    return _random_symmetry(_rasterize(best[1], prog.n), rng)
+
+
+# ------------------------------------------------------------------ the tree
+def _tree(prog: Program, court: int, rng: np.random.Generator) -> list[list[int]] | str:
+    """Children of every room in a breadth-first tree of the bubble diagram from the court."""
+    adj: list[list[int]] = [[] for _ in range(prog.n)]
+    for a, b in prog.edges:
+        adj[a].append(b)
+        adj[b].append(a)
+    children: list[list[int]] = [[] for _ in range(prog.n)]
+    seen, order = {court}, [court]
+    for k in order:
+        nbrs = sorted(set(adj[k]) - seen)
+        rng.shuffle(nbrs)
+        for j in nbrs:
+            seen.add(j)
+            children[k].append(j)
+            order.append(j)
+    if len(seen) != prog.n:
+        return "the bubble diagram is not connected"
+    return children
+
+
+def _block(head: int, children: list[list[int]], prog: Program) -> Block | str:
+    """The segments of ``head``'s subtree, ``head`` touching the court."""
+    if _is_gallery(head, children, prog):
+        return _gallery(head, children, prog)
+    column, rest = _stack(head, children[head], children, prog)
+    if len(rest) > 2:
+        return f"room {prog.ids[head]!r} has more than two sub-rooms"
+    sides = []
+    for j in rest:
+        chain = _chain(j, children, prog)
+        if isinstance(chain, str):
+            return chain
+        sides.append(chain)
+    right = sides[0] if sides else []
+    left = _mirrored(sides[1]) if len(sides) > 1 else []
+    return [*left, Segment(column=column), *right]
+
+
+def _is_gallery(k: int, children: list[list[int]], prog: Program) -> bool:
+    return bool(children[k]) and (prog.types[k] in CORRIDOR_TYPES or len(children[k]) > 2)
+
+
+def _gallery(hall: int, children: list[list[int]], prog: Program) -> Block | str:
+    rows = []
+    for j in children[hall]:
+        row = _row(j, children, prog)
+        if isinstance(row, str):
+            return row
+        rows.append(tuple(row))
+    return [Segment(hall=hall, rooms=tuple(rows))]
+
+
+def _stack(k: int, kids: list[int], children: list[list[int]], prog: Program) -> tuple[tuple[int, ...], list[int]]:
+    """``k``'s column: ``k`` and outwards of it one childless service room of its kids
+    (a bathroom off a bedroom); the kids left over."""
+    for j in kids:
+        if not children[j] and not prog.habitable(j) and prog.types[j] not in CORRIDOR_TYPES:
+            return (k, j), [i for i in kids if i != j]
+    return (k,), list(kids)
+
+
+def _chain(j: int, children: list[list[int]], prog: Program) -> Block | str:
+    """Segments of ``j``'s subtree going outwards from its parent's segment."""
+    if _is_gallery(j, children, prog):
+        return _gallery(j, children, prog)
+    column, rest = _stack(j, children[j], children, prog)
+    if len(rest) > 1:
+        return f"room {prog.ids[j]!r} has two sub-rooms that cannot share its column"
+    tail = _chain(rest[0], children, prog) if rest else []
+    if isinstance(tail, str):
+        return tail
+    return [Segment(column=column), *tail]
+
+
+def _row(j: int, children: list[list[int]], prog: Program) -> list[int] | str:
+    """A gallery room and its subtree in one row: its sub-rooms on either side of it."""
+    kids = children[j]
+    if len(kids) > 2:
+        return f"room {prog.ids[j]!r} has more than two sub-rooms"
+    sides = []
+    for i in kids:
+        side = _row(i, children, prog)
+        if isinstance(side, str):
+            return side
+        if len(children[i]) > 1:
+            return f"room {prog.ids[i]!r} has two sub-rooms off a gallery"
+        sides.append(side)
+    right = sides[0] if sides else []
+    left = sides[1][::-1] if len(sides) > 1 else []
+    return [*left, j, *right]
+
+
+# ---------------------------------------------------------------- one trial
+@dataclass(frozen=True)
+class _Wing:
+    """One wing's segments, with each gallery's rooms split between the row beside the
+    court (``inner``) and the row beyond the hall."""
+
+    segments: list[Segment]
+    inner: dict[int, tuple[int, ...]]
+    outer: dict[int, tuple[int, ...]]
+
+
+def _trial(prog: Program, court: int, blocks: list[Block], open_side: bool, rng) -> dict[int, Rect] | None:
+    """The rooms' rectangles of one random deal of the blocks, or None if it breaks apart."""
+    opts = prog.options
+    sides = [NORTH, EAST, WEST] if open_side else [NORTH, SOUTH, EAST, WEST]
+    if rng.random() < opts.court_sorted_deal_probability:
+        dealt = _sorted_deal(blocks, sides, prog, rng)
+    else:
+        dealt = _greedy_deal(blocks, sides, prog, rng)
+    wings = {s: _wing(dealt[s], rng) for s in sides}
+    cell = opts.spine_cell_m
+    hall_m = max(opts.spine_hallway_min_m, opts.shared_wall_min_m)
+    depth = {s: 0.0 for s in range(4)}
+    widths: dict[int, list[float]] = {}
+    for s in sides:
+        depth[s] = _natural_depth(wings[s], hall_m, prog) * rng.uniform(opts.spine_depth_jitter_min, opts.spine_depth_jitter_max)
+        widths[s] = _widths(wings[s], depth[s], hall_m, prog)
+    D = {s: round(depth[s] / cell) for s in range(4)}
+    hall = max(1, round(hall_m / cell))
+    if any(D[s] <= hall for s in sides):
+        return None
+    # each corner square goes to the east or west wing, spread along it; or (in a share of
+    # the trials) to the wing whose end room, grown by it, stays squarer
+    grow_ends = rng.random() < opts.court_corner_room_probability
+    corner = _corners(wings, widths, depth, prog) if grow_ends else {
+        (ns, ew): ew for ns in (NORTH, SOUTH) for ew in (EAST, WEST)}
+    ext = {s: 0 for s in range(4)}
+    for (ns, ew), owner in corner.items():
+        if owner not in wings:
+            continue
+        ext[owner] += D[ew] if owner == ns else D[ns]
+        if not grow_ends:
+            continue
+        # the segment at that end of the wing takes the corner square: it keeps its own
+        # width along the court
+        end = 0 if (owner == ns and ew == WEST) or (owner == ew and ns == SOUTH) else -1
+        widths[owner][end] += (D[ew] if owner == ns else D[ns]) * cell
+    court_min = min_side_cells(prog.min_side_m(court), cell, opts)
+    natural = {s: round(sum(widths[s]) / cell) for s in sides}
+    CW = max([natural[s] - ext[s] for s in (NORTH, SOUTH) if s in sides] + [court_min])
+    CH = max([natural[s] - ext[s] for s in (EAST, WEST)] + [court_min])
+    if max(CW, CH) / min(CW, CH) > opts.court_max_aspect or (open_side and CW > CH):
+        return None  # a U opens on its court's shorter side
+    rects: dict[int, Rect] = {court: (0, 0, CW, CH)}
+    start = {  # where each wing's run begins (x for north/south, y for east/west)
+        NORTH: -D[WEST] if corner[(NORTH, WEST)] == NORTH else 0,
+        SOUTH: -D[WEST] if corner[(SOUTH, WEST)] == SOUTH else 0,
+        EAST: -D[SOUTH] if corner[(SOUTH, EAST)] == EAST else 0,
+        WEST: -D[SOUTH] if corner[(SOUTH, WEST)] == WEST else 0,
+    }
+    frames = {
+        NORTH: lambda t0, t1, s0, s1: (start[NORTH] + t0, CH + s0, start[NORTH] + t1, CH + s1),
+        SOUTH: lambda t0, t1, s0, s1: (start[SOUTH] + t0, -s1, start[SOUTH] + t1, -s0),
+        EAST: lambda t0, t1, s0, s1: (CW + s0, start[EAST] + t0, CW + s1, start[EAST] + t1),
+        WEST: lambda t0, t1, s0, s1: (-s1, start[WEST] + t0, -s0, start[WEST] + t1),
+    }
+    for s in sides:
+        length = (CW if s in (NORTH, SOUTH) else CH) + ext[s]
+        caps = _caps(wings[s], widths[s], depth[s], prog)
+        for k, (t0, t1, s0, s1) in _lay(wings[s], _stretched(widths[s], caps, length * cell), length, D[s], hall, prog).items():
+            rects[k] = frames[s](t0, t1, s0, s1)
+    if any(r[2] <= r[0] or r[3] <= r[1] for r in rects.values()):
+        return None
+    return rects
+
+
+def _corners(wings: dict[int, _Wing], widths: dict[int, list[float]], depth: dict[int, float], prog: Program,
+             ) -> dict[tuple[int, int], int]:
+    """The wing each corner square goes to (keyed by its north/south and east/west wings):
+    the one whose segment at that end, grown by the corner, keeps the squarer rooms."""
+
+    def aspect(side: int, at_start: bool, grow_m: float) -> float:
+        seg = wings[side].segments[0 if at_start else -1]
+        if seg.hall is not None:
+            return 1.5
+        w = widths[side][0 if at_start else -1] + grow_m
+        head = float(prog.areas_m2[seg.column[0]]) / float(prog.areas_m2[list(seg.column)].sum())
+        h = depth[side] * head
+        return max(w, h) / min(w, h)
+
+    out = {}
+    for ns in (NORTH, SOUTH):
+        for ew in (EAST, WEST):
+            if ns not in wings or not wings[ns].segments:
+                out[(ns, ew)] = ew
+                continue
+            by_ew = aspect(ew, ns == SOUTH, depth[ns])
+            by_ns = aspect(ns, ew == WEST, depth[ew])
+            out[(ns, ew)] = ns if by_ns < by_ew else ew
+    return out
+
+
+def _caps(wing: _Wing, widths: list[float], depth_m: float, prog: Program) -> list[float]:
+    """The widest each segment may grow before a room in it is out of proportion."""
+    out = []
+    for s, w in zip(wing.segments, widths):
+        if s.hall is None and all(math.isfinite(prog.max_aspect(k)) for k in s.column):
+            col_area = float(prog.areas_m2[list(s.column)].sum())
+            out.append(max(w, min(0.98 * prog.max_aspect(k) * depth_m * float(prog.areas_m2[k]) / col_area
+                                  for k in s.column)))
+        else:
+            out.append(w * 1.5)
+    return out
+
+
+def _stretched(widths: list[float], caps: list[float], length_m: float) -> list[float]:
+    """``widths`` grown (or shrunk) to add up to ``length_m``: the growth shared out in
+    proportion to each segment's room to grow up to its cap, beyond all caps in
+    proportion to the widths."""
+    extra = length_m - sum(widths)
+    if extra <= 0:
+        return widths
+    slack = [c - w for w, c in zip(widths, caps)]
+    room = sum(slack)
+    if room >= extra:
+        return [w + extra * sl / room for w, sl in zip(widths, slack)]
+    grown = list(caps)
+    return [g * length_m / sum(grown) for g in grown]
+
+
+def _greedy_deal(blocks: list[Block], sides: list[int], prog: Program, rng) -> dict[int, list[Block]]:
+    """Blocks in random order, each to the side least loaded for its length (the east and
+    west wings, which run the full height, weighted up), now and then to a random side."""
+    opts = prog.options
+    weight = rng.uniform(opts.court_wing_weight_min, opts.court_wing_weight_max)
+    weights = {NORTH: 1.0, SOUTH: 1.0, EAST: weight, WEST: weight}
+    dealt: dict[int, list[Block]] = {s: [] for s in sides}
+    load = {s: 0.0 for s in sides}
+    for i, b in enumerate(rng.permutation(len(blocks)).tolist()):
+        free = [s for s in sides if not dealt[s]]
+        if len(blocks) - i <= len(free):
+            side = free[int(rng.integers(len(free)))]
+        elif rng.random() < opts.court_random_deal_probability:
+            side = sides[int(rng.integers(len(sides)))]
+        else:
+            side = min(sides, key=lambda s: load[s] / weights[s])
+        dealt[side].append(blocks[b] if rng.random() < 0.5 else _mirrored(blocks[b]))
+        load[side] += _area(block=blocks[b], prog=prog)
+    return dealt
+
+
+def _sorted_deal(blocks: list[Block], sides: list[int], prog: Program, rng) -> dict[int, list[Block]]:
+    """Blocks sorted by the size of their head room and cut into one run per side at
+    random, so rooms of a size share a wing (and its depth)."""
+    def head_area(block: Block) -> float:
+        return max(float(prog.areas_m2[s.column[0]]) if s.hall is None else 0.0 for s in block)
+
+    order = sorted(range(len(blocks)), key=lambda i: (head_area(blocks[i]), rng.random()))
+    cuts = sorted(rng.choice(np.arange(1, len(blocks)), size=len(sides) - 1, replace=False).tolist())
+    runs = [order[i:j] for i, j in zip([0, *cuts], [*cuts, len(blocks)])]
+    side_order = rng.permutation(sides).tolist()
+    dealt: dict[int, list[Block]] = {}
+    for side, run in zip(side_order, runs):
+        picked = [blocks[i] if rng.random() < 0.5 else _mirrored(blocks[i]) for i in rng.permutation(run).tolist()]
+        dealt[int(side)] = picked
+    return dealt
+
+
+def _mirrored(block: Block) -> Block:
+    return [Segment(column=s.column, hall=s.hall, rooms=tuple(r[::-1] for r in s.rooms[::-1])) for s in block[::-1]]
+
+
+def _area(block: Block, prog: Program) -> float:
+    rooms = [k for s in block for k in (*s.column, *(i for r in s.rooms for i in r))]
+    return float(sum(prog.areas_m2[k] for k in rooms))
+
+
+def _wing(blocks: list[Block], rng) -> _Wing:
+    segments = [s for b in blocks for s in b]
+    inner, outer = {}, {}
+    for s in segments:
+        if s.hall is None:
+            continue
+        rows = list(s.rooms)
+        n_in = int(rng.integers(len(rows))) if len(rows) > 1 else 0
+        inner[s.hall] = tuple(k for r in rows[:n_in] for k in r)
+        outer[s.hall] = tuple(k for r in rows[n_in:] for k in r)
+    return _Wing(segments, inner, outer)
+
+
+def _natural_depth(wing: _Wing, hall_m: float, prog: Program) -> float:
+    """The depth (m) at which the wing's rooms come out squarest: the area-weighted mean
+    of each segment's own (a column's rooms square to its width, a gallery's rows of
+    square rooms beside its hall), within the spine's block depths."""
+    areas = prog.areas_m2
+    total, weighted = 0.0, 0.0
+    for s in wing.segments:
+        if s.hall is None:
+            head = float(areas[s.column[0]])
+            d = sum(float(areas[k]) for k in s.column) / math.sqrt(head)
+            a = float(areas[list(s.column)].sum())
+        else:
+            rows = [r for r in (wing.inner[s.hall], wing.outer[s.hall]) if r]
+            d = hall_m + sum(math.sqrt(float(np.median(areas[list(r)]))) for r in rows)
+            a = float(sum(areas[k] for r in rows for k in r))
+        total += a
+        weighted += a * d
+    opts = prog.options
+    return float(np.clip(weighted / total, opts.spine_block_depth_min_m, opts.spine_block_depth_max_m))
+
+
+def _room_width(k: int, area_m2: float, depth_m: float, prog: Program) -> float:
+    """A room's width in a row of depth ``depth_m``: its area over the depth, within its
+    least side and its greatest aspect."""
+    w = max(area_m2 / depth_m, prog.min_side_m(k))
+    if math.isfinite(prog.max_aspect(k)):
+        w = max(w, 1.02 * depth_m / prog.max_aspect(k))
+        w = min(w, 0.98 * depth_m * prog.max_aspect(k))
+    return w
+
+
+def _widths(wing: _Wing, depth_m: float, hall_m: float, prog: Program) -> list[float]:
+    """Each segment's natural width (m) in a wing ``depth_m`` deep."""
+    areas = prog.areas_m2
+    out = []
+    for s in wing.segments:
+        if s.hall is None:
+            col_area = float(areas[list(s.column)].sum())
+            out.append(max(_room_width(k, col_area, depth_m, prog) for k in s.column[:1]) if len(s.column) == 1
+                       else max(col_area / depth_m, *(prog.min_side_m(k) for k in s.column)))
+            continue
+        rows = [r for r in (wing.inner[s.hall], wing.outer[s.hall]) if r]
+        row_area = [float(sum(areas[k] for k in r)) for r in rows]
+        free_m = depth_m - hall_m
+        lengths = []
+        for r, a in zip(rows, row_area):
+            d = free_m * a / sum(row_area)
+            lengths.append(sum(_room_width(k, float(areas[k]), d, prog) for k in r))
+        out.append(max(lengths))
+    return out
+
+
+def _lay(wing: _Wing, widths: list[float], length: int, D: int, hall: int, prog: Program) -> dict[int, Rect]:
+    """Rooms of a wing as (t0, t1, s0, s1) cells: ``t`` along the court side (``length``
+    cells, the segments stretched to it from their ``widths``), ``s`` outwards from the
+    court (``D`` cells)."""
+    areas = prog.areas_m2
+    edges = _cuts(widths, length)
+    out: dict[int, Rect] = {}
+    for s, t0, t1 in zip(wing.segments, edges[:-1], edges[1:]):
+        if s.hall is None:
+            cuts = _cuts([float(areas[k]) for k in s.column], D)
+            for k, s0, s1 in zip(s.column, cuts[:-1], cuts[1:]):
+                out[k] = (t0, t1, s0, s1)
+            continue
+        inner, outer = wing.inner[s.hall], wing.outer[s.hall]
+        a_in = float(sum(areas[k] for k in inner))
+        a_all = a_in + float(sum(areas[k] for k in outer))
+        d_in = round((D - hall) * a_in / a_all) if inner else 0
+        out[s.hall] = (t0, t1, d_in, d_in + hall)
+        for row, s0, s1 in ((inner, 0, d_in), (outer, d_in + hall, D)):
+            if not row:
+                continue
+            row_w = [_room_width(k, float(areas[k]), max(s1 - s0, 1) * prog.options.spine_cell_m, prog) for k in row]
+            cuts = _cuts(row_w, t1 - t0)
+            for k, c0, c1 in zip(row, cuts[:-1], cuts[1:]):
+                out[k] = (t0 + c0, t0 + c1, s0, s1)
+    return out
+
+
+def _cuts(weights: list[float], total: int) -> list[int]:
+    """Integer boundaries splitting ``total`` cells in proportion to ``weights``."""
+    acc = np.concatenate([[0.0], np.cumsum(weights)])
+    return [int(round(total * a / acc[-1])) for a in acc]
+
+
+# ---------------------------------------------------------------- the score
+def _score(prog: Program, court: int, rects: dict[int, Rect]) -> tuple[int, float, str]:
+    """(faults, soft cost, the first fault's reason) of a ring's rectangles."""
+    opts = prog.options
+    cell = opts.spine_cell_m
+    faults, soft, reason = 0, 0.0, ""
+
+    def fault(why: str) -> None:
+        nonlocal faults, reason
+        faults += 1
+        reason = reason or why
+
+    shared = {(a, b): _shared(rects[a], rects[b]) * cell for a in rects for b in rects if a < b}
+
+    def wall(a: int, b: int) -> float:
+        return shared[(min(a, b), max(a, b))]
+
+    for k in range(prog.n):
+        x0, y0, x1, y1 = rects[k]
+        w, h = x1 - x0, y1 - y0
+        if min(w, h) < min_side_cells(prog.min_side_m(k), cell, opts):
+            fault(f"room {prog.ids[k]!r} too narrow")
+        aspect = max(w, h) / min(w, h)
+        if aspect > prog.max_aspect(k):
+            fault(f"room {prog.ids[k]!r} too elongated")
+        if k != court:
+            soft += abs(w * h * cell * cell / prog.areas_m2[k] - 1.0)
+            if math.isfinite(prog.max_aspect(k)):
+                soft += opts.score_aspect_weight * max(0.0, aspect - opts.score_aspect_free_ratio)
+        if prog.habitable(k):
+            open_m = 2 * (w + h) * cell - sum(wall(k, j) for j in rects if j not in (k, court))
+            if open_m < opts.exterior_wall_min_m:
+                fault(f"habitable room {prog.ids[k]!r} has no exterior wall for a window")
+    x0, y0, x1, y1 = rects[court]
+    court_ratio = (x1 - x0) * (y1 - y0) * cell * cell / prog.areas_m2[court]
+    soft += abs(court_ratio - 1.0)
+    if court_ratio > opts.court_max_area_ratio:
+        fault(f"the courtyard {prog.ids[court]!r} grew too large")
+    for a, b in prog.links:
+        if b == OUTSIDE:
+            x0, y0, x1, y1 = rects[a]
+            if 2 * (x1 - x0 + y1 - y0) * cell - sum(wall(a, j) for j in rects if j != a) < opts.exterior_wall_min_m:
+                fault(f"the entrance room {prog.ids[a]!r} has no outside wall")
+        elif wall(a, b) < opts.shared_wall_min_m:
+            fault(f"connection {prog.ids[a]}-{prog.ids[b]} has no shared wall long enough")
+    return faults, soft, reason
+
+
+def _shared(a: Rect, b: Rect) -> int:
+    """Length (cells) of the wall two rectangles share."""
+    if a[2] == b[0] or b[2] == a[0]:
+        return max(0, min(a[3], b[3]) - max(a[1], b[1]))
+    if a[3] == b[1] or b[3] == a[1]:
+        return max(0, min(a[2], b[2]) - max(a[0], b[0]))
+    return 0
+
+
+def _rasterize(rects: dict[int, Rect], n: int) -> np.ndarray:
+    xs0 = min(r[0] for r in rects.values())
+    ys0 = min(r[1] for r in rects.values())
+    xs1 = max(r[2] for r in rects.values())
+    ys1 = max(r[3] for r in rects.values())
+    owner = np.full((xs1 - xs0 + 2, ys1 - ys0 + 2), OUTSIDE, dtype=np.int32)
+    for k, (x0, y0, x1, y1) in rects.items():
+        owner[x0 - xs0 + 1 : x1 - xs0 + 1, y0 - ys0 + 1 : y1 - ys0 + 1] = k
+    return owner
+
+
+def _random_symmetry(owner: np.ndarray, rng) -> np.ndarray:
+    owner = np.rot90(owner, int(rng.integers(4)))
+    if rng.random() < 0.5:
+        owner = owner[::-1, :]
+    return np.ascontiguousarray(owner)
