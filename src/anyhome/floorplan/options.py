@@ -229,7 +229,7 @@ class FloorplanOptions:
     """Greatest long/short side ratio of a spine room that has no blocks to size it."""
 
     # ------------------------------------------------ courtyard ring (constructive)
-    court_attempts: int = _opt(8, 0, 10_000)
+    court_attempts: int = _opt(6, 0, 10_000)
     """Attempts at a ring of rooms around the court, for a program with an enclosed
     courtyard (rooms.yaml ``enclosed``), before the slicing and spine searches."""
     court_trials: int = _opt(60, 1, 100_000)
