@@ -229,10 +229,10 @@ class FloorplanOptions:
     """Greatest long/short side ratio of a spine room that has no blocks to size it."""
 
     # ------------------------------------------------ courtyard ring (constructive)
-    court_attempts: int = _opt(6, 0, 10_000)
+    court_attempts: int = _opt(12, 0, 10_000)
     """Attempts at a ring of rooms around the court, for a program with an enclosed
     courtyard (rooms.yaml ``enclosed``), before the slicing and spine searches."""
-    court_trials: int = _opt(60, 1, 100_000)
+    court_trials: int = _opt(25, 1, 100_000)
     """Random deals of the court's blocks to its sides per attempt; the best is drawn."""
     court_open_side_probability: float = _opt(0.2, 0.0, 1.0)
     """Chance a courtyard plan leaves one side of the court open (a U of three wings),
