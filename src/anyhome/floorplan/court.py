@@ -21,6 +21,7 @@ or mirrored at random.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
@@ -193,41 +194,66 @@ def _trial(prog: Program, court: int, blocks: list[Block], open_side: bool, rng)
         dealt = _sorted_deal(blocks, sides, prog, rng)
     else:
         dealt = _greedy_deal(blocks, sides, prog, rng)
-    wings = {s: _wing(dealt[s], rng) for s in sides}
+    onto = frozenset(a if b == court else b for a, b in prog.edges if court in (a, b))
+    wings = {s: _wing(_ends_outward(_wide_ends(dealt[s], prog), onto), rng) for s in sides}
     cell = opts.spine_cell_m
     hall_m = max(opts.spine_hallway_min_m, opts.shared_wall_min_m)
     depth = {s: 0.0 for s in range(4)}
     widths: dict[int, list[float]] = {}
+    ring_m = _ring_depth(prog, court, open_side)
+    pull = 0.0 if open_side else rng.uniform(0.0, opts.court_depth_pull_max)
     for s in sides:
-        depth[s] = _natural_depth(wings[s], hall_m, prog) * rng.uniform(opts.spine_depth_jitter_min, opts.spine_depth_jitter_max)
+        natural = _natural_depth(wings[s], hall_m, prog) * rng.uniform(opts.spine_depth_jitter_min, opts.spine_depth_jitter_max)
+        depth[s] = natural ** (1.0 - pull) * ring_m**pull
         widths[s] = _widths(wings[s], depth[s], hall_m, prog)
     D = {s: round(depth[s] / cell) for s in range(4)}
     hall = max(1, round(hall_m / cell))
     if any(D[s] <= hall for s in sides):
         return None
-    # each corner square goes to the east or west wing, spread along it; or (in a share of
-    # the trials) to the wing whose end room, grown by it, stays squarer
+    court_min = min_side_cells(prog.min_side_m(court), cell, opts)
+    if open_side:
+        frame = _u_frame(prog, court, widths, D, court_min, rng)
+    else:
+        frame = _ring_frame(wings, widths, depth, D, court_min, rng, prog, onto)
+    if frame is None:
+        return None
+    court_rect, lengths, frames = frame
+    rects: dict[int, Rect] = {court: court_rect}
+    for s in sides:
+        caps = _caps(wings[s], widths[s], depth[s], prog)
+        stretched = _stretched(widths[s], caps, lengths[s] * cell)
+        for k, (t0, t1, s0, s1) in _lay(wings[s], stretched, lengths[s], D[s], hall, prog).items():
+            rects[k] = frames[s](t0, t1, s0, s1)
+    if any(r[2] <= r[0] or r[3] <= r[1] for r in rects.values()):
+        return None
+    return rects
+
+
+Frame = tuple[Rect, dict[int, int], dict[int, Callable[[int, int, int, int], Rect]]]
+"""The court's rectangle, each wing's length (cells) and its map from (t0, t1, s0, s1)
+(along the court side, outwards from it) to a plan rectangle."""
+
+
+def _ring_frame(wings: dict[int, _Wing], widths: dict[int, list[float]], depth: dict[int, float], D: dict[int, int],
+                court_min: int, rng, prog: Program, onto: frozenset[int]) -> Frame | None:
+    """A closed ring: the court as long as the longer of each pair of opposite wings."""
+    opts = prog.options
+    cell = opts.spine_cell_m
+    # each corner square goes to one of its wings: spread along it, or (in a share of the
+    # trials) whole to the room at that end
     grow_ends = rng.random() < opts.court_corner_room_probability
-    corner = _corners(wings, widths, depth, prog) if grow_ends else {
-        (ns, ew): ew for ns in (NORTH, SOUTH) for ew in (EAST, WEST)}
+    corner = _corners(wings, widths, depth, prog, onto, grow_ends)
     ext = {s: 0 for s in range(4)}
     for (ns, ew), owner in corner.items():
-        if owner not in wings:
-            continue
         ext[owner] += D[ew] if owner == ns else D[ns]
-        if not grow_ends:
-            continue
-        # the segment at that end of the wing takes the corner square: it keeps its own
-        # width along the court
-        end = 0 if (owner == ns and ew == WEST) or (owner == ew and ns == SOUTH) else -1
-        widths[owner][end] += (D[ew] if owner == ns else D[ns]) * cell
-    court_min = min_side_cells(prog.min_side_m(court), cell, opts)
-    natural = {s: round(sum(widths[s]) / cell) for s in sides}
-    CW = max([natural[s] - ext[s] for s in (NORTH, SOUTH) if s in sides] + [court_min])
-    CH = max([natural[s] - ext[s] for s in (EAST, WEST)] + [court_min])
-    if max(CW, CH) / min(CW, CH) > opts.court_max_aspect or (open_side and CW > CH):
-        return None  # a U opens on its court's shorter side
-    rects: dict[int, Rect] = {court: (0, 0, CW, CH)}
+        if grow_ends:  # the segment at that end of the wing takes the whole corner square
+            end = 0 if (owner == ns and ew == WEST) or (owner == ew and ns == SOUTH) else -1
+            widths[owner][end] += (D[ew] if owner == ns else D[ns]) * cell
+    natural = {s: round(sum(widths[s]) / cell) for s in wings}
+    CW = max(natural[NORTH] - ext[NORTH], natural[SOUTH] - ext[SOUTH], court_min)
+    CH = max(natural[EAST] - ext[EAST], natural[WEST] - ext[WEST], court_min)
+    if max(CW, CH) / min(CW, CH) > opts.court_max_aspect:
+        return None
     start = {  # where each wing's run begins (x for north/south, y for east/west)
         NORTH: -D[WEST] if corner[(NORTH, WEST)] == NORTH else 0,
         SOUTH: -D[WEST] if corner[(SOUTH, WEST)] == SOUTH else 0,
@@ -240,38 +266,56 @@ def _trial(prog: Program, court: int, blocks: list[Block], open_side: bool, rng)
         EAST: lambda t0, t1, s0, s1: (CW + s0, start[EAST] + t0, CW + s1, start[EAST] + t1),
         WEST: lambda t0, t1, s0, s1: (-s1, start[WEST] + t0, -s0, start[WEST] + t1),
     }
-    for s in sides:
-        length = (CW if s in (NORTH, SOUTH) else CH) + ext[s]
-        caps = _caps(wings[s], widths[s], depth[s], prog)
-        for k, (t0, t1, s0, s1) in _lay(wings[s], _stretched(widths[s], caps, length * cell), length, D[s], hall, prog).items():
-            rects[k] = frames[s](t0, t1, s0, s1)
-    if any(r[2] <= r[0] or r[3] <= r[1] for r in rects.values()):
-        return None
-    return rects
+    lengths = {s: (CW if s in (NORTH, SOUTH) else CH) + ext[s] for s in wings}
+    return (0, 0, CW, CH), lengths, frames
+
+
+def _u_frame(prog: Program, court: int, widths: dict[int, list[float]], D: dict[int, int], court_min: int,
+             rng) -> Frame | None:
+    """A U: the north wing across the full width, the east and west wings (legs of one
+    length) from it past the court where their rooms need the length; the court at its
+    planned area, no wider than deep (the U opens on its shorter side)."""
+    opts = prog.options
+    cell = opts.spine_cell_m
+    area = prog.areas_m2[court] / cell**2
+    aspect = rng.uniform(1.0 / opts.court_max_aspect, 1.0)
+    natural = {s: round(sum(widths[s]) / cell) for s in (NORTH, EAST, WEST)}
+    CW = max(round(math.sqrt(area * aspect)), natural[NORTH] - D[EAST] - D[WEST], court_min)
+    CH = max(round(area / CW), CW, court_min)
+    leg = max(natural[EAST], natural[WEST], CH)
+    frames = {
+        NORTH: lambda t0, t1, s0, s1: (t0 - D[WEST], CH + s0, t1 - D[WEST], CH + s1),
+        EAST: lambda t0, t1, s0, s1: (CW + s0, CH - leg + t0, CW + s1, CH - leg + t1),
+        WEST: lambda t0, t1, s0, s1: (-s1, CH - leg + t0, -s0, CH - leg + t1),
+    }
+    lengths = {NORTH: CW + D[EAST] + D[WEST], EAST: leg, WEST: leg}
+    return (0, 0, CW, CH), lengths, frames
 
 
 def _corners(wings: dict[int, _Wing], widths: dict[int, list[float]], depth: dict[int, float], prog: Program,
-             ) -> dict[tuple[int, int], int]:
+             onto: frozenset[int], grow: bool) -> dict[tuple[int, int], int]:
     """The wing each corner square goes to (keyed by its north/south and east/west wings):
-    the one whose segment at that end, grown by the corner, keeps the squarer rooms."""
+    the one whose segment at that end keeps a door's width along the court (a segment
+    that needs no door onto the court always does), then the squarer room if the
+    segment takes the whole corner (``grow``), else the east or west wing."""
+    opts = prog.options
 
-    def aspect(side: int, at_start: bool, grow_m: float) -> float:
+    def cost(side: int, at_start: bool, corner_m: float) -> float:
         seg = wings[side].segments[0 if at_start else -1]
-        if seg.hall is not None:
-            return 1.5
-        w = widths[side][0 if at_start else -1] + grow_m
+        w = widths[side][0 if at_start else -1]
+        reach = w if grow else w - corner_m
+        short = 10.0 + opts.exterior_wall_min_m - reach if _needs_court(seg, onto) and reach < opts.exterior_wall_min_m else 0.0
+        if not grow or seg.hall is not None:
+            return short
         head = float(prog.areas_m2[seg.column[0]]) / float(prog.areas_m2[list(seg.column)].sum())
         h = depth[side] * head
-        return max(w, h) / min(w, h)
+        return short + max(w + corner_m, h) / min(w + corner_m, h)
 
     out = {}
     for ns in (NORTH, SOUTH):
         for ew in (EAST, WEST):
-            if ns not in wings or not wings[ns].segments:
-                out[(ns, ew)] = ew
-                continue
-            by_ew = aspect(ew, ns == SOUTH, depth[ns])
-            by_ns = aspect(ns, ew == WEST, depth[ew])
+            by_ew = cost(ew, ns == SOUTH, depth[ns])
+            by_ns = cost(ns, ew == WEST, depth[ew])
             out[(ns, ew)] = ns if by_ns < by_ew else ew
     return out
 
@@ -305,23 +349,55 @@ def _stretched(widths: list[float], caps: list[float], length_m: float) -> list[
 
 
 def _greedy_deal(blocks: list[Block], sides: list[int], prog: Program, rng) -> dict[int, list[Block]]:
-    """Blocks in random order, each to the side least loaded for its length (the east and
-    west wings, which run the full height, weighted up), now and then to a random side."""
+    """Blocks, largest first (ties at random), each to the side furthest below its share
+    of the rooms' area: wings of one typical depth around a square court, the east and
+    west ones (or a U's north one) running past the corners; then single moves of a
+    block that bring the sides nearer their shares."""
     opts = prog.options
-    weight = rng.uniform(opts.court_wing_weight_min, opts.court_wing_weight_max)
-    weights = {NORTH: 1.0, SOUTH: 1.0, EAST: weight, WEST: weight}
-    dealt: dict[int, list[Block]] = {s: [] for s in sides}
+    areas = [_area(b, prog) for b in blocks]
+    total = sum(areas)
+    d = float(np.clip(math.sqrt(float(np.median(prog.areas_m2))), opts.spine_block_depth_min_m,
+                      opts.spine_block_depth_max_m)) * rng.uniform(opts.spine_depth_jitter_min, opts.spine_depth_jitter_max)
+    long_sides = (NORTH,) if len(sides) == 3 else (EAST, WEST)
+    n_long = len(long_sides)
+    c = max(1.0, (total / d - 2 * d * n_long) / len(sides))  # the court's side
+    target = {s: d * (c + 2 * d if s in long_sides else c) for s in sides}
+    order = sorted(range(len(blocks)), key=lambda i: (-areas[i], rng.random()))
+    side_of: dict[int, int] = {}
     load = {s: 0.0 for s in sides}
-    for i, b in enumerate(rng.permutation(len(blocks)).tolist()):
-        free = [s for s in sides if not dealt[s]]
-        if len(blocks) - i <= len(free):
-            side = free[int(rng.integers(len(free)))]
-        elif rng.random() < opts.court_random_deal_probability:
-            side = sides[int(rng.integers(len(sides)))]
-        else:
-            side = min(sides, key=lambda s: load[s] / weights[s])
-        dealt[side].append(blocks[b] if rng.random() < 0.5 else _mirrored(blocks[b]))
-        load[side] += _area(block=blocks[b], prog=prog)
+    for i in order:
+        side = max(sides, key=lambda s: (target[s] - load[s], rng.random()))
+        side_of[i] = side
+        load[side] += areas[i]
+
+    def cost(ld: dict[int, float]) -> float:
+        return sum((ld[s] - target[s]) ** 2 for s in sides)
+
+    for _ in range(len(blocks)):
+        best = None
+        for i, s0 in side_of.items():
+            if sum(1 for j in side_of if side_of[j] == s0) == 1:
+                continue
+            for s1 in sides:
+                if s1 == s0:
+                    continue
+                moved = dict(load)
+                moved[s0] -= areas[i]
+                moved[s1] += areas[i]
+                gain = cost(load) - cost(moved)
+                if gain > 1e-9 and (best is None or gain > best[0]):
+                    best = (gain, i, s1)
+        if best is None:
+            break
+        _, i, s1 = best
+        load[side_of[i]] -= areas[i]
+        load[s1] += areas[i]
+        side_of[i] = s1
+    dealt: dict[int, list[Block]] = {s: [] for s in sides}
+    for i in rng.permutation(len(blocks)).tolist():
+        dealt[side_of[i]].append(blocks[i] if rng.random() < 0.5 else _mirrored(blocks[i]))
+    if any(not v for v in dealt.values()):
+        return _sorted_deal(blocks, sides, prog, rng)
     return dealt
 
 
@@ -340,6 +416,36 @@ def _sorted_deal(blocks: list[Block], sides: list[int], prog: Program, rng) -> d
         picked = [blocks[i] if rng.random() < 0.5 else _mirrored(blocks[i]) for i in rng.permutation(run).tolist()]
         dealt[int(side)] = picked
     return dealt
+
+
+def _wide_ends(blocks: list[Block], prog: Program) -> list[Block]:
+    """The wing's blocks with the two of the most floor area in their end segments at its
+    ends: the corners take a wing's ends, and a wide segment there still reaches the court."""
+    if len(blocks) < 3:
+        return blocks
+
+    def end_area(block: Block) -> float:
+        return max(_area([block[0]], prog), _area([block[-1]], prog))
+
+    ranked = sorted(range(len(blocks)), key=lambda i: -end_area(blocks[i]))
+    first, last = ranked[0], ranked[1]
+    middle = [blocks[i] for i in range(len(blocks)) if i not in (first, last)]
+    return [blocks[first], *middle, blocks[last]]
+
+
+def _needs_court(seg: Segment, onto: frozenset[int]) -> bool:
+    return (seg.column[:1] or (seg.hall,))[0] in onto
+
+
+def _ends_outward(blocks: list[Block], onto: frozenset[int]) -> list[Block]:
+    """The wing's blocks with the first and last mirrored where that puts a segment that
+    needs no door onto the court at the wing's ends (the corners)."""
+    out = list(blocks)
+    if out and _needs_court(out[0][0], onto) and not _needs_court(out[0][-1], onto):
+        out[0] = _mirrored(out[0])
+    if out and _needs_court(out[-1][-1], onto) and not _needs_court(out[-1][0], onto):
+        out[-1] = _mirrored(out[-1])
+    return out
 
 
 def _mirrored(block: Block) -> Block:
@@ -362,6 +468,16 @@ def _wing(blocks: list[Block], rng) -> _Wing:
         inner[s.hall] = tuple(k for r in rows[:n_in] for k in r)
         outer[s.hall] = tuple(k for r in rows[n_in:] for k in r)
     return _Wing(segments, inner, outer)
+
+
+def _ring_depth(prog: Program, court: int, open_side: bool) -> float:
+    """The one wing depth (m) at which the rooms, at their areas, wrap a square court of
+    its planned area: ``d * (4 c + 4 d)`` of floor around a ring, ``d * (3 c + 2 d)`` in a U."""
+    c = math.sqrt(float(prog.areas_m2[court]))
+    rooms = float(prog.areas_m2.sum()) - c * c
+    if open_side:
+        return (-3 * c + math.sqrt(9 * c * c + 8 * rooms)) / 4
+    return (-c + math.sqrt(c * c + rooms)) / 2
 
 
 def _natural_depth(wing: _Wing, hall_m: float, prog: Program) -> float:

@@ -230,30 +230,27 @@ class FloorplanOptions:
 
     # ------------------------------------------------ courtyard ring (constructive)
     court_attempts: int = _opt(12, 0, 10_000)
-    """Attempts at a ring of rooms around the court, for a program with an enclosed
-    courtyard (rooms.yaml ``enclosed``), before the slicing and spine searches."""
+    """Attempts at a ring of rooms around an enclosed courtyard (rooms.yaml ``enclosed``), before the other searches."""
     court_trials: int = _opt(25, 1, 100_000)
-    """Random deals of the court's blocks to its sides per attempt; the best is drawn."""
+    """Random deals of the court's blocks to its sides per attempt; the one with the fewest faults is drawn."""
     court_open_side_probability: float = _opt(0.2, 0.0, 1.0)
-    """Chance a courtyard plan leaves one side of the court open (a U of three wings),
-    drawn once per plan; a ring that fails every attempt is tried as a U too."""
+    """Chance (once per plan) of wings on three sides of the court only, a U; a closed ring that fails is tried as a U."""
     court_max_aspect: float = _opt(2.0, 1.0, 20.0)
     """Longest/shortest side of the court the wings around it may give it."""
-    court_wing_weight_min: float = _opt(1.2, 0.1, 10.0)
-    """Least share of rooms (by area) an east or west wing (running the full height)
-    takes for one of a north or south wing, when the blocks are dealt."""
-    court_wing_weight_max: float = _opt(2.5, 0.1, 10.0)
-    """Greatest such share."""
-    court_max_area_ratio: float = _opt(2.0, 1.0, 100.0)
+    court_max_area_ratio: float = _opt(2.5, 1.0, 100.0)
     """Most the court may grow past its planned area to close the ring of wings."""
     court_corner_room_probability: float = _opt(0.5, 0.0, 1.0)
-    """Share of the trials in which a corner square goes whole to the room at the end of a
-    wing (the others spread it along the east or west wing)."""
-    court_sorted_deal_probability: float = _opt(0.5, 0.0, 1.0)
-    """Share of the trials whose blocks are dealt by the size of their head room (rooms
-    of a size share a wing) instead of by load."""
+    """Share of the trials in which a corner square goes whole to a wing's end room (else spread along the east or west wing)."""
+    court_depth_pull_max: float = _opt(1.0, 0.0, 1.0)
+    """Greatest pull (drawn per trial) of the wings' depth from their rooms' own toward the one that wraps the court at its area."""
+    court_sorted_deal_probability: float = _opt(0.0, 0.0, 1.0)
+    """Share of the trials whose blocks are dealt to sides by the size of their head room instead of by load."""
     court_random_deal_probability: float = _opt(0.3, 0.0, 1.0)
-    """Chance a block goes to a random side instead of the least loaded one."""
+    """Chance a block goes to a random side instead of the least loaded one (a deal by load)."""
+    court_wing_weight_min: float = _opt(1.2, 0.1, 10.0)
+    """Least weight of an east or west wing (it runs the full height) against a north or south one, in a deal by load."""
+    court_wing_weight_max: float = _opt(2.5, 0.1, 10.0)
+    """Greatest weight of an east or west wing against a north or south one, in a deal by load."""
 
     # ---------------------------------------------------------------- doors
     door_end_margin_m: float = _opt(0.15, 0.0, 10.0)
