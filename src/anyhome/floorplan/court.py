@@ -544,11 +544,23 @@ def _lay(wing: _Wing, widths: list[float], length: int, D: int, hall: int, prog:
             cuts = _cuts([float(areas[k]) for k in s.column], D)
             for k, s0, s1 in zip(s.column, cuts[:-1], cuts[1:]):
                 out[k] = (t0, t1, s0, s1)
+            outer = s.column[-1]
+            s0, s1 = out[outer][2:]
+            if math.isfinite(prog.max_aspect(outer)) and (t1 - t0) > prog.max_aspect(outer) * (s1 - s0):
+                # a room too wide for the wing's depth reaches out past it (a bay)
+                out[outer] = (t0, t1, s0, s0 + math.ceil((t1 - t0) / (0.98 * prog.max_aspect(outer))))
             continue
         inner, outer = wing.inner[s.hall], wing.outer[s.hall]
+        cell = prog.options.spine_cell_m
+
+        def least(row: tuple[int, ...]) -> int:
+            return max((min_side_cells(prog.min_side_m(k), cell, prog.options) for k in row), default=0)
+
+        if inner and least(inner) + least(outer) > D - hall:  # no room for two rows: one
+            inner, outer = (), outer + inner
         a_in = float(sum(areas[k] for k in inner))
         a_all = a_in + float(sum(areas[k] for k in outer))
-        d_in = round((D - hall) * a_in / a_all) if inner else 0
+        d_in = min(max(round((D - hall) * a_in / a_all), least(inner)), D - hall - least(outer)) if inner else 0
         out[s.hall] = (t0, t1, d_in, d_in + hall)
         for row, s0, s1 in ((inner, 0, d_in), (outer, d_in + hall, D)):
             if not row:
