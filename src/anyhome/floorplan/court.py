@@ -190,10 +190,7 @@ def _trial(prog: Program, court: int, blocks: list[Block], open_side: bool, rng)
     """The rooms' rectangles of one random deal of the blocks, or None if it breaks apart."""
     opts = prog.options
     sides = [NORTH, EAST, WEST] if open_side else [NORTH, SOUTH, EAST, WEST]
-    if rng.random() < opts.court_sorted_deal_probability:
-        dealt = _sorted_deal(blocks, sides, prog, rng)
-    else:
-        dealt = _greedy_deal(blocks, sides, prog, rng)
+    dealt = _greedy_deal(blocks, sides, prog, rng)
     onto = frozenset(a if b == court else b for a, b in prog.edges if court in (a, b))
     wings = {s: _wing(_ends_outward(_wide_ends(dealt[s], prog), onto), rng) for s in sides}
     cell = opts.spine_cell_m
@@ -272,23 +269,27 @@ def _ring_frame(wings: dict[int, _Wing], widths: dict[int, list[float]], depth: 
 
 def _u_frame(prog: Program, court: int, widths: dict[int, list[float]], D: dict[int, int], court_min: int,
              rng) -> Frame | None:
-    """A U: the north wing across the full width, the east and west wings (legs of one
-    length) from it past the court where their rooms need the length; the court at its
-    planned area, no wider than deep (the U opens on its shorter side)."""
+    """A U: a north wing across the full width, east and west wings (legs of one length)
+    reaching from it past the court where their rooms need the length; the court at its
+    planned area, no wider than deep (the U opens on its shorter side), or (at random) as
+    deep as the legs."""
     opts = prog.options
     cell = opts.spine_cell_m
     area = prog.areas_m2[court] / cell**2
     aspect = rng.uniform(1.0 / opts.court_max_aspect, 1.0)
+    across = D[EAST] + D[WEST]  # the north wing's length past the court
     natural = {s: round(sum(widths[s]) / cell) for s in (NORTH, EAST, WEST)}
-    CW = max(round(math.sqrt(area * aspect)), natural[NORTH] - D[EAST] - D[WEST], court_min)
+    CW = max(round(math.sqrt(area * aspect)), natural[NORTH] - across, court_min)
     CH = max(round(area / CW), CW, court_min)
     leg = max(natural[EAST], natural[WEST], CH)
+    if rng.random() < opts.court_u_deep_probability:  # every room along the legs opens onto the court
+        CH = leg
     frames = {
         NORTH: lambda t0, t1, s0, s1: (t0 - D[WEST], CH + s0, t1 - D[WEST], CH + s1),
         EAST: lambda t0, t1, s0, s1: (CW + s0, CH - leg + t0, CW + s1, CH - leg + t1),
         WEST: lambda t0, t1, s0, s1: (-s1, CH - leg + t0, -s0, CH - leg + t1),
     }
-    lengths = {NORTH: CW + D[EAST] + D[WEST], EAST: leg, WEST: leg}
+    lengths = {NORTH: CW + across, EAST: leg, WEST: leg}
     return (0, 0, CW, CH), lengths, frames
 
 
@@ -403,7 +404,7 @@ def _greedy_deal(blocks: list[Block], sides: list[int], prog: Program, rng) -> d
 
 def _sorted_deal(blocks: list[Block], sides: list[int], prog: Program, rng) -> dict[int, list[Block]]:
     """Blocks sorted by the size of their head room and cut into one run per side at
-    random, so rooms of a size share a wing (and its depth)."""
+    random (rooms of a size share a wing): every side gets one."""
     def head_area(block: Block) -> float:
         return max(float(prog.areas_m2[s.column[0]]) if s.hall is None else 0.0 for s in block)
 

@@ -44,7 +44,6 @@ _ORDERED = (
     ("open_min_width_m", "open_max_width_m"),
     ("window_min_width_m", "window_max_width_m"),
     ("anneal_end_temperature", "anneal_start_temperature"),
-    ("court_wing_weight_min", "court_wing_weight_max"),
 )
 
 
@@ -235,6 +234,8 @@ class FloorplanOptions:
     """Random deals of the court's blocks to its sides per attempt; the one with the fewest faults is drawn."""
     court_open_side_probability: float = _opt(0.2, 0.0, 1.0)
     """Chance (once per plan) of wings on three sides of the court only, a U; a closed ring that fails is tried as a U."""
+    court_u_deep_probability: float = _opt(0.5, 0.0, 1.0)
+    """Share of the U trials whose court runs the legs' whole length (else it keeps its planned area)."""
     court_max_aspect: float = _opt(2.0, 1.0, 20.0)
     """Longest/shortest side of the court the wings around it may give it."""
     court_max_area_ratio: float = _opt(2.5, 1.0, 100.0)
@@ -243,14 +244,6 @@ class FloorplanOptions:
     """Share of the trials in which a corner square goes whole to a wing's end room (else spread along the east or west wing)."""
     court_depth_pull_max: float = _opt(1.0, 0.0, 1.0)
     """Greatest pull (drawn per trial) of the wings' depth from their rooms' own toward the one that wraps the court at its area."""
-    court_sorted_deal_probability: float = _opt(0.0, 0.0, 1.0)
-    """Share of the trials whose blocks are dealt to sides by the size of their head room instead of by load."""
-    court_random_deal_probability: float = _opt(0.3, 0.0, 1.0)
-    """Chance a block goes to a random side instead of the least loaded one (a deal by load)."""
-    court_wing_weight_min: float = _opt(1.2, 0.1, 10.0)
-    """Least weight of an east or west wing (it runs the full height) against a north or south one, in a deal by load."""
-    court_wing_weight_max: float = _opt(2.5, 0.1, 10.0)
-    """Greatest weight of an east or west wing against a north or south one, in a deal by load."""
 
     # ---------------------------------------------------------------- doors
     door_end_margin_m: float = _opt(0.15, 0.0, 10.0)
