@@ -203,6 +203,14 @@ def _trial(prog: Program, court: int, blocks: list[Block], open_side: bool, rng)
         natural = _natural_depth(wings[s], hall_m, prog) * rng.uniform(opts.spine_depth_jitter_min, opts.spine_depth_jitter_max)
         depth[s] = natural ** (1.0 - pull) * ring_m**pull
         widths[s] = _widths(wings[s], depth[s], hall_m, prog)
+    for pair in ((NORTH, SOUTH), (EAST, WEST)):  # opposite wings of one length: the shorter shallower
+        if all(s in wings for s in pair):
+            short, long_ = sorted(pair, key=lambda s: sum(widths[s]))
+            for _ in range(2):
+                floor_m = _least_depth(wings[short], hall_m, prog)
+                ratio = sum(widths[short]) / sum(widths[long_])
+                depth[short] = max(floor_m, depth[short] * ratio)
+                widths[short] = _widths(wings[short], depth[short], hall_m, prog)
     D = {s: round(depth[s] / cell) for s in range(4)}
     hall = max(1, round(hall_m / cell))
     if any(D[s] <= hall for s in sides):
@@ -502,6 +510,18 @@ def _natural_depth(wing: _Wing, hall_m: float, prog: Program) -> float:
     return float(np.clip(weighted / total, opts.spine_block_depth_min_m, opts.spine_block_depth_max_m))
 
 
+def _least_depth(wing: _Wing, hall_m: float, prog: Program) -> float:
+    """The shallowest the wing may be: each column's rooms at their least sides, each
+    gallery's hall and a row of rooms at their least side."""
+    out = 0.0
+    for s in wing.segments:
+        if s.hall is None:
+            out = max(out, sum(prog.min_side_m(k) for k in s.column))
+        else:
+            out = max(out, hall_m + max(prog.min_side_m(k) for r in s.rooms for k in r))
+    return out + prog.options.spine_cell_m
+
+
 def _room_width(k: int, area_m2: float, depth_m: float, prog: Program) -> float:
     """A room's width in a row of depth ``depth_m``: its area over the depth, within its
     least side and its greatest aspect."""
@@ -605,7 +625,10 @@ def _score(prog: Program, court: int, rects: dict[int, Rect]) -> tuple[int, floa
         if aspect > prog.max_aspect(k):
             fault(f"room {prog.ids[k]!r} too elongated")
         if k != court:
-            soft += abs(w * h * cell * cell / prog.areas_m2[k] - 1.0)
+            ratio = w * h * cell * cell / prog.areas_m2[k]
+            soft += abs(ratio - 1.0)
+            if ratio > opts.court_room_max_area_ratio and prog.types[k] not in CORRIDOR_TYPES:
+                fault(f"room {prog.ids[k]!r} grew too large")
             if math.isfinite(prog.max_aspect(k)):
                 soft += opts.score_aspect_weight * max(0.0, aspect - opts.score_aspect_free_ratio)
         if prog.habitable(k):

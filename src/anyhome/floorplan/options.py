@@ -240,6 +240,8 @@ class FloorplanOptions:
     """Longest/shortest side of the court the wings around it may give it."""
     court_max_area_ratio: float = _opt(2.5, 1.0, 100.0)
     """Most the court may grow past its planned area to close the ring of wings."""
+    court_room_max_area_ratio: float = _opt(2.0, 1.0, 100.0)
+    """Most a room of a courtyard ring may grow past its planned area (hallways excepted)."""
     court_corner_room_probability: float = _opt(0.5, 0.0, 1.0)
     """Share of the trials in which a corner square goes whole to a wing's end room (else spread along the east or west wing)."""
     court_depth_pull_max: float = _opt(1.0, 0.0, 1.0)
