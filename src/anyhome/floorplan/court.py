@@ -257,8 +257,8 @@ def _ring_frame(wings: dict[int, _Wing], widths: dict[int, list[float]], depth: 
     natural = {s: round(sum(widths[s]) / cell) for s in wings}
     CW = max(natural[NORTH] - ext[NORTH], natural[SOUTH] - ext[SOUTH], court_min)
     CH = max(natural[EAST] - ext[EAST], natural[WEST] - ext[WEST], court_min)
-    if max(CW, CH) / min(CW, CH) > opts.court_max_aspect:
-        return None
+    # a court no longer than court_max_aspect times its width: the shorter side grows
+    CW, CH = max(CW, math.ceil(CH / opts.court_max_aspect)), max(CH, math.ceil(CW / opts.court_max_aspect))
     start = {  # where each wing's run begins (x for north/south, y for east/west)
         NORTH: -D[WEST] if corner[(NORTH, WEST)] == NORTH else 0,
         SOUTH: -D[WEST] if corner[(SOUTH, WEST)] == SOUTH else 0,
