@@ -38,6 +38,7 @@ _ORDERED = (
     ("footprint_aspect_min", "footprint_aspect_max"),
     ("l_cut_min_frac", "l_cut_max_frac"),
     ("l_corner_x_min_frac", "l_corner_x_max_frac"),
+    ("u_notch_min_frac", "u_notch_max_frac"),
     ("spine_block_depth_min_m", "spine_block_depth_max_m"),
     ("spine_depth_jitter_min", "spine_depth_jitter_max"),
     ("spine_aspect_min", "spine_aspect_max"),
@@ -124,6 +125,17 @@ class FloorplanOptions:
     """Least share of the footprint's x side the missing corner spans."""
     l_corner_x_max_frac: float = _opt(0.6, 0.05, 0.95)
     """Greatest share of the footprint's x side the missing corner spans."""
+
+    u_shape_probability: float = _opt(0.3, 0.0, 1.0)
+    """Chance of a U-shaped footprint (a notch in the middle of one side) for programs of ``u_shape_min_rooms``+ rooms not drawn as an L."""
+    u_shape_min_rooms: int = _opt(5, 1, 1_000)
+    """Programs with fewer rooms never get a U-shaped footprint."""
+    u_notch_min_frac: float = _opt(0.3, 0.05, 0.9)
+    """Least share of its side the U's notch spans."""
+    u_notch_max_frac: float = _opt(0.45, 0.05, 0.9)
+    """Greatest share of its side the U's notch spans."""
+    u_arm_min_frac: float = _opt(0.2, 0.0, 0.5)
+    """Least share of the notched side each arm of the U keeps."""
 
     # -------------------------------------------------- seeds (force layout)
     seed_force_iterations: int = _opt(60, 0, 10_000)

@@ -241,12 +241,14 @@ def _slice_rooms(prog: Program, grid: Grid, rng: np.random.Generator, opts: Floo
         min_side, corridor = np.append(min_side, 2 * cell), np.append(corridor, True)
         max_aspect = np.append(max_aspect, np.inf)
         exterior, pos = np.append(exterior, False), np.vstack([pos, void.mean(axis=0) + 0.5])
-    rooms = SliceRooms(cells, min_side, corridor, exterior, void_id, pos, frozenset(prog.edges), cell, opts, max_aspect)
+    rooms = SliceRooms(cells, min_side, corridor, exterior, void_id, pos, frozenset(prog.edges), cell, opts, max_aspect,
+                       grid.void_sides)
     tree = slice_footprint((0, 0, nx, ny), rooms, rng)
     targets = np.maximum(cells, (min_side / cell) ** 2)
-    if void_id is not None:
+    if void_id is not None and grid.void_sides == 2:
         targets[void_id] = 1.0
-    tune_rooms = TuneRooms(targets, min_side, corridor, exterior, void_id, tuple(prog.edges), cell, opts, max_aspect)
+    tune_rooms = TuneRooms(targets, min_side, corridor, exterior, void_id, tuple(prog.edges), cell, opts, max_aspect,
+                           grid.void_sides)
     tree = anneal(tree, (0, 0, nx, ny), tune_rooms, rng, opts)
     tune_tree(tree, (0, 0, nx, ny), tune_rooms)
     owner = np.full((nx + 2, ny + 2), OUTSIDE, dtype=np.int32)
