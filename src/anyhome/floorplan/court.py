@@ -343,18 +343,21 @@ def _caps(wing: _Wing, widths: list[float], depth_m: float, prog: Program) -> li
 
 
 def _stretched(widths: list[float], caps: list[float], length_m: float) -> list[float]:
-    """``widths`` grown (or shrunk) to add up to ``length_m``: the growth shared out in
-    proportion to each segment's room to grow up to its cap, beyond all caps in
-    proportion to the widths."""
-    extra = length_m - sum(widths)
-    if extra <= 0:
+    """``widths`` grown to add up to ``length_m`` by one factor (every room grows by the
+    same share of its area), each held to its cap while others can take the growth;
+    beyond all caps in proportion to the caps."""
+    if length_m <= sum(widths):
         return widths
-    slack = [c - w for w, c in zip(widths, caps)]
-    room = sum(slack)
-    if room >= extra:
-        return [w + extra * sl / room for w, sl in zip(widths, slack)]
-    grown = list(caps)
-    return [g * length_m / sum(grown) for g in grown]
+    if sum(caps) <= length_m:
+        return [c * length_m / sum(caps) for c in caps]
+    lo, hi = 1.0, max(c / w for w, c in zip(widths, caps))
+    for _ in range(40):
+        f = (lo + hi) / 2
+        if sum(min(w * f, c) for w, c in zip(widths, caps)) < length_m:
+            lo = f
+        else:
+            hi = f
+    return [min(w * hi, c) for w, c in zip(widths, caps)]
 
 
 def _greedy_deal(blocks: list[Block], sides: list[int], prog: Program, rng) -> dict[int, list[Block]]:
