@@ -568,11 +568,11 @@ def _lay(wing: _Wing, widths: list[float], length: int, D: int, hall: int, prog:
             cuts = _cuts([float(areas[k]) for k in s.column], D)
             for k, s0, s1 in zip(s.column, cuts[:-1], cuts[1:]):
                 out[k] = (t0, t1, s0, s1)
-            outer = s.column[-1]
-            s0, s1 = out[outer][2:]
-            if math.isfinite(prog.max_aspect(outer)) and (t1 - t0) > prog.max_aspect(outer) * (s1 - s0):
+            last = s.column[-1]
+            s0, s1 = out[last][2:]
+            if math.isfinite(prog.max_aspect(last)) and (t1 - t0) > prog.max_aspect(last) * (s1 - s0):
                 # a room too wide for the wing's depth reaches out past it (a bay)
-                out[outer] = (t0, t1, s0, s0 + math.ceil((t1 - t0) / (0.98 * prog.max_aspect(outer))))
+                out[last] = (t0, t1, s0, s0 + math.ceil((t1 - t0) / (0.98 * prog.max_aspect(last))))
             continue
         inner, outer = wing.inner[s.hall], wing.outer[s.hall]
         cell = prog.options.spine_cell_m
