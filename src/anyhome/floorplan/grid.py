@@ -54,13 +54,14 @@ def cell_size_m(total_area_m2: float, opts: FloorplanOptions) -> float:
     return round(min(opts.cell_max_m, max(opts.cell_min_m, snapped)), 4)
 
 
-def make_footprint(total_area_m2: float, n_rooms: int, rng: np.random.Generator, opts: FloorplanOptions) -> Grid:
+def make_footprint(total_area_m2: float, n_rooms: int, rng: np.random.Generator, opts: FloorplanOptions,
+                   allow_u: bool = True) -> Grid:
     """Draw a rectangular, L-shaped (a corner cut away) or U-shaped (a notch in the middle
-    of one side) footprint holding ``total_area_m2``."""
+    of one side; only where ``allow_u``) footprint holding ``total_area_m2``."""
     cell = cell_size_m(total_area_m2, opts)
     n_cells = total_area_m2 / cell**2
     l_shape = n_rooms >= opts.l_shape_min_rooms and rng.random() < opts.l_shape_probability
-    u_shape = not l_shape and n_rooms >= opts.u_shape_min_rooms and rng.random() < opts.u_shape_probability
+    u_shape = allow_u and not l_shape and n_rooms >= opts.u_shape_min_rooms and rng.random() < opts.u_shape_probability
     cut = rng.uniform(opts.l_cut_min_frac, opts.l_cut_max_frac) if l_shape or u_shape else 0.0
     aspect = rng.uniform(opts.footprint_aspect_min, opts.footprint_aspect_max)
     long_side = math.sqrt(n_cells / (1.0 - cut) * aspect)

@@ -183,7 +183,7 @@ def _attempt(prog: Program, rng: np.random.Generator, opts: FloorplanOptions, gr
     """One try: a Layout, or a short reason it failed; ``grid``: the footprint to fill
     (None: one drawn at random)."""
     if grid is None:
-        grid = make_footprint(float(prog.areas_m2.sum()), prog.n, rng, opts)
+        grid = make_footprint(float(prog.areas_m2.sum()), prog.n, rng, opts, allow_u=not prog.stacked)
     owner = _slice_rooms(prog, grid, rng, opts)
     reason, score = _check_rooms(prog, owner, grid.cell_m, opts)
     if reason:
