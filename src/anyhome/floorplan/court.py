@@ -361,12 +361,13 @@ def _stretched(widths: list[float], caps: list[float], length_m: float) -> list[
 
 
 def _greedy_deal(blocks: list[Block], sides: list[int], prog: Program, rng) -> dict[int, list[Block]]:
-    """Blocks, largest first (ties at random), each to the side furthest below its share
+    """Blocks, largest first (their areas jittered, so trials differ), each to the side furthest below its share
     of the rooms' area: wings of one typical depth around a square court, the east and
     west ones (or a U's north one) running past the corners; then single moves of a
     block that bring the sides nearer their shares."""
     opts = prog.options
-    areas = [_area(b, prog) for b in blocks]
+    noise = opts.court_deal_noise_frac
+    areas = [_area(b, prog) * rng.uniform(1.0 - noise, 1.0 + noise) for b in blocks]
     total = sum(areas)
     d = float(np.clip(math.sqrt(float(np.median(prog.areas_m2))), opts.spine_block_depth_min_m,
                       opts.spine_block_depth_max_m)) * rng.uniform(opts.spine_depth_jitter_min, opts.spine_depth_jitter_max)

@@ -240,9 +240,9 @@ class FloorplanOptions:
     """Greatest long/short side ratio of a spine room that has no blocks to size it."""
 
     # ------------------------------------------------ courtyard ring (constructive)
-    court_attempts: int = _opt(12, 0, 10_000)
+    court_attempts: int = _opt(6, 0, 10_000)
     """Attempts at a ring of rooms around an enclosed courtyard (rooms.yaml ``enclosed``), before the other searches."""
-    court_trials: int = _opt(25, 1, 100_000)
+    court_trials: int = _opt(50, 1, 100_000)
     """Random deals of the court's blocks to its sides per attempt; the one with the fewest faults is drawn."""
     court_open_side_probability: float = _opt(0.2, 0.0, 1.0)
     """Chance (once per plan) of wings on three sides of the court only, a U; a closed ring that fails is tried as a U."""
@@ -254,6 +254,8 @@ class FloorplanOptions:
     """Most the court may grow past its planned area to close the ring of wings."""
     court_room_max_area_ratio: float = _opt(2.0, 1.0, 100.0)
     """Most a room of a courtyard ring may grow past its planned area (hallways excepted)."""
+    court_deal_noise_frac: float = _opt(0.7, 0.0, 0.9)
+    """Largest random share by which a block's area is jittered when the blocks are dealt to the sides (trials differ)."""
     court_corner_room_probability: float = _opt(0.5, 0.0, 1.0)
     """Share of the trials in which a corner square goes whole to a wing's end room (else spread along the east or west wing)."""
     court_depth_pull_max: float = _opt(1.0, 0.0, 1.0)
