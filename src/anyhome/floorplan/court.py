@@ -330,13 +330,15 @@ def _corners(wings: dict[int, _Wing], widths: dict[int, list[float]], depth: dic
 
 
 def _caps(wing: _Wing, widths: list[float], depth_m: float, prog: Program) -> list[float]:
-    """The widest each segment may grow before a room in it is out of proportion."""
+    """The widest each segment may grow before a room in it is out of proportion or grows
+    past ``court_room_max_area_ratio`` of its planned area."""
     out = []
     for s, w in zip(wing.segments, widths):
         if s.hall is None and all(math.isfinite(prog.max_aspect(k)) for k in s.column):
             col_area = float(prog.areas_m2[list(s.column)].sum())
-            out.append(max(w, min(0.98 * prog.max_aspect(k) * depth_m * float(prog.areas_m2[k]) / col_area
-                                  for k in s.column)))
+            aspect_m = min(0.98 * prog.max_aspect(k) * depth_m * float(prog.areas_m2[k]) / col_area for k in s.column)
+            area_m = 0.95 * prog.options.court_room_max_area_ratio * col_area / depth_m
+            out.append(max(w, min(aspect_m, area_m)))
         else:
             out.append(w * 1.5)
     return out
