@@ -1,6 +1,8 @@
 """solve_floorplan: HouseSpec -> Floorplan by seeded room growth with bounded retries.
 
-Each attempt draws a compact footprint (rectangle or L) sized from the target areas,
+A program with an enclosed courtyard (rooms.yaml ``enclosed``) is first laid out as a
+ring of rooms around it, or a U of wings (:mod:`anyhome.floorplan.court`). Otherwise
+each attempt draws a compact footprint (rectangle, L or U) sized from the target areas,
 places one seed per room with a force layout of the bubble diagram, slices the
 footprint into room rectangles following the seeds, and then checks the hard
 constraints: usable room
