@@ -38,6 +38,9 @@ class Grid:
 
     cell_m: float
     owner: np.ndarray
+    void_sides: int = 2
+    """Outline sides the cut-away part touches: 2 for a corner (an L), 1 for a notch in
+    the middle of one side (a U)."""
 
     @property
     def shape(self) -> tuple[int, int]:
@@ -51,12 +54,15 @@ def cell_size_m(total_area_m2: float, opts: FloorplanOptions) -> float:
     return round(min(opts.cell_max_m, max(opts.cell_min_m, snapped)), 4)
 
 
-def make_footprint(total_area_m2: float, n_rooms: int, rng: np.random.Generator, opts: FloorplanOptions) -> Grid:
-    """Draw a rectangular or L-shaped footprint holding ``total_area_m2``."""
+def make_footprint(total_area_m2: float, n_rooms: int, rng: np.random.Generator, opts: FloorplanOptions,
+                   allow_u: bool = True) -> Grid:
+    """Draw a rectangular, L-shaped (a corner cut away) or U-shaped (a notch in the middle
+    of one side; only where ``allow_u``) footprint holding ``total_area_m2``."""
     cell = cell_size_m(total_area_m2, opts)
     n_cells = total_area_m2 / cell**2
     l_shape = n_rooms >= opts.l_shape_min_rooms and rng.random() < opts.l_shape_probability
-    cut = rng.uniform(opts.l_cut_min_frac, opts.l_cut_max_frac) if l_shape else 0.0
+    u_shape = allow_u and not l_shape and n_rooms >= opts.u_shape_min_rooms and rng.random() < opts.u_shape_probability
+    cut = rng.uniform(opts.l_cut_min_frac, opts.l_cut_max_frac) if l_shape or u_shape else 0.0
     aspect = rng.uniform(opts.footprint_aspect_min, opts.footprint_aspect_max)
     long_side = math.sqrt(n_cells / (1.0 - cut) * aspect)
     nx = max(1, round(long_side))
@@ -67,7 +73,29 @@ def make_footprint(total_area_m2: float, n_rooms: int, rng: np.random.Generator,
     owner[1:-1, 1:-1] = FREE
     if l_shape:
         _cut_corner(owner, nx, ny, cut, rng, opts)
+    if u_shape and _cut_notch(owner, nx, ny, cut, rng, opts):
+        return Grid(cell_m=cell, owner=owner, void_sides=1)
     return Grid(cell_m=cell, owner=owner)
+
+
+def _cut_notch(owner: np.ndarray, nx: int, ny: int, cut: float, rng: np.random.Generator, opts: FloorplanOptions) -> bool:
+    """Mark a block of about ``cut`` of the rectangle in the middle of one of its sides as
+    outside (a U), its arms on either side at least ``opts.u_arm_min_frac`` of that side;
+    False (nothing cut) where the rectangle is too small for one."""
+    along_x = rng.random() < 0.5  # the notch opens in a side running along x (south or north)
+    n_along, n_across = (nx, ny) if along_x else (ny, nx)
+    width = round(n_along * rng.uniform(opts.u_notch_min_frac, opts.u_notch_max_frac))
+    depth = min(round(n_across * cut * n_along / max(width, 1)), n_across - 2)
+    arm = (n_along - width) // 2
+    if width < 1 or depth < 1 or arm < max(1, round(opts.u_arm_min_frac * n_along)):
+        return False
+    span = slice(1 + arm, 1 + arm + width)
+    across = slice(1, 1 + depth) if rng.random() < 0.5 else slice(n_across + 1 - depth, n_across + 1)
+    if along_x:
+        owner[span, across] = OUTSIDE
+    else:
+        owner[across, span] = OUTSIDE
+    return True
 
 
 def _cut_corner(owner: np.ndarray, nx: int, ny: int, cut: float, rng: np.random.Generator, opts: FloorplanOptions) -> None:

@@ -38,6 +38,7 @@ _ORDERED = (
     ("footprint_aspect_min", "footprint_aspect_max"),
     ("l_cut_min_frac", "l_cut_max_frac"),
     ("l_corner_x_min_frac", "l_corner_x_max_frac"),
+    ("u_notch_min_frac", "u_notch_max_frac"),
     ("spine_block_depth_min_m", "spine_block_depth_max_m"),
     ("spine_depth_jitter_min", "spine_depth_jitter_max"),
     ("spine_aspect_min", "spine_aspect_max"),
@@ -128,6 +129,17 @@ class FloorplanOptions:
     """Least share of the footprint's x side the missing corner spans."""
     l_corner_x_max_frac: float = _opt(0.6, 0.05, 0.95)
     """Greatest share of the footprint's x side the missing corner spans."""
+
+    u_shape_probability: float = _opt(0.3, 0.0, 1.0)
+    """Chance of a U-shaped footprint (a notch in the middle of one side) for programs of ``u_shape_min_rooms``+ rooms not drawn as an L."""
+    u_shape_min_rooms: int = _opt(5, 1, 1_000)
+    """Programs with fewer rooms never get a U-shaped footprint."""
+    u_notch_min_frac: float = _opt(0.3, 0.05, 0.9)
+    """Least share of its side the U's notch spans."""
+    u_notch_max_frac: float = _opt(0.45, 0.05, 0.9)
+    """Greatest share of its side the U's notch spans."""
+    u_arm_min_frac: float = _opt(0.2, 0.0, 0.5)
+    """Least share of the notched side each arm of the U keeps."""
 
     # -------------------------------------------------- seeds (force layout)
     seed_force_iterations: int = _opt(60, 0, 10_000)
@@ -230,6 +242,28 @@ class FloorplanOptions:
     """Least long/short side ratio of a spine room that has no blocks to size it."""
     spine_aspect_max: float = _opt(1.5, 1.0, 20.0)
     """Greatest long/short side ratio of a spine room that has no blocks to size it."""
+
+    # ------------------------------------------------ courtyard ring (constructive)
+    court_attempts: int = _opt(6, 0, 10_000)
+    """Attempts at a ring of rooms around an enclosed courtyard (rooms.yaml ``enclosed``), before the other searches."""
+    court_trials: int = _opt(50, 1, 100_000)
+    """Random deals of the court's blocks to its sides per attempt; the one with the fewest faults is drawn."""
+    court_open_side_probability: float = _opt(0.2, 0.0, 1.0)
+    """Chance (once per plan) of wings on three sides of the court only, a U; a closed ring that fails is tried as a U."""
+    court_u_deep_probability: float = _opt(0.5, 0.0, 1.0)
+    """Share of the U trials whose court runs the legs' whole length (else it keeps its planned area)."""
+    court_max_aspect: float = _opt(2.0, 1.0, 20.0)
+    """Longest/shortest side of the court the wings around it may give it."""
+    court_max_area_ratio: float = _opt(2.5, 1.0, 100.0)
+    """Most the court may grow past its planned area to close the ring of wings."""
+    court_room_max_area_ratio: float = _opt(2.0, 1.0, 100.0)
+    """Most a room of a courtyard ring may grow past its planned area (hallways excepted)."""
+    court_deal_noise_frac: float = _opt(0.7, 0.0, 0.9)
+    """Largest random share by which a block's area is jittered when the blocks are dealt to the sides (trials differ)."""
+    court_corner_room_probability: float = _opt(0.5, 0.0, 1.0)
+    """Share of the trials in which a corner square goes whole to a wing's end room (else spread along the east or west wing)."""
+    court_depth_pull_max: float = _opt(1.0, 0.0, 1.0)
+    """Greatest pull (drawn per trial) of the wings' depth from their rooms' own toward the one that wraps the court at its area."""
 
     # ---------------------------------------------------------------- doors
     door_end_margin_m: float = _opt(0.15, 0.0, 10.0)

@@ -16,6 +16,9 @@ CORRIDOR_TYPES = frozenset({"hallway"})
 """Types grown as long, narrow corridors."""
 HUB_TYPES = frozenset({"hallway", "entry"})
 """Types pulled to the middle of the footprint."""
+STACKED_TYPES = frozenset({"stairwell"})
+"""Types that mark a storey of a house of several: its footprint is drawn without a U's
+notch, which the storeys above or below would hang over."""
 
 
 @dataclass(frozen=True)
@@ -66,6 +69,11 @@ class Program:
     @property
     def edges(self) -> list[tuple[int, int]]:
         return [(a, b) for a, b in self.links if b != OUTSIDE]
+
+    @property
+    def stacked(self) -> bool:
+        """A storey of a house of several (it holds a stairwell)."""
+        return any(t in STACKED_TYPES for t in self.types)
 
     def habitable(self, k: int) -> bool:
         return is_habitable(self.types[k])

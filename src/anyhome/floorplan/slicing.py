@@ -5,7 +5,8 @@ and suffix of the rooms sorted by their seed position along that axis, the cut s
 where the two sides' target areas put it. Of all cuts the one with the best score is
 taken: squarish single rooms, few bubble-diagram edges across the cut, enough
 exterior wall for the rooms that need one; a little noise keeps layouts diverse.
-An L-shaped footprint is a rectangle whose *void* pseudo-room must land in a corner.
+An L-shaped footprint is a rectangle whose *void* pseudo-room must land in a corner; a
+U-shaped one a rectangle whose void must touch one side of it only (a notch in its middle).
 """
 
 from __future__ import annotations
@@ -42,6 +43,8 @@ class SliceRooms:
     opts: FloorplanOptions
     max_aspect: np.ndarray
     """Longest/shortest side each room may have (inf for corridors and the void)."""
+    void_sides: int = 2
+    """Outline sides the void must touch: 2 (a corner, an L) or 1 (a notch, a U)."""
 
 
 @dataclass
@@ -288,8 +291,11 @@ def _part_score(rect: Rect, ids: list[int], ext: Ext, ports: Ports, rooms: Slice
 def _room_shape_score(k: int, short: float, long_: float, ext: Ext, rooms: SliceRooms) -> float:
     opts = rooms.opts
     if k == rooms.void:
-        corner = (ext[0] or ext[1]) and (ext[2] or ext[3])
-        return 0.0 if corner else opts.slice_infeasible_cost
+        if rooms.void_sides == 1:
+            placed = sum(ext) == 1
+        else:
+            placed = bool((ext[0] or ext[1]) and (ext[2] or ext[3]))
+        return 0.0 if placed else opts.slice_infeasible_cost
     score = opts.slice_infeasible_cost if short < rooms.min_side[k] - 1e-6 else 0.0
     if rooms.corridor[k]:
         return score

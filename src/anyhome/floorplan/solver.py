@@ -1,6 +1,8 @@
 """solve_floorplan: HouseSpec -> Floorplan by seeded room growth with bounded retries.
 
-Each attempt draws a compact footprint (rectangle or L) sized from the target areas,
+A program with an enclosed courtyard (rooms.yaml ``enclosed``) is first laid out as a
+ring of rooms around it, or a U of wings (:mod:`anyhome.floorplan.court`). Otherwise
+each attempt draws a compact footprint (rectangle, L or U) sized from the target areas,
 places one seed per room with a force layout of the bubble diagram, slices the
 footprint into room rectangles following the seeds, and then checks the hard
 constraints: usable room
@@ -16,13 +18,14 @@ import dataclasses
 import logging
 from collections import Counter
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 from scipy import ndimage
 
 from anyhome.errors import FloorplanError
 from anyhome.floorplan.anneal import anneal
+from anyhome.floorplan.court import court_owner
 from anyhome.floorplan.doors import PlacedDoor, door_kind, place_door
 from anyhome.floorplan.grid import FREE, OUTSIDE, Grid, make_footprint, min_side_cells
 from anyhome.floorplan.options import FloorplanOptions
@@ -107,10 +110,18 @@ def solve_floorplan(
 
         lay = solve_in_footprint(prog, rng, footprint, dict(fixed or {}))
         return _to_floorplan(spec, prog, lay)
+    ring = _court_ring(prog, rng, opts)
+    if ring is not None:
+        return _to_floorplan(spec, prog, ring)
     slicing_attempts = opts.slicing_attempts if prog.n <= opts.slicing_max_rooms else 0
-    best = best_attempt(
-        lambda i: _long_enough(prog, _attempt(prog, rng, opts) if i < slicing_attempts else _spine_attempt(prog, rng, opts)),
-        prog.n, opts)
+
+    def attempt(i: int) -> Layout | str:
+        if i < slicing_attempts:
+            return _long_enough(prog, _attempt(prog, rng, opts))
+        return _long_enough(prog, _constructed_attempt(prog, spine_owner(prog, rng), rng, opts,
+                                                       opts.spine_score_handicap))
+
+    best = best_attempt(attempt, prog.n, opts)
     return _to_floorplan(spec, prog, best)
 
 
@@ -125,6 +136,23 @@ def _long_enough(prog: Program, lay: Layout | str) -> Layout | str:
             if len(xs) and max(xs.max() - xs.min() + 1, ys.max() - ys.min() + 1) * lay.cell_m < least - 1e-6:
                 return f"room {prog.ids[k]!r} too short"
     return lay
+
+
+def _court_ring(prog: Program, rng: np.random.Generator, opts: FloorplanOptions) -> Layout | None:
+    """The best ring of rooms around the program's enclosed courtyard (closed, or a U at
+    ``court_open_side_probability``; a closed ring that fails is tried as a U), or None."""
+    if not any(prog.enclosed) or not opts.court_attempts:
+        return None
+    tries = replace(opts, max_attempts=opts.court_attempts)
+    shapes = [True] if rng.random() < opts.court_open_side_probability else [False, True]
+    for open_side in shapes:
+        try:
+            return best_attempt(
+                lambda i: _long_enough(prog, _constructed_attempt(prog, court_owner(prog, rng, open_side), rng, opts)),
+                prog.n, tries, " around its courtyard")
+        except FloorplanError:
+            log.debug("floorplan: no courtyard %s in %d attempts", "U" if open_side else "ring", opts.court_attempts)
+    return None
 
 
 def best_attempt(attempt: Callable[[int], Layout | str], n_rooms: int, opts: FloorplanOptions,
@@ -178,7 +206,7 @@ def _attempt(prog: Program, rng: np.random.Generator, opts: FloorplanOptions, gr
     """One try: a Layout, or a short reason it failed; ``grid``: the footprint to fill
     (None: one drawn at random)."""
     if grid is None:
-        grid = make_footprint(float(prog.areas_m2.sum()), prog.n, rng, opts)
+        grid = make_footprint(float(prog.areas_m2.sum()), prog.n, rng, opts, allow_u=not prog.stacked)
     owner = _slice_rooms(prog, grid, rng, opts)
     reason, score = _check_rooms(prog, owner, grid.cell_m, opts)
     if reason:
@@ -195,9 +223,11 @@ def _attempt(prog: Program, rng: np.random.Generator, opts: FloorplanOptions, gr
     return Layout(owner, grid.cell_m, doors, windows, score)
 
 
-def _spine_attempt(prog: Program, rng: np.random.Generator, opts: FloorplanOptions) -> Layout | str:
-    """One constructive spine layout (see :mod:`anyhome.floorplan.spine`)."""
-    owner = spine_owner(prog, rng)
+def _constructed_attempt(prog: Program, owner: np.ndarray | str, rng: np.random.Generator, opts: FloorplanOptions,
+                         handicap: float = 0.0) -> Layout | str:
+    """A constructive layout (a spine, :mod:`anyhome.floorplan.spine`, or a courtyard
+    ring, :mod:`anyhome.floorplan.court`) checked and given doors and windows; its score
+    is its area error plus ``handicap``."""
     if isinstance(owner, str):
         return owner
     cell_m = opts.spine_cell_m
@@ -212,7 +242,7 @@ def _spine_attempt(prog: Program, rng: np.random.Generator, opts: FloorplanOptio
     if isinstance(windows, str):
         return windows
     area = np.array([(owner == k).sum() for k in range(prog.n)]) * cell_m**2
-    score = float(np.abs(area / prog.areas_m2 - 1).sum()) + opts.spine_score_handicap  # slicing wins ties
+    score = float(np.abs(area / prog.areas_m2 - 1).sum()) + handicap
     return Layout(owner, cell_m, doors, windows, score)
 
 
@@ -234,16 +264,17 @@ def _slice_rooms(prog: Program, grid: Grid, rng: np.random.Generator, opts: Floo
         min_side, corridor = np.append(min_side, 2 * cell), np.append(corridor, True)
         max_aspect = np.append(max_aspect, np.inf)
         exterior, pos = np.append(exterior, False), np.vstack([pos, void.mean(axis=0) + 0.5])
-    rooms = SliceRooms(cells, min_side, corridor, exterior, void_id, pos, frozenset(prog.edges), cell, opts, max_aspect)
+    rooms = SliceRooms(cells, min_side, corridor, exterior, void_id, pos, frozenset(prog.edges), cell, opts, max_aspect,
+                       grid.void_sides)
     tree = slice_footprint((0, 0, nx, ny), rooms, rng)
     targets = np.maximum(cells, (min_side / cell) ** 2)
-    if void_id is not None:
+    if void_id is not None and grid.void_sides == 2:
         targets[void_id] = 1.0
     min_long = np.array(prog.min_length_m or (0.0,) * prog.n, dtype=float)
     if void_id is not None:
         min_long = np.append(min_long, 0.0)
     tune_rooms = TuneRooms(targets, min_side, corridor, exterior, void_id, tuple(prog.edges), cell, opts, max_aspect,
-                           min_long if min_long.any() else None)
+                           min_long_m=min_long if min_long.any() else None, void_sides=grid.void_sides)
     tree = anneal(tree, (0, 0, nx, ny), tune_rooms, rng, opts)
     tune_tree(tree, (0, 0, nx, ny), tune_rooms)
     owner = np.full((nx + 2, ny + 2), OUTSIDE, dtype=np.int32)

@@ -33,6 +33,9 @@ class TuneRooms:
     """Longest/shortest side each room may have (inf for corridors and the void)."""
     min_long_m: np.ndarray | None = None
     """Shortest long side each room may have (0: any; a stairwell holds its stair)."""
+    void_sides: int = 2
+    """Outline sides the void must touch: 2 (a corner: free, the slicing placed it) or 1
+    (the notch of a U: a void touching another number of sides costs)."""
 
 
 def tune_tree(tree: Cut | int, rect: Rect, rooms: TuneRooms) -> float:
@@ -71,6 +74,10 @@ def layout_cost(rects: dict[int, Rect], outer: Rect, rooms: TuneRooms) -> float:
         shared = _shared(rects[i], rects[j]) * rooms.cell_m
         if shared < opts.shared_wall_min_m:
             cost += opts.tune_violation_weight * (opts.shared_wall_min_m - shared) + opts.tune_gap_weight * _gap(rects[i], rects[j]) * rooms.cell_m
+    if rooms.void is not None and rooms.void_sides == 1:
+        v = rects[rooms.void]
+        sides = (v[0] == outer[0]) + (v[2] == outer[2]) + (v[1] == outer[1]) + (v[3] == outer[3])
+        cost += opts.tune_violation_weight * abs(int(sides) - 1)
     for k in np.flatnonzero(rooms.exterior).tolist():
         ext = _exterior(rects[k], outer, rects.get(rooms.void) if rooms.void is not None else None) * rooms.cell_m
         cost += opts.tune_violation_weight * max(0.0, opts.exterior_wall_min_m - ext)
