@@ -5,7 +5,6 @@ from __future__ import annotations
 from dataclasses import fields, replace
 
 import pytest
-from shapely.geometry import Polygon
 
 import anyhome
 from anyhome.errors import AnyHomeError, PlanError
@@ -95,7 +94,7 @@ def test_a_replaced_plan_and_layout_stage() -> None:
 def test_the_planner_meets_a_stated_total_with_the_run_s_floorplan_stage() -> None:
     """The plan stage lays its plan out with the run's floorplan stage (passed in, never
     imported by the planner): a stage that builds 20 % larger houses gets smaller rooms
-    planned, and its house still lands near the stated total."""
+    planned."""
     calls: list[int] = []
 
     def larger(spec, rng):
@@ -110,9 +109,9 @@ def test_the_planner_meets_a_stated_total_with_the_run_s_floorplan_stage() -> No
     run = get_planner("offline", floorplan=larger)
     scaled = run.plan(text, stage_rngs(0)["plan"])
     assert calls, "the planner never laid its plan out with the stage it was given"
-    assert sum(r.area_m2 for r in scaled.rooms) < 0.92 * sum(r.area_m2 for r in spec.rooms)
-    built = sum(Polygon(r.polygon).area for r in larger(scaled, stage_rngs(0)["floorplan"]).rooms)
-    assert built == pytest.approx(60, rel=0.15)
+    # the rooms are planned about 1/1.2 as large (how close the built house lands is
+    # tests/plan/test_program_sizes.py's business)
+    assert 0.7 < sum(r.area_m2 for r in scaled.rooms) / sum(r.area_m2 for r in spec.rooms) < 0.92
     # the same stage reaches the planner through generate's Stages
     calls.clear()
     anyhome.generate(text, seed=0, stages=Stages(floorplan=larger))
