@@ -155,3 +155,21 @@ def test_surfaces_file_is_checked(tmp_path):
             knowledge_base()
     finally:
         use_knowledge([])
+
+
+def test_storeys_name_known_room_types_and_say_which_rooms_go_up():
+    import numpy as np
+
+    from anyhome.plan.offline import OfflinePlanner
+
+    with pytest.raises(KnowledgeError, match=r"programs.yaml: storeys.up: \[1\]: unknown room type .ballroomz."):
+        _kb(programs=lambda p: p["storeys"].__setitem__("up", ["bedroom", "ballroomz"]))
+    text = "a two-storey house with two bedrooms and a study"
+
+    def levels(kb):
+        spec = OfflinePlanner(kb).plan(text, np.random.default_rng(0))
+        return {r.type: r.level for r in spec.rooms if r.type in ("bedroom", "study")}
+
+    assert levels(knowledge_base()) == {"bedroom": 1, "study": 1}
+    # the file, not the code, decides: studies only upstairs keeps the bedrooms down
+    assert levels(_kb(programs=lambda p: p["storeys"].__setitem__("up", ["study"]))) == {"bedroom": 0, "study": 1}

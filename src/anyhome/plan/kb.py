@@ -178,10 +178,19 @@ class Sizes(_Model):
     draw: SizeDraw | None = Field(default=None, description="how far one house's rooms vary from the ranges' draws")
 
 
+class Storeys(_Model):
+    """programs.yaml ``storeys``: which rooms go where in a house of several storeys."""
+
+    up: list[str] = Field(min_length=1, description="room types that go upstairs (bathrooms follow them)")
+    basement: list[str] = Field(min_length=1, description="room types that go down to a basement")
+    attic: list[str] = Field(min_length=1, description="room types an attic takes (the first of them the plan has)")
+
+
 class ProgramsFile(_Model):
     buildings: list[Building]
     programs: dict[str, Program] = Field(min_length=1)
     sizes: Sizes | None = None
+    storeys: Storeys | None = None
 
 
 # ------------------------------------------------------------------ rooms.yaml
@@ -657,6 +666,10 @@ class KnowledgeBase:
         """programs.yaml ``sizes``; a kind's area ranges start at their type's min_area_m2 or above."""
         least = {t: rt.min_area_m2 for t, rt in self.rooms.types.items()}
         programs = self.programs.programs
+        if (st := self.programs.storeys) is not None:
+            for part in ("up", "basement", "attic"):
+                for i, t in enumerate(getattr(st, part)):
+                    need(t in types, "programs", ("storeys", part, i), lambda: known(t, types, "room type"))
         sz = self.programs.sizes
         if sz is None:
             return

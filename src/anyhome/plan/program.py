@@ -16,6 +16,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from anyhome.errors import PlanError
 from anyhome.house import ROOM_TYPES
 from anyhome.plan.concepts import furnish_type
 from anyhome.plan.kb import KnowledgeBase
@@ -579,10 +580,6 @@ half landing: 2.6 m long for a 2.9 m storey in 16 risers of 0.181 m and goings o
 0.25 m, within UK Approved Document K for a private stair) and a 1 m strip of floor at
 its foot (anyhome.floorplan.stairs): 6.3 m2 at least; the floorplan solver makes it
 about 2 x 4 m (a tall storey's stairwell grows with its stair: floorplan.levels)."""
-UP_TYPES = ("bedroom", "closet", "study", "playroom")
-"""Room types that go upstairs in a house of several storeys (bathrooms follow them)."""
-BASEMENT_TYPES = ("storage", "cellar", "gym", "laundry")
-"""Room types that go down to a basement."""
 LANDING_MIN_ROOMS = 3
 """A storey above or below the ground floor with this many rooms besides its stairwell
 gets a landing (a hallway) they open onto: a stairwell has wall for a flight and about
@@ -593,18 +590,20 @@ LANDING_BASE_M2 = 1.0
 LANDING_M2_PER_DOOR = 0.8
 """A landing's floor: this base plus this much per door along it (a 1.2 m wide strip
 with doors on both sides, about 0.9 m of wall per door and its margins)."""
-ATTIC_TYPES = ("bedroom", "storage", "study")
-"""Room types an attic takes (the first of them the plan has)."""
 
 
 def assign_levels(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], warnings: list[str]) -> None:
     """Put rooms on storeys when the text asks for several ("a three-storey townhouse",
     "upstairs", "a basement", "an attic") and add one stairwell per storey. A one-storey
-    text leaves every room on level 0 and adds nothing."""
+    text leaves every room on level 0 and adds nothing. Which rooms go up, down and
+    into an attic: programs.yaml ``storeys``."""
     if parsed.storeys <= 1 and not parsed.basement and not parsed.attic:
         return
+    st = kb.programs.storeys
+    if st is None:
+        raise PlanError("the knowledge base's programs.yaml has no `storeys` section: which rooms go upstairs")
     top = parsed.storeys - 1  # highest full storey
-    up = [s for s in slots if s.type in UP_TYPES]
+    up = [s for s in slots if s.type in st.up]
     if top >= 1:
         for i, s in enumerate(up):  # contiguous runs of bedrooms per storey, bottom first
             s.level = 1 + i * top // max(1, len(up))
@@ -616,17 +615,17 @@ def assign_levels(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], warnings
         baths = [s for s in slots if s.type == "bathroom"]
         keep = 1 if len(baths) > 1 else 0  # a cloakroom stays on the ground floor
         for i, s in enumerate(baths[keep:]):
-            levels = sorted({x.level for x in slots if x.type in UP_TYPES and x.level > 0})
+            levels = sorted({x.level for x in slots if x.type in st.up and x.level > 0})
             s.level = levels[i % len(levels)] if levels else 0
     if parsed.attic:
         pick = next((s for s in slots if "attic" in s.name or "loft" in s.name), None)
-        pick = pick or next((s for t in ATTIC_TYPES for s in reversed(slots) if s.type == t), None)
+        pick = pick or next((s for t in st.attic for s in reversed(slots) if s.type == t), None)
         if pick is None or (pick.level == 0 and pick.type == "bedroom" and top >= 1):
             pick = _slot_from_entry(kb, {"type": "storage", "name": "attic"})
             slots.append(pick)
         pick.level = top + 1
     if parsed.basement:
-        down = [s for s in slots if s.type in BASEMENT_TYPES and s.level == 0]
+        down = [s for s in slots if s.type in st.basement and s.level == 0]
         if not down:
             down = [_slot_from_entry(kb, {"type": "storage", "name": "basement"})]
             slots.append(down[0])
