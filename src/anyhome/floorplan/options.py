@@ -67,10 +67,10 @@ class FloorplanOptions:
     """Added to ``stairwell_spare_m`` in the later half of the tries to stack the storeys."""
     slicing_max_rooms: int = _opt(6, 1, 1_000)
     """Programs up to this many rooms try the slicing search first; larger ones go to the spine."""
+    # 15, not 10: a spine's rooms reach the depth of their block, so a small flat that
+    # fell back to it was built up to 30 % larger than planned ("a 500 sq ft apartment": 59.9 m2)
     slicing_attempts: int = _opt(15, 0, 10_000)
-    """Slicing attempts before falling back to the constructive spine layout (15, not 10:
-    a spine's rooms reach the depth of their block, so a small flat that fell back to it
-    was built up to 30 % larger than planned: "a 500 sq ft apartment" at 59.9 m2)."""
+    """Slicing attempts before falling back to the constructive spine layout."""
     wanted_candidates: int = _opt(3, 1, 1_000)
     """Valid layouts to collect before keeping the best one (lowest score)."""
 
