@@ -46,3 +46,16 @@ def gl_available() -> None:
             raise
         pytest.skip(str(e))
     ctx.release()
+
+
+SERVER_FIXTURES = frozenset({"llama_server", "own_server"})
+"""Fixtures that run the real LLM server: its tests wait on a 135M model on one core."""
+
+
+def pytest_collection_modifyitems(config, items):
+    """The test files that talk to the real LLM server run first (order kept otherwise).
+    They wait on the server most of their time, so under ``-n auto --dist loadfile
+    --no-loadscope-reorder`` they overlap the CPU-bound files on the other workers,
+    instead of being scheduled last (fewest tests) and running alone at the end."""
+    first = {item.path for item in items if SERVER_FIXTURES & set(getattr(item, "fixturenames", ()))}
+    items[:] = [i for i in items if i.path in first] + [i for i in items if i.path not in first]
