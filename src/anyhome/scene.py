@@ -26,7 +26,7 @@ from anyhome.assets.procedural._parts import slot_role
 from anyhome.assets.registry import SOURCE, object_rng
 from anyhome.errors import ExportError
 from anyhome.export.architecture import architecture_meshes
-from anyhome.export.ceilings import ceiling_mesh
+from anyhome.export.ceilings import ceiling_mesh, slab
 from anyhome.export.walls import WALL_THICKNESS_M, solid_blocks, wall_pieces
 from anyhome.house import House, HouseObject, Room
 from anyhome.materials import (
@@ -52,13 +52,35 @@ WALL_PROBE_M = 0.03
 """A wall face belongs to the room this far in front of it (see room_wall_meshes)."""
 
 
-def _slab(polygon, z0: float, z1: float) -> trimesh.Trimesh:
+def _slab(polygon, z0: float, z1: float, hole: Polygon | None = None) -> trimesh.Trimesh | None:
+    """The polygon extruded from ``z0`` to ``z1``, less ``hole`` (a stair opening); None
+    when nothing is left."""
     poly = Polygon(polygon)
     if not poly.is_valid:
         poly = poly.buffer(0)
-    mesh = trimesh.creation.extrude_polygon(poly, z1 - z0)
-    mesh.apply_translation((0.0, 0.0, z0))
-    return mesh
+    return slab(poly, z0, z1, hole)
+
+
+def stair_openings(house: House) -> dict[tuple[str, str], Polygon]:
+    """(room id, "floor" | "ceiling") -> the opening a flight of stairs needs: over every
+    ``stairs`` object, the ceiling of its room and the floor of the room one storey up
+    that lies over it (the stairwell of the same footprint), so the flight climbs through
+    an open well instead of into a slab."""
+    from anyhome.geometry import footprint_polygon
+
+    out: dict[tuple[str, str], Polygon] = {}
+    rooms = {r.id: r for r in house.rooms}
+    for o in house.objects:
+        room = rooms.get(o.room)
+        if o.category != "stairs" or room is None:
+            continue
+        box = footprint_polygon(o.position, o.size, o.yaw)
+        keys = [(room.id, "ceiling")]
+        above = [r for r in house.rooms if r.level == room.level + 1 and Polygon(r.polygon).intersects(box)]
+        keys += [(r.id, "floor") for r in above]
+        for key in keys:
+            out[key] = out[key].union(box) if key in out else box
+    return out
 
 
 def _box_corners(a, u, t0, t1, z0, z1, thick) -> np.ndarray:
@@ -141,6 +163,7 @@ class _SceneBuilder:
         self.px = texture_size_px(texture_px)
         self.textures = textures
         self.walls = room_wall_meshes(house)
+        self.openings = stair_openings(house)
         self.specs: dict[str, MaterialSpec] = {}
 
     def add(self, mesh: trimesh.Trimesh, name: str, meta: dict, transform=None,
@@ -159,8 +182,8 @@ class _SceneBuilder:
             base["open_air"] = True
         elif room.ceiling != "flat":
             base["ceiling_shape"] = room.ceiling
-        slabs = {"floor": _slab(room.polygon, -FLOOR_THICKNESS_M, 0.0),
-                 "ceiling": ceiling_mesh(room, FLOOR_THICKNESS_M)}  # None: open air
+        slabs = {"floor": _slab(room.polygon, -FLOOR_THICKNESS_M, 0.0, self.openings.get((room.id, "floor"))),
+                 "ceiling": ceiling_mesh(room, FLOOR_THICKNESS_M, self.openings.get((room.id, "ceiling")))}
         for part in ROOM_PARTS:
             mesh = slabs.get(part) if part != "walls" else self.walls.get(room.id)
             if mesh is None:

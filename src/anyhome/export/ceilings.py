@@ -19,6 +19,8 @@ walls stay ``height`` high, as house.json says).
 
 from __future__ import annotations
 
+from typing import cast
+
 import numpy as np
 import trimesh
 from shapely.geometry import Polygon, box
@@ -59,15 +61,30 @@ def ceiling_height_at(room: Room, x: float, y: float) -> float:
     return float(np.interp((x, y)[axis] - lo, s, z))
 
 
-def ceiling_mesh(room: Room, thickness: float) -> trimesh.Trimesh | None:
-    """The room's ceiling (see the module doc); None for an open-air room."""
+def ceiling_mesh(room: Room, thickness: float, hole: Polygon | None = None) -> trimesh.Trimesh | None:
+    """The room's ceiling (see the module doc); None for an open-air room. A flat
+    ceiling leaves out ``hole`` (a stair opening: the flight climbs through it)."""
     if room.open_air:
         return None
     if room.ceiling == "flat":
-        mesh = trimesh.creation.extrude_polygon(_poly(room), thickness)
-        mesh.apply_translation((0.0, 0.0, room.height))
-        return mesh
+        return slab(_poly(room), room.height, room.height + thickness, hole)
     return _sloped(room)
+
+
+MIN_SLAB_M2 = 1e-4
+"""Pieces of a floor or ceiling cut by a stair opening smaller than this are left out."""
+
+
+def slab(poly: Polygon, z0: float, z1: float, hole: Polygon | None = None) -> trimesh.Trimesh | None:
+    """``poly`` less ``hole`` extruded from ``z0`` to ``z1``; None when nothing is left."""
+    if hole is not None:
+        poly = poly.difference(hole)
+    parts = [p for p in getattr(poly, "geoms", [poly]) if isinstance(p, Polygon) and p.area > MIN_SLAB_M2]
+    if not parts:
+        return None
+    mesh = cast(trimesh.Trimesh, trimesh.util.concatenate([trimesh.creation.extrude_polygon(p, z1 - z0) for p in parts]))
+    mesh.apply_translation((0.0, 0.0, z0))
+    return mesh
 
 
 def _sloped(room: Room) -> trimesh.Trimesh:

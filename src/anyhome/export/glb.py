@@ -15,7 +15,6 @@ from anyhome.export.output import write_file
 from anyhome.house import House
 from anyhome.materials.gltf import embed_textures
 from anyhome.sanitize import clean_text
-from anyhome.scene import one_line, scene_and_materials
 
 
 def write_glb(house: House, path: str | os.PathLike[str], texture_px: int | None = None) -> Path:
@@ -24,6 +23,9 @@ def write_glb(house: House, path: str | os.PathLike[str], texture_px: int | None
     Texture images are encoded once per distinct image (base colour JPEG, maps PNG) and
     shared by every material that uses them.
     """
+    # imported here: anyhome.scene imports anyhome.export.architecture (a cycle at import time)
+    from anyhome.scene import one_line, scene_and_materials
+
     path = Path(path)
     try:
         scene, specs = scene_and_materials(house, texture_px, textures=False)
