@@ -28,9 +28,9 @@ import numpy as np
 
 from anyhome.floorplan.grid import OUTSIDE, min_side_cells
 from anyhome.floorplan.program import CORRIDOR_TYPES, Program
+from anyhome.floorplan.slicing import Rect, shared_wall_cells  # Rect: (x0, y0, x1, y1) in cells
 
-Rect = tuple[int, int, int, int]
-"""(x0, y0, x1, y1) in cells; the court's south-west corner is (0, 0)."""
+# Here the court's south-west corner is cell (0, 0).
 NORTH, SOUTH, EAST, WEST = range(4)
 
 
@@ -85,22 +85,8 @@ def court_owner(prog: Program, rng: np.random.Generator, open_side: bool = False
 # ------------------------------------------------------------------ the tree
 def _tree(prog: Program, court: int, rng: np.random.Generator) -> list[list[int]] | str:
     """Children of every room in a breadth-first tree of the bubble diagram from the court."""
-    adj: list[list[int]] = [[] for _ in range(prog.n)]
-    for a, b in prog.edges:
-        adj[a].append(b)
-        adj[b].append(a)
-    children: list[list[int]] = [[] for _ in range(prog.n)]
-    seen, order = {court}, [court]
-    for k in order:
-        nbrs = sorted(set(adj[k]) - seen)
-        rng.shuffle(nbrs)
-        for j in nbrs:
-            seen.add(j)
-            children[k].append(j)
-            order.append(j)
-    if len(seen) != prog.n:
-        return "the bubble diagram is not connected"
-    return children
+    children = prog.tree(court, rng)
+    return "the bubble diagram is not connected" if children is None else children
 
 
 def _block(head: int, children: list[list[int]], prog: Program) -> Block | str:
@@ -617,7 +603,7 @@ def _score(prog: Program, court: int, rects: dict[int, Rect]) -> tuple[int, floa
         faults += 1
         reason = reason or why
 
-    shared = {(a, b): _shared(rects[a], rects[b]) * cell for a in rects for b in rects if a < b}
+    shared = {(a, b): shared_wall_cells(rects[a], rects[b]) * cell for a in rects for b in rects if a < b}
 
     def wall(a: int, b: int) -> float:
         return shared[(min(a, b), max(a, b))]
@@ -654,15 +640,6 @@ def _score(prog: Program, court: int, rects: dict[int, Rect]) -> tuple[int, floa
         elif wall(a, b) < opts.shared_wall_min_m:
             fault(f"connection {prog.ids[a]}-{prog.ids[b]} has no shared wall long enough")
     return faults, soft, reason
-
-
-def _shared(a: Rect, b: Rect) -> int:
-    """Length (cells) of the wall two rectangles share."""
-    if a[2] == b[0] or b[2] == a[0]:
-        return max(0, min(a[3], b[3]) - max(a[1], b[1]))
-    if a[3] == b[1] or b[3] == a[1]:
-        return max(0, min(a[2], b[2]) - max(a[0], b[0]))
-    return 0
 
 
 def _rasterize(rects: dict[int, Rect], n: int) -> np.ndarray:

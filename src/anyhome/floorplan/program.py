@@ -78,6 +78,26 @@ class Program:
     def habitable(self, k: int) -> bool:
         return is_habitable(self.types[k])
 
+    def tree(self, root: int, rng: np.random.Generator | None = None) -> list[list[int]] | None:
+        """Children of every room in a breadth-first tree of the bubble diagram from
+        ``root`` (each room's unseen neighbours in index order, shuffled by ``rng`` when
+        given); None when the diagram is not connected."""
+        adj: list[list[int]] = [[] for _ in range(self.n)]
+        for a, b in self.edges:
+            adj[a].append(b)
+            adj[b].append(a)
+        children: list[list[int]] = [[] for _ in range(self.n)]
+        seen, order = {root}, [root]
+        for k in order:
+            nbrs = sorted(set(adj[k]) - seen)
+            if rng is not None:
+                rng.shuffle(nbrs)
+            for j in nbrs:
+                seen.add(j)
+                children[k].append(j)
+                order.append(j)
+        return children if len(seen) == self.n else None
+
     def needs_exterior(self) -> np.ndarray:
         entrances = {a for a, b in self.links if b == OUTSIDE}
         return np.array([self.habitable(k) or k in entrances for k in range(self.n)])

@@ -180,7 +180,7 @@ def _completed_cost(parts, rooms: SliceRooms) -> float:
         leaves.update(part)
     for i, j in rooms.edges:
         if i in leaves and j in leaves:
-            cost += opts.slice_wall_deficit_weight * max(0.0, opts.shared_wall_min_m - _shared(leaves[i], leaves[j]) * rooms.cell_m)
+            cost += opts.slice_wall_deficit_weight * max(0.0, opts.shared_wall_min_m - shared_wall_cells(leaves[i], leaves[j]) * rooms.cell_m)
     return cost
 
 
@@ -228,7 +228,7 @@ def _side_deficit(r: Rect, rect: Rect, side: int, cell: float, opts: FloorplanOp
     return opts.slice_wall_deficit_weight * max(0.0, opts.shared_wall_min_m - (length * cell if on else 0.0))
 
 
-def _shared(a: Rect, b: Rect) -> int:
+def shared_wall_cells(a: Rect, b: Rect) -> int:
     """Length (cells) of the wall two rectangles share."""
     if a[2] == b[0] or b[2] == a[0]:
         return max(0, min(a[3], b[3]) - max(a[1], b[1]))

@@ -101,19 +101,8 @@ def _tree(prog: Program, rng: np.random.Generator) -> tuple[int, list[list[int]]
     if not entrances:
         return "no entrance room"
     root = entrances[0]
-    adj: list[list[int]] = [[] for _ in range(prog.n)]
-    for a, b in prog.edges:
-        adj[a].append(b)
-        adj[b].append(a)
-    children: list[list[int]] = [[] for _ in range(prog.n)]
-    seen, order = {root}, [root]
-    for k in order:
-        nbrs = sorted(set(adj[k]) - seen)
-        for j in nbrs:
-            seen.add(j)
-            children[k].append(j)
-            order.append(j)
-    if len(seen) != prog.n:
+    children = prog.tree(root)
+    if children is None:
         return "the bubble diagram is not connected"
     for k in range(prog.n):
         rng.shuffle(children[k])

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from anyhome.floorplan.options import FloorplanOptions
-from anyhome.floorplan.slicing import Cut, Rect, _shared, tree_cuts, tree_rects
+from anyhome.floorplan.slicing import Cut, Rect, shared_wall_cells, tree_cuts, tree_rects
 
 
 @dataclass(frozen=True)
@@ -71,7 +71,7 @@ def layout_cost(rects: dict[int, Rect], outer: Rect, rooms: TuneRooms) -> float:
         if k != rooms.void:
             cost += _room_cost(k, r, rooms)
     for i, j in rooms.edges:
-        shared = _shared(rects[i], rects[j]) * rooms.cell_m
+        shared = shared_wall_cells(rects[i], rects[j]) * rooms.cell_m
         if shared < opts.shared_wall_min_m:
             cost += opts.tune_violation_weight * (opts.shared_wall_min_m - shared) + opts.tune_gap_weight * _gap(rects[i], rects[j]) * rooms.cell_m
     if rooms.void is not None and rooms.void_sides == 1:
@@ -107,4 +107,4 @@ def _exterior(r: Rect, outer: Rect, void: Rect | None) -> int:
     w, h = r[2] - r[0], r[3] - r[1]
     length = (r[0] == outer[0]) * h + (r[2] == outer[2]) * h
     length += (r[1] == outer[1]) * w + (r[3] == outer[3]) * w
-    return length + (_shared(r, void) if void is not None else 0)
+    return length + (shared_wall_cells(r, void) if void is not None else 0)
