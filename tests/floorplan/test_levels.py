@@ -157,21 +157,74 @@ def test_overhang_counts_upper_floor_over_no_room_below():
     assert overhang_m2([ground, out]) == pytest.approx(8.0)
 
 
-def test_upper_storey_of_many_bedrooms_opens_onto_a_landing():
-    """Four bedrooms upstairs: they open onto a landing, not all onto the stairwell (whose
-    walls would then hold no flight: the house failed to lay out before)."""
+def test_upper_storey_of_many_bedrooms_opens_onto_its_stair_hall():
+    """Four bedrooms upstairs open onto the stairwell, which is the storey's hall (a
+    landing beside the stair), not onto a landing added beside it; the flight still fits
+    (the house failed to lay out with every door on a bare stairwell before)."""
     text = "a two-storey family house with four bedrooms upstairs"
     for seed in (0, 1, 2):
         house = generate(text, seed=seed)
         up = [r for r in house.rooms if r.level == 1]
         assert sum(r.type == "bedroom" for r in up) == 4
-        landing = next(r for r in up if r.type == "hallway")
+        assert not [r for r in up if r.type == "hallway"]
         stair = next(r for r in up if r.type == "stairwell")
-        opens = {tuple(sorted(d.rooms)) for d in house.doors}
-        assert tuple(sorted((landing.id, stair.id))) in opens
-        assert sum(stair.id in d.rooms for d in house.doors) <= 2
+        assert sum(stair.id in d.rooms for d in house.doors) >= 4
+        assert [o for o in house.objects if o.category == "stairs"]
         assert reachable_rooms(house) == {r.id for r in house.rooms}
         assert evaluate_house(house).violations == []
+
+
+def test_ground_floor_stairwell_is_its_hall_unless_a_hallway_is_asked_for():
+    """A house of two storeys gets no hallway of the program's beside its stair hall; a
+    hallway the text names stays."""
+    plain = generate("a two-storey family house with four bedrooms upstairs", 0)
+    assert not [r for r in plain.rooms if r.type == "hallway"]
+    named = generate("a two-storey family house with a long hallway, a kitchen, a living room and three bedrooms upstairs", 0)
+    assert [r for r in named.rooms if r.type == "hallway" and r.level == 0]
+
+
+def test_stair_hall_sizes_agree_with_the_stair():
+    """The planner's stair hall holds the stair, its strip and a landing beside it; its
+    door count and growth per door are the floorplan's."""
+    from anyhome.floorplan.stairs import HALL_DOOR_M, HALL_DOORS, PASSAGE_M, STAIR_WIDTH_M, STRIP_M, dogleg
+    from anyhome.plan.program import STAIR_HALL_DOORS, STAIR_HALL_M2, STAIR_HALL_M2_PER_DOOR, stairwell_area_m2
+
+    assert STAIR_HALL_DOORS == HALL_DOORS
+    assert STAIR_HALL_M2 >= (dogleg(2.9).length_m + STRIP_M) * (STAIR_WIDTH_M + PASSAGE_M) - 1e-6
+    assert STAIR_HALL_M2_PER_DOOR >= HALL_DOOR_M * (STAIR_WIDTH_M + PASSAGE_M) - 1e-6
+    assert stairwell_area_m2(HALL_DOORS + 2) == pytest.approx(STAIR_HALL_M2 + 2 * STAIR_HALL_M2_PER_DOOR)
+
+
+def test_doors_in_the_stairs_way_are_slid_clear_of_it():
+    """A stairwell whose doors stand where the stair would go: the ways kept have every
+    door clear of a stair box against an end wall, each door still on the wall the two
+    rooms share."""
+    from shapely.geometry import LineString, Polygon
+
+    from anyhome.floorplan import levels
+    from anyhome.house import Door, Floorplan, Room
+
+    def rect(x0, y0, x1, y1):
+        return [(x0, y0), (x1, y0), (x1, y1), (x0, y1)]
+
+    rooms = [Room(id="stairwell", name="stairwell", type="stairwell", polygon=rect(0, 0, 3.6, 2.65)),
+             Room(id="bed1", name="bedroom", type="bedroom", polygon=rect(0, 2.65, 3.6, 6.0)),
+             Room(id="bed2", name="bedroom", type="bedroom", polygon=rect(0, -3.0, 3.6, 0)),
+             Room(id="bath", name="bathroom", type="bathroom", polygon=rect(3.6, 0, 6.0, 2.65))]
+    doors = [Door(id="d0", rooms=("stairwell", "bed1"), segment=((1.2, 2.65), (2.1, 2.65))),
+             Door(id="d1", rooms=("stairwell", "bed2"), segment=((1.0, 0.0), (1.9, 0.0))),
+             Door(id="d2", rooms=("stairwell", "bath"), segment=((3.6, 0.9), (3.6, 1.8)))]
+    plan = Floorplan(rooms=rooms, doors=doors, windows=[], connections=[])
+    length = levels.flight_length_m({0: 2.9, 1: 2.9}, 0)
+    ways = levels._doors_to_strip(plan, "stairwell", length)
+    assert ways
+    assert levels.stack_box([(0, plan)], {0: 2.9, 1: 2.9}) is None  # as laid out, no stair fits
+    for way in ways:
+        assert levels.stack_box([(0, way)], {0: 2.9, 1: 2.9}) is not None
+        for d in way.doors:
+            line = LineString(d.segment)
+            for rid in d.rooms:
+                assert Polygon(next(r for r in rooms if r.id == rid).polygon).exterior.buffer(1e-6).contains(line)
 
 
 def test_storey_is_placed_where_it_hangs_least():
@@ -263,15 +316,15 @@ def test_townhouse_stairwells_are_compact_and_their_flights_fit_on_every_level(s
     assert report.violations == []
 
 
-def test_upper_landing_is_no_larger_than_its_doors_need():
+def test_stair_hall_is_no_larger_than_its_doors_need():
     from shapely.geometry import Polygon
 
-    from anyhome.plan.program import LANDING_BASE_M2, LANDING_M2_PER_DOOR
+    from anyhome.plan.program import stairwell_area_m2
 
     h = generate("a two-storey family house with four bedrooms upstairs", 0)
-    landing = next(r for r in h.rooms if r.level == 1 and r.name == "landing")
-    doors = sum(landing.id in d.rooms for d in h.doors)
-    assert Polygon(landing.polygon).area <= 1.5 * (LANDING_BASE_M2 + LANDING_M2_PER_DOOR * doors)
+    for r in (r for r in h.rooms if r.type == "stairwell"):
+        doors = sum(r.id in d.rooms for d in h.doors)
+        assert Polygon(r.polygon).area <= 1.35 * stairwell_area_m2(doors)
 
 
 def test_a_small_two_storey_house_keeps_its_stairwells():

@@ -38,6 +38,7 @@ KEPT_CONSTANTS = {
     "WINDOW_SILL_M", "WINDOW_HEIGHT_M", "BATH_WINDOW_WIDTH_M", "BATH_WINDOW_SILL_M", "BATH_WINDOW_HEIGHT_M",
     "RISER_MAX_M", "GOING_M", "FLIGHT_WIDTH_M", "WELL_GAP_M", "STRIP_M", "DOOR_CORNER_M", "STAIR_CLEAR_M", "HEADROOM_MIN_M", "STAIR_DEPTH_M",
     "SLAB_M",  # stairs (Approved Document K)
+    "PASSAGE_M", "HALL_DOORS", "HALL_DOOR_M", "DOOR_SLIDE_M",  # a stair hall: the landing beside the stair, its doors; how far a door slides clear of the stair
     "L_CORNERS", "INSCRIBED_TOL_M",  # merge.py: an L's corner count; the widest-disc search's precision
 }
 

@@ -55,9 +55,10 @@ def cell_size_m(total_area_m2: float, opts: FloorplanOptions) -> float:
 
 
 def make_footprint(total_area_m2: float, n_rooms: int, rng: np.random.Generator, opts: FloorplanOptions,
-                   allow_u: bool = True) -> Grid:
+                   allow_u: bool = True, min_long_m: float = 0.0) -> Grid:
     """Draw a rectangular, L-shaped (a corner cut away) or U-shaped (a notch in the middle
-    of one side; only where ``allow_u``) footprint holding ``total_area_m2``."""
+    of one side; only where ``allow_u``) footprint holding ``total_area_m2``, its long
+    side at least ``min_long_m`` (a stairwell's stair runs along it)."""
     cell = cell_size_m(total_area_m2, opts)
     n_cells = total_area_m2 / cell**2
     l_shape = n_rooms >= opts.l_shape_min_rooms and rng.random() < opts.l_shape_probability
@@ -65,7 +66,7 @@ def make_footprint(total_area_m2: float, n_rooms: int, rng: np.random.Generator,
     cut = rng.uniform(opts.l_cut_min_frac, opts.l_cut_max_frac) if l_shape or u_shape else 0.0
     aspect = rng.uniform(opts.footprint_aspect_min, opts.footprint_aspect_max)
     long_side = math.sqrt(n_cells / (1.0 - cut) * aspect)
-    nx = max(1, round(long_side))
+    nx = max(1, round(long_side), math.ceil(min_long_m / cell - 1e-9))
     ny = max(1, round(n_cells / (1.0 - cut) / nx))
     if rng.random() < 0.5:
         nx, ny = ny, nx

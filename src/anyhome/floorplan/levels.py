@@ -39,7 +39,8 @@ from anyhome.floorplan.merge import merge_open_plan
 from anyhome.floorplan.options import FloorplanOptions
 from anyhome.floorplan.solver import solve_floorplan
 from anyhome.floorplan.stairs import (
-    DOOR_CORNER_M,
+    HALL_DOOR_M,
+    HALL_DOORS,
     STAIR_CLEAR_M,
     STAIR_WIDTH_M,
     STRIP_M,
@@ -78,8 +79,14 @@ def flight_length_m(heights: dict[int, float], k: int) -> float:
 def stairwell_min_m(spec: HouseSpec, k: int) -> tuple[float, float]:
     """(long, short) sides the stairwell of storey ``k`` needs: its stair box
     (:func:`flight_length_m`) and the strip of floor at the stair's foot (where a flight
-    starts and the one below arrives), by the two flights' width."""
-    return (round(flight_length_m(storey_heights_m(spec), k) + STRIP_M, 4), STAIR_WIDTH_M)
+    starts and the one below arrives), by the two flights' width; a stair hall with more
+    than :data:`~anyhome.floorplan.stairs.HALL_DOORS` doors is longer by
+    :data:`~anyhome.floorplan.stairs.HALL_DOOR_M` per door. (How wide it is beyond the
+    stair, for a landing beside it, is the planned area's say.)"""
+    stair = stair_room(spec, k)
+    doors = sum(stair in c for c in spec.connections)
+    extra_m = HALL_DOOR_M * max(0, doors - HALL_DOORS)
+    return (round(flight_length_m(storey_heights_m(spec), k) + STRIP_M + extra_m, 4), STAIR_WIDTH_M)
 
 
 def solve_levels(spec: HouseSpec, rng: np.random.Generator, options: FloorplanOptions | None = None) -> Floorplan:
@@ -92,14 +99,24 @@ def solve_levels(spec: HouseSpec, rng: np.random.Generator, options: FloorplanOp
     opts = options or FloorplanOptions()
     roomy = dataclasses.replace(opts, stairwell_spare_m=opts.stairwell_spare_m + opts.stairwell_roomy_m)
     why = ""
-    for i in range(opts.level_attempts):  # the later half with roomier stairwells (a squarer room holds the stair)
+    i = 0
+    while i < opts.level_attempts:  # the later half with roomier stairwells (a squarer room holds the stair)
+        half = opts.level_attempts // 2
         try:
-            plan = _stacked(spec, numbers, rng, opts if i < opts.level_attempts // 2 else roomy)
+            plan = _stacked(spec, numbers, rng, opts if i < half else roomy)
             stairs_objects(plan)  # a flight fits where both stairwells meet, clear of their doors
             return plan
+        except _Unsolvable as e:  # a storey the solver cannot lay out at all: roomier, then one storey
+            why = str(e)
+            i = half if i < half else opts.level_attempts
         except FloorplanError as e:
             why = str(e)
+            i += 1
     return _one_storey(spec, rng, options, why)
+
+
+class _Unsolvable(FloorplanError):
+    """A storey of the house that the solver could not lay out in all its attempts."""
 
 
 def _stacked(spec: HouseSpec, numbers: list[int], rng: np.random.Generator, options: FloorplanOptions | None) -> Floorplan:
@@ -113,6 +130,8 @@ def _stacked(spec: HouseSpec, numbers: list[int], rng: np.random.Generator, opti
         for _ in range(opts.storey_candidates):  # a few layouts of the storey; the one that sits best
             try:
                 hang, placed = _best_placed(spec, plans, _solve_storey(spec, k, rng, options), k, ref)
+            except _Unsolvable:
+                raise
             except FloorplanError as e:
                 why = str(e)
                 continue
@@ -234,9 +253,8 @@ def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options: Fl
     for _ in range(attempts):
         try:
             plan = solve_floorplan(sub, rng, options, min_length_m={stair: long_m})
-        except FloorplanError as e:
-            why = str(e)
-            continue
+        except FloorplanError as e:  # its own bounded tries all failed: trying again rarely helps
+            raise _Unsolvable(f"could not lay out level {k} ({e})") from None
         if k != 0:
             plan = plan.model_copy(update={"doors": [d for d in plan.doors if "outside" not in d.rooms]})
         x0, y0, w, h = _rect(plan.room(stair))
@@ -244,44 +262,79 @@ def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options: Fl
             plan = _turned(plan)
             x0, y0, w, h = _rect(plan.room(stair))
         if w >= long_m - 1e-6 and h >= short_m - 1e-6:
-            if stack_box([(k, plan)], heights) is None:
-                plan = _doors_to_strip(plan, stair)
-            if stack_box([(k, plan)], heights) is not None:
-                return plan
+            for slid in [plan] + _doors_to_strip(plan, stair, flight_length_m(heights, k)):
+                if stack_box([(k, slid)], heights) is not None:
+                    return slid
     raise FloorplanError(f"could not lay out level {k} in {attempts} attempts ({why})")
 
 
-def _doors_to_strip(plan: Floorplan, stair: str) -> Floorplan:
-    """``plan`` with the doors in the long walls of its stairwell ``stair`` (running
-    east-west) slid along their wall to its end where the strip at the stair's foot will
-    be (the end whose end wall has a door; else the east end), :data:`DOOR_CORNER_M` from
-    the corner, where the wall is still shared with the same room and no other door is
-    near; doors that cannot move stay."""
-    from shapely.geometry import LineString, Polygon
+def _doors_to_strip(plan: Floorplan, stair: str, length_m: float) -> list[Floorplan]:
+    """Ways of ``plan`` whose stairwell ``stair`` (running east-west) holds a stair box
+    ``length_m`` long by the flights' width against its far end wall, with the strip at
+    its foot: for each of the four such boxes (against the south or the north wall, its
+    foot toward the east or the west), the doors of the stairwell whose swing meets the
+    box slid along their wall to the nearest place clear of it, where the wall is still
+    shared with the same room and no other door is near. The boxes for which every door
+    could be cleared, those needing the fewest moves first."""
+    from shapely.geometry import Polygon, box
 
     x0, y0, w, h = _rect(plan.room(stair))
-    x1 = x0 + w
-    mine = [d for d in plan.doors if stair in d.rooms]
-    ends = {round(d.segment[0][0], 6) for d in mine if abs(d.segment[0][0] - d.segment[1][0]) < 1e-6}
-    if len(ends) > 1:
-        return plan
-    east = not ends or abs(next(iter(ends)) - x1) < 1e-6
-    doors = list(plan.doors)
-    for i, d in enumerate(doors):
-        (ax, ay), (bx, by) = d.segment
-        if stair not in d.rooms or abs(ay - by) > 1e-6 or min(abs(ay - y0), abs(ay - y0 - h)) > 1e-6:
-            continue
-        width = abs(bx - ax)
-        lo = x1 - DOOR_CORNER_M - width if east else x0 + DOOR_CORNER_M
-        seg = ((lo, ay), (lo + width, ay)) if ax < bx else ((lo + width, ay), (lo, ay))
-        other = next((r for r in plan.rooms if r.id in d.rooms and r.id != stair), None)
-        line = LineString(seg)
-        if other is None or not Polygon(other.polygon).exterior.buffer(1e-6).contains(line):
-            continue
-        if any(j != i and LineString(e.segment).distance(line) < 0.1 for j, e in enumerate(doors)):
-            continue
-        doors[i] = d.model_copy(update={"segment": (tuple(round(v, 6) for v in seg[0]), tuple(round(v, 6) for v in seg[1]))})
-    return plan.model_copy(update={"doors": doors})
+    if w < length_m + STRIP_M - 1e-6 or h < STAIR_WIDTH_M - 1e-6:
+        return []
+    others = {r.id: Polygon(r.polygon).exterior.buffer(1e-6) for r in plan.rooms if r.id != stair}
+    own = Polygon(plan.room(stair).polygon).exterior.buffer(1e-6)
+    out: list[tuple[int, Floorplan]] = []
+    for ya in (y0, y0 + h - STAIR_WIDTH_M):
+        for xa in (x0, x0 + w - length_m):  # the box against the west (foot east) or the east end wall
+            stair_box = box(xa, ya, xa + length_m, ya + STAIR_WIDTH_M).buffer(STAIR_CLEAR_M)
+            doors = list(plan.doors)
+            moved = 0
+            for i, d in enumerate(doors):
+                if stair not in d.rooms or not _meets(d.segment, stair_box):
+                    continue
+                other = next((x for x in d.rooms if x != stair), "outside")
+                seg = _clear_spot(d.segment, stair_box, (own, others.get(other)), [e.segment for j, e in enumerate(doors) if j != i])
+                if seg is None:
+                    break
+                doors[i] = d.model_copy(update={"segment": seg})
+                moved += 1
+            else:
+                out.append((moved, plan.model_copy(update={"doors": doors})))
+    return [p for _, p in sorted(out, key=lambda t: t[0])]
+
+
+def _meets(segment, stair_box) -> bool:
+    from shapely.geometry import LineString
+
+    return bool(opening_zone(segment).union(LineString(segment)).intersects(stair_box))
+
+
+DOOR_SLIDE_M = 3.0
+"""Farthest a stairwell's door is slid along its wall to clear the stair."""
+
+
+def _clear_spot(segment, stair_box, walls: tuple, near: list) -> tuple | None:
+    """``segment`` (a door) slid along its own line to the nearest place (5 cm steps, at
+    most :data:`DOOR_SLIDE_M`) where its swing clears ``stair_box``, it still lies on both
+    ``walls`` (the two rooms' outlines, buffered; None: outside, not moved) and no door
+    of ``near`` is within 0.1 m; None: no such place."""
+    from shapely.geometry import LineString
+
+    if any(w is None for w in walls):
+        return None
+    (ax, ay), (bx, by) = segment
+    ux, uy = (1.0, 0.0) if abs(ay - by) < 1e-6 else (0.0, 1.0)
+    for i in range(1, int(DOOR_SLIDE_M / SNAP_M) + 1):
+        for sign in (1, -1):
+            t = sign * i * SNAP_M
+            seg = ((round(ax + ux * t, 6), round(ay + uy * t, 6)), (round(bx + ux * t, 6), round(by + uy * t, 6)))
+            line = LineString(seg)
+            if _meets(seg, stair_box) or not all(w.contains(line) for w in walls):
+                continue
+            if any(LineString(e).distance(line) < 0.1 for e in near):
+                continue
+            return seg
+    return None
 
 
 def _rect(room: Room) -> tuple[float, float, float, float]:

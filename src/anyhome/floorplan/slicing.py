@@ -45,6 +45,8 @@ class SliceRooms:
     """Longest/shortest side each room may have (inf for corridors and the void)."""
     void_sides: int = 2
     """Outline sides the void must touch: 2 (a corner, an L) or 1 (a notch, a U)."""
+    min_long: np.ndarray | None = None
+    """Shortest long side (m) each room may have (0: any; a stairwell: its stair)."""
 
 
 @dataclass
@@ -297,6 +299,8 @@ def _room_shape_score(k: int, short: float, long_: float, ext: Ext, rooms: Slice
             placed = bool((ext[0] or ext[1]) and (ext[2] or ext[3]))
         return 0.0 if placed else opts.slice_infeasible_cost
     score = opts.slice_infeasible_cost if short < rooms.min_side[k] - 1e-6 else 0.0
+    if rooms.min_long is not None and long_ < rooms.min_long[k] - 1e-6:
+        score += opts.slice_infeasible_cost
     if rooms.corridor[k]:
         return score
     aspect = long_ / short

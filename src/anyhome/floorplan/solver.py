@@ -206,7 +206,8 @@ def _attempt(prog: Program, rng: np.random.Generator, opts: FloorplanOptions, gr
     """One try: a Layout, or a short reason it failed; ``grid``: the footprint to fill
     (None: one drawn at random)."""
     if grid is None:
-        grid = make_footprint(float(prog.areas_m2.sum()), prog.n, rng, opts, allow_u=not prog.stacked)
+        grid = make_footprint(float(prog.areas_m2.sum()), prog.n, rng, opts, allow_u=not prog.stacked,
+                              min_long_m=max(prog.min_length_m, default=0.0))
     owner = _slice_rooms(prog, grid, rng, opts)
     reason, score = _check_rooms(prog, owner, grid.cell_m, opts)
     if reason:
@@ -264,15 +265,15 @@ def _slice_rooms(prog: Program, grid: Grid, rng: np.random.Generator, opts: Floo
         min_side, corridor = np.append(min_side, 2 * cell), np.append(corridor, True)
         max_aspect = np.append(max_aspect, np.inf)
         exterior, pos = np.append(exterior, False), np.vstack([pos, void.mean(axis=0) + 0.5])
+    min_long = np.array(prog.min_length_m or (0.0,) * prog.n, dtype=float)
+    if void_id is not None:
+        min_long = np.append(min_long, 0.0)
     rooms = SliceRooms(cells, min_side, corridor, exterior, void_id, pos, frozenset(prog.edges), cell, opts, max_aspect,
-                       grid.void_sides)
+                       grid.void_sides, min_long if min_long.any() else None)
     tree = slice_footprint((0, 0, nx, ny), rooms, rng)
     targets = np.maximum(cells, (min_side / cell) ** 2)
     if void_id is not None and grid.void_sides == 2:
         targets[void_id] = 1.0
-    min_long = np.array(prog.min_length_m or (0.0,) * prog.n, dtype=float)
-    if void_id is not None:
-        min_long = np.append(min_long, 0.0)
     tune_rooms = TuneRooms(targets, min_side, corridor, exterior, void_id, tuple(prog.edges), cell, opts, max_aspect,
                            min_long_m=min_long if min_long.any() else None, void_sides=grid.void_sides)
     tree = anneal(tree, (0, 0, nx, ny), tune_rooms, rng, opts)

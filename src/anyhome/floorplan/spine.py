@@ -416,6 +416,8 @@ def _column_width(col: Column, depth: int, prog: Program) -> int:
     width = max(int(np.ceil(area_cells / depth)), *(_min_side(prog, k) for k in col))
     if len(col) == 1 and np.isfinite(prog.max_aspect(col[0])):  # a small room in a deep row: wider, not a strip
         width = max(width, int(np.ceil(depth / prog.max_aspect(col[0]))))
+    if len(col) == 1 and prog.min_length_m and depth * prog.options.spine_cell_m < prog.min_length_m[col[0]] - 1e-6:
+        width = max(width, int(np.ceil(prog.min_length_m[col[0]] / prog.options.spine_cell_m - 1e-9)))  # a stairwell's stair runs along the spine
     return width
 
 

@@ -35,6 +35,15 @@ STRIP_M = 1.0
 """Depth of the floor in front of the box where a flight starts and the one below
 arrives: a flight's width at least, and room for a 0.9 m door in a long wall of the
 stairwell (:data:`DOOR_CORNER_M` from the corner, :data:`STAIR_CLEAR_M` clear of the stair)."""
+PASSAGE_M = 0.9
+"""Width of the landing beside the stair in a stair hall (a stairwell that is also its
+storey's hall): doors in the long wall across from the stair open onto it, their swing
+clear of the stair."""
+HALL_DOORS = 5
+"""Doors a stair hall of the stair's length holds: two in the end wall at the stair's
+foot, two or three in the long wall across from the stair."""
+HALL_DOOR_M = 0.9
+"""Length a stair hall gains for every door beyond :data:`HALL_DOORS`."""
 STAIR_CLEAR_M = 0.03
 """Gap kept between the stair's box and a door or the floor its leaf swings over."""
 DOOR_CORNER_M = 0.05

@@ -26,7 +26,6 @@ from anyhome.plan.kb import KnowledgeBase
 from anyhome.plan.kbview import resolve
 from anyhome.plan.parse import Mention, Parsed, parse, plural
 from anyhome.plan.program import (
-    STAIRWELL_AREA_M2,
     STAIRWELL_KEY,
     Sizing,
     Slot,
@@ -131,7 +130,7 @@ class OfflinePlanner:
         fit_areas(kb, slots, sz)
         for s in slots:  # a stairwell holds its flight whatever the total
             if s.key == STAIRWELL_KEY:
-                s.area = STAIRWELL_AREA_M2
+                s.area = s.area_range[0]
         named = kb.raw("programs")["programs"].get(asked_program or "", prog)  # "a tiny cabin" stays a home
         building = named.get("building") or (slots[0].type.replace("_", " ") if program is None else "home")
         rooms = _furnish(kb, parsed, slots, main_key, prog, rng, warnings)

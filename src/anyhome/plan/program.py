@@ -531,7 +531,7 @@ def connect(kb: KnowledgeBase, slots: list[Slot], entrance_types: list[str]) -> 
         return bool(_type_info(kb, s.type).get("hub"))
 
     root = None
-    for t in [*entrance_types, "entry", "reception", "hallway", "living_room", "waiting_room"]:
+    for t in [*entrance_types, "entry", "reception", "hallway", "stairwell", "living_room", "waiting_room"]:
         root = next((s for s in slots if s.type == t), None)
         if root is not None:
             break
@@ -580,16 +580,22 @@ half landing: 2.6 m long for a 2.9 m storey in 16 risers of 0.181 m and goings o
 0.25 m, within UK Approved Document K for a private stair) and a 1 m strip of floor at
 its foot (anyhome.floorplan.stairs): 6.3 m2 at least; the floorplan solver makes it
 about 2 x 4 m (a tall storey's stairwell grows with its stair: floorplan.levels)."""
-LANDING_MIN_ROOMS = 3
-"""A storey above or below the ground floor with this many rooms besides its stairwell
-gets a landing (a hallway) they open onto: a stairwell has wall for a flight and about
-two doors, not one per bedroom."""
-LANDING_KEY = "landing"
-"""Program key of the landing :func:`assign_levels` adds to a storey."""
-LANDING_BASE_M2 = 1.0
-LANDING_M2_PER_DOOR = 0.8
-"""A landing's floor: this base plus this much per door along it (a 1.2 m wide strip
-with doors on both sides, about 0.9 m of wall per door and its margins)."""
+STAIR_HALL_M2 = 9.6
+"""Floor of a stairwell with three doors or more: a stair hall (the storey's hall, in
+place of a landing or a hallway): the stair and its strip (3.6 m) by the stair's width
+and a 0.9 m landing beside it (2.65 m), with room for five doors
+(anyhome.floorplan.stairs ``PASSAGE_M``, ``HALL_DOORS``)."""
+STAIR_HALL_DOORS = 5
+STAIR_HALL_M2_PER_DOOR = 2.4
+"""Floor a stair hall gains per door beyond :data:`STAIR_HALL_DOORS` (0.9 m more of it)."""
+
+
+def stairwell_area_m2(doors: int) -> float:
+    """Planned floor of a stairwell with ``doors`` doors: a plain stairwell for one or
+    two, else a stair hall (:data:`STAIR_HALL_M2`) growing with its doors."""
+    if doors <= 2:
+        return STAIRWELL_AREA_M2
+    return STAIR_HALL_M2 + STAIR_HALL_M2_PER_DOOR * max(0, doors - STAIR_HALL_DOORS)
 
 
 def assign_levels(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], warnings: list[str]) -> None:
@@ -638,17 +644,14 @@ def assign_levels(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], warnings
             break
         slots.remove(victim)
         warnings.append(f"a house has at most {MAX_ROOMS} rooms with its stairwells; dropped the {victim.name}")
+    for t in ("hallway", "entry"):  # the ground floor's stairwell is its entrance hall
+        hall = next((s for s in slots if s.level == 0 and s.type == t and s.mention is None), None)
+        if hall is not None:
+            slots.remove(hall)
     for k in levels:
         s = Slot("stairwell", "stairwell", "hallway", (STAIRWELL_AREA_M2, STAIRWELL_AREA_M2), key=STAIRWELL_KEY)
         s.level = k
         slots.append(s)
-        on = [x for x in slots if x.level == k and x is not s]
-        if k != 0 and len(on) >= LANDING_MIN_ROOMS and not any(x.type == "hallway" for x in on) \
-                and len(slots) < MAX_ROOMS:
-            landing = _slot_from_entry(kb, {"type": "hallway", "name": "landing"})
-            landing.key = LANDING_KEY
-            landing.level = k
-            slots.append(landing)
 
 
 def connect_levels(kb: KnowledgeBase, slots: list[Slot], entrance_types: list[str]) -> list[tuple[str, str]]:
@@ -664,16 +667,11 @@ def connect_levels(kb: KnowledgeBase, slots: list[Slot], entrance_types: list[st
             edges += connect(kb, on, entrance_types)
             continue
         stair = next(s for s in on if s.key == STAIRWELL_KEY)
-        on.remove(stair)
-        here = [e for e in connect(kb, [stair, *on], ["hallway"]) if e[1] != "outside"]
-        edges += here
-        for s in on:
-            if s.key == LANDING_KEY:  # a landing is as large as its doors need, no more
-                doors = sum(s.id in e for e in here)
-                s.area = LANDING_BASE_M2 + LANDING_M2_PER_DOOR * doors
+        edges += [e for e in connect(kb, [stair, *(s for s in on if s is not stair)], ["stairwell"]) if e[1] != "outside"]
     for s in slots:
-        if s.key == STAIRWELL_KEY:
-            s.area = STAIRWELL_AREA_M2
+        if s.key == STAIRWELL_KEY:  # a stair hall as long as its doors need
+            a = stairwell_area_m2(sum(s.id in e for e in edges))
+            s.area, s.area_range = a, (a, a)
     entrance = [e for e in edges if e[1] == "outside"]
     return [e for e in edges if e[1] != "outside"] + entrance
 # ---------------------------------------------------------------- sizes
@@ -761,7 +759,7 @@ def _least(kb: KnowledgeBase, s: Slot) -> float:
     if s.area_from == "stated":  # "a 12 m2 bedroom" stays 12 m2
         return float(s.area_range[0])
     if s.key == STAIRWELL_KEY:  # it holds its flight whatever the total
-        return STAIRWELL_AREA_M2
+        return float(s.area_range[0])
     return float(max(min(float(_type_info(kb, s.type)["min_area_m2"]), s.area_range[0]), s.need))
 
 
@@ -770,7 +768,7 @@ def _most(kb: KnowledgeBase, s: Slot, sz: Sizing) -> float:
     if s.area_from == "stated":
         return float(s.area_range[1])
     if s.key == STAIRWELL_KEY:
-        return STAIRWELL_AREA_M2
+        return float(s.area_range[0])
     if _type_info(kb, s.type).get("circulation"):
         return max(s.area, s.area_range[1])
     return float(min(s.area_range[1] * sz.stretch, AREA_LIMITS_M2[1]))
