@@ -186,8 +186,20 @@ def test_ground_floor_stairwell_is_its_hall_unless_a_hallway_is_asked_for():
 def test_stair_hall_sizes_agree_with_the_stair():
     """The planner's stair hall holds the stair, its strip and a landing beside it; its
     door count and growth per door are the floorplan's."""
-    from anyhome.floorplan.stairs import HALL_DOOR_M, HALL_DOORS, PASSAGE_M, STAIR_WIDTH_M, STRIP_M, dogleg
-    from anyhome.plan.program import STAIR_HALL_DOORS, STAIR_HALL_M2, STAIR_HALL_M2_PER_DOOR, stairwell_area_m2
+    from anyhome.floorplan.stairs import (
+        HALL_DOOR_M,
+        HALL_DOORS,
+        PASSAGE_M,
+        STAIR_WIDTH_M,
+        STRIP_M,
+        dogleg,
+    )
+    from anyhome.plan.program import (
+        STAIR_HALL_DOORS,
+        STAIR_HALL_M2,
+        STAIR_HALL_M2_PER_DOOR,
+        stairwell_area_m2,
+    )
 
     assert STAIR_HALL_DOORS == HALL_DOORS
     assert STAIR_HALL_M2 >= (dogleg(2.9).length_m + STRIP_M) * (STAIR_WIDTH_M + PASSAGE_M) - 1e-6
