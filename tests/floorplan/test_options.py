@@ -39,6 +39,7 @@ KEPT_CONSTANTS = {
     "RISER_MAX_M", "GOING_M", "FLIGHT_WIDTH_M", "WELL_GAP_M", "STRIP_M", "DOOR_CORNER_M", "STAIR_CLEAR_M", "HEADROOM_MIN_M", "STAIR_DEPTH_M",
     "SLAB_M",  # stairs (Approved Document K)
     "L_CORNERS", "INSCRIBED_TOL_M",  # merge.py: an L's corner count; the widest-disc search's precision
+    "THROUGH_FACTOR", "THROUGH_OVERLAP_OK_M2",  # levels.py: what is a double-height room; a snapping sliver
 }
 
 
