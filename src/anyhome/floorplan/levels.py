@@ -23,6 +23,12 @@ per-storey solve without changing it. Storeys are not solved inside the floor be
 few layouts of each, mirrored and with its stairwell on any corner of the one below, the
 one hanging least over nothing is kept (:func:`overhang_m2`; an upper storey may still
 overhang).
+
+A room much taller than the other rooms of its storey (a double-height living room, a
+nave: :data:`THROUGH_FACTOR`) rises through the storey above (:func:`through_rooms`): the
+storey is as high as its other rooms, the storey above (a mezzanine, a gallery) is placed
+beside it, over the other rooms, and its ceiling stops at that storey's ceiling. Where no
+placement keeps off it, the house is stacked as before (the storey above over its top).
 """
 
 from __future__ import annotations
