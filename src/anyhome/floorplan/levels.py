@@ -23,6 +23,12 @@ per-storey solve without changing it. Storeys are not solved inside the floor be
 few layouts of each, mirrored and with its stairwell on any corner of the one below, the
 one hanging least over nothing is kept (:func:`overhang_m2`; an upper storey may still
 overhang).
+
+A room much taller than the other rooms of its storey (a double-height living room, a
+nave: :data:`THROUGH_FACTOR`) rises through the storey above (:func:`through_rooms`): the
+storey is as high as its other rooms, the storey above (a mezzanine, a gallery) is placed
+beside it, over the other rooms, and its ceiling stops at that storey's ceiling. Where no
+placement keeps off it, the house is stacked as before (the storey above over its top).
 """
 
 from __future__ import annotations
@@ -30,6 +36,7 @@ from __future__ import annotations
 import dataclasses
 import math
 from collections.abc import Iterable
+from contextvars import ContextVar
 
 import numpy as np
 
@@ -37,7 +44,7 @@ from anyhome.errors import FloorplanError
 from anyhome.floorplan.grid import SNAP_M
 from anyhome.floorplan.merge import merge_open_plan
 from anyhome.floorplan.options import FloorplanOptions
-from anyhome.floorplan.solver import solve_floorplan
+from anyhome.floorplan.solver import OPENING_HEADROOM_M, solve_floorplan
 from anyhome.floorplan.stairs import (
     HALL_DOOR_M,
     HALL_DOORS,
@@ -49,7 +56,7 @@ from anyhome.floorplan.stairs import (
 )
 from anyhome.geometry import opening_zone
 from anyhome.house import Door, Floorplan, HouseObject, Level, Room, Window
-from anyhome.plan.spec import HouseSpec
+from anyhome.plan.spec import HouseSpec, RoomSpec
 
 SLAB_M = 0.2
 """Floor structure between a storey's ceiling and the next storey's floor."""
@@ -64,9 +71,58 @@ def stair_room(spec: HouseSpec, level: int) -> str:
     raise FloorplanError(f"level {level} has no stairwell room (a room named 'stairwell')")
 
 
+THROUGH_FACTOR = 1.6
+"""A room of storey ``k`` (ground or above) under a storey ``k`` + 1 is at least this many
+times as high as the storey's other rooms' tallest: it rises through the storey above (a
+double-height room open to a mezzanine or gallery beside it), :func:`through_rooms`."""
+THROUGH_OVERLAP_OK_M2 = 0.05
+"""Floor of a storey that may lie over a room rising through it (m2): snapping slivers."""
+
+_AS_ORDINARY: ContextVar[bool] = ContextVar("anyhome_through_as_ordinary", default=False)
+"""Set while a house whose upper storey would not sit beside its through rooms is laid
+out as before (through rooms as ordinary ones: the storey above over their ceilings)."""
+
+
+def _through_ids(rooms: Iterable[tuple[str, int, float, bool]]) -> set[str]:
+    """Ids of the rooms rising through the storey above, of ``rooms``: (id, level, height,
+    is a stairwell). On storey ``k`` >= 0 with a storey ``k`` + 1, a room (never the
+    stairwell) at least :data:`THROUGH_FACTOR` times as high as the tallest of the
+    storey's rooms that do not rise through (found by shrinking the set of tall rooms
+    until it holds still; the lowest room always stays)."""
+    rooms = list(rooms)
+    numbers = {lv for _, lv, _, _ in rooms}
+    out: set[str] = set()
+    for k in numbers:
+        if k < 0 or k + 1 not in numbers:
+            continue
+        here = [r for r in rooms if r[1] == k]
+        low = min(h for _, _, h, _ in here)
+        tall = {i for i, _, h, stair in here if not stair and h > low}
+        while tall:
+            ordinary = max(h for i, _, h, _ in here if i not in tall)
+            keep = {i for i, _, h, _ in here if i in tall and h >= THROUGH_FACTOR * ordinary - 1e-9}
+            if keep == tall:
+                break
+            tall = keep
+        out |= tall
+    return out
+
+
+def through_rooms(spec: HouseSpec) -> set[str]:
+    """Ids of the rooms of ``spec`` that rise through the storey above theirs (see
+    :data:`THROUGH_FACTOR`): the storey's height leaves them out, the storey above is
+    laid out beside them, not over them, and their ceiling stays under its ceiling."""
+    if _AS_ORDINARY.get():
+        return set()
+    return _through_ids((r.id, r.level, r.height_m, _is_stair(r)) for r in spec.rooms)
+
+
 def storey_heights_m(spec: HouseSpec) -> dict[int, float]:
-    """Floor-to-floor height of every storey of ``spec``: its tallest room and the slab."""
-    return {k: max(r.height_m for r in spec.rooms if r.level == k) + SLAB_M for k in {r.level for r in spec.rooms}}
+    """Floor-to-floor height of every storey of ``spec``: its tallest room that does not
+    rise through the storey above (:func:`through_rooms`) and the slab."""
+    through = through_rooms(spec)
+    return {k: max(r.height_m for r in spec.rooms if r.level == k and r.id not in through) + SLAB_M
+            for k in {r.level for r in spec.rooms}}
 
 
 def flight_length_m(heights: dict[int, float], k: int) -> float:
@@ -127,19 +183,29 @@ def _stacked(spec: HouseSpec, numbers: list[int], rng: np.random.Generator, opti
         ref = k - 1 if k > 0 else k + 1
         best: tuple[float, Floorplan] | None = None
         why = ""
+        blocked = True  # every try failed only for want of a place beside a through room
         for _ in range(opts.storey_candidates):  # a few layouts of the storey; the one that sits best
             try:
                 hang, placed = _best_placed(spec, plans, _solve_storey(spec, k, rng, options), k, ref)
             except _Unsolvable:
                 raise
-            except FloorplanError as e:
+            except _ThroughBlocked as e:
                 why = str(e)
+                continue
+            except FloorplanError as e:
+                why, blocked = str(e), False
                 continue
             if best is None or hang < best[0] - 1e-6:
                 best = (hang, placed)
             if hang <= opts.overhang_ok_m2:
                 break
         if best is None:
+            if blocked and through_rooms(spec):  # as before: through rooms as ordinary ones
+                token = _AS_ORDINARY.set(True)
+                try:
+                    return _stacked(spec, numbers, rng, options)
+                finally:
+                    _AS_ORDINARY.reset(token)
             raise FloorplanError(why)
         plans[k] = best[1]
     heights = storey_heights_m(spec)
@@ -148,7 +214,36 @@ def _stacked(spec: HouseSpec, numbers: list[int], rng: np.random.Generator, opti
         elevation[k] = elevation[k - 1] + heights[k - 1]
     for k in sorted((n for n in numbers if n < 0), reverse=True):
         elevation[k] = elevation[k + 1] - heights[k]
-    return _joined(spec, plans, [Level(level=k, elevation_m=round(elevation[k], 4), height_m=round(heights[k], 4)) for k in numbers])
+    levels = [Level(level=k, elevation_m=round(elevation[k], 4), height_m=round(heights[k], 4)) for k in numbers]
+    return _under_above(_joined(spec, plans, levels), through_rooms(spec))
+
+
+class _ThroughBlocked(FloorplanError):
+    """No placement of a storey keeps it off the rooms rising through it from below."""
+
+
+def _under_above(plan: Floorplan, through: set[str]) -> Floorplan:
+    """``plan`` with the ceiling of each room in ``through`` (rising from storey ``k``
+    through ``k`` + 1) at most that of storey ``k`` + 1 (its elevation and height, less
+    the slab over it), and its windows' tops kept under the ceiling."""
+    if not through:
+        return plan
+    levels = {lv.level: lv for lv in plan.levels}
+    tops: dict[str, float] = {}
+    rooms = []
+    for r in plan.rooms:
+        up, here = levels.get(r.level + 1), levels.get(r.level)
+        if r.id in through and up is not None and here is not None:
+            top = round(up.elevation_m + up.height_m - SLAB_M - here.elevation_m, 4)
+            if r.height > top + 1e-9:
+                tops[r.id] = top
+                r = r.model_copy(update={"height": top})
+        rooms.append(r)
+    if not tops:
+        return plan
+    windows = [w.model_copy(update={"height": min(w.height, tops[w.room] - OPENING_HEADROOM_M - w.sill)})
+               if w.room in tops else w for w in plan.windows]
+    return plan.model_copy(update={"rooms": rooms, "windows": windows})
 
 
 MIRRORS = ((False, False), (True, False), (False, True), (True, True))
@@ -177,17 +272,28 @@ def _best_placed(spec: HouseSpec, plans: dict[int, Floorplan], plan: Floorplan, 
     their doors (:func:`stack_box`); with the area of its floor outside ``ref``'s (m2)."""
     stair, ref_stair = stair_room(spec, k), stair_room(spec, ref)
     rx, ry, rw, rh = _rect(plans[ref].room(ref_stair))
+    through = through_rooms(spec) if k > 0 else set()  # a basement lies under every room
+    below = [r.polygon for r in plans[ref].rooms if r.id not in through]
+    rising = [r.polygon for r in plans[ref].rooms if r.id in through]
+    heights = storey_heights_m(spec)
     best: tuple[float, Floorplan] | None = None
+    fits = False
     for fx, fy in MIRRORS:
         mirrored = _mirrored(plan, stair, fx, fy)
         x0, y0, w, h = _rect(mirrored.room(stair))
         for cx, cy in ((0, 0), (1, 0), (0, 1), (1, 1)):  # south-west, south-east, north-west, north-east
             cand = _moved(mirrored, rx + cx * rw - (x0 + cx * w), ry + cy * rh - (y0 + cy * h))
-            if stack_box([*plans.items(), (k, cand)], storey_heights_m(spec)) is None:
+            if stack_box([*plans.items(), (k, cand)], heights) is None:
                 continue
-            hang = _outside_m2([r.polygon for r in cand.rooms], [r.polygon for r in plans[ref].rooms])
+            fits = True
+            outlines = [r.polygon for r in cand.rooms]
+            if rising and _overlap_m2(outlines, rising) > THROUGH_OVERLAP_OK_M2:
+                continue
+            hang = _outside_m2(outlines, below)
             if best is None or hang < best[0] - 1e-6:
                 best = (hang, cand)
+    if best is None and fits:
+        raise _ThroughBlocked(f"every place for level {k} lies over a room rising through it from level {ref}")
     if best is None:
         raise FloorplanError(f"no room for a flight of stairs between {ref_stair!r} and {stair!r}")
     return best
@@ -202,14 +308,32 @@ def _outside_m2(outlines: Iterable, below: Iterable) -> float:
     return float(floor.difference(unary_union([Polygon(p).buffer(0) for p in below]).buffer(1e-6)).area)
 
 
+def _overlap_m2(outlines: Iterable, others: Iterable) -> float:
+    """Area of the union of ``outlines`` that lies inside the union of ``others``."""
+    from shapely.geometry import Polygon
+    from shapely.ops import unary_union
+
+    floor = unary_union([Polygon(p).buffer(0) for p in outlines])
+    return float(floor.intersection(unary_union([Polygon(p).buffer(0) for p in others])).area)
+
+
 def overhang_m2(rooms: Iterable) -> float:
     """Area of the rooms of each storey above the ground floor that lies over no room of
-    the storey below (floor hanging in the air). ``rooms``: objects with ``polygon`` and
-    ``level`` (a missing level is 0)."""
+    the storey below (floor hanging in the air); a room rising through the storey above
+    (:data:`THROUGH_FACTOR`, when the rooms have an ``id``, ``name`` and ``height``) holds
+    no floor up. ``rooms``: objects with ``polygon`` and ``level`` (a missing level is 0)."""
+    rooms = list(rooms)
+    through: set[str] = set()
+    if all(hasattr(r, "id") and hasattr(r, "name") and hasattr(r, "height") for r in rooms):
+        through = _through_ids((r.id, getattr(r, "level", 0) or 0, r.height, _is_stair(r)) for r in rooms)
     by_level: dict[int, list] = {}
+    holding: dict[int, list] = {}
     for r in rooms:
-        by_level.setdefault(getattr(r, "level", 0) or 0, []).append(r.polygon)
-    return sum((_outside_m2(by_level[k], by_level.get(k - 1, [])) for k in by_level if k > 0), 0.0)
+        k = getattr(r, "level", 0) or 0
+        by_level.setdefault(k, []).append(r.polygon)
+        if not through or r.id not in through:
+            holding.setdefault(k, []).append(r.polygon)
+    return sum((_outside_m2(by_level[k], holding.get(k - 1, [])) for k in by_level if k > 0), 0.0)
 
 
 def _storey_spec(spec: HouseSpec, k: int, opts: FloorplanOptions) -> HouseSpec:
@@ -418,7 +542,7 @@ def _flight_rect(foot: float, y0: float, length: float, width: float, yaw: float
     return box(foot - length, y0, foot, y0 + width) if yaw == 0.0 else box(foot, y0, foot + length, y0 + width)
 
 
-def _is_stair(room: Room) -> bool:
+def _is_stair(room: Room | RoomSpec) -> bool:
     return "stair" in room.id.lower() or "stair" in room.name.lower()
 
 
