@@ -7,7 +7,7 @@ afterwards), until its stairwell comes out as a rectangle that holds its dog-leg
 (:mod:`anyhome.floorplan.stairs`: two flights side by side, the half landing at one end,
 as long as the taller of the storeys it joins needs) and the strip of floor at the
 stair's foot (:func:`stairwell_min_m`; the solver is asked for that long side, and the
-stairwell's doors in its long walls are slid to the strip, :func:`_doors_to_strip`).
+stairwell's doors in the stair's way are slid along their wall clear of it, :func:`_doors_to_strip`).
 Each storey is then turned (a quarter turn when needed) so its stairwell's long side
 runs east-west, and placed on (a basement: under) the storey next to it toward the
 ground with a corner of its stairwell on the same corner of that one's, where the
