@@ -228,7 +228,7 @@ def test_doors_in_the_stairs_way_are_slid_clear_of_it():
              Door(id="d2", rooms=("stairwell", "bath"), segment=((3.6, 0.9), (3.6, 1.8)))]
     plan = Floorplan(rooms=rooms, doors=doors, windows=[], connections=[])
     length = levels.flight_length_m({0: 2.9, 1: 2.9}, 0)
-    ways = levels._doors_to_strip(plan, "stairwell", length)
+    ways = levels._doors_cleared(plan, "stairwell", length)
     assert ways
     assert levels.stack_box([(0, plan)], {0: 2.9, 1: 2.9}) is None  # as laid out, no stair fits
     for way in ways:

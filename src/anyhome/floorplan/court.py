@@ -29,6 +29,7 @@ import numpy as np
 from anyhome.floorplan.grid import OUTSIDE, min_side_cells
 from anyhome.floorplan.program import CORRIDOR_TYPES, Program
 from anyhome.floorplan.slicing import Rect, shared_wall_cells  # Rect: (x0, y0, x1, y1) in cells
+from anyhome.floorplan.spine import random_symmetry, rasterize
 
 # Here the court's south-west corner is cell (0, 0).
 NORTH, SOUTH, EAST, WEST = range(4)
@@ -79,7 +80,7 @@ def court_owner(prog: Program, rng: np.random.Generator, open_side: bool = False
         return "no courtyard ring fits the rooms"
     if best[0][0]:
         return best[2]
-    return _random_symmetry(_rasterize(best[1], prog.n), rng)
+    return random_symmetry(rasterize(best[1]), rng)
 
 
 # ------------------------------------------------------------------ the tree
@@ -640,21 +641,3 @@ def _score(prog: Program, court: int, rects: dict[int, Rect]) -> tuple[int, floa
         elif wall(a, b) < opts.shared_wall_min_m:
             fault(f"connection {prog.ids[a]}-{prog.ids[b]} has no shared wall long enough")
     return faults, soft, reason
-
-
-def _rasterize(rects: dict[int, Rect], n: int) -> np.ndarray:
-    xs0 = min(r[0] for r in rects.values())
-    ys0 = min(r[1] for r in rects.values())
-    xs1 = max(r[2] for r in rects.values())
-    ys1 = max(r[3] for r in rects.values())
-    owner = np.full((xs1 - xs0 + 2, ys1 - ys0 + 2), OUTSIDE, dtype=np.int32)
-    for k, (x0, y0, x1, y1) in rects.items():
-        owner[x0 - xs0 + 1 : x1 - xs0 + 1, y0 - ys0 + 1 : y1 - ys0 + 1] = k
-    return owner
-
-
-def _random_symmetry(owner: np.ndarray, rng) -> np.ndarray:
-    owner = np.rot90(owner, int(rng.integers(4)))
-    if rng.random() < 0.5:
-        owner = owner[::-1, :]
-    return np.ascontiguousarray(owner)

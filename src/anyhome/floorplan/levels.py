@@ -7,7 +7,7 @@ afterwards), until its stairwell comes out as a rectangle that holds its dog-leg
 (:mod:`anyhome.floorplan.stairs`: two flights side by side, the half landing at one end,
 as long as the taller of the storeys it joins needs) and the strip of floor at the
 stair's foot (:func:`stairwell_min_m`; the solver is asked for that long side, and the
-stairwell's doors in the stair's way are slid along their wall clear of it, :func:`_doors_to_strip`).
+stairwell's doors in the stair's way are slid along their wall clear of it, :func:`_doors_cleared`).
 Each storey is then turned (a quarter turn when needed) so its stairwell's long side
 runs east-west, and placed on (a basement: under) the storey next to it toward the
 ground with a corner of its stairwell on the same corner of that one's, where the
@@ -171,10 +171,6 @@ def solve_levels(spec: HouseSpec, rng: np.random.Generator, options: FloorplanOp
     return _one_storey(spec, rng, options, why)
 
 
-class _Unsolvable(FloorplanError):
-    """A storey of the house that the solver could not lay out in all its attempts."""
-
-
 def _stacked(spec: HouseSpec, numbers: list[int], rng: np.random.Generator, options: FloorplanOptions | None) -> Floorplan:
     opts = options or FloorplanOptions()
     plans: dict[int, Floorplan] = {0: _solve_storey(spec, 0, rng, options)}
@@ -216,6 +212,10 @@ def _stacked(spec: HouseSpec, numbers: list[int], rng: np.random.Generator, opti
         elevation[k] = elevation[k + 1] - heights[k]
     levels = [Level(level=k, elevation_m=round(elevation[k], 4), height_m=round(heights[k], 4)) for k in numbers]
     return _under_above(_joined(spec, plans, levels), through_rooms(spec))
+
+
+class _Unsolvable(FloorplanError):
+    """A storey of the house that the solver could not lay out in all its attempts."""
 
 
 class _ThroughBlocked(FloorplanError):
@@ -386,13 +386,13 @@ def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options: Fl
             plan = _turned(plan)
             x0, y0, w, h = _rect(plan.room(stair))
         if w >= long_m - 1e-6 and h >= short_m - 1e-6:
-            for slid in [plan] + _doors_to_strip(plan, stair, flight_length_m(heights, k)):
+            for slid in [plan] + _doors_cleared(plan, stair, flight_length_m(heights, k)):
                 if stack_box([(k, slid)], heights) is not None:
                     return slid
     raise FloorplanError(f"could not lay out level {k} in {attempts} attempts ({why})")
 
 
-def _doors_to_strip(plan: Floorplan, stair: str, length_m: float) -> list[Floorplan]:
+def _doors_cleared(plan: Floorplan, stair: str, length_m: float) -> list[Floorplan]:
     """Ways of ``plan`` whose stairwell ``stair`` (running east-west) holds a stair box
     ``length_m`` long by the flights' width against its far end wall, with the strip at
     its foot: for each of the four such boxes (against the south or the north wall, its

@@ -91,8 +91,7 @@ def spine_owner(prog: Program, rng: np.random.Generator) -> np.ndarray | str:
                     break
                 rects[k] = (x0, ry0 - d, x1, ry1 - d) if north else (x0, ry0 + d, x1, ry1 + d)
         x += seg_len
-    owner = _rasterize(rects, prog.n)
-    return _random_symmetry(owner, rng)
+    return random_symmetry(rasterize(rects), rng)
 
 
 # ------------------------------------------------------------------ the tree
@@ -460,7 +459,9 @@ def _place_column(col, w, cx, y0, d, depth, side, prog, rects) -> None:
         offset += h
 
 
-def _rasterize(rects: dict[int, tuple[int, int, int, int]], n: int) -> np.ndarray:
+def rasterize(rects: dict[int, tuple[int, int, int, int]]) -> np.ndarray:
+    """Padded owner array (``[x, y]``) of room rectangles in cells (index -> (x0, y0, x1, y1)),
+    outside everywhere else."""
     xs0 = min(r[0] for r in rects.values())
     ys0 = min(r[1] for r in rects.values())
     xs1 = max(r[2] for r in rects.values())
@@ -472,7 +473,8 @@ def _rasterize(rects: dict[int, tuple[int, int, int, int]], n: int) -> np.ndarra
     return owner
 
 
-def _random_symmetry(owner: np.ndarray, rng) -> np.ndarray:
+def random_symmetry(owner: np.ndarray, rng) -> np.ndarray:
+    """``owner`` turned by a random quarter turn and mirrored half the time."""
     owner = np.rot90(owner, int(rng.integers(4)))
     if rng.random() < 0.5:
         owner = owner[::-1, :]
