@@ -217,6 +217,10 @@ class RoomSpace:
                 zones.append(z)
             if self.room.id in d.rooms:
                 self.doors.append(d)
+        if self.floorplan.levels:  # the stairs' flights and the floor at their feet
+            from anyhome.floorplan.levels import stair_zones
+
+            zones += stair_zones(self.floorplan).get(self.room.id, [])
         self.door_zones = np.asarray(zones).reshape(-1, 4, 2)
         self.zone_polys = [Polygon(z) for z in zones]
         wzones = []

@@ -14,7 +14,10 @@ ground with a corner of its stairwell on the same corner of that one's, where th
 stairwells of all storeys overlap so that every flight fits with its foot at one place,
 clear of their doors (:func:`stack_box`): storey over storey, as in a real stairwell
 (the flight above runs a storey over the one below). Each flight is a ``stairs`` object
-in the lower storey's stairwell (:func:`stairs_objects`). Storeys that will not stack
+in the lower storey's stairwell (:func:`stairs_objects`). A top storey of one habitable
+room (a mezzanine or attic bedroom) has no landing: its stairwell is merged into the
+room, which the stair arrives in (:func:`_landing_opened`); the layout keeps the flights
+and the floor at their feet clear (:func:`stair_zones`). Storeys that will not stack
 are tried again with roomier stairwells, then laid out on one storey.
 
 The narrow interface (:func:`solve_levels`, :func:`stairs_objects`) is what the pipeline
@@ -211,7 +214,53 @@ def _stacked(spec: HouseSpec, numbers: list[int], rng: np.random.Generator, opti
     for k in sorted((n for n in numbers if n < 0), reverse=True):
         elevation[k] = elevation[k + 1] - heights[k]
     levels = [Level(level=k, elevation_m=round(elevation[k], 4), height_m=round(heights[k], 4)) for k in numbers]
-    return _under_above(_joined(spec, plans, levels), through_rooms(spec))
+    return _landing_opened(_under_above(_joined(spec, plans, levels), through_rooms(spec)), opts)
+
+
+def _landing_opened(plan: Floorplan, opts: FloorplanOptions) -> Floorplan:
+    """``plan`` with the top storey's stairwell merged into the room it opens onto, where
+    it opens onto one room only (a mezzanine bedroom, an attic room): the stair then
+    arrives in that room, as it does in a loft or an attic conversion, instead of in a
+    landing of its own. The room keeps its name, type and ceiling (and the taller of the
+    two heights) and holds the
+    stairwell (:attr:`~anyhome.house.Room.merged`); its floor is open over the flight
+    (:func:`anyhome.scene.stair_openings`) and the layout keeps the flight and the strip
+    where it arrives clear (:func:`stair_zones`). Refused where the room is not one
+    people stay in (a bathroom), is open-air or merged already, where the two make
+    neither a rectangle nor an L no more elongated than a habitable room may be, or
+    where the stairs would no longer come out where they were."""
+    from anyhome.floorplan.merge import l_aspect, merge_rooms, union_outline
+    from anyhome.house import is_habitable
+
+    top = max((lv.level for lv in plan.levels), default=0)
+    if top <= 0:
+        return plan
+    well = next((r for r in plan.rooms if r.level == top and _is_stair(r)), None)
+    if well is None:
+        return plan
+    doors = [d for d in plan.doors if well.id in d.rooms]
+    if len(doors) != 1 or "outside" in doors[0].rooms:
+        return plan
+    room = plan.room(next(x for x in doors[0].rooms if x != well.id))
+    if not is_habitable(room.type) or room.open_air or room.merged or well.merged or _is_stair(room):
+        return plan
+    if any(is_habitable(r.type) for r in plan.rooms if r.level == top and r.id not in (room.id, well.id)):
+        return plan  # another room people stay in would be reached through this one
+    outline = union_outline(room.polygon, well.polygon)
+    if outline is None or l_aspect(outline) > opts.max_habitable_aspect_ratio + 1e-9:
+        return plan
+    opened = merge_rooms(plan, room.id, well.id, name=room.name, outline=outline)
+    if well.height > room.height:  # the storey stays as high as its tallest room
+        opened = opened.model_copy(update={"rooms": [
+            r.model_copy(update={"height": well.height}) if r.id == room.id else r for r in opened.rooms]})
+    before = [(o.position, o.size, o.yaw) for o in stairs_objects(plan)]
+    try:
+        after = stairs_objects(opened)
+    except FloorplanError:
+        return plan
+    if [(o.position, o.size, o.yaw) for o in after] != before or stair_link(opened, after[-1]) != (after[-1].room, room.id):
+        return plan
+    return opened
 
 
 class _Unsolvable(FloorplanError):
@@ -527,12 +576,32 @@ def stack_box(plans: list[tuple[int, Floorplan]], heights: dict[int, float]) -> 
     west_hi = min(r[0] + r[2] - lengths[k] for k, r in rects.items())
     tries = [(east_lo + i * SNAP_M, 0.0) for i in range(int((east_hi - east_lo) / SNAP_M + 1e-6) + 1)] if east_hi >= east_lo - 1e-6 else []
     tries += [(west_hi - i * SNAP_M, math.pi) for i in range(int((west_hi - west_lo) / SNAP_M + 1e-6) + 1)] if west_hi >= west_lo - 1e-6 else []
+    door_segments = {k: [LineString(dr.segment) for dr in doors] for k, _, doors in wells}
     for ya in (y0, y1 - width):
         for foot, yaw in tries:
             if all(not any(_flight_rect(foot, ya, lengths[k], width, yaw).buffer(STAIR_CLEAR_M).intersects(z) for z in zones[k])
+                   and _doors_joined(rects[k], _flight_rect(foot, ya, lengths[k], width, yaw), door_segments[k])
                    for k in rects):
                 return (round(foot, 6), round(ya, 6), yaw)
     return None
+
+
+def _doors_joined(rect: tuple[float, float, float, float], flight, doors: list) -> bool:
+    """Whether one walkable piece of the stairwell ``rect`` (x0, y0, w, h) round the
+    flight's box ``flight`` reaches every door of it (``doors``: their segments) and the
+    strip at the stair's foot: a flight across the whole well would cut it in two."""
+    from shapely.geometry import box
+
+    from anyhome.geometry import AGENT_RADIUS_M
+
+    x0, y0, w, h = rect
+    free = box(x0, y0, x0 + w, y0 + h).difference(flight).buffer(-AGENT_RADIUS_M)
+    pieces = [g for g in getattr(free, "geoms", [free]) if not g.is_empty]
+    if len(pieces) <= 1:
+        return bool(pieces) or not doors
+    near = AGENT_RADIUS_M + 0.1
+    reached = [{i for i, g in enumerate(pieces) if g.distance(d) <= near} for d in doors]
+    return bool(reached) and bool(set.intersection(*reached))
 
 
 def _flight_rect(foot: float, y0: float, length: float, width: float, yaw: float):
@@ -588,6 +657,41 @@ def stairs_objects(plan: Floorplan) -> list[HouseObject]:
             yaw=yaw, rule="place_wall", tags=["equipment"],
         ))
     return out
+
+
+def stair_zones(plan: Floorplan) -> dict[str, list[np.ndarray]]:
+    """Room id -> the floor the stairs keep: every flight's box with the strip at its foot
+    (:data:`~anyhome.floorplan.stairs.STRIP_M`, where it starts and the flight below
+    arrives), as 4 corners, in the room the flight stands in and in every room of the
+    storey above over it (the open well it climbs through, the floor it arrives on).
+    The layout keeps its objects off them as off a door's swing. Memoised for the last
+    few floorplans (the layout asks once per room)."""
+    for held, zones in _ZONES_MEMO:
+        if held is plan:
+            return zones
+    out: dict[str, list[np.ndarray]] = {}
+    if len(plan.levels) >= 2:
+        from shapely.geometry import Polygon, box
+
+        by_id = {r.id: r for r in plan.rooms}
+        for o in stairs_objects(plan):
+            x, y, _ = o.position
+            half_l, half_w = o.size[0] / 2, o.size[1] / 2
+            if o.yaw == 0.0:  # the foot end at +x, turned by the yaw (0 or pi: stack_box)
+                zone = box(x - half_l, y - half_w, x + half_l + STRIP_M, y + half_w)
+            else:
+                zone = box(x - half_l - STRIP_M, y - half_w, x + half_l, y + half_w)
+            corners = np.asarray(zone.exterior.coords)[:4]
+            level = by_id[o.room].level
+            for r in plan.rooms:
+                if r.id == o.room or (r.level == level + 1 and Polygon(r.polygon).intersection(zone).area > 1e-6):
+                    out.setdefault(r.id, []).append(corners)
+    _ZONES_MEMO.insert(0, (plan, out))
+    del _ZONES_MEMO[4:]
+    return out
+
+
+_ZONES_MEMO: list[tuple[Floorplan, dict[str, list[np.ndarray]]]] = []
 
 
 def _stairwell(plan: Floorplan, level: int) -> Room:

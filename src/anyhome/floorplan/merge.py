@@ -133,13 +133,21 @@ def _compatible(a: Room, b: Room) -> bool:
 def l_polygon(a: list[tuple[float, float]], b: list[tuple[float, float]]) -> list[tuple[float, float]] | None:
     """The CCW 6-corner outline of the union of two touching room outlines, or None when
     the union is no L (not one piece, a rectangle, a Z, a T...)."""
+    return union_outline(a, b, (L_CORNERS,))
+
+
+def union_outline(a: list[tuple[float, float]], b: list[tuple[float, float]],
+                  corners: tuple[int, ...] = (4, L_CORNERS)) -> list[tuple[float, float]] | None:
+    """The CCW outline of the union of two touching room outlines, starting at its lowest
+    corner, when it is one piece with a number of corners in ``corners`` (4: a
+    rectangle, 6: an L); else None."""
     union = Polygon(a).union(Polygon(b))
     if not isinstance(union, Polygon) or union.interiors:
         return None
     union = orient(union.simplify(0.0), 1.0)
     points = [(round(x, 4), round(y, 4)) for x, y in union.exterior.coords[:-1]]
     points = [p for i, p in enumerate(points) if not _collinear(points[i - 1], p, points[(i + 1) % len(points)])]
-    if len(points) != L_CORNERS:
+    if len(points) not in corners:
         return None
     start = points.index(min(points))
     return points[start:] + points[:start]
@@ -159,15 +167,17 @@ def l_aspect(points: list[tuple[float, float]]) -> float:
     return long_m / max(width_m, 1e-9)
 
 
-def merge_rooms(floorplan: Floorplan, keep: str, absorb: str) -> Floorplan:
+def merge_rooms(floorplan: Floorplan, keep: str, absorb: str, name: str | None = None,
+                outline: list[tuple[float, float]] | None = None) -> Floorplan:
     """``floorplan`` with room ``absorb`` merged into room ``keep`` (they must make an L,
-    :func:`l_polygon`): one room, the doors between them gone, the rest renamed."""
+    :func:`l_polygon`, unless ``outline``, their union, is given): one room, named
+    ``name`` (default: both names joined), the doors between them gone, the rest renamed."""
     rooms = {r.id: r for r in floorplan.rooms}
     a, b = rooms[keep], rooms[absorb]
-    outline = l_polygon(a.polygon, b.polygon)
+    outline = outline or l_polygon(a.polygon, b.polygon)
     if outline is None:
         raise ValueError(f"rooms {keep!r} and {absorb!r} do not make an L")
-    merged = a.model_copy(update={"polygon": outline, "name": f"{a.name} and {b.name}",
+    merged = a.model_copy(update={"polygon": outline, "name": name or f"{a.name} and {b.name}",
                                   "merged": [*a.merged, b.id, *b.merged]})
     new_rooms = [merged if r.id == keep else r for r in floorplan.rooms if r.id != absorb]
 

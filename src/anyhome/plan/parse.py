@@ -205,6 +205,7 @@ class Parsed:
     basement: bool = False  # "with a basement", "a cellar gym"
     attic: bool = False  # "an attic bedroom", "a loft conversion"
     total_m2: float | None = None  # "a 50 m2 flat", "500 sq ft": the floor area the text states
+    floor_words: list[tuple[int, int, str]] = field(default_factory=list)  # (start, end, storey word): "on the first floor" -> "first"
     size_words: list[str] = field(default_factory=list)  # sizes.words found before the building word ("tiny")
     room_areas: list[tuple[int, float]] = field(default_factory=list)  # (end of "12 m2", m2) right before a room word
     proper_words: frozenset[str] = frozenset()  # words written capitalised mid-sentence, lower-cased
@@ -667,6 +668,11 @@ _UPSTAIRS = re.compile(r"\b(?:upstairs|downstairs|upper floor|upper storey)\b")
 _BASEMENT = re.compile(r"\b(?:basement|lower ground floor|underground level)s?\b")
 _ATTIC = re.compile(r"\b(?:attic|loft conversion|garret)s?\b")
 _MEZZANINE = re.compile(r"\bmezzanines?\b")
+_FLOOR_WORDS = re.compile(
+    r"\b(?:on|in|at)\s+the\s+(ground|first|1st|second|2nd|third|3rd|top|upper)\s+(?:floor|storey|story|level)\b"
+    r"|\b(?:on|in)\s+the\s+(basement|attic)\b|\b(downstairs|upstairs)\b")
+"""Words that put the rooms named before them on a storey ("a kitchen on the ground
+floor", "three bedrooms upstairs"; :func:`anyhome.plan.program.assign_levels`)."""
 MAX_STOREYS = 4
 """Most storeys above ground a plan holds (ground floor included)."""
 
@@ -685,6 +691,7 @@ def _find_levels(text: str, p: Parsed) -> None:
         p.storeys = 2
     p.basement = bool(_BASEMENT.search(text))
     p.attic = bool(_ATTIC.search(text))
+    p.floor_words = [(mt.start(), mt.end(), next(g for g in mt.groups() if g)) for mt in _FLOOR_WORDS.finditer(text)]
 
 
 def _assign_rooms(text: str, mentions: list[Mention]) -> None:

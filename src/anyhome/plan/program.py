@@ -637,6 +637,12 @@ def assign_levels(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], warnings
             slots.append(down[0])
         for s in down:
             s.level = -1
+    _worded_levels(parsed, slots, top, set(st.up) | {"bathroom"})
+    for k in range(1, top + 1):  # a storey the words emptied gets a bedroom
+        if not any(s.level == k for s in slots):
+            s = _slot_from_entry(kb, {"type": "bedroom", "name": "bedroom"})
+            s.level = k
+            slots.append(s)
     levels = sorted({s.level for s in slots})
     while len(slots) + len(levels) > MAX_ROOMS:
         victim = next((s for s in reversed(slots) if s.mention is None and s.type not in ("hallway", "entry")), None)
@@ -652,6 +658,46 @@ def assign_levels(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], warnings
         s = Slot("stairwell", "stairwell", "hallway", (STAIRWELL_AREA_M2, STAIRWELL_AREA_M2), key=STAIRWELL_KEY)
         s.level = k
         slots.append(s)
+
+
+_ORDINALS = {"first": 1, "1st": 1, "second": 2, "2nd": 2, "third": 3, "3rd": 3}
+_NOT_ADJACENT = re.compile(r"[,.;:]|\b(?:and|with|plus|or|then|while)\b")
+
+
+def _worded_levels(parsed: Parsed, slots: list[Slot], top: int, up_types: set[str]) -> None:
+    """Put each room the text places on a storey there: the storey words right before
+    its name ("an upstairs study") or else the first after it in its sentence ("a
+    kitchen and a dining room on the ground floor", "three bedrooms upstairs"). "First
+    floor" is the floor above the ground floor where the text names a ground floor too
+    (British), else the ground floor (American); "top floor" the highest full storey;
+    "upstairs" any storey above the ground floor (a room already up stays where it is);
+    an "upstairs" after a list takes only its rooms of ``up_types`` ("a hallway, a kitchen
+    and three bedrooms upstairs": the bedrooms). Levels stay within the storeys planned."""
+    words = parsed.floor_words
+    if not words:
+        return
+    british = any(w == "ground" for _, _, w in words)
+    text = parsed.text
+    for s in slots:
+        if s.mention is None or s.mention >= len(parsed.rooms):
+            continue
+        m = parsed.rooms[s.mention]
+        before = [w for w in words if w[1] <= m.start and len(text[w[1]:m.start].split()) <= 2
+                  and not _NOT_ADJACENT.search(text[w[1]:m.start])]
+        after = [w for w in words if w[0] >= m.end and "." not in text[m.end:w[0]]]
+        word = before[-1][2] if before else after[0][2] if after else None
+        if word is None or (not before and word in ("upstairs", "upper") and s.type not in up_types):
+            continue
+        if word in ("ground", "downstairs"):
+            s.level = 0
+        elif word in ("upstairs", "upper"):
+            s.level = s.level if s.level >= 1 else min(1, top)
+        elif word == "top":
+            s.level = top
+        elif word == "basement":
+            s.level = -1 if parsed.basement else s.level
+        elif word in _ORDINALS:
+            s.level = max(0, min(top, _ORDINALS[word] - (0 if british else 1)))
 
 
 def connect_levels(kb: KnowledgeBase, slots: list[Slot], entrance_types: list[str]) -> list[tuple[str, str]]:

@@ -1,0 +1,56 @@
+"""Storey words put the rooms they follow or precede on that storey (plan.program._worded_levels)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from anyhome.plan import plan_house
+from anyhome.plan.parse import parse
+
+
+def _levels(text: str, seed: int = 0) -> dict[str, int]:
+    spec = plan_house(text, np.random.default_rng(seed))
+    return {r.id: r.level for r in spec.rooms}
+
+
+def test_floor_words_are_found_with_their_place():
+    text = "a kitchen on the ground floor, a study on the first floor and a bedroom upstairs"
+    words = [w for _, _, w in parse(text).floor_words]
+    assert words == ["ground", "first", "upstairs"]
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_townhouse_rooms_go_to_the_floors_the_text_names(seed):
+    levels = _levels("A three-storey townhouse with a kitchen and dining room on the ground floor, a living room "
+                     "and study on the first floor and two bedrooms with a bathroom on the top floor.", seed)
+    assert levels["kitchen"] == levels["dining_room"] == 0
+    assert levels["living_room"] == levels["study"] == 1
+    assert {levels[r] for r in levels if r.startswith(("bedroom", "master_bedroom", "bathroom"))} == {2}
+
+
+def test_downstairs_and_upstairs_after_a_list():
+    levels = _levels("A two-storey family house with the living room, kitchen and a study downstairs "
+                     "and three bedrooms and a family bathroom upstairs.")
+    assert levels["living_room"] == levels["kitchen"] == levels["study"] == 0  # a study would go up unasked
+    assert levels["family_bathroom"] == 1
+    assert all(v == 1 for k, v in levels.items() if "bedroom" in k)
+
+
+def test_american_first_floor_is_the_ground_floor():
+    levels = _levels("A two-storey house with a kitchen and a lounge on the first floor and the bedrooms on the second floor.")
+    assert levels["kitchen"] == levels["lounge"] == 0
+    assert all(v == 1 for k, v in levels.items() if "bedroom" in k)
+
+
+def test_an_upstairs_after_a_list_takes_only_rooms_that_go_up():
+    levels = _levels("a two-storey family house with a long hallway, a kitchen, a living room and three bedrooms upstairs")
+    hall = next(k for k in levels if "hallway" in k)
+    assert levels[hall] == levels["kitchen"] == levels["living_room"] == 0
+    assert all(v == 1 for k, v in levels.items() if "bedroom" in k)
+
+
+def test_an_upstairs_right_before_a_room_takes_it():
+    levels = _levels("A two-storey cottage with a kitchen downstairs, an upstairs sitting room and two bedrooms.")
+    assert levels["kitchen"] == 0
+    assert levels["upstairs_sitting_room"] == 1
