@@ -664,11 +664,8 @@ def stair_zones(plan: Floorplan) -> dict[str, list[np.ndarray]]:
     (:data:`~anyhome.floorplan.stairs.STRIP_M`, where it starts and the flight below
     arrives), as 4 corners, in the room the flight stands in and in every room of the
     storey above over it (the open well it climbs through, the floor it arrives on).
-    The layout keeps its objects off them as off a door's swing. Memoised for the last
-    few floorplans (the layout asks once per room)."""
-    for held, zones in _ZONES_MEMO:
-        if held is plan:
-            return zones
+    The layout keeps its objects off them as off a door's swing (about 0.5 ms a call
+    for a townhouse: asked once per room, not memoised)."""
     out: dict[str, list[np.ndarray]] = {}
     if len(plan.levels) >= 2:
         from shapely.geometry import Polygon, box
@@ -686,12 +683,7 @@ def stair_zones(plan: Floorplan) -> dict[str, list[np.ndarray]]:
             for r in plan.rooms:
                 if r.id == o.room or (r.level == level + 1 and Polygon(r.polygon).intersection(zone).area > 1e-6):
                     out.setdefault(r.id, []).append(corners)
-    _ZONES_MEMO.insert(0, (plan, out))
-    del _ZONES_MEMO[4:]
     return out
-
-
-_ZONES_MEMO: list[tuple[Floorplan, dict[str, list[np.ndarray]]]] = []
 
 
 def _stairwell(plan: Floorplan, level: int) -> Room:

@@ -613,11 +613,7 @@ def assign_levels(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], warnings
     if top >= 1:
         for i, s in enumerate(up):  # contiguous runs of bedrooms per storey, bottom first
             s.level = 1 + i * top // max(1, len(up))
-        for k in range(1, top + 1):  # a storey with nothing on it gets a bedroom
-            if not any(s.level == k for s in slots):
-                s = _slot_from_entry(kb, {"type": "bedroom", "name": "bedroom"})
-                s.level = k
-                slots.append(s)
+        _fill_empty_storeys(kb, slots, top)
         baths = [s for s in slots if s.type == "bathroom"]
         keep = 1 if len(baths) > 1 else 0  # a cloakroom stays on the ground floor
         for i, s in enumerate(baths[keep:]):
@@ -638,11 +634,7 @@ def assign_levels(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], warnings
         for s in down:
             s.level = -1
     _worded_levels(parsed, slots, top, set(st.up) | {"bathroom"})
-    for k in range(1, top + 1):  # a storey the words emptied gets a bedroom
-        if not any(s.level == k for s in slots):
-            s = _slot_from_entry(kb, {"type": "bedroom", "name": "bedroom"})
-            s.level = k
-            slots.append(s)
+    _fill_empty_storeys(kb, slots, top)  # one the words emptied
     levels = sorted({s.level for s in slots})
     while len(slots) + len(levels) > MAX_ROOMS:
         victim = next((s for s in reversed(slots) if s.mention is None and s.type not in ("hallway", "entry")), None)
@@ -658,6 +650,15 @@ def assign_levels(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], warnings
         s = Slot("stairwell", "stairwell", "hallway", (STAIRWELL_AREA_M2, STAIRWELL_AREA_M2), key=STAIRWELL_KEY)
         s.level = k
         slots.append(s)
+
+
+def _fill_empty_storeys(kb: KnowledgeBase, slots: list[Slot], top: int) -> None:
+    """A bedroom on every storey from 1 to ``top`` that has no room."""
+    for k in range(1, top + 1):
+        if not any(s.level == k for s in slots):
+            s = _slot_from_entry(kb, {"type": "bedroom", "name": "bedroom"})
+            s.level = k
+            slots.append(s)
 
 
 _ORDINALS = {"first": 1, "1st": 1, "second": 2, "2nd": 2, "third": 3, "3rd": 3}
