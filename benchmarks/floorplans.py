@@ -59,6 +59,7 @@ SETS = {
     "heldout_plan": HERE / "prompts" / "heldout_plan.jsonl",
     "dev": HERE / "prompts" / "dev.jsonl",
     "heldout_storeys": HERE / "prompts" / "heldout_storeys.jsonl",
+    "heldout_storeys2": HERE / "prompts" / "heldout_storeys2.jsonl",
 }
 """``dev`` is the set to tune on; the held-out sets are for measuring only."""
 OVERHANG_TOL_M2 = 1.0

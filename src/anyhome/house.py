@@ -135,6 +135,11 @@ class Level(_Model):
     level: int
     elevation_m: float
     height_m: float
+    stairs_at: tuple[float, float, float] | None = Field(
+        default=None, exclude_if=lambda v: v is None,
+        description="where the flight up from this storey stands, fixed by the floorplan stage: (x of its "
+        "foot end, y of its -y side, yaw 0 or pi; anyhome.floorplan.levels.stack_box). None: no flight up, "
+        "or a file written before it was recorded (the place is then found again from the stairwells)")
 
 
 class Door(_Model):

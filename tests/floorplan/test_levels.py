@@ -296,14 +296,17 @@ def test_townhouse_stairwells_are_compact_and_their_flights_fit_on_every_level(s
     strip at its foot; risers, goings and headroom within bounds."""
     from shapely.geometry import Polygon, box
 
+    from anyhome.floorplan.merge import open_plan_data
     from anyhome.floorplan.stairs import HEADROOM_MIN_M, STAIR_DEPTH_M, STRIP_M, dogleg
 
     h = generate("a three-storey townhouse", seed)
     assert h.level_numbers() == [0, 1, 2]
     assert reachable_rooms(h) == {r.id for r in h.rooms}
     wells = [r for r in h.rooms if r.type == "stairwell"]
-    opened = [r for r in h.rooms if any("stair" in m for m in r.merged)]  # the stair arrives in a room
-    assert len(wells) == 3 or (len(wells) == 2 and [h.room_level(r.id) for r in opened] == [2])
+    opened = [r for r in h.rooms if any("stair" in m for m in r.merged)]  # the stair rises or arrives in a room
+    assert len(wells) + len(opened) == 3 and sorted(h.room_level(r.id) for r in wells + opened) == [0, 1, 2]
+    open_types = open_plan_data().open_stair
+    assert all(r.type in open_types or h.room_level(r.id) == 2 for r in opened)
     for r in wells:
         assert Polygon(r.polygon).area <= STAIRWELL_MAX_M2
     wells += opened
@@ -346,7 +349,8 @@ def test_a_small_two_storey_house_keeps_its_stairwells():
     without one failed to plan before)."""
     h = generate("a small two-storey house with two bedrooms", 0)
     assert h.level_numbers() == [0, 1]
-    assert sum(r.type == "stairwell" for r in h.rooms) == 2
+    stairs = [r for r in h.rooms if r.type == "stairwell" or any("stair" in m for m in r.merged)]
+    assert sorted(r.level for r in stairs) == [0, 1]  # a stairwell, or a room it was merged into
     assert reachable_rooms(h) == {r.id for r in h.rooms}
 
 
@@ -433,3 +437,66 @@ def test_a_flight_across_the_whole_well_between_its_doors_is_refused():
     assert not _doors_joined((-10.5, 2.5, 5.3, 1.7), flight, [west, east])
     assert _doors_joined((-10.5, 2.5, 5.3, 2.7), flight, [west, east])  # a 0.95 m landing beside it
     assert _doors_joined((-10.5, 2.5, 5.3, 1.7), flight, [west])
+
+
+OPEN_STAIR_HOUSES = [
+    "A two-storey cottage with a sitting room and a kitchen downstairs and a bedroom and a bathroom upstairs.",
+    "A two-storey house with a living room, a kitchen and a dining room, and two bedrooms and a bathroom upstairs.",
+]
+
+
+@pytest.mark.parametrize("text", OPEN_STAIR_HOUSES)
+def test_a_stairwell_opening_onto_one_living_room_becomes_an_open_stair_in_it(text):
+    """Seeds 0-2: a lower storey's stairwell whose one door opens onto a living room is
+    merged into it (a cottage's open stair) in at least one house: the flight stands in
+    the living room, its top lands in the stairwell or room above, the flight and its
+    strip lie inside the room and no floor object stands on them; no bedroom or
+    bathroom below the top storey ever takes a stair; the house is valid and every
+    room reachable."""
+    from shapely.geometry import Polygon
+
+    from anyhome.floorplan.levels import stair_zones
+    from anyhome.geometry import footprint_polygon
+
+    opened = 0
+    for seed in (0, 1, 2):
+        h = generate(text, seed)
+        assert reachable_rooms(h) == {r.id for r in h.rooms}
+        assert evaluate_house(h).violations == []
+        top = max(h.level_numbers())
+        for r in h.rooms:
+            if any("stair" in m for m in r.merged) and r.level < top:
+                assert r.type in ("living_room", "dining_room", "hall"), r.type
+        flights = [o for o in h.objects if o.category == "stairs"]
+        assert len(flights) == len(h.level_numbers()) - 1
+        for o in flights:
+            room = h.room(o.room)
+            if room.type == "stairwell":
+                continue
+            opened += 1
+            assert any("stair" in m for m in room.merged) and "stair" not in room.name
+            assert stair_link(h.floorplan, o) is not None
+            zones = [Polygon(z) for z in stair_zones(h.floorplan)[room.id]]
+            assert zones and all(Polygon(room.polygon).buffer(1e-6).contains(z) for z in zones)
+            for x in (x for x in h.objects if x.room == room.id and x.support == "floor" and x.category != "stairs"):
+                assert all(footprint_polygon(x.position, x.size, x.yaw).intersection(z).area < 1e-6 for z in zones), x.name
+    assert opened >= 1
+
+
+def test_the_stairs_place_is_recorded_and_a_file_without_it_finds_the_same_place(townhouse):
+    """Every storey a flight rises from records where it stands (Level.stairs_at); a
+    house read without those records finds the same stairs from its stairwells."""
+    from anyhome.floorplan.levels import stairs_objects
+    from anyhome.house import House
+
+    top = max(townhouse.level_numbers())
+    assert all((lv.stairs_at is not None) == (lv.level < top) for lv in townhouse.levels)
+    assert '"stairs_at"' in townhouse.to_json()
+    again = House.model_validate_json(townhouse.to_json())
+    assert [(o.position, o.size, o.yaw) for o in stairs_objects(again.floorplan)] == \
+        [(o.position, o.size, o.yaw) for o in stairs_objects(townhouse.floorplan)]
+    if any(r.merged for r in townhouse.rooms):
+        return  # a merged stairwell can only be found from the record
+    bare = townhouse.model_copy(update={"levels": [lv.model_copy(update={"stairs_at": None}) for lv in townhouse.levels]})
+    assert [(o.position, o.yaw) for o in stairs_objects(bare.floorplan)] == \
+        [(o.position, o.yaw) for o in stairs_objects(townhouse.floorplan)]

@@ -54,3 +54,34 @@ def test_an_upstairs_right_before_a_room_takes_it():
     levels = _levels("A two-storey cottage with a kitchen downstairs, an upstairs sitting room and two bedrooms.")
     assert levels["kitchen"] == 0
     assert levels["upstairs_sitting_room"] == 1
+
+
+def test_a_room_in_the_attic_goes_up_there_and_the_attic_is_no_room_of_its_own():
+    levels = _levels("A two-storey house with a kitchen and a lounge downstairs, two bedrooms upstairs "
+                     "and a games room in the attic.")
+    assert levels["games_room"] == max(levels.values()) == 2
+    assert "attic" not in levels  # "in the attic" places the games room; it names no storage room
+
+
+def test_rooms_in_the_basement_go_down_and_the_basement_is_no_room_of_its_own():
+    levels = _levels("A family house with a home cinema and a wine cellar in the basement and a kitchen, "
+                     "a living room and two bedrooms.")
+    assert levels["home_cinema"] == levels["wine_cellar"] == -1
+    assert "basement" not in levels
+
+
+def test_an_attic_named_alone_is_still_a_room():
+    levels = _levels("A two-storey cottage with a kitchen, a living room, two bedrooms and an attic.")
+    assert levels["attic"] == max(levels.values())
+
+
+def test_a_room_the_words_put_in_the_attic_replaces_the_planned_attic_storage():
+    levels = _levels("A wooden chalet, two floors plus an attic: a kitchen and a lounge on the first floor, "
+                     "three bedrooms on the second floor, and a games room in the attic.")
+    assert levels["games_room"] == max(levels.values())
+    assert "attic" not in levels
+
+
+def test_a_storey_word_and_an_adverb_are_no_object():
+    text = "a small cabin with a sleeping loft upstairs, downstairs just a kitchenette and a shower room"
+    assert parse(text).objects == []

@@ -14,10 +14,12 @@ ground with a corner of its stairwell on the same corner of that one's, where th
 stairwells of all storeys overlap so that every flight fits with its foot at one place,
 clear of their doors (:func:`stack_box`): storey over storey, as in a real stairwell
 (the flight above runs a storey over the one below). Each flight is a ``stairs`` object
-in the lower storey's stairwell (:func:`stairs_objects`). A top storey of one habitable
-room (a mezzanine or attic bedroom) has no landing: its stairwell is merged into the
-room, which the stair arrives in (:func:`_landing_opened`); the layout keeps the flights
-and the floor at their feet clear (:func:`stair_zones`). Storeys that will not stack
+in the lower storey's stairwell (:func:`stairs_objects`). The place of the stairs is
+recorded on the storeys (:attr:`~anyhome.house.Level.stairs_at`). A stairwell opening
+onto one room only, a living room, a dining room or a hall, or a top storey's one
+habitable room (a mezzanine or attic bedroom), is merged into that room, which the
+stair rises in or arrives in, with no landing of its own (:func:`stairs_opened`); the
+layout keeps the flights and the floor at their feet clear (:func:`stair_zones`). Storeys that will not stack
 are tried again with roomier stairwells, then laid out on one storey.
 
 The narrow interface (:func:`solve_levels`, :func:`stairs_objects`) is what the pipeline
@@ -51,6 +53,7 @@ from anyhome.floorplan.solver import OPENING_HEADROOM_M, solve_floorplan
 from anyhome.floorplan.stairs import (
     HALL_DOOR_M,
     HALL_DOORS,
+    PASSAGE_M,
     STAIR_CLEAR_M,
     STAIR_WIDTH_M,
     STRIP_M,
@@ -82,6 +85,9 @@ THROUGH_OVERLAP_OK_M2 = 0.05
 """Floor of a storey that may lie over a room rising through it (m2): snapping slivers."""
 
 _AS_ORDINARY: ContextVar[bool] = ContextVar("anyhome_through_as_ordinary", default=False)
+_NARROW_HALLS: ContextVar[set[int] | None] = ContextVar("anyhome_narrow_halls", default=None)
+"""The storeys, in the :func:`solve_levels` call under way, whose stair hall the solver
+could not lay out as wide as :func:`stair_hall_width_m` asks (asked once, not again)."""
 """Set while a house whose upper storey would not sit beside its through rooms is laid
 out as before (through rooms as ordinary ones: the storey above over their ceilings)."""
 
@@ -148,6 +154,18 @@ def stairwell_min_m(spec: HouseSpec, k: int) -> tuple[float, float]:
     return (round(flight_length_m(storey_heights_m(spec), k) + STRIP_M + extra_m, 4), STAIR_WIDTH_M)
 
 
+def stair_hall_width_m(spec: HouseSpec, k: int) -> float:
+    """Narrowest side the solver is asked to give the stairwell of storey ``k``: a stair
+    hall (three doors or more) holds its stair and a landing beside it
+    (:data:`~anyhome.floorplan.stairs.PASSAGE_M`) that the doors across from the stair
+    open onto; a plain stairwell, the stair's width. (A hall narrower than that comes out
+    with its flight cutting it in two and is refused, :func:`_doors_joined`: measured, a
+    townhouse's five-door ground floor was laid out 40 times over, 10-20 s.)"""
+    stair = stair_room(spec, k)
+    doors = sum(stair in c for c in spec.connections)
+    return round(STAIR_WIDTH_M + PASSAGE_M, 4) if doors >= 3 else STAIR_WIDTH_M
+
+
 def solve_levels(spec: HouseSpec, rng: np.random.Generator, options: FloorplanOptions | None = None) -> Floorplan:
     """Lay out every storey of ``spec`` (see the module doc); one storey: solve_floorplan."""
     numbers = sorted({r.level for r in spec.rooms})
@@ -157,6 +175,15 @@ def solve_levels(spec: HouseSpec, rng: np.random.Generator, options: FloorplanOp
         raise FloorplanError("a house of several storeys needs rooms on the ground floor (level 0)")
     opts = options or FloorplanOptions()
     roomy = dataclasses.replace(opts, stairwell_spare_m=opts.stairwell_spare_m + opts.stairwell_roomy_m)
+    token = _NARROW_HALLS.set(set())
+    try:
+        return _levels_tried(spec, numbers, rng, opts, roomy, options)
+    finally:
+        _NARROW_HALLS.reset(token)
+
+
+def _levels_tried(spec: HouseSpec, numbers: list[int], rng: np.random.Generator, opts: FloorplanOptions,
+                  roomy: FloorplanOptions, options: FloorplanOptions | None) -> Floorplan:
     why = ""
     i = 0
     while i < opts.level_attempts:  # the later half with roomier stairwells (a squarer room holds the stair)
@@ -214,52 +241,119 @@ def _stacked(spec: HouseSpec, numbers: list[int], rng: np.random.Generator, opti
     for k in sorted((n for n in numbers if n < 0), reverse=True):
         elevation[k] = elevation[k + 1] - heights[k]
     levels = [Level(level=k, elevation_m=round(elevation[k], 4), height_m=round(heights[k], 4)) for k in numbers]
-    return _landing_opened(_under_above(_joined(spec, plans, levels), through_rooms(spec)), opts)
+    return stairs_opened(_stairs_recorded(_under_above(_joined(spec, plans, levels), through_rooms(spec))), opts)
 
 
-def _landing_opened(plan: Floorplan, opts: FloorplanOptions) -> Floorplan:
-    """``plan`` with the top storey's stairwell merged into the room it opens onto, where
-    it opens onto one room only (a mezzanine bedroom, an attic room): the stair then
-    arrives in that room, as it does in a loft or an attic conversion, instead of in a
-    landing of its own. The room keeps its name, type and ceiling (and the taller of the
-    two heights) and holds the
-    stairwell (:attr:`~anyhome.house.Room.merged`); its floor is open over the flight
-    (:func:`anyhome.scene.stair_openings`) and the layout keeps the flight and the strip
-    where it arrives clear (:func:`stair_zones`). Refused where the room is not one
-    people stay in (a bathroom), is open-air or merged already, where the two make
-    neither a rectangle nor an L no more elongated than a habitable room may be, or
-    where the stairs would no longer come out where they were."""
-    from anyhome.floorplan.merge import l_aspect, merge_rooms, union_outline
+def _stairs_recorded(plan: Floorplan) -> Floorplan:
+    """``plan`` with the place of its stairs (:func:`stack_box`) recorded on every storey
+    a flight rises from (:attr:`~anyhome.house.Level.stairs_at`), so it stays where it
+    is when a stairwell is merged into a room (:func:`stairs_opened`)."""
+    numbers = sorted(lv.level for lv in plan.levels)
+    if len(numbers) < 2:
+        return plan
+    found = stack_box([(k, plan) for k in numbers], {lv.level: lv.height_m for lv in plan.levels})
+    if found is None:
+        raise FloorplanError(f"no room for the stairs in {', '.join(repr(_stairwell(plan, k).id) for k in numbers)}")
+    return plan.model_copy(update={"levels": [
+        lv.model_copy(update={"stairs_at": found}) if lv.level < numbers[-1] else lv for lv in plan.levels]})
+
+
+def stairs_opened(plan: Floorplan, opts: FloorplanOptions | None = None) -> Floorplan:
+    """``plan`` with every stairwell that opens onto one room only merged into that room,
+    where the stair may rise in it (:func:`_stair_opened`): the open stair of a cottage's
+    living room, of a loft's mezzanine bedroom, of an attic room."""
+    opts = opts or FloorplanOptions()
+    numbers = sorted(lv.level for lv in plan.levels)
+    for k in numbers if len(numbers) >= 2 else ():
+        plan = _stair_opened(plan, k, numbers[-1], opts)
+    return plan
+
+
+def _stair_opened(plan: Floorplan, k: int, top: int, opts: FloorplanOptions) -> Floorplan:
+    """``plan`` with storey ``k``'s stairwell merged into a room, so the stair rises in,
+    or arrives in, that room instead of a landing of its own: a stairwell of one or two
+    doors (none to the outside), into a room it opens onto or shares a wall with
+    (as long as a door needs, ``shared_wall_min_m``), those it opens onto first, where that room is
+
+    - of a type an open stair may rise in (``open_plan.yaml`` ``open_stair``: a living
+      room, a dining room, a hall; people pass through it to the next storey), and the
+      stairwell's other door, if any, led to no bedroom (:data:`NOT_THROUGH`: it now
+      opens off that room);
+    - or, on the top storey ``top``, the storey's only room people stay in (a mezzanine
+      or attic bedroom; a bathroom or closet the stairwell opened onto opens off it).
+
+    The room keeps its name, type and ceiling and holds the stairwell
+    (:attr:`~anyhome.house.Room.merged`); on the top storey it takes the taller of the
+    two heights, below it the two must be as high (the stairwell above stands on it).
+    The floor over a flight stays open (:func:`anyhome.scene.stair_openings`) and the
+    layout keeps every flight and the strip at its foot clear (:func:`stair_zones`).
+    Refused where the room is open-air or merged already, and where
+    :func:`_merged_well` refuses."""
+    from anyhome.floorplan.merge import open_plan_data
     from anyhome.house import is_habitable
 
-    top = max((lv.level for lv in plan.levels), default=0)
-    if top <= 0:
-        return plan
-    well = next((r for r in plan.rooms if r.level == top and _is_stair(r)), None)
-    if well is None:
+    well = next((r for r in plan.rooms if r.level == k and _is_stair(r)), None)
+    if well is None or well.merged:
         return plan
     doors = [d for d in plan.doors if well.id in d.rooms]
-    if len(doors) != 1 or "outside" in doors[0].rooms:
+    if not doors or len(doors) > 2 or any("outside" in d.rooms for d in doors):
         return plan
-    room = plan.room(next(x for x in doors[0].rooms if x != well.id))
-    if not is_habitable(room.type) or room.open_air or room.merged or well.merged or _is_stair(room):
-        return plan
-    if any(is_habitable(r.type) for r in plan.rooms if r.level == top and r.id not in (room.id, well.id)):
-        return plan  # another room people stay in would be reached through this one
+    through = [plan.room(next(x for x in d.rooms if x != well.id)) for d in doors]
+    beside = [r for r in plan.rooms if r.level == k and r not in through and r.id != well.id
+              and _shared_wall_m(r, well) >= opts.shared_wall_min_m]
+    for room in [*sorted(through, key=lambda r: not is_habitable(r.type)), *beside]:
+        if room.open_air or room.merged or _is_stair(room):
+            continue
+        others = [r for r in through if r.id != room.id]  # the rooms the stairwell's other door led to
+        if k == top and is_habitable(room.type) and not any(
+                is_habitable(r.type) for r in plan.rooms if r.level == k and r.id not in (room.id, well.id)):
+            pass  # a top storey's one room (its bathroom then opens off it)
+        elif room.type not in open_plan_data().open_stair or any(r.type in NOT_THROUGH for r in others):
+            continue
+        if k != top and abs(room.height - well.height) > 1e-6:
+            continue
+        opened = _merged_well(plan, k, room, well, opts)
+        if opened is not None:
+            return opened
+    return plan
+
+
+NOT_THROUGH = frozenset({"bedroom"})
+"""Room types that may not be reached through a room an open stair rises in, where the
+stairwell opened onto them too."""
+
+
+def _shared_wall_m(a: Room, b: Room) -> float:
+    from shapely.geometry import Polygon
+
+    return float(Polygon(a.polygon).boundary.intersection(Polygon(b.polygon).boundary).length)
+
+
+def _merged_well(plan: Floorplan, k: int, room: Room, well: Room, opts: FloorplanOptions) -> Floorplan | None:
+    """``plan`` with ``well`` merged into ``room`` (:func:`_stair_opened`), or None where
+    their union is neither a rectangle nor an L within the habitable aspect limit, or a
+    flight would no longer stand in, or arrive in, the room."""
+    from anyhome.floorplan.merge import l_aspect, merge_rooms, union_outline
+
     outline = union_outline(room.polygon, well.polygon)
     if outline is None or l_aspect(outline) > opts.max_habitable_aspect_ratio + 1e-9:
-        return plan
+        return None
     opened = merge_rooms(plan, room.id, well.id, name=room.name, outline=outline)
     if well.height > room.height:  # the storey stays as high as its tallest room
         opened = opened.model_copy(update={"rooms": [
             r.model_copy(update={"height": well.height}) if r.id == room.id else r for r in opened.rooms]})
-    before = [(o.position, o.size, o.yaw) for o in stairs_objects(plan)]
+    before = stairs_objects(plan)
     try:
         after = stairs_objects(opened)
     except FloorplanError:
-        return plan
-    if [(o.position, o.size, o.yaw) for o in after] != before or stair_link(opened, after[-1]) != (after[-1].room, room.id):
-        return plan
+        return None
+    if [(o.position, o.size, o.yaw) for o in after] != [(o.position, o.size, o.yaw) for o in before]:
+        return None
+    levels = {r.id: r.level for r in opened.rooms}
+    for o in after:  # the flight from storey k stands in the room, the one from below arrives in it
+        if (levels[o.room] == k and o.room != room.id) or (
+                levels[o.room] == k - 1 and (link := stair_link(opened, o)) is not None and link[1] != room.id):
+            return None
     return opened
 
 
@@ -393,8 +487,8 @@ def _storey_spec(spec: HouseSpec, k: int, opts: FloorplanOptions) -> HouseSpec:
     stair = stair_room(spec, k)
     if k != 0:
         links.append((stair, "outside"))
-    long_m, short_m = stairwell_min_m(spec, k)
-    least_m2 = round(long_m * (short_m + opts.stairwell_spare_m), 2)  # a stair for a tall storey needs a longer well
+    long_m = stairwell_min_m(spec, k)[0]
+    least_m2 = round(long_m * (stair_hall_width_m(spec, k) + opts.stairwell_spare_m), 2)  # a tall storey's stair needs a longer well
     rooms = [r.model_copy(update={"area_m2": max(r.area_m2, least_m2)}) if r.id == stair else r
              for r in spec.rooms if r.level == k]
     return spec.model_copy(update={"rooms": rooms, "connections": links})
@@ -423,11 +517,18 @@ def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options: Fl
     long_m, short_m = stairwell_min_m(spec, k)
     why = f"its stairwell never came out as a rectangle of at least {long_m:g} x {short_m:g} m for the stair"
     attempts = (options or FloorplanOptions()).level_attempts
+    narrow = _NARROW_HALLS.get()
+    wide_m = short_m if narrow is not None and k in narrow else stair_hall_width_m(spec, k)
     for _ in range(attempts):
         try:
-            plan = solve_floorplan(sub, rng, options, min_length_m={stair: long_m})
+            plan = solve_floorplan(sub, rng, options, min_length_m={stair: long_m}, min_side_m={stair: wide_m})
         except FloorplanError as e:  # its own bounded tries all failed: trying again rarely helps
-            raise _Unsolvable(f"could not lay out level {k} ({e})") from None
+            if wide_m <= short_m:
+                raise _Unsolvable(f"could not lay out level {k} ({e})") from None
+            wide_m = short_m  # a hall as narrow as the stair, its doors where the flight leaves them reachable
+            if narrow is not None:
+                narrow.add(k)
+            continue
         if k != 0:
             plan = plan.model_copy(update={"doors": [d for d in plan.doors if "outside" not in d.rooms]})
         x0, y0, w, h = _rect(plan.room(stair))
@@ -638,10 +739,12 @@ def stairs_objects(plan: Floorplan) -> list[HouseObject]:
         return []
     heights = {lv.level: lv.height_m for lv in plan.levels}
     elev = {lv.level: lv.elevation_m for lv in plan.levels}
-    found = stack_box([(k, plan) for k in numbers], heights)
+    found = next((lv.stairs_at for lv in plan.levels if lv.stairs_at is not None), None)
+    found = found or stack_box([(k, plan) for k in numbers], heights)
     if found is None:
         raise FloorplanError(f"no room for the stairs in {', '.join(repr(_stairwell(plan, k).id) for k in numbers)}")
     foot, ya, yaw = found
+    yaw = 0.0 if abs(yaw) < 0.1 else math.pi  # a yaw read back from house.json is rounded
     width = STAIR_WIDTH_M
     out = []
     for lo, hi in zip(numbers, numbers[1:]):
@@ -687,8 +790,10 @@ def stair_zones(plan: Floorplan) -> dict[str, list[np.ndarray]]:
 
 
 def _stairwell(plan: Floorplan, level: int) -> Room:
+    """The room of storey ``level`` the stairs stand in: its stairwell, or the room a
+    stairwell was merged into (:func:`stairs_opened`)."""
     for r in plan.rooms:
-        if r.level == level and _is_stair(r):
+        if r.level == level and (_is_stair(r) or any("stair" in m.lower() for m in r.merged)):
             return r
     raise FloorplanError(f"level {level} has no stairwell room")
 

@@ -66,13 +66,17 @@ class OpenPlan:
 
     words: tuple[str, ...]
     pairs: tuple[tuple[str, str], ...]
+    open_stair: frozenset[str] = frozenset()
+    """Room types an open stair may rise in (a stairwell opening onto one of them only
+    merges into it: :func:`anyhome.floorplan.levels.stairs_opened`)."""
 
 
 @lru_cache(maxsize=1)
 def open_plan_data(path: Path = OPEN_PLAN_FILE) -> OpenPlan:
     data = yaml.safe_load(path.read_text(encoding="utf-8"))
     return OpenPlan(tuple(str(w).lower() for w in data["words"]),
-                    tuple((str(a), str(b)) for a, b in data["pairs"]))
+                    tuple((str(a), str(b)) for a, b in data["pairs"]),
+                    frozenset(str(t) for t in data.get("open_stair", ())))
 
 
 def asks_open_plan(spec: HouseSpec, data: OpenPlan | None = None) -> bool:

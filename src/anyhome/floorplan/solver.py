@@ -72,6 +72,7 @@ def solve_floorplan(
     footprint: object | None = None,
     fixed: Mapping[str, tuple[float, float, float, float]] | None = None,
     min_length_m: Mapping[str, float] | None = None,
+    min_side_m: Mapping[str, float] | None = None,
 ) -> Floorplan:
     """Lay out ``spec``'s rooms, doors and windows.
 
@@ -89,6 +90,8 @@ def solve_floorplan(
         occupy exactly (a stairwell at the same place on every level)
     min_length_m : room id -> the shortest long side that room may have (a stairwell: its
         stair and the floor at the stair's foot)
+    min_side_m : room id -> the narrowest side that room may have, where more than its
+        type's norm (a stair hall: its stair and a landing beside it)
 
     Raises
     ------
@@ -104,6 +107,9 @@ def solve_floorplan(
     prog = Program.from_spec(spec, opts, kb)
     if min_length_m:
         prog = dataclasses.replace(prog, min_length_m=tuple(float(min_length_m.get(i, 0.0)) for i in prog.ids))
+    if min_side_m:
+        prog = dataclasses.replace(prog, min_width_m=tuple(
+            max(w, float(min_side_m.get(i, 0.0))) for i, w in zip(prog.ids, prog.min_width_m or (0.0,) * prog.n)))
     _precheck(prog, opts)
     if footprint is not None or fixed:
         from anyhome.floorplan.fixed import solve_in_footprint

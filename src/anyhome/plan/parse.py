@@ -863,9 +863,9 @@ def _open_vocabulary(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[
     unknown: list[str] = []
     for phrase, s, e in found:
         words = phrase.split()
-        while words and words[0] in size_factors(kb):
+        while words and (words[0] in size_factors(kb) or words[0] in NOT_NOUNS or words[0] in ADVERBS):
             words = words[1:]
-        if not words:
+        if not words or words[-1] in ADVERBS:  # "downstairs just (a kitchenette)": no object
             continue
         head, plural = _singular(words[-1])
         name = " ".join([*words[:-1], head])
@@ -892,6 +892,9 @@ def _open_vocabulary(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[
 
 NOT_NOUNS = frozenset("full empty upstairs downstairs outside inside below above nearby too only alone together overlooking".split())
 """Words after a room word that are not a noun ("a studio full of easels", "a loft upstairs")."""
+
+ADVERBS = frozenset("just only also even then still simply merely mostly mainly".split())
+"""Words that are never an object's name nor lead one ("downstairs just a kitchenette")."""
 
 ROOM_SUFFIXES = frozenset("area corner bay zone space nook wing section suite end".split())
 """Words that, right after a room word, make a larger room name ("kennel area", "café corner")."""
