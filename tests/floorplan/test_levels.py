@@ -365,6 +365,20 @@ def test_storeys_whose_compact_stairwells_do_not_stack_get_roomier_ones():
     assert evaluate_house(h).violations == []
 
 
+def _assert_stairs_kept_clear(h, room):
+    """The flights' boxes with their strips (``stair_zones``) lie in ``room`` and none of
+    its floor objects but the stairs stands on them."""
+    from shapely.geometry import Polygon
+
+    from anyhome.floorplan.levels import stair_zones
+    from anyhome.geometry import footprint_polygon
+
+    zones = [Polygon(z) for z in stair_zones(h.floorplan)[room.id]]
+    assert zones and all(Polygon(room.polygon).buffer(1e-6).contains(z) for z in zones)
+    for o in (o for o in h.objects if o.room == room.id and o.support == "floor" and o.category != "stairs"):
+        assert all(footprint_polygon(o.position, o.size, o.yaw).intersection(z).area < 1e-6 for z in zones), o.name
+
+
 ONE_ROOM_TOPS = [
     "A converted warehouse loft with a double-height living space, an open kitchen, a mezzanine bedroom and a bathroom.",
     "A cottage with a kitchen, a living room and a bathroom on the ground floor and an attic bedroom under the sloping roof.",
@@ -378,11 +392,6 @@ def test_stair_arrives_in_the_one_room_of_the_top_storey(text):
     arrives in; the room is a rectangle or an L holding the stairwell, the flight's box
     with the strip at its foot lies in it, no floor object of the room stands on that
     floor, and the house is valid with every room reachable."""
-    from shapely.geometry import Polygon
-
-    from anyhome.floorplan.levels import stair_zones
-    from anyhome.geometry import footprint_polygon
-
     opened = 0
     for seed in (0, 1, 2):
         h = generate(text, seed)
@@ -399,10 +408,7 @@ def test_stair_arrives_in_the_one_room_of_the_top_storey(text):
         assert not [r for r in h.rooms if r.level == top and r.type == "stairwell"]
         (flight,) = [o for o in h.objects if o.category == "stairs" and h.room_level(o.room) == top - 1]
         assert stair_link(h.floorplan, flight) == (flight.room, room.id)
-        zones = [Polygon(z) for z in stair_zones(h.floorplan)[room.id]]
-        assert zones and all(Polygon(room.polygon).buffer(1e-6).contains(z) for z in zones)
-        for o in (o for o in h.objects if o.room == room.id and o.support == "floor"):
-            assert all(footprint_polygon(o.position, o.size, o.yaw).intersection(z).area < 1e-6 for z in zones), o.name
+        _assert_stairs_kept_clear(h, room)
     assert opened >= 1  # measured: loft 3/3, attic cottage 2/3
 
 
@@ -453,11 +459,6 @@ def test_a_stairwell_opening_onto_one_living_room_becomes_an_open_stair_in_it(te
     strip lie inside the room and no floor object stands on them; no bedroom or
     bathroom below the top storey ever takes a stair; the house is valid and every
     room reachable."""
-    from shapely.geometry import Polygon
-
-    from anyhome.floorplan.levels import stair_zones
-    from anyhome.geometry import footprint_polygon
-
     opened = 0
     for seed in (0, 1, 2):
         h = generate(text, seed)
@@ -476,10 +477,7 @@ def test_a_stairwell_opening_onto_one_living_room_becomes_an_open_stair_in_it(te
             opened += 1
             assert any("stair" in m for m in room.merged) and "stair" not in room.name
             assert stair_link(h.floorplan, o) is not None
-            zones = [Polygon(z) for z in stair_zones(h.floorplan)[room.id]]
-            assert zones and all(Polygon(room.polygon).buffer(1e-6).contains(z) for z in zones)
-            for x in (x for x in h.objects if x.room == room.id and x.support == "floor" and x.category != "stairs"):
-                assert all(footprint_polygon(x.position, x.size, x.yaw).intersection(z).area < 1e-6 for z in zones), x.name
+            _assert_stairs_kept_clear(h, room)
     assert opened >= 1
 
 

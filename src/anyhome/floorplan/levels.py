@@ -85,11 +85,11 @@ THROUGH_OVERLAP_OK_M2 = 0.05
 """Floor of a storey that may lie over a room rising through it (m2): snapping slivers."""
 
 _AS_ORDINARY: ContextVar[bool] = ContextVar("anyhome_through_as_ordinary", default=False)
+"""Set while a house whose upper storey would not sit beside its through rooms is laid
+out as before (through rooms as ordinary ones: the storey above over their ceilings)."""
 _NARROW_HALLS: ContextVar[set[int] | None] = ContextVar("anyhome_narrow_halls", default=None)
 """The storeys, in the :func:`solve_levels` call under way, whose stair hall the solver
 could not lay out as wide as :func:`stair_hall_width_m` asks (asked once, not again)."""
-"""Set while a house whose upper storey would not sit beside its through rooms is laid
-out as before (through rooms as ordinary ones: the storey above over their ceilings)."""
 
 
 def _through_ids(rooms: Iterable[tuple[str, int, float, bool]]) -> set[str]:
@@ -148,9 +148,7 @@ def stairwell_min_m(spec: HouseSpec, k: int) -> tuple[float, float]:
     than :data:`~anyhome.floorplan.stairs.HALL_DOORS` doors is longer by
     :data:`~anyhome.floorplan.stairs.HALL_DOOR_M` per door. (How wide it is beyond the
     stair, for a landing beside it, is the planned area's say.)"""
-    stair = stair_room(spec, k)
-    doors = sum(stair in c for c in spec.connections)
-    extra_m = HALL_DOOR_M * max(0, doors - HALL_DOORS)
+    extra_m = HALL_DOOR_M * max(0, _stair_doors(spec, k) - HALL_DOORS)
     return (round(flight_length_m(storey_heights_m(spec), k) + STRIP_M + extra_m, 4), STAIR_WIDTH_M)
 
 
@@ -161,9 +159,13 @@ def stair_hall_width_m(spec: HouseSpec, k: int) -> float:
     open onto; a plain stairwell, the stair's width. (A hall narrower than that comes out
     with its flight cutting it in two and is refused, :func:`_doors_joined`: measured, a
     townhouse's five-door ground floor was laid out 40 times over, 10-20 s.)"""
+    return round(STAIR_WIDTH_M + PASSAGE_M, 4) if _stair_doors(spec, k) >= 3 else STAIR_WIDTH_M
+
+
+def _stair_doors(spec: HouseSpec, k: int) -> int:
+    """Doors the plan gives the stairwell of storey ``k`` (its connections)."""
     stair = stair_room(spec, k)
-    doors = sum(stair in c for c in spec.connections)
-    return round(STAIR_WIDTH_M + PASSAGE_M, 4) if doors >= 3 else STAIR_WIDTH_M
+    return sum(stair in c for c in spec.connections)
 
 
 def solve_levels(spec: HouseSpec, rng: np.random.Generator, options: FloorplanOptions | None = None) -> Floorplan:
@@ -189,9 +191,7 @@ def _levels_tried(spec: HouseSpec, numbers: list[int], rng: np.random.Generator,
     while i < opts.level_attempts:  # the later half with roomier stairwells (a squarer room holds the stair)
         half = opts.level_attempts // 2
         try:
-            plan = _stacked(spec, numbers, rng, opts if i < half else roomy)
-            stairs_objects(plan)  # a flight fits where both stairwells meet, clear of their doors
-            return plan
+            return _stacked(spec, numbers, rng, opts if i < half else roomy)  # the stairs placed, or FloorplanError
         except _Unsolvable as e:  # a storey the solver cannot lay out at all: roomier, then one storey
             why = str(e)
             i = half if i < half else opts.level_attempts
@@ -251,11 +251,21 @@ def _stairs_recorded(plan: Floorplan) -> Floorplan:
     numbers = sorted(lv.level for lv in plan.levels)
     if len(numbers) < 2:
         return plan
-    found = stack_box([(k, plan) for k in numbers], {lv.level: lv.height_m for lv in plan.levels})
-    if found is None:
-        raise FloorplanError(f"no room for the stairs in {', '.join(repr(_stairwell(plan, k).id) for k in numbers)}")
+    found = _stairs_place(plan)
     return plan.model_copy(update={"levels": [
         lv.model_copy(update={"stairs_at": found}) if lv.level < numbers[-1] else lv for lv in plan.levels]})
+
+
+def _stairs_place(plan: Floorplan) -> tuple[float, float, float]:
+    """(foot_x, y0, yaw) of the stairs of ``plan`` (two storeys or more): as recorded on
+    its storeys, else found in its stairwells (:func:`stack_box`)."""
+    found = next((lv.stairs_at for lv in plan.levels if lv.stairs_at is not None), None)
+    found = found or stack_box([(lv.level, plan) for lv in plan.levels], {lv.level: lv.height_m for lv in plan.levels})
+    if found is None:
+        names = ", ".join(repr(_stairwell(plan, lv.level).id) for lv in sorted(plan.levels, key=lambda lv: lv.level))
+        raise FloorplanError(f"no room for the stairs in {names}")
+    foot, ya, yaw = found
+    return foot, ya, 0.0 if abs(yaw) < 0.1 else math.pi  # a yaw read back from house.json is rounded
 
 
 def stairs_opened(plan: Floorplan, opts: FloorplanOptions | None = None) -> Floorplan:
@@ -332,7 +342,8 @@ def _shared_wall_m(a: Room, b: Room) -> float:
 def _merged_well(plan: Floorplan, k: int, room: Room, well: Room, opts: FloorplanOptions) -> Floorplan | None:
     """``plan`` with ``well`` merged into ``room`` (:func:`_stair_opened`), or None where
     their union is neither a rectangle nor an L within the habitable aspect limit, or a
-    flight would no longer stand in, or arrive in, the room."""
+    flight (at the place recorded on the storeys, :func:`_stairs_recorded`) would not
+    stand in, or arrive in, the room."""
     from anyhome.floorplan.merge import l_aspect, merge_rooms, union_outline
 
     outline = union_outline(room.polygon, well.polygon)
@@ -342,15 +353,8 @@ def _merged_well(plan: Floorplan, k: int, room: Room, well: Room, opts: Floorpla
     if well.height > room.height:  # the storey stays as high as its tallest room
         opened = opened.model_copy(update={"rooms": [
             r.model_copy(update={"height": well.height}) if r.id == room.id else r for r in opened.rooms]})
-    before = stairs_objects(plan)
-    try:
-        after = stairs_objects(opened)
-    except FloorplanError:
-        return None
-    if [(o.position, o.size, o.yaw) for o in after] != [(o.position, o.size, o.yaw) for o in before]:
-        return None
     levels = {r.id: r.level for r in opened.rooms}
-    for o in after:  # the flight from storey k stands in the room, the one from below arrives in it
+    for o in stairs_objects(opened):  # at the place recorded before the merge  # the flight from storey k stands in the room, the one from below arrives in it
         if (levels[o.room] == k and o.room != room.id) or (
                 levels[o.room] == k - 1 and (link := stair_link(opened, o)) is not None and link[1] != room.id):
             return None
@@ -737,14 +741,8 @@ def stairs_objects(plan: Floorplan) -> list[HouseObject]:
     numbers = [lv.level for lv in plan.levels]
     if len(numbers) < 2:
         return []
-    heights = {lv.level: lv.height_m for lv in plan.levels}
     elev = {lv.level: lv.elevation_m for lv in plan.levels}
-    found = next((lv.stairs_at for lv in plan.levels if lv.stairs_at is not None), None)
-    found = found or stack_box([(k, plan) for k in numbers], heights)
-    if found is None:
-        raise FloorplanError(f"no room for the stairs in {', '.join(repr(_stairwell(plan, k).id) for k in numbers)}")
-    foot, ya, yaw = found
-    yaw = 0.0 if abs(yaw) < 0.1 else math.pi  # a yaw read back from house.json is rounded
+    foot, ya, yaw = _stairs_place(plan)
     width = STAIR_WIDTH_M
     out = []
     for lo, hi in zip(numbers, numbers[1:]):

@@ -681,18 +681,13 @@ def _worded_levels(parsed: Parsed, slots: list[Slot], top: int, up_types: set[st
         return
     british = any(w == "ground" for _, _, w in words)
     text = parsed.text
-    placed: dict[tuple[int, int, str], list[Slot]] = {}
-    inside: dict[tuple[int, int, str], Slot] = {}
+    placed: set[str] = set()  # the storey words that placed a room
     for s in slots:
         if s.mention is None or s.mention >= len(parsed.rooms):
             continue
+        if _storey_room(s):  # "plus an attic", "in the basement": the storey itself, moved by no word
+            continue
         m = parsed.rooms[s.mention]
-        within = next((w for w in words if w[0] <= m.start and m.end <= w[1]), None)
-        if within is not None:  # the room word of "in the attic", "in the basement"
-            inside[within] = s
-            continue
-        if s.name in ("attic", "basement") and s.type == "storage":  # "plus an attic": a storey, no other's room
-            continue
         before = [w for w in words if w[1] <= m.start and len(text[w[1]:m.start].split()) <= 2
                   and not _NOT_ADJACENT.search(text[w[1]:m.start])]
         after = [w for w in words if w[0] >= m.end and "." not in text[m.end:w[0]]]
@@ -700,7 +695,7 @@ def _worded_levels(parsed: Parsed, slots: list[Slot], top: int, up_types: set[st
         word = found[2] if found else None
         if found is None or word is None or (not before and word in ("upstairs", "upper") and s.type not in up_types):
             continue
-        placed.setdefault(found, []).append(s)
+        placed.add(word)
         if word in ("ground", "downstairs"):
             s.level = 0
         elif word in ("upstairs", "upper"):
@@ -713,13 +708,13 @@ def _worded_levels(parsed: Parsed, slots: list[Slot], top: int, up_types: set[st
             s.level = top + 1 if parsed.attic else s.level
         elif word in _ORDINALS:
             s.level = max(0, min(top, _ORDINALS[word] - (0 if british else 1)))
-    for w, s in inside.items():  # "a study in the attic": the attic is where the study is, not a room
-        if placed.get(w):
-            slots.remove(s)
-    for where in ("attic", "basement"):  # nor is the storage room planned for an attic or basement another room is in
-        if any(w[2] == where and found for w, found in placed.items()):
-            for s in [s for s in slots if s.name == where and s.type == "storage"]:
-                slots.remove(s)
+    for s in [s for s in slots if _storey_room(s) and s.name in placed]:  # "a study in the attic": no attic room
+        slots.remove(s)
+
+
+def _storey_room(s: Slot) -> bool:
+    """The storage room an attic or a basement is planned as, named for its storey."""
+    return s.name in ("attic", "basement") and s.type == "storage"
 
 
 def connect_levels(kb: KnowledgeBase, slots: list[Slot], entrance_types: list[str]) -> list[tuple[str, str]]:
