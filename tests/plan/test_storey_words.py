@@ -85,3 +85,16 @@ def test_a_room_the_words_put_in_the_attic_replaces_the_planned_attic_storage():
 def test_a_storey_word_and_an_adverb_are_no_object():
     text = "a small cabin with a sleeping loft upstairs, downstairs just a kitchenette and a shower room"
     assert parse(text).objects == []
+
+
+def test_an_attic_after_a_list_takes_only_rooms_that_go_up():
+    levels = _levels("A farmhouse with a workshop in the basement, a kitchen and a snug, and two bedrooms in the attic.", 3)
+    top = max(levels.values())
+    assert levels["kitchen"] == levels["living_room"] == 0
+    assert all(v == top for k, v in levels.items() if "bedroom" in k)
+
+
+def test_an_attic_right_after_a_room_takes_it_whatever_its_type():
+    levels = _levels("A two-storey house with a kitchen and a lounge, two bedrooms upstairs and a home cinema in the attic.")
+    cinema = next(k for k in levels if "cinema" in k)
+    assert levels[cinema] == max(levels.values()) == 2

@@ -672,8 +672,9 @@ def _worded_levels(parsed: Parsed, slots: list[Slot], top: int, up_types: set[st
     floor" is the floor above the ground floor where the text names a ground floor too
     (British), else the ground floor (American); "top floor" the highest full storey;
     "upstairs" any storey above the ground floor (a room already up stays where it is);
-    an "upstairs" after a list takes only its rooms of ``up_types`` ("a hallway, a kitchen
-    and three bedrooms upstairs": the bedrooms). Levels stay within the storeys planned.
+    an "upstairs" or "in the attic" after a list takes only its rooms of ``up_types`` ("a
+    hallway, a kitchen and three bedrooms upstairs": the bedrooms), right after a room
+    any room ("a home cinema in the attic"). Levels stay within the storeys planned.
     The room the words themselves name ("in the attic", "in the basement") is no room of
     its own where they place another room there ("a study in the attic")."""
     words = parsed.floor_words
@@ -693,7 +694,8 @@ def _worded_levels(parsed: Parsed, slots: list[Slot], top: int, up_types: set[st
         after = [w for w in words if w[0] >= m.end and "." not in text[m.end:w[0]]]
         found = before[-1] if before else after[0] if after else None
         word = found[2] if found else None
-        if found is None or word is None or (not before and word in ("upstairs", "upper") and s.type not in up_types):
+        listed = not before and found is not None and bool(_NOT_ADJACENT.search(text[m.end:found[0]]))
+        if found is None or word is None or (listed and word in ("upstairs", "upper", "attic") and s.type not in up_types):
             continue
         placed.add(word)
         if word in ("ground", "downstairs"):
