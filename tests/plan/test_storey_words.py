@@ -98,3 +98,60 @@ def test_an_attic_right_after_a_room_takes_it_whatever_its_type():
     levels = _levels("A two-storey house with a kitchen and a lounge, two bedrooms upstairs and a home cinema in the attic.")
     cinema = next(k for k in levels if "cinema" in k)
     assert levels[cinema] == max(levels.values()) == 2
+
+
+def test_a_storey_word_opening_a_list_takes_every_room_of_it():
+    levels = _levels("a tiny cabin with a sleeping loft upstairs, downstairs just a kitchenette, "
+                     "a shower room and a little living area")
+    assert levels["sleeping_loft"] == 1
+    assert levels["kitchenette"] == levels["shower_room"] == levels["living_area"] == 0
+
+
+def test_a_trailing_storey_word_does_not_open_the_next_list():
+    levels = _levels("a two-storey cottage with two bedrooms upstairs, a kitchen, a living room and a study")
+    assert levels["kitchen"] == levels["living_room"] == 0
+    assert all(v == 1 for k, v in levels.items() if "bedroom" in k)
+
+
+def test_an_upstairs_modifier_does_not_open_a_list():
+    levels = _levels("a two-storey house with an upstairs study, a kitchen and a living room")
+    assert levels["upstairs_study"] == 1
+    assert levels["kitchen"] == levels["living_room"] == 0
+
+
+def test_places_among_the_storeys_name_them():
+    text = ("a split-level family home - garage and den on the lower level, kitchen, dining and living room "
+            "half a flight up, and 3 bedrooms and 2 baths on the upper level")
+    assert parse(text).storeys == 3
+    levels = _levels(text)
+    assert levels["garage"] == levels["den"] == 0
+    assert levels["kitchen"] == levels["living_room"] == levels["dining_room"] == 1
+    assert {v for k, v in levels.items() if "bedroom" in k or "bathroom" in k} == {2}
+
+
+def test_the_storey_holding_the_entry_is_the_ground_floor():
+    text = ("Luxury triplex penthouse. Lowest level: home gym, guest bedroom and a shower room. Middle level: "
+            "entry foyer, kitchen, dining room and living room. On the top floor, a master bedroom and a study.")
+    p = parse(text)
+    assert (p.storeys, p.basement) == (2, True)
+    levels = _levels(text)
+    assert levels["home_gym"] == levels["guest_bedroom"] == levels["shower_room"] == -1
+    assert levels["foyer"] == levels["kitchen"] == levels["living_room"] == 0  # one foyer, not an entry and a foyer
+    assert "entry" not in levels
+    assert levels["master_bedroom"] == levels["study"] == 1
+
+
+def test_a_duplex_lower_level_is_the_ground_floor_and_up_the_stairs_the_next():
+    text = ("Small duplex apartment. Open-plan kitchen and living room plus a guest WC on the lower level, "
+            "and a bedroom and bathroom up the stairs.")
+    levels = _levels(text)
+    assert levels["kitchen"] == levels["living_room"] == levels["guest_wc"] == 0  # not a "plan kitchen"
+    assert levels["bedroom"] == levels["bathroom"] == 1
+
+
+def test_a_finished_basement_named_for_its_rooms_is_no_room_of_its_own():
+    levels = _levels("A bungalow with a finished basement. Main floor: living room, kitchen and a bathroom. "
+                     "In the basement put a laundry room and a rec room.")
+    assert levels["laundry_room"] == levels["rec_room"] == -1
+    assert levels["living_room"] == levels["kitchen"] == 0
+    assert not any("basement" in k for k in levels)

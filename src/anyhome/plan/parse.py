@@ -8,6 +8,7 @@ planner (:mod:`anyhome.plan.offline`) turns the result into a ``HouseSpec``.
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import math
 import re
@@ -354,6 +355,10 @@ def _look_back(m: Mention, text: str, tokens: list[tuple[str, int, int]], taken:
     """Fill count, size and adjectives of ``m`` from the words just before it."""
     sizes = size_factors(kb)
     before = [t for t in tokens if t[2] <= m.start]
+    for i in range(len(before) - 1, 0, -1):  # "an open-plan kitchen": a kitchen, the plan is open
+        if before[i][0] == "plan" and before[i - 1][0] == "open" and i >= len(before) - 4:
+            del before[i - 1:i + 1]
+            break
     words: list[str] = []
     first = m.start  # where the phrase with its adjectives starts
     for tok, s, e in reversed(before[-4:]):
@@ -664,15 +669,25 @@ def _apply_codes(text: str, p: Parsed, taken: list[tuple[int, int]]) -> None:
 
 _STOREYS = re.compile(
     r"\b(\w+)[- ](?:storey|story|storeyed|storied|level|floor)s?\b(?! plan)|\b(\w+) (?:storeys|stories|floors|levels)\b")
-_UPSTAIRS = re.compile(r"\b(?:upstairs|downstairs|upper floor|upper storey)\b")
+_UPSTAIRS = re.compile(r"\b(?:upstairs|downstairs|upper floor|upper storey|up the stairs)\b")
 _BASEMENT = re.compile(r"\b(?:basement|lower ground floor|underground level)s?\b")
 _ATTIC = re.compile(r"\b(?:attic|loft conversion|garret)s?\b")
 _MEZZANINE = re.compile(r"\bmezzanines?\b")
 _FLOOR_WORDS = re.compile(
     r"\b(?:on|in|at)\s+the\s+(ground|first|1st|second|2nd|third|3rd|top|upper)\s+(?:floor|storey|story|level)\b"
-    r"|\b(?:on|in)\s+the\s+(basement|attic)\b|\b(downstairs|upstairs)\b")
+    r"|\b(?:on|in)\s+the\s+(basement|attic)\b|\b(downstairs|upstairs)\b|\bup (?:the )?(stairs)\b")
 """Words that put the rooms named before them on a storey ("a kitchen on the ground
 floor", "three bedrooms upstairs"; :func:`anyhome.plan.program.assign_levels`)."""
+_TIERS = re.compile(
+    r"\b(?:(?:on|in|at)\s+the\s+)?(lowest|lower|bottom|middle|main|entry|upper|top)\s+(?:level|floor|storey|story)\b"
+    r"|\b(half a flight up|half a level up)\b")
+"""Storeys named by their place among the others ("the lower level", "the middle level",
+"the main floor", "half a flight up" in a split-level; :func:`_find_tiers`)."""
+_TIER_OF = {"lowest": "low", "lower": "low", "bottom": "low", "middle": "mid", "main": "mid", "entry": "mid",
+            "half a flight up": "mid", "half a level up": "mid", "upper": "high", "top": "high"}
+_ENTRANCE_WORDS = re.compile(r"\b(?:entry|entrance|foyer|front door|lobby|vestibule)\b")
+_SOME_STOREYS = {"duplex": 2, "triplex": 3, "split": 2}
+"""Building words that give a number of storeys ("a duplex apartment", "a split-level home")."""
 MAX_STOREYS = 4
 """Most storeys above ground a plan holds (ground floor included)."""
 
@@ -682,16 +697,55 @@ def _find_levels(text: str, p: Parsed) -> None:
     a basement and an attic."""
     for mt in _STOREYS.finditer(text):
         word = mt.group(1) or mt.group(2)
-        n = {"single": 1, "one": 1, "double": 2, "twin": 2, "multi": 3}.get(word) or parse_number(word)
+        n = {"single": 1, "one": 1, "double": 2, "twin": 2, "multi": 3, "split": 2}.get(word) or parse_number(word)
         if n is not None and n >= 1:
             if n > MAX_STOREYS:
                 p.warnings.append(f"asked for {n} storeys; a plan holds at most {MAX_STOREYS}, planned {MAX_STOREYS}")
             p.storeys = max(p.storeys, min(n, MAX_STOREYS))
+    for word, n in _SOME_STOREYS.items():
+        if re.search(rf"\b{word}\b", text):
+            p.storeys = max(p.storeys, n)
     if p.storeys == 1 and (_UPSTAIRS.search(text) or _MEZZANINE.search(text)):
         p.storeys = 2
     p.basement = bool(_BASEMENT.search(text))
     p.attic = bool(_ATTIC.search(text))
-    p.floor_words = [(mt.start(), mt.end(), next(g for g in mt.groups() if g)) for mt in _FLOOR_WORDS.finditer(text)]
+    p.floor_words = [(mt.start(), mt.end(), {"stairs": "upstairs"}.get(g, g))
+                     for mt in _FLOOR_WORDS.finditer(text) for g in [next(g for g in mt.groups() if g)]]
+    _find_tiers(text, p)
+
+
+def _find_tiers(text: str, p: Parsed) -> None:
+    """Storeys named by their place ("Lowest level: a gym ... Middle level: the entry foyer,
+    a kitchen ... top floor: the master bedroom", "garage and den on the lower level,
+    kitchen half a flight up, bedrooms on the upper level"): as many storeys as places
+    named, the one holding the entrance (a "main" or "entry" floor, or one whose rooms
+    include an entry or foyer) the ground floor and a place under it the basement. Each
+    place becomes a floor word naming its level ("tier:-1", "tier:0", ...), in place of
+    an ordinary floor word at the same words ("the top floor", "the upper level")."""
+    found = [(mt.start(), mt.end(), _TIER_OF[next(g for g in mt.groups() if g)]) for mt in _TIERS.finditer(text)]
+    tiers = [t for t in ("low", "mid", "high") if any(f[2] == t for f in found)]
+    if tiers == ["low"] and p.storeys >= 2:  # "a duplex ... on the lower level": the ground floor
+        tiers = ["low", "high"]
+    if not tiers or (len(tiers) == 1 and tiers != ["mid"]):
+        return  # "the top floor" alone: an ordinary floor word
+    ground = "low"
+    for i, (_, end, tier) in enumerate(found):
+        nxt = next((f[0] for f in found[i + 1:] if f[2] != tier), len(text))
+        prev = max((f[1] for f in found[:i] if f[2] != tier), default=0)
+        if tier == "mid" and (text[found[i][0]:end].split()[-2] in ("main", "entry")
+                              or _ENTRANCE_WORDS.search(text[end:nxt]) or _ENTRANCE_WORDS.search(text[prev:found[i][0]])):
+            ground = "mid"
+    if ground not in tiers:
+        ground = tiers[0]
+    g = tiers.index(ground)
+    level = {t: i - g for i, t in enumerate(tiers)}
+    if min(level.values()) < 0:
+        p.basement = True
+    above = min(MAX_STOREYS, max(level.values()) + 1)
+    p.storeys = above if len(tiers) >= 2 else max(p.storeys, above)  # "a triplex: lowest, middle, top": one under
+    spans = [(s, e) for s, e, _ in found]
+    p.floor_words = sorted([w for w in p.floor_words if not any(s < w[1] and w[0] < e for s, e in spans)]
+                           + [(s, e, f"tier:{level[t]}") for s, e, t in found])
 
 
 def _assign_rooms(text: str, mentions: list[Mention]) -> None:
@@ -1010,6 +1064,22 @@ def _mask_height_words(kb: KnowledgeBase, norm: str) -> str:
     return rx.sub(lambda m: " " * len(m.group()), norm)
 
 
+def _joined_room_words(kb: KnowledgeBase, text: str, mentions: list[Mention]) -> list[Mention]:
+    """``mentions`` with two room words of one type written side by side taken as one
+    room, named by the second ("an entry foyer": a foyer, not an entry and a foyer)."""
+    names = kb.raw("rooms")["names"]
+    out: list[Mention] = []
+    for m in mentions:
+        prev = out[-1] if out else None
+        if (prev is not None and prev.kind == m.kind == "room" and not text[prev.end:m.start].strip()
+                and prev.count is None and (names.get(prev.key) or {}).get("type") is not None
+                and (names.get(prev.key) or {}).get("type") == (names.get(m.key) or {}).get("type")):
+            out[-1] = dataclasses.replace(m, start=prev.start)
+            continue
+        out.append(m)
+    return out
+
+
 def parse(text: str, kb: KnowledgeBase | None = None) -> Parsed:
     """Parse ``text`` into a :class:`Parsed` with the knowledge base ``kb`` (None: the
     one in force); never raises on odd input."""
@@ -1030,7 +1100,7 @@ def parse(text: str, kb: KnowledgeBase | None = None) -> Parsed:
     span = _parse_building(kb, norm, p, taken)
     if span:
         taken.append(span)
-    mentions = _find_mentions(kb, norm, p, taken)
+    mentions = _joined_room_words(kb, norm, _find_mentions(kb, norm, p, taken))
     tokens = _tokens(norm)
     spans = taken + [(m.start, m.end) for m in mentions]
     for m in mentions:

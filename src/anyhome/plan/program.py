@@ -682,23 +682,29 @@ def _worded_levels(parsed: Parsed, slots: list[Slot], top: int, up_types: set[st
         return
     british = any(w == "ground" for _, _, w in words)
     text = parsed.text
+    leading = [w for w in words if _leads(w, parsed)]
+    trailing = [w for w in words if w not in leading]
     placed: set[str] = set()  # the storey words that placed a room
     for s in slots:
-        if s.mention is None or s.mention >= len(parsed.rooms):
-            continue
         if _storey_room(s):  # "plus an attic", "in the basement": the storey itself, moved by no word
             continue
-        m = parsed.rooms[s.mention]
-        before = [w for w in words if w[1] <= m.start and len(text[w[1]:m.start].split()) <= 2
-                  and not _NOT_ADJACENT.search(text[w[1]:m.start])]
-        after = [w for w in words if w[0] >= m.end and "." not in text[m.end:w[0]]]
-        found = before[-1] if before else after[0] if after else None
+        span = _slot_span(s, parsed)
+        if span is None:
+            continue
+        m_start, m_end = span
+        before = [w for w in words if w[1] <= m_start and len(text[w[1]:m_start].split()) <= 2
+                  and not _NOT_ADJACENT.search(text[w[1]:m_start])]
+        after = [w for w in trailing if w[0] >= m_end and "." not in text[m_end:w[0]]]
+        opened = [w for w in leading if w[1] <= m_start and not _CLAUSE_END.search(text[w[1]:m_start])]
+        found = before[-1] if before else after[0] if after else opened[-1] if opened else None
         word = found[2] if found else None
-        listed = not before and found is not None and bool(_NOT_ADJACENT.search(text[m.end:found[0]]))
+        listed = not before and bool(after) and found is not None and bool(_NOT_ADJACENT.search(text[m_end:found[0]]))
         if found is None or word is None or (listed and word in ("upstairs", "upper", "attic") and s.type not in up_types):
             continue
         placed.add(word)
-        if word in ("ground", "downstairs"):
+        if word.startswith("tier:"):  # "the lower level", "the middle level": parse._find_tiers
+            s.level = max(-1 if parsed.basement else 0, min(top, int(word[5:])))
+        elif word in ("ground", "downstairs"):
             s.level = 0
         elif word in ("upstairs", "upper"):
             s.level = s.level if s.level >= 1 else min(1, top)
@@ -710,13 +716,47 @@ def _worded_levels(parsed: Parsed, slots: list[Slot], top: int, up_types: set[st
             s.level = top + 1 if parsed.attic else s.level
         elif word in _ORDINALS:
             s.level = max(0, min(top, _ORDINALS[word] - (0 if british else 1)))
-    for s in [s for s in slots if _storey_room(s) and s.name in placed]:  # "a study in the attic": no attic room
+    for s in [s for s in slots if _storey_room(s) and s.name.split()[-1] in placed]:  # "a study in the attic": no attic room
         slots.remove(s)
 
 
+def _slot_span(s: Slot, parsed: Parsed) -> tuple[int, int] | None:
+    """Where the text names the room ``s``: its mention, or for a room planned from a
+    count or a shared word ("2 baths", "dining and living room") the first place its
+    name's head word is written (a bathroom: "bath", "baths"); None: nowhere."""
+    if s.mention is not None and s.mention < len(parsed.rooms):
+        m = parsed.rooms[s.mention]
+        return (m.start, m.end)
+    if s.mention is not None or not s.generic_name:
+        return None
+    head = "bath(?:room)?s?" if s.type == "bathroom" else re.escape(s.name.split()[0])
+    found = re.search(rf"\b{head}\b", parsed.text)
+    return (found.start(), found.end()) if found else None
+
+
+_CLAUSE_END = re.compile(r"[.;]")
+_ARTICLES = frozenset({"a", "an", "the", "our", "my", "its", "their"})
+
+
+def _leads(word: tuple[int, int, str], parsed: Parsed) -> bool:
+    """Whether the storey word ``word`` (start, end, word) opens the list of rooms after it
+    ("a loft upstairs, downstairs just a kitchenette, a shower room and a living area";
+    "Lowest level: a gym, a guest bedroom and a shower room"), not closes the one before
+    it ("two bedrooms upstairs"; a room ends right before it, no comma between) nor
+    names a room's storey as a modifier ("an upstairs study")."""
+    start = word[0]
+    ends = [m.end for m in parsed.rooms if m.end <= start]
+    gap = parsed.text[max(ends):start] if ends else ""
+    if ends and len(gap.split()) <= 3 and not re.search(r"[,;:.]", gap):
+        return False
+    prev = parsed.text[:start].split()
+    return not (prev and prev[-1].lower() in _ARTICLES)
+
+
 def _storey_room(s: Slot) -> bool:
-    """The storage room an attic or a basement is planned as, named for its storey."""
-    return s.name in ("attic", "basement") and s.type == "storage"
+    """The storage room an attic or a basement is planned as, named for its storey ("a
+    finished basement")."""
+    return s.name.split()[-1:] in (["attic"], ["basement"]) and s.type == "storage"
 
 
 def connect_levels(kb: KnowledgeBase, slots: list[Slot], entrance_types: list[str]) -> list[tuple[str, str]]:
