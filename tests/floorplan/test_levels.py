@@ -157,18 +157,18 @@ def test_overhang_counts_upper_floor_over_no_room_below():
     assert overhang_m2([ground, out]) == pytest.approx(8.0)
 
 
-def test_upper_storey_of_many_bedrooms_opens_onto_its_stair_hall():
-    """Four bedrooms upstairs open onto the stairwell, which is the storey's hall (a
-    landing beside the stair), not onto a landing added beside it; the flight still fits
-    (the house failed to lay out with every door on a bare stairwell before)."""
+def test_upper_storey_of_many_bedrooms_opens_off_a_landing():
+    """Four bedrooms upstairs open off a landing hallway the stair arrives on (or rises
+    in), not off a stair hall with a door on every wall (measured: laid out up to 24
+    times over, 9-15 s, and a farmhouse fell back to one storey); the flight still fits."""
     text = "a two-storey family house with four bedrooms upstairs"
     for seed in (0, 1, 2):
         house = generate(text, seed=seed)
         up = [r for r in house.rooms if r.level == 1]
         assert sum(r.type == "bedroom" for r in up) == 4
-        assert not [r for r in up if r.type == "hallway"]
-        stair = next(r for r in up if r.type == "stairwell")
-        assert sum(stair.id in d.rooms for d in house.doors) >= 4
+        landing = next(r for r in up if r.type == "hallway")
+        bedrooms = {r.id for r in up if r.type == "bedroom"}
+        assert bedrooms <= {x for d in house.doors if landing.id in d.rooms for x in d.rooms}
         assert [o for o in house.objects if o.category == "stairs"]
         assert reachable_rooms(house) == {r.id for r in house.rooms}
         assert evaluate_house(house).violations == []
@@ -178,7 +178,7 @@ def test_ground_floor_stairwell_is_its_hall_unless_a_hallway_is_asked_for():
     """A house of two storeys gets no hallway of the program's beside its stair hall; a
     hallway the text names stays."""
     plain = generate("a two-storey family house with four bedrooms upstairs", 0)
-    assert not [r for r in plain.rooms if r.type == "hallway"]
+    assert not [r for r in plain.rooms if r.type == "hallway" and r.level == 0]  # upstairs: a landing
     named = generate("a two-storey family house with a long hallway, a kitchen, a living room and three bedrooms upstairs", 0)
     assert [r for r in named.rooms if r.type == "hallway" and r.level == 0]
 
@@ -436,7 +436,7 @@ def test_a_flight_across_the_whole_well_between_its_doors_is_refused():
     that way); with a passage beside the flight, or every door on one side, it is kept."""
     from shapely.geometry import LineString, box
 
-    from anyhome.floorplan.levels import _doors_joined
+    from anyhome.floorplan.stairs import doors_joined as _doors_joined
 
     flight = box(-9.1, 2.5, -6.5, 4.25)
     west, east = LineString([(-10.5, 3.05), (-10.5, 4.05)]), LineString([(-5.2, 3.15), (-5.2, 4.05)])

@@ -62,3 +62,39 @@ def test_a_narrow_box_is_a_straight_flight():
 def test_no_rise_is_refused():
     with pytest.raises(ValueError):
         dogleg(0.0)
+
+
+def test_a_stairwell_holds_its_stair_only_where_its_doors_leave_it_clear():
+    from anyhome.floorplan.stairs import stair_fits
+
+    rect = (0.0, 0.0, 3.6, 2.4)  # a 2.6 m stair box and the 1 m strip at its foot
+    end_door = ((3.6, 0.2), (3.6, 1.1))  # in the end wall at the foot: clear
+    assert stair_fits(rect, [end_door], 2.6)
+    mid_door = ((1.3, 0.0), (2.3, 0.0))  # in a long wall, over the stair, 0.65 m beside it
+    assert not stair_fits(rect, [end_door, mid_door], 2.6)
+    strip_door = ((2.65, 0.0), (3.55, 0.0))  # in a long wall, in the strip: clear
+    assert stair_fits(rect, [end_door, strip_door], 2.6)
+    assert stair_fits((0.0, 0.0, 2.4, 3.6), [((0.2, 3.6), (1.1, 3.6))], 2.6)  # turned a quarter
+    assert not stair_fits(rect, [], 3.0)  # too short for the box and its strip
+
+
+def test_stairwell_doors_are_placed_where_the_stair_fits():
+    import numpy as np
+
+    from anyhome.floorplan import solve_floorplan
+    from anyhome.floorplan.stairs import stair_fits
+    from anyhome.plan.spec import HouseSpec, RoomSpec
+
+    rooms = [RoomSpec(id="stairwell", name="stairwell", type="stairwell", area_m2=8.5),
+             RoomSpec(id="dining_room", name="dining room", type="dining_room", area_m2=14.0),
+             RoomSpec(id="kitchen", name="kitchen", type="kitchen", area_m2=11.0)]
+    spec = HouseSpec(prompt="stairwell", rooms=rooms, connections=[("stairwell", "dining_room"), ("dining_room", "kitchen"),
+                                               ("stairwell", "outside")])
+    fits = 0
+    for seed in range(6):
+        plan = solve_floorplan(spec, np.random.default_rng(seed), min_length_m={"stairwell": 3.7}, stair_m={"stairwell": 2.6})
+        well = plan.room("stairwell")
+        xs, ys = [p[0] for p in well.polygon], [p[1] for p in well.polygon]
+        rect = (min(xs), min(ys), max(xs) - min(xs), max(ys) - min(ys))
+        fits += len(well.polygon) == 4 and stair_fits(rect, [d.segment for d in plan.doors if "stairwell" in d.rooms], 2.6)
+    assert fits >= 5  # without stair_m: 1 of 4 ground floors of a townhouse, measured

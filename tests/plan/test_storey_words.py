@@ -155,3 +155,14 @@ def test_a_finished_basement_named_for_its_rooms_is_no_room_of_its_own():
     assert levels["laundry_room"] == levels["rec_room"] == -1
     assert levels["living_room"] == levels["kitchen"] == 0
     assert not any("basement" in k for k in levels)
+
+
+def test_an_upper_storey_of_many_rooms_opens_off_a_landing():
+    spec = plan_house("A two-storey farmhouse with a kitchen and a living room downstairs, and four bedrooms "
+                      "and a bathroom upstairs.", np.random.default_rng(0))
+    ups = {r.id for r in spec.rooms if r.level == 1}
+    landing = next(r for r in spec.rooms if r.level == 1 and r.name == "landing")
+    stair = next(r.id for r in spec.rooms if r.level == 1 and "stair" in r.id)
+    assert landing.type == "hallway"
+    assert [c for c in spec.connections if stair in c] == [(stair, landing.id)]
+    assert sum(landing.id in c for c in spec.connections) == len(ups) - 1  # every other room off it

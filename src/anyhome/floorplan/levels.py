@@ -46,6 +46,7 @@ from contextvars import ContextVar
 import numpy as np
 
 from anyhome.errors import FloorplanError
+from anyhome.floorplan.doors import DOOR_WIDTH_M, ENTRANCE_WIDTH_M
 from anyhome.floorplan.grid import SNAP_M
 from anyhome.floorplan.merge import merge_open_plan
 from anyhome.floorplan.options import FloorplanOptions
@@ -58,8 +59,11 @@ from anyhome.floorplan.stairs import (
     STAIR_WIDTH_M,
     STRIP_M,
     dogleg,
+    doors_joined,
+    flight_rect,
     is_dogleg_box,
 )
+from anyhome.floorplan.wells import wells_trimmed
 from anyhome.geometry import opening_zone
 from anyhome.house import Door, Floorplan, HouseObject, Level, Room, Window
 from anyhome.plan.spec import HouseSpec, RoomSpec
@@ -149,6 +153,8 @@ def stairwell_min_m(spec: HouseSpec, k: int) -> tuple[float, float]:
     :data:`~anyhome.floorplan.stairs.HALL_DOOR_M` per door. (How wide it is beyond the
     stair, for a landing beside it, is the planned area's say.)"""
     extra_m = HALL_DOOR_M * max(0, _stair_doors(spec, k) - HALL_DOORS)
+    if k == 0 and any(stair_room(spec, 0) in c and "outside" in c for c in spec.connections):
+        extra_m += ENTRANCE_WIDTH_M - DOOR_WIDTH_M  # the front door, wider, in the strip's long wall
     return (round(flight_length_m(storey_heights_m(spec), k) + STRIP_M + extra_m, 4), STAIR_WIDTH_M)
 
 
@@ -157,7 +163,7 @@ def stair_hall_width_m(spec: HouseSpec, k: int) -> float:
     hall (three doors or more) holds its stair and a landing beside it
     (:data:`~anyhome.floorplan.stairs.PASSAGE_M`) that the doors across from the stair
     open onto; a plain stairwell, the stair's width. (A hall narrower than that comes out
-    with its flight cutting it in two and is refused, :func:`_doors_joined`: measured, a
+    with its flight cutting it in two and is refused, :func:`~anyhome.floorplan.stairs.doors_joined`: measured, a
     townhouse's five-door ground floor was laid out 40 times over, 10-20 s.)"""
     return round(STAIR_WIDTH_M + PASSAGE_M, 4) if _stair_doors(spec, k) >= 3 else STAIR_WIDTH_M
 
@@ -241,7 +247,9 @@ def _stacked(spec: HouseSpec, numbers: list[int], rng: np.random.Generator, opti
     for k in sorted((n for n in numbers if n < 0), reverse=True):
         elevation[k] = elevation[k + 1] - heights[k]
     levels = [Level(level=k, elevation_m=round(elevation[k], 4), height_m=round(heights[k], 4)) for k in numbers]
-    return stairs_opened(_stairs_recorded(_under_above(_joined(spec, plans, levels), through_rooms(spec))), opts)
+    plan = _stairs_recorded(_under_above(_joined(spec, plans, levels), through_rooms(spec)))
+    plan = wells_trimmed(plan, _stairs_place(plan)[1], {k: stair_room(spec, k) for k in numbers}, opts)
+    return stairs_opened(plan, opts)
 
 
 def _stairs_recorded(plan: Floorplan) -> Floorplan:
@@ -353,12 +361,31 @@ def _merged_well(plan: Floorplan, k: int, room: Room, well: Room, opts: Floorpla
     if well.height > room.height:  # the storey stays as high as its tallest room
         opened = opened.model_copy(update={"rooms": [
             r.model_copy(update={"height": well.height}) if r.id == room.id else r for r in opened.rooms]})
+    if _door_beside_flight(opened, room.id, k):
+        return None
     levels = {r.id: r.level for r in opened.rooms}
     for o in stairs_objects(opened):  # at the place recorded before the merge  # the flight from storey k stands in the room, the one from below arrives in it
         if (levels[o.room] == k and o.room != room.id) or (
                 levels[o.room] == k - 1 and (link := stair_link(opened, o)) is not None and link[1] != room.id):
             return None
     return opened
+
+
+def _door_beside_flight(plan: Floorplan, room_id: str, k: int) -> bool:
+    """Whether a door of ``room_id`` (storey ``k``, the stair rising in it) opens beside
+    the stair, between a flight and the room's walls, where the passage it leads along
+    may be furnished shut (measured: a den's armchair cut a garage off)."""
+    from shapely.geometry import Polygon, box
+
+    room = plan.room(room_id)
+    foot, ya, yaw = _stairs_place(plan)
+    poly = Polygon(room.polygon)
+    x0, _, x1, _ = poly.bounds
+    d = dogleg(max(lv.height_m for lv in plan.levels if lv.level == k))
+    flight = flight_rect(foot, ya, d.length_m, STAIR_WIDTH_M, yaw)
+    strip = box(foot, ya, foot + STRIP_M, ya + STAIR_WIDTH_M) if yaw == 0.0 else box(foot - STRIP_M, ya, foot, ya + STAIR_WIDTH_M)
+    beside = poly.intersection(box(x0, ya, x1, ya + STAIR_WIDTH_M)).difference(flight.union(strip))
+    return any(opening_zone(dr.segment).intersection(beside).area > 0.05 for dr in plan.doors if room_id in dr.rooms)
 
 
 class _Unsolvable(FloorplanError):
@@ -525,7 +552,8 @@ def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options: Fl
     wide_m = short_m if narrow is not None and k in narrow else stair_hall_width_m(spec, k)
     for _ in range(attempts):
         try:
-            plan = solve_floorplan(sub, rng, options, min_length_m={stair: long_m}, min_side_m={stair: wide_m})
+            plan = solve_floorplan(sub, rng, options, min_length_m={stair: long_m}, min_side_m={stair: wide_m},
+                                   stair_m={stair: flight_length_m(heights, k)})
         except FloorplanError as e:  # its own bounded tries all failed: trying again rarely helps
             if wide_m <= short_m:
                 raise _Unsolvable(f"could not lay out level {k} ({e})") from None
@@ -684,36 +712,11 @@ def stack_box(plans: list[tuple[int, Floorplan]], heights: dict[int, float]) -> 
     door_segments = {k: [LineString(dr.segment) for dr in doors] for k, _, doors in wells}
     for ya in (y0, y1 - width):
         for foot, yaw in tries:
-            if all(not any(_flight_rect(foot, ya, lengths[k], width, yaw).buffer(STAIR_CLEAR_M).intersects(z) for z in zones[k])
-                   and _doors_joined(rects[k], _flight_rect(foot, ya, lengths[k], width, yaw), door_segments[k])
+            if all(not any(flight_rect(foot, ya, lengths[k], width, yaw).buffer(STAIR_CLEAR_M).intersects(z) for z in zones[k])
+                   and doors_joined(rects[k], flight_rect(foot, ya, lengths[k], width, yaw), door_segments[k])
                    for k in rects):
                 return (round(foot, 6), round(ya, 6), yaw)
     return None
-
-
-def _doors_joined(rect: tuple[float, float, float, float], flight, doors: list) -> bool:
-    """Whether one walkable piece of the stairwell ``rect`` (x0, y0, w, h) round the
-    flight's box ``flight`` reaches every door of it (``doors``: their segments) and the
-    strip at the stair's foot: a flight across the whole well would cut it in two."""
-    from shapely.geometry import box
-
-    from anyhome.geometry import AGENT_RADIUS_M
-
-    x0, y0, w, h = rect
-    free = box(x0, y0, x0 + w, y0 + h).difference(flight).buffer(-AGENT_RADIUS_M)
-    pieces = [g for g in getattr(free, "geoms", [free]) if not g.is_empty]
-    if len(pieces) <= 1:
-        return bool(pieces) or not doors
-    near = AGENT_RADIUS_M + 0.1
-    reached = [{i for i, g in enumerate(pieces) if g.distance(d) <= near} for d in doors]
-    return bool(reached) and bool(set.intersection(*reached))
-
-
-def _flight_rect(foot: float, y0: float, length: float, width: float, yaw: float):
-    """The box of a flight ``length`` long whose foot end is at ``foot`` (see :func:`stack_box`)."""
-    from shapely.geometry import box
-
-    return box(foot - length, y0, foot, y0 + width) if yaw == 0.0 else box(foot, y0, foot + length, y0 + width)
 
 
 def _is_stair(room: Room | RoomSpec) -> bool:
@@ -748,7 +751,7 @@ def stairs_objects(plan: Floorplan) -> list[HouseObject]:
     for lo, hi in zip(numbers, numbers[1:]):
         low = _stairwell(plan, lo)
         d = dogleg(elev[hi] - elev[lo])
-        xa, _, xb, _ = _flight_rect(foot, ya, d.length_m, width, yaw).bounds
+        xa, _, xb, _ = flight_rect(foot, ya, d.length_m, width, yaw).bounds
         out.append(HouseObject(
             id=f"{low.id}-stairs", room=low.id, name="stairs", category=STAIRS_CATEGORY,
             description=(f"a dog-leg stair from level {lo} up to level {hi}: {d.risers} risers of "

@@ -278,6 +278,10 @@ class FloorplanOptions:
     """Scale of the random score noise between equally good door positions."""
     door_entrance_window_penalty: float = _opt(100.0, 0.0, 1_000_000.0)
     """Score of an entrance door that leaves its habitable room no wall for a window."""
+    door_stair_penalty: float = _opt(50.0, 0.0, 1_000_000.0)
+    """Score of a stairwell's door that leaves no place for its stair (a townhouse's ground floor took 10 tries without it)."""
+    well_trim_min_m: float = _opt(0.3, 0.0, 10.0)
+    """Narrowest band of a stairwell beyond its stair given to the room across (floorplan.wells), m."""
     open_min_width_m: float = _opt(1.2, 0.5, 20.0)
     """Narrowest wall opening (kind "open"); below this an open pair gets a plain door."""
     open_max_width_m: float = _opt(1.8, 0.5, 20.0)

@@ -42,6 +42,9 @@ class Program:
     min_length_m: tuple[float, ...] = ()
     """Per room: the shortest long side it may have (``solve_floorplan(min_length_m=)``:
     a stairwell holds its stair and the floor at the stair's foot), 0 for none."""
+    stair_m: tuple[float, ...] = ()
+    """Per room: the length of the stair box it holds (``solve_floorplan(stair_m=)``: a
+    stairwell's doors are placed where the stair leaves them clear), 0 for none."""
 
     @classmethod
     def from_spec(cls, spec: HouseSpec, options: FloorplanOptions, kb: KnowledgeBase | None = None) -> Program:

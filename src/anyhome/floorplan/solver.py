@@ -73,6 +73,7 @@ def solve_floorplan(
     fixed: Mapping[str, tuple[float, float, float, float]] | None = None,
     min_length_m: Mapping[str, float] | None = None,
     min_side_m: Mapping[str, float] | None = None,
+    stair_m: Mapping[str, float] | None = None,
 ) -> Floorplan:
     """Lay out ``spec``'s rooms, doors and windows.
 
@@ -92,6 +93,9 @@ def solve_floorplan(
         stair and the floor at the stair's foot)
     min_side_m : room id -> the narrowest side that room may have, where more than its
         type's norm (a stair hall: its stair and a landing beside it)
+    stair_m : room id -> the length of the dog-leg stair box that room holds (a
+        stairwell): its doors are placed, where they can be, where the stair and the
+        strip at its foot stay clear of them (:func:`~anyhome.floorplan.stairs.stair_fits`)
 
     Raises
     ------
@@ -110,6 +114,8 @@ def solve_floorplan(
     if min_side_m:
         prog = dataclasses.replace(prog, min_width_m=tuple(
             max(w, float(min_side_m.get(i, 0.0))) for i, w in zip(prog.ids, prog.min_width_m or (0.0,) * prog.n)))
+    if stair_m:
+        prog = dataclasses.replace(prog, stair_m=tuple(float(stair_m.get(i, 0.0)) for i in prog.ids))
     _precheck(prog, opts)
     if footprint is not None or fixed:
         from anyhome.floorplan.fixed import solve_in_footprint
@@ -221,7 +227,7 @@ def _attempt(prog: Program, rng: np.random.Generator, opts: FloorplanOptions, gr
     if _has_courtyard(owner):
         return "the footprint enclosed an empty courtyard"
     runs = wall_runs(owner)
-    doors = _place_doors(prog, runs, grid.cell_m, rng)
+    doors = _place_doors(prog, runs, grid.cell_m, rng, owner)
     if isinstance(doors, str):
         return doors
     windows = _place_windows(prog, runs, doors, grid.cell_m)
@@ -242,7 +248,7 @@ def _constructed_attempt(prog: Program, owner: np.ndarray | str, rng: np.random.
     if reason:
         return reason
     runs = wall_runs(owner)
-    doors = _place_doors(prog, runs, cell_m, rng)
+    doors = _place_doors(prog, runs, cell_m, rng, owner)
     if isinstance(doors, str):
         return doors
     windows = _place_windows(prog, runs, doors, cell_m)
@@ -334,20 +340,55 @@ def _check_shapes(prog: Program, owner: np.ndarray, cell_m: float, opts: Floorpl
     return ""
 
 
-def _place_doors(prog: Program, runs: list[Run], cell_m: float, rng) -> list[PlacedDoor] | str:
+def _place_doors(prog: Program, runs: list[Run], cell_m: float, rng, owner: np.ndarray | None = None) -> list[PlacedDoor] | str:
     """Doors for every link in order (entrances last), plus doors that make all reachable."""
     placed: dict[int, PlacedDoor] = {}
     order = sorted(range(len(prog.links)), key=lambda i: prog.links[i][1] == OUTSIDE)
     for i in order:
         a, b = prog.links[i]
         kind = door_kind(prog.types[a], prog.types[b] if b != OUTSIDE else None)
-        penalty = _entrance_penalty(prog, a, b, runs, placed, cell_m)
-        door = place_door((a, b), kind, runs, cell_m, list(placed.values()), rng, prog.options, penalty)
+        stair = _stair_penalty(prog, a, b, owner, placed, cell_m)
+        penalty = _entrance_penalty(prog, a, b, runs, placed, cell_m) or stair
+        opts = prog.options if stair is None else _stair_door_options(prog.options)  # a door may stand in the strip at the stair's foot
+        door = place_door((a, b), kind, runs, cell_m, list(placed.values()), rng, opts, penalty)
         if door is None:
             return f"connection {prog.label(a)}-{prog.label(b)} has no shared wall long enough"
         placed[i] = door
     doors = [placed[i] for i in range(len(prog.links))]
     return _connect_unreachable(prog, runs, cell_m, doors, rng)
+
+
+def _stair_door_options(opts: FloorplanOptions) -> FloorplanOptions:
+    """``opts`` for a stairwell's doors: as near a corner as
+    :data:`~anyhome.floorplan.stairs.DOOR_CORNER_M` (a door in a long wall fits the
+    strip of floor at the stair's foot)."""
+    from anyhome.floorplan.stairs import DOOR_CORNER_M
+
+    return replace(opts, door_end_margin_m=min(opts.door_end_margin_m, DOOR_CORNER_M))
+
+
+def _stair_penalty(prog, a, b, owner, placed, cell_m):
+    """For a door of a stairwell (``Program.stair_m``): penalise a door that, with the
+    stairwell's doors placed before it, leaves no place for its stair
+    (:func:`~anyhome.floorplan.stairs.stair_fits`); None: no stairwell, or not a rectangle."""
+    if owner is None or not prog.stair_m:
+        return None
+    well = next((k for k in (a, b) if k != OUTSIDE and prog.stair_m[k] > 0), None)
+    if well is None:
+        return None
+    xs, ys = np.nonzero(owner == well)
+    if not len(xs) or len(xs) != (xs.max() - xs.min() + 1) * (ys.max() - ys.min() + 1):
+        return None
+    from anyhome.floorplan.stairs import stair_fits
+
+    rect = ((xs.min() - 1) * cell_m, (ys.min() - 1) * cell_m, (xs.max() - xs.min() + 1) * cell_m, (ys.max() - ys.min() + 1) * cell_m)
+    own = [d.opening.segment() for d in placed.values() if well in d.rooms]
+    length, cost = prog.stair_m[well], prog.options.door_stair_penalty
+
+    def penalty(opening) -> float:
+        return 0.0 if stair_fits(rect, [*own, opening.segment()], length) else cost
+
+    return penalty
 
 
 def _entrance_penalty(prog, a, b, runs, placed, cell_m):

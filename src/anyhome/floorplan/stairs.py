@@ -113,3 +113,59 @@ def is_dogleg_box(length_m: float, width_m: float) -> bool:
     rather than a straight flight."""
     short, long_ = sorted((length_m, width_m))
     return short >= 2 * FLIGHT_WIDTH_M - 1e-6 and long_ <= 2.5 * short
+
+
+def flight_rect(foot: float, y0: float, length: float, width: float, yaw: float):
+    """The box of a flight ``length`` long whose foot end is at ``foot`` (x; its long side
+    runs east-west), on the strip ``y0`` to ``y0`` + ``width``; ``yaw`` 0: foot toward +x,
+    pi: toward -x."""
+    from shapely.geometry import box
+
+    return box(foot - length, y0, foot, y0 + width) if yaw == 0.0 else box(foot, y0, foot + length, y0 + width)
+
+
+def doors_joined(rect: tuple[float, float, float, float], flight, doors: list) -> bool:
+    """Whether one walkable piece of the stairwell ``rect`` (x0, y0, w, h) round the
+    flight's box ``flight`` reaches every door of it (``doors``: their segments, shapely
+    lines) and the strip at the stair's foot: a flight across the whole well would cut it
+    in two."""
+    from shapely.geometry import box
+
+    from anyhome.geometry import AGENT_RADIUS_M
+
+    x0, y0, w, h = rect
+    free = box(x0, y0, x0 + w, y0 + h).difference(flight).buffer(-AGENT_RADIUS_M)
+    pieces = [g for g in getattr(free, "geoms", [free]) if not g.is_empty]
+    if len(pieces) <= 1:
+        return bool(pieces) or not doors
+    near = AGENT_RADIUS_M + 0.1
+    reached = [{i for i, g in enumerate(pieces) if g.distance(d) <= near} for d in doors]
+    return bool(reached) and bool(set.intersection(*reached))
+
+
+def stair_fits(rect: tuple[float, float, float, float], doors: list, length_m: float) -> bool:
+    """Whether a stairwell ``rect`` (x0, y0, w, h) holds a dog-leg stair box ``length_m``
+    long (along its longer side) with the strip at its foot, clear of its ``doors``
+    (segments ((x, y), (x, y)); each with its swing, :data:`STAIR_CLEAR_M` apart) and
+    leaving them joined (:func:`doors_joined`): the one-storey form of
+    :func:`anyhome.floorplan.levels.stack_box`, asked while its doors are placed."""
+    from shapely.geometry import LineString
+
+    from anyhome.geometry import opening_zone
+
+    x0, y0, w, h = rect
+    if w < h:  # turned a quarter so the long side runs along x
+        rect = (y0, x0, h, w)
+        doors = [((a[1], a[0]), (b[1], b[0])) for a, b in doors]
+        x0, y0, w, h = rect
+    if w < length_m + STRIP_M - 1e-6 or h < STAIR_WIDTH_M - 1e-6:
+        return False
+    zones = [opening_zone(d).union(LineString(d)) for d in doors]
+    lines = [LineString(d) for d in doors]
+    for ya in (y0, y0 + h - STAIR_WIDTH_M):
+        for foot, yaw in ((x0 + length_m, 0.0), (x0 + w - length_m, math.pi)):  # the box against an end wall
+            box_ = flight_rect(foot, ya, length_m, STAIR_WIDTH_M, yaw)
+            clear = box_.buffer(STAIR_CLEAR_M)
+            if not any(clear.intersects(z) for z in zones) and doors_joined(rect, box_, lines):
+                return True
+    return False

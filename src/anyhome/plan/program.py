@@ -759,6 +759,30 @@ def _storey_room(s: Slot) -> bool:
     return s.name.split()[-1:] in (["attic"], ["basement"]) and s.type == "storage"
 
 
+LANDING_DOORS = 3
+"""Doors an upper storey's stairwell would have, from which the stair arrives on a
+landing hallway that the rooms open off (:func:`connect_levels`), as in a farmhouse's
+bedroom floor, not in a stair hall with a door on every wall (measured: a stair hall of
+five doors was laid out 24 times over and the house fell back to one storey, 9-15 s)."""
+LANDING_KEY = "landing"
+LANDING_WIDTH_M = 1.2
+LANDING_M_PER_DOOR = 0.95
+"""A landing is :data:`LANDING_WIDTH_M` wide and this long per door off it, and 0.6 m more."""
+
+
+def _landing(kb: KnowledgeBase, slots: list[Slot], level: int, doors: int) -> Slot:
+    """A landing hallway on storey ``level`` for ``doors`` doors, added to ``slots``."""
+    s = _slot_from_entry(kb, {"type": "hallway", "name": "landing", "key": LANDING_KEY})
+    area = round(max(_type_info(kb, "hallway")["min_area_m2"], LANDING_WIDTH_M * (LANDING_M_PER_DOOR * doors + 0.6)), 2)
+    s.area = s.drawn_area = area
+    s.area_range = (area, area)
+    s.level = level
+    taken = {x.id for x in slots}
+    s.id = next(i for i in ("landing", *(f"landing_{n}" for n in range(2, 99))) if i not in taken)
+    slots.append(s)
+    return s
+
+
 def connect_levels(kb: KnowledgeBase, slots: list[Slot], entrance_types: list[str]) -> list[tuple[str, str]]:
     """:func:`connect` per storey: the ground floor as a one-storey house (its stairwell a
     hub like a hallway), every other storey a tree rooted at its stairwell (no entrance).
@@ -772,7 +796,12 @@ def connect_levels(kb: KnowledgeBase, slots: list[Slot], entrance_types: list[st
             edges += connect(kb, on, entrance_types)
             continue
         stair = next(s for s in on if s.key == STAIRWELL_KEY)
-        edges += [e for e in connect(kb, [stair, *(s for s in on if s is not stair)], ["stairwell"]) if e[1] != "outside"]
+        tree = [e for e in connect(kb, [stair, *(s for s in on if s is not stair)], ["stairwell"]) if e[1] != "outside"]
+        if sum(stair.id in e for e in tree) >= LANDING_DOORS:
+            landing = _landing(kb, slots, k, sum(stair.id in e for e in tree))
+            tree = [e for e in connect(kb, [landing, *(s for s in on if s is not stair)], ["hallway"]) if e[1] != "outside"]
+            tree.append((stair.id, landing.id))
+        edges += tree
     for s in slots:
         if s.key == STAIRWELL_KEY:  # a stair hall as long as its doors need
             a = stairwell_area_m2(sum(s.id in e for e in edges))
@@ -863,7 +892,7 @@ def _least(kb: KnowledgeBase, s: Slot) -> float:
     (a booth, a cubicle)."""
     if s.area_from == "stated":  # "a 12 m2 bedroom" stays 12 m2
         return float(s.area_range[0])
-    if s.key == STAIRWELL_KEY:  # it holds its flight whatever the total
+    if s.key in (STAIRWELL_KEY, LANDING_KEY):  # it holds its flight (its doors) whatever the total
         return float(s.area_range[0])
     return float(max(min(float(_type_info(kb, s.type)["min_area_m2"]), s.area_range[0]), s.need))
 
@@ -872,7 +901,7 @@ def _most(kb: KnowledgeBase, s: Slot, sz: Sizing) -> float:
     """Largest area the room may grow to; circulation never grows to fill a total."""
     if s.area_from == "stated":
         return float(s.area_range[1])
-    if s.key == STAIRWELL_KEY:
+    if s.key in (STAIRWELL_KEY, LANDING_KEY):
         return float(s.area_range[0])
     if _type_info(kb, s.type).get("circulation"):
         return max(s.area, s.area_range[1])

@@ -1,0 +1,132 @@
+"""Stairwells trimmed to their stair: the floor a storey's solve left beside the stair goes
+to the room across the stairwell's long wall.
+
+A storey is laid out as a house of its own, and its stairwell comes out as wide as the
+slicing of its footprint left it (measured: 11-13 m2 for 8.5 m2 planned, a chalet's
+one-door stairwell 3.6 x 3.2 m beside a 1.75 m stair). Once the storeys are stacked and
+the stair's place is known (:func:`anyhome.floorplan.levels.stack_box`), the band of a
+stairwell beyond what its stair needs (the stair's width, the landing in front of doors in
+that long wall, :data:`~anyhome.floorplan.stairs.PASSAGE_M`, and the doors in its end
+walls) is given to the room whose wall spans that whole long wall, where the room stays a
+rectangle or an L within its aspect limit (its doors onto the stairwell move with the
+wall), or to the outside where that long wall is an outside wall (its doors and windows
+move with it).
+"""
+
+from __future__ import annotations
+
+import math
+
+from shapely.geometry import LineString, Polygon, box
+
+from anyhome.floorplan.grid import SNAP_M
+from anyhome.floorplan.options import FloorplanOptions
+from anyhome.floorplan.stairs import PASSAGE_M, STAIR_WIDTH_M
+from anyhome.house import Floorplan, Room
+
+
+def wells_trimmed(plan: Floorplan, ya: float, wells: dict[int, str], opts: FloorplanOptions) -> Floorplan:
+    """``plan`` with each stairwell of ``wells`` (storey -> room id; rectangles whose long
+    side runs east-west, their stair on the strip ``ya`` to ``ya`` + the stair's width)
+    trimmed on each long side to what its stair and doors need (see the module doc)."""
+    from anyhome.house import is_habitable
+
+    for k, well_id in wells.items():
+        for north in (True, False):
+            well = plan.room(well_id)
+            if len(well.polygon) != 4:
+                continue
+            xs, ys = [p[0] for p in well.polygon], [p[1] for p in well.polygon]
+            x0, x1, y0, y1 = min(xs), max(xs), min(ys), max(ys)
+            edge = y1 if north else y0
+            wall = LineString([(x0, edge), (x1, edge)])
+            doors = [d for d in plan.doors if well_id in d.rooms]
+            on_wall = [d for d in doors if _on(d.segment, wall)]
+            keep = STAIR_WIDTH_M + (PASSAGE_M if on_wall else 0.0)
+            in_ends = [p[1] for d in doors if abs(d.segment[0][0] - d.segment[1][0]) < 1e-6 for p in d.segment]
+            if north:  # the band from the stair (and the doors in the end walls) to the north wall
+                cut = _snap_out(max([ya + keep, *in_ends]), up=True)
+                band = box(x0, cut, x1, y1) if y1 - cut >= opts.well_trim_min_m - 1e-6 else None
+            else:
+                cut = _snap_out(min([ya + STAIR_WIDTH_M - keep, *in_ends]), up=False)
+                band = box(x0, y0, x1, cut) if cut - y0 >= opts.well_trim_min_m - 1e-6 else None
+            if band is None:
+                continue
+            other = _across(plan, k, well_id, wall)
+            if other is None and _outside(plan, k, well_id, wall):  # the band goes to the outside
+                plan = _moved_wall(plan, well, None, None, band, cut, edge, on_wall)
+                continue
+            if other is None:
+                continue
+            outline = _grown(other, band, opts.max_habitable_aspect_ratio if is_habitable(other.type) else opts.max_room_aspect_ratio)
+            if outline is not None:
+                plan = _moved_wall(plan, well, other, outline, band, cut, edge, on_wall)
+    return plan
+
+
+def _outside(plan: Floorplan, k: int, well_id: str, wall: LineString) -> bool:
+    """Whether ``wall`` touches no other room of storey ``k`` (it is an outside wall)."""
+    return not any(r.level == k and r.id != well_id and Polygon(r.polygon).exterior.intersection(wall).length > 1e-6
+                   for r in plan.rooms)
+
+
+def _snap_out(v: float, up: bool) -> float:
+    """``v`` on the 5 cm grid, rounded away from the stair (up: toward +y)."""
+    q = v / SNAP_M
+    return round((math.ceil(q - 1e-6) if up else math.floor(q + 1e-6)) * SNAP_M, 4)
+
+
+def _on(segment, wall: LineString) -> bool:
+    return bool(wall.buffer(1e-6).contains(LineString(segment)))
+
+
+def _across(plan: Floorplan, k: int, well_id: str, wall: LineString) -> Room | None:
+    """The room of storey ``k`` whose outline holds the whole of ``wall``, if any (not a
+    stairwell, not open to the sky)."""
+    for r in plan.rooms:
+        if r.level != k or r.id == well_id or r.open_air or "stair" in r.id.lower() or "stair" in r.name.lower():
+            continue
+        if Polygon(r.polygon).exterior.buffer(1e-6).contains(wall):
+            return r
+    return None
+
+
+def _grown(room: Room, band, most_aspect: float) -> list[tuple[float, float]] | None:
+    """``room``'s outline with ``band`` added, when a rectangle or an L within ``most_aspect``."""
+    from anyhome.floorplan.merge import l_aspect, union_outline
+
+    outline = union_outline(room.polygon, [(round(x, 4), round(y, 4)) for x, y in band.exterior.coords[:-1]])
+    if outline is None or l_aspect(outline) > most_aspect + 1e-9:
+        return None
+    return outline
+
+
+def _moved_wall(plan: Floorplan, well: Room, other: Room | None, outline, band, cut: float, edge: float,
+                on_wall: list) -> Floorplan:
+    """``plan`` with ``band`` of ``well`` given to ``other`` (``outline``; None: to the
+    outside): the doors on the wall at ``edge`` moved to the new wall at ``cut``; the
+    well's windows in the band given to ``other`` (to the outside: those in the moved wall
+    move with it, the others go)."""
+    xs, ys = [p[0] for p in well.polygon], [p[1] for p in well.polygon]
+    x0, x1 = min(xs), max(xs)
+    lo, hi = (min(ys), cut) if edge > cut else (cut, max(ys))
+    rect = [(x0, lo), (x1, lo), (x1, hi), (x0, hi)]
+    rooms = [r.model_copy(update={"polygon": rect}) if r.id == well.id
+             else r.model_copy(update={"polygon": outline}) if other is not None and r.id == other.id else r
+             for r in plan.rooms]
+    moved = {id(d) for d in on_wall}
+    doors = [d.model_copy(update={"segment": tuple((p[0], cut) for p in d.segment)}) if id(d) in moved else d
+             for d in plan.doors]
+    inside = band.buffer(1e-6)
+    wall = LineString([(x0, edge), (x1, edge)]).buffer(1e-6)
+    windows = []
+    for w in plan.windows:
+        if w.room == well.id and inside.contains(LineString(w.segment)):
+            if other is not None:
+                w = w.model_copy(update={"room": other.id})
+            elif wall.contains(LineString(w.segment)):
+                w = w.model_copy(update={"segment": tuple((p[0], cut) for p in w.segment)})
+            else:
+                continue
+        windows.append(w)
+    return plan.model_copy(update={"rooms": rooms, "doors": doors, "windows": windows})

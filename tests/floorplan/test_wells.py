@@ -1,0 +1,54 @@
+"""A stairwell wider than its stair gives the band beyond it to the room across (floorplan.wells)."""
+
+from __future__ import annotations
+
+from anyhome.floorplan.options import FloorplanOptions
+from anyhome.floorplan.wells import wells_trimmed
+from anyhome.house import Door, Floorplan, Level, Room, Window
+
+
+def _plan(door_on_shared_wall: bool) -> Floorplan:
+    well = Room(id="stairwell", name="stairwell", type="stairwell", polygon=[(0, 0), (3.6, 0), (3.6, 3.2), (0, 3.2)])
+    living = Room(id="living_room", name="living room", type="living_room",
+                  polygon=[(0, 3.2), (3.6, 3.2), (3.6, 7.2), (0, 7.2)])
+    doors = [Door(id="door-0", rooms=("stairwell", "outside"), segment=((3.6, 0.2), (3.6, 1.2)))]
+    if door_on_shared_wall:
+        doors.append(Door(id="door-1", rooms=("stairwell", "living_room"), segment=((2.65, 3.2), (3.55, 3.2))))
+    windows = [Window(id="win-0", room="living_room", segment=((0.0, 4.0), (0.0, 5.0)), height=1.2, sill=0.9)]
+    return Floorplan(rooms=[well, living], doors=doors, windows=windows, connections=[("stairwell", "outside")],
+                     levels=[Level(level=0, elevation_m=0.0, height_m=2.9), Level(level=1, elevation_m=2.9, height_m=2.9)])
+
+
+def test_the_band_beyond_the_stair_goes_to_the_room_across():
+    out = wells_trimmed(_plan(False), 0.0, {0: "stairwell"}, FloorplanOptions())  # the stair on y 0-1.75
+    ys = [p[1] for p in out.room("stairwell").polygon]
+    assert max(ys) == 1.75
+    living = out.room("living_room")
+    assert min(p[1] for p in living.polygon) == 1.75 and len(living.polygon) == 4
+
+
+def test_a_door_on_the_moved_wall_keeps_a_landing_and_moves_with_it():
+    out = wells_trimmed(_plan(True), 0.0, {0: "stairwell"}, FloorplanOptions())
+    top = max(p[1] for p in out.room("stairwell").polygon)
+    assert top == 2.65  # the stair's 1.75 m and a 0.9 m landing before the door
+    door = next(d for d in out.doors if d.id == "door-1")
+    assert {p[1] for p in door.segment} == {2.65}
+
+
+def test_no_room_across_the_whole_wall_leaves_the_stairwell_as_it_is():
+    plan = _plan(False)
+    short = plan.room("living_room").model_copy(update={"polygon": [(0, 3.2), (2.0, 3.2), (2.0, 7.2), (0, 7.2)]})
+    plan = plan.model_copy(update={"rooms": [plan.room("stairwell"), short]})
+    out = wells_trimmed(plan, 0.0, {0: "stairwell"}, FloorplanOptions())
+    assert out.room("stairwell").polygon == plan.room("stairwell").polygon
+
+
+def test_a_band_on_an_outside_wall_goes_to_the_outside_with_its_door():
+    plan = _plan(False)
+    well = plan.room("stairwell")
+    door = Door(id="door-0", rooms=("stairwell", "outside"), segment=((2.65, 3.2), (3.55, 3.2)))  # the front door
+    plan = plan.model_copy(update={"rooms": [well], "doors": [door], "connections": [("stairwell", "outside")],
+                                   "windows": []})
+    out = wells_trimmed(plan, 0.0, {0: "stairwell"}, FloorplanOptions())
+    assert max(p[1] for p in out.room("stairwell").polygon) == 2.65  # a landing before the door
+    assert {p[1] for p in out.doors[0].segment} == {2.65}
