@@ -385,6 +385,14 @@ ONE_ROOM_TOPS = [
 ]
 
 
+def _valid_storeys(text: str, seed: int):
+    """The house of ``text`` at ``seed``, checked valid with every room reachable, and its top storey."""
+    h = generate(text, seed)
+    assert reachable_rooms(h) == {r.id for r in h.rooms}
+    assert evaluate_house(h).violations == []
+    return h, max(h.level_numbers())
+
+
 @pytest.mark.parametrize("text", ONE_ROOM_TOPS)
 def test_stair_arrives_in_the_one_room_of_the_top_storey(text):
     """Seeds 0-2: a top storey of one room (a mezzanine bedroom, an attic bedroom) has no
@@ -394,10 +402,7 @@ def test_stair_arrives_in_the_one_room_of_the_top_storey(text):
     floor, and the house is valid with every room reachable."""
     opened = 0
     for seed in (0, 1, 2):
-        h = generate(text, seed)
-        assert reachable_rooms(h) == {r.id for r in h.rooms}
-        assert evaluate_house(h).violations == []
-        top = max(h.level_numbers())
+        h, top = _valid_storeys(text, seed)
         rooms = [r for r in h.rooms if r.level == top and any("stair" in m for m in r.merged)]
         if not rooms:
             assert any(r.type == "stairwell" for r in h.rooms if r.level == top)
@@ -461,10 +466,7 @@ def test_a_stairwell_opening_onto_one_living_room_becomes_an_open_stair_in_it(te
     room reachable."""
     opened = 0
     for seed in (0, 1, 2):
-        h = generate(text, seed)
-        assert reachable_rooms(h) == {r.id for r in h.rooms}
-        assert evaluate_house(h).violations == []
-        top = max(h.level_numbers())
+        h, top = _valid_storeys(text, seed)
         for r in h.rooms:
             if any("stair" in m for m in r.merged) and r.level < top:
                 assert r.type in ("living_room", "dining_room", "hall"), r.type

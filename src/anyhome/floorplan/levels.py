@@ -62,11 +62,12 @@ from anyhome.floorplan.stairs import (
     doors_joined,
     flight_rect,
     is_dogleg_box,
+    is_stairwell,
 )
 from anyhome.floorplan.wells import wells_trimmed
 from anyhome.geometry import opening_zone
 from anyhome.house import Door, Floorplan, HouseObject, Level, Room, Window
-from anyhome.plan.spec import HouseSpec, RoomSpec
+from anyhome.plan.spec import HouseSpec
 
 SLAB_M = 0.2
 """Floor structure between a storey's ceiling and the next storey's floor."""
@@ -76,7 +77,7 @@ STAIRS_CATEGORY = "stairs"
 def stair_room(spec: HouseSpec, level: int) -> str:
     """The id of the stairwell of ``level``: its room named or id'd like a stair."""
     for r in spec.rooms:
-        if r.level == level and ("stair" in r.id.lower() or "stair" in r.name.lower()):
+        if r.level == level and is_stairwell(r):
             return r.id
     raise FloorplanError(f"level {level} has no stairwell room (a room named 'stairwell')")
 
@@ -127,7 +128,7 @@ def through_rooms(spec: HouseSpec) -> set[str]:
     laid out beside them, not over them, and their ceiling stays under its ceiling."""
     if _AS_ORDINARY.get():
         return set()
-    return _through_ids((r.id, r.level, r.height_m, _is_stair(r)) for r in spec.rooms)
+    return _through_ids((r.id, r.level, r.height_m, is_stairwell(r)) for r in spec.rooms)
 
 
 def storey_heights_m(spec: HouseSpec) -> dict[int, float]:
@@ -310,7 +311,7 @@ def _stair_opened(plan: Floorplan, k: int, top: int, opts: FloorplanOptions) -> 
     from anyhome.floorplan.merge import open_plan_data
     from anyhome.house import is_habitable
 
-    well = next((r for r in plan.rooms if r.level == k and _is_stair(r)), None)
+    well = next((r for r in plan.rooms if r.level == k and is_stairwell(r)), None)
     if well is None or well.merged:
         return plan
     doors = [d for d in plan.doors if well.id in d.rooms]
@@ -320,7 +321,7 @@ def _stair_opened(plan: Floorplan, k: int, top: int, opts: FloorplanOptions) -> 
     beside = [r for r in plan.rooms if r.level == k and r not in through and r.id != well.id
               and _shared_wall_m(r, well) >= opts.shared_wall_min_m]
     for room in [*sorted(through, key=lambda r: not is_habitable(r.type)), *beside]:
-        if room.open_air or room.merged or _is_stair(room):
+        if room.open_air or room.merged or is_stairwell(room):
             continue
         others = [r for r in through if r.id != room.id]  # the rooms the stairwell's other door led to
         if k == top and is_habitable(room.type) and not any(
@@ -381,8 +382,8 @@ def _door_beside_flight(plan: Floorplan, room_id: str, k: int) -> bool:
     foot, ya, yaw = _stairs_place(plan)
     poly = Polygon(room.polygon)
     x0, _, x1, _ = poly.bounds
-    d = dogleg(max(lv.height_m for lv in plan.levels if lv.level == k))
-    flight = flight_rect(foot, ya, d.length_m, STAIR_WIDTH_M, yaw)
+    length_m = dogleg(next(lv.height_m for lv in plan.levels if lv.level == k)).length_m  # the flight rising from it
+    flight = flight_rect(foot, ya, length_m, STAIR_WIDTH_M, yaw)
     strip = box(foot, ya, foot + STRIP_M, ya + STAIR_WIDTH_M) if yaw == 0.0 else box(foot - STRIP_M, ya, foot, ya + STAIR_WIDTH_M)
     beside = poly.intersection(box(x0, ya, x1, ya + STAIR_WIDTH_M)).difference(flight.union(strip))
     return any(opening_zone(dr.segment).intersection(beside).area > 0.05 for dr in plan.doors if room_id in dr.rooms)
@@ -499,7 +500,7 @@ def overhang_m2(rooms: Iterable) -> float:
     rooms = list(rooms)
     through: set[str] = set()
     if all(hasattr(r, "id") and hasattr(r, "name") and hasattr(r, "height") for r in rooms):
-        through = _through_ids((r.id, getattr(r, "level", 0) or 0, r.height, _is_stair(r)) for r in rooms)
+        through = _through_ids((r.id, getattr(r, "level", 0) or 0, r.height, is_stairwell(r)) for r in rooms)
     by_level: dict[int, list] = {}
     holding: dict[int, list] = {}
     for r in rooms:
@@ -673,7 +674,7 @@ def _stairwells(plans: list[tuple[int, Floorplan]]) -> list[tuple[int, Room, lis
     room of that storey named like a stair, as :func:`stair_room`) with its doors."""
     out = []
     for k, plan in plans:
-        r = next((r for r in plan.rooms if _is_stair(r) and (r.level == k or not any(x.level for x in plan.rooms))), None)
+        r = next((r for r in plan.rooms if is_stairwell(r) and (r.level == k or not any(x.level for x in plan.rooms))), None)
         if r is not None:
             out.append((k, r, [dr for dr in plan.doors if r.id in dr.rooms]))
     return out
@@ -717,10 +718,6 @@ def stack_box(plans: list[tuple[int, Floorplan]], heights: dict[int, float]) -> 
                    for k in rects):
                 return (round(foot, 6), round(ya, 6), yaw)
     return None
-
-
-def _is_stair(room: Room | RoomSpec) -> bool:
-    return "stair" in room.id.lower() or "stair" in room.name.lower()
 
 
 def _joined(spec: HouseSpec, plans: dict[int, Floorplan], levels: list[Level]) -> Floorplan:
@@ -794,7 +791,7 @@ def _stairwell(plan: Floorplan, level: int) -> Room:
     """The room of storey ``level`` the stairs stand in: its stairwell, or the room a
     stairwell was merged into (:func:`stairs_opened`)."""
     for r in plan.rooms:
-        if r.level == level and (_is_stair(r) or any("stair" in m.lower() for m in r.merged)):
+        if r.level == level and (is_stairwell(r) or any("stair" in m.lower() for m in r.merged)):
             return r
     raise FloorplanError(f"level {level} has no stairwell room")
 

@@ -115,6 +115,12 @@ def is_dogleg_box(length_m: float, width_m: float) -> bool:
     return short >= 2 * FLIGHT_WIDTH_M - 1e-6 and long_ <= 2.5 * short
 
 
+def is_stairwell(room) -> bool:
+    """Whether ``room`` (anything with an ``id`` and a ``name``: a planned or laid-out
+    room) is a stairwell: its id or name says stair."""
+    return "stair" in room.id.lower() or "stair" in room.name.lower()
+
+
 def flight_rect(foot: float, y0: float, length: float, width: float, yaw: float):
     """The box of a flight ``length`` long whose foot end is at ``foot`` (x; its long side
     runs east-west), on the strip ``y0`` to ``y0`` + ``width``; ``yaw`` 0: foot toward +x,

@@ -21,7 +21,7 @@ from shapely.geometry import LineString, Polygon, box
 
 from anyhome.floorplan.grid import SNAP_M
 from anyhome.floorplan.options import FloorplanOptions
-from anyhome.floorplan.stairs import PASSAGE_M, STAIR_WIDTH_M
+from anyhome.floorplan.stairs import PASSAGE_M, STAIR_WIDTH_M, is_stairwell
 from anyhome.house import Floorplan, Room
 
 
@@ -84,7 +84,7 @@ def _across(plan: Floorplan, k: int, well_id: str, wall: LineString) -> Room | N
     """The room of storey ``k`` whose outline holds the whole of ``wall``, if any (not a
     stairwell, not open to the sky)."""
     for r in plan.rooms:
-        if r.level != k or r.id == well_id or r.open_air or "stair" in r.id.lower() or "stair" in r.name.lower():
+        if r.level != k or r.id == well_id or r.open_air or is_stairwell(r):
             continue
         if Polygon(r.polygon).exterior.buffer(1e-6).contains(wall):
             return r

@@ -26,8 +26,7 @@ from anyhome.plan.kb import KnowledgeBase
 from anyhome.plan.kbview import resolve
 from anyhome.plan.parse import Mention, Parsed, parse, plural
 from anyhome.plan.program import (
-    LANDING_KEY,
-    STAIRWELL_KEY,
+    HELD_KEYS,
     Sizing,
     Slot,
     choose_program,
@@ -130,7 +129,7 @@ class OfflinePlanner:
         connections = connect_levels(kb, slots, prog.get("entrance", []))
         fit_areas(kb, slots, sz)
         for s in slots:  # a stairwell holds its flight, a landing its doors, whatever the total
-            if s.key in (STAIRWELL_KEY, LANDING_KEY):
+            if s.key in HELD_KEYS:
                 s.area = s.area_range[0]
         named = kb.raw("programs")["programs"].get(asked_program or "", prog)  # "a tiny cabin" stays a home
         building = named.get("building") or (slots[0].type.replace("_", " ") if program is None else "home")
@@ -205,7 +204,7 @@ def calibrate_total(kb: KnowledgeBase, spec: HouseSpec, slots: list[Slot], band:
     closest is kept, and a scaled plan the solver cannot lay out is never kept."""
     lo, hi = band
     best, best_err = spec, float("inf")
-    keep = {s.id for s in slots if s.area_from == "stated" or s.key in (STAIRWELL_KEY, LANDING_KEY)}
+    keep = {s.id for s in slots if s.area_from == "stated" or s.key in HELD_KEYS}
     types = kb.rooms.types
     for _ in range(CALIBRATION_ROUNDS):
         built = [built_area_m2(spec, rng, floorplan) for _ in range(CALIBRATION_PROBES)]

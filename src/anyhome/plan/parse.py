@@ -686,8 +686,8 @@ _TIERS = re.compile(
 _TIER_OF = {"lowest": "low", "lower": "low", "bottom": "low", "middle": "mid", "main": "mid", "entry": "mid",
             "half a flight up": "mid", "half a level up": "mid", "upper": "high", "top": "high"}
 _ENTRANCE_WORDS = re.compile(r"\b(?:entry|entrance|foyer|front door|lobby|vestibule)\b")
-_SOME_STOREYS = {"duplex": 2, "triplex": 3, "split": 2}
-"""Building words that give a number of storeys ("a duplex apartment", "a split-level home")."""
+_SOME_STOREYS = {"duplex": 2, "triplex": 3}
+"""Building words that give a number of storeys ("a duplex apartment"; "split-level": _STOREYS)."""
 MAX_STOREYS = 4
 """Most storeys above ground a plan holds (ground floor included)."""
 
@@ -722,18 +722,19 @@ def _find_tiers(text: str, p: Parsed) -> None:
     include an entry or foyer) the ground floor and a place under it the basement. Each
     place becomes a floor word naming its level ("tier:-1", "tier:0", ...), in place of
     an ordinary floor word at the same words ("the top floor", "the upper level")."""
-    found = [(mt.start(), mt.end(), _TIER_OF[next(g for g in mt.groups() if g)]) for mt in _TIERS.finditer(text)]
+    named = [(mt.start(), mt.end(), next(g for g in mt.groups() if g)) for mt in _TIERS.finditer(text)]
+    found = [(s, e, _TIER_OF[w]) for s, e, w in named]
     tiers = [t for t in ("low", "mid", "high") if any(f[2] == t for f in found)]
     if tiers == ["low"] and p.storeys >= 2:  # "a duplex ... on the lower level": the ground floor
         tiers = ["low", "high"]
     if not tiers or (len(tiers) == 1 and tiers != ["mid"]):
         return  # "the top floor" alone: an ordinary floor word
     ground = "low"
-    for i, (_, end, tier) in enumerate(found):
+    for i, (start, end, tier) in enumerate(found):  # the middle storey holds the entry: the ground floor
         nxt = next((f[0] for f in found[i + 1:] if f[2] != tier), len(text))
         prev = max((f[1] for f in found[:i] if f[2] != tier), default=0)
-        if tier == "mid" and (text[found[i][0]:end].split()[-2] in ("main", "entry")
-                              or _ENTRANCE_WORDS.search(text[end:nxt]) or _ENTRANCE_WORDS.search(text[prev:found[i][0]])):
+        if tier == "mid" and (named[i][2] in ("main", "entry") or _ENTRANCE_WORDS.search(text[prev:start])
+                              or _ENTRANCE_WORDS.search(text[end:nxt])):
             ground = "mid"
     if ground not in tiers:
         ground = tiers[0]
@@ -1068,12 +1069,15 @@ def _joined_room_words(kb: KnowledgeBase, text: str, mentions: list[Mention]) ->
     """``mentions`` with two room words of one type written side by side taken as one
     room, named by the second ("an entry foyer": a foyer, not an entry and a foyer)."""
     names = kb.raw("rooms")["names"]
+
+    def room_type(m: Mention) -> str | None:
+        return (names.get(m.key) or {}).get("type") if m.kind == "room" else None
+
     out: list[Mention] = []
     for m in mentions:
         prev = out[-1] if out else None
-        if (prev is not None and prev.kind == m.kind == "room" and not text[prev.end:m.start].strip()
-                and prev.count is None and (names.get(prev.key) or {}).get("type") is not None
-                and (names.get(prev.key) or {}).get("type") == (names.get(m.key) or {}).get("type")):
+        if (prev is not None and prev.count is None and room_type(prev) is not None
+                and room_type(prev) == room_type(m) and not text[prev.end:m.start].strip()):
             out[-1] = dataclasses.replace(m, start=prev.start)
             continue
         out.append(m)

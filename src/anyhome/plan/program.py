@@ -765,6 +765,9 @@ landing hallway that the rooms open off (:func:`connect_levels`), as in a farmho
 bedroom floor, not in a stair hall with a door on every wall (measured: a stair hall of
 five doors was laid out 24 times over and the house fell back to one storey, 9-15 s)."""
 LANDING_KEY = "landing"
+HELD_KEYS = frozenset({STAIRWELL_KEY, LANDING_KEY})
+"""Program keys of rooms whose area is what they hold (a stairwell its flight, a landing
+its doors): never scaled, capped or calibrated to a total."""
 LANDING_WIDTH_M = 1.2
 LANDING_M_PER_DOOR = 0.95
 """A landing is :data:`LANDING_WIDTH_M` wide and this long per door off it, and 0.6 m more."""
@@ -797,8 +800,9 @@ def connect_levels(kb: KnowledgeBase, slots: list[Slot], entrance_types: list[st
             continue
         stair = next(s for s in on if s.key == STAIRWELL_KEY)
         tree = [e for e in connect(kb, [stair, *(s for s in on if s is not stair)], ["stairwell"]) if e[1] != "outside"]
-        if sum(stair.id in e for e in tree) >= LANDING_DOORS:
-            landing = _landing(kb, slots, k, sum(stair.id in e for e in tree))
+        doors = sum(stair.id in e for e in tree)
+        if doors >= LANDING_DOORS:
+            landing = _landing(kb, slots, k, doors)
             tree = [e for e in connect(kb, [landing, *(s for s in on if s is not stair)], ["hallway"]) if e[1] != "outside"]
             tree.append((stair.id, landing.id))
         edges += tree
@@ -892,7 +896,7 @@ def _least(kb: KnowledgeBase, s: Slot) -> float:
     (a booth, a cubicle)."""
     if s.area_from == "stated":  # "a 12 m2 bedroom" stays 12 m2
         return float(s.area_range[0])
-    if s.key in (STAIRWELL_KEY, LANDING_KEY):  # it holds its flight (its doors) whatever the total
+    if s.key in HELD_KEYS:  # it holds its flight (its doors) whatever the total
         return float(s.area_range[0])
     return float(max(min(float(_type_info(kb, s.type)["min_area_m2"]), s.area_range[0]), s.need))
 
@@ -901,7 +905,7 @@ def _most(kb: KnowledgeBase, s: Slot, sz: Sizing) -> float:
     """Largest area the room may grow to; circulation never grows to fill a total."""
     if s.area_from == "stated":
         return float(s.area_range[1])
-    if s.key in (STAIRWELL_KEY, LANDING_KEY):
+    if s.key in HELD_KEYS:
         return float(s.area_range[0])
     if _type_info(kb, s.type).get("circulation"):
         return max(s.area, s.area_range[1])
