@@ -166,3 +166,21 @@ def test_an_upper_storey_of_many_rooms_opens_off_a_landing():
     assert landing.type == "hallway"
     assert [c for c in spec.connections if stair in c] == [(stair, landing.id)]
     assert sum(landing.id in c for c in spec.connections) == len(ups) - 1  # every other room off it
+
+
+def test_a_numbered_floor_asks_for_that_storey():
+    text = ("a Victorian terraced house: parlour and dining room on the ground floor, three bedrooms and a "
+            "bathroom on the first floor, and a kitchen in the basement")
+    assert parse(text).storeys == 2  # British: the first floor is over the ground floor
+    levels = _levels(text)
+    assert levels["parlour"] == levels["dining_room"] == 0
+    assert all(v == 1 for k, v in levels.items() if "bedroom" in k) and levels["kitchen"] == -1
+    assert parse("a house with the bedrooms on the second floor").storeys == 2  # American
+
+
+def test_a_lower_level_under_the_main_level_is_the_basement_and_no_room_of_its_own():
+    levels = _levels("a split-level ranch: family room and garage on the lower level, kitchen and living room "
+                     "on the main level, and two bedrooms on the upper level")
+    assert levels["family_room"] == levels["garage"] == -1
+    assert levels["kitchen"] == levels["living_room"] == 0
+    assert not any("basement" in k for k in levels)

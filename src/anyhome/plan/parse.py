@@ -688,6 +688,9 @@ _TIER_OF = {"lowest": "low", "lower": "low", "bottom": "low", "middle": "mid", "
 _ENTRANCE_WORDS = re.compile(r"\b(?:entry|entrance|foyer|front door|lobby|vestibule)\b")
 _SOME_STOREYS = {"duplex": 2, "triplex": 3}
 """Building words that give a number of storeys ("a duplex apartment"; "split-level": _STOREYS)."""
+ORDINAL_FLOORS = {"first": 1, "1st": 1, "second": 2, "2nd": 2, "third": 3, "3rd": 3}
+"""Floors named by number: "the second floor" is the second storey, or the third where the
+text names a ground floor too (British usage)."""
 MAX_STOREYS = 4
 """Most storeys above ground a plan holds (ground floor included)."""
 
@@ -705,6 +708,10 @@ def _find_levels(text: str, p: Parsed) -> None:
     for word, n in _SOME_STOREYS.items():
         if re.search(rf"\b{word}\b", text):
             p.storeys = max(p.storeys, n)
+    named = {mt.group(1) for mt in _FLOOR_WORDS.finditer(text) if mt.group(1)}
+    for word, n in ORDINAL_FLOORS.items():  # "bedrooms on the first floor" of a house with a ground floor: two
+        if word in named:
+            p.storeys = max(p.storeys, min(MAX_STOREYS, n + ("ground" in named)))
     if p.storeys == 1 and (_UPSTAIRS.search(text) or _MEZZANINE.search(text)):
         p.storeys = 2
     p.basement = bool(_BASEMENT.search(text))

@@ -20,7 +20,7 @@ from anyhome.errors import PlanError
 from anyhome.house import ROOM_TYPES
 from anyhome.plan.concepts import furnish_type
 from anyhome.plan.kb import KnowledgeBase
-from anyhome.plan.parse import Mention, Parsed, format_count, plural
+from anyhome.plan.parse import ORDINAL_FLOORS, Mention, Parsed, format_count, plural
 from anyhome.plan.spec import MAX_COUNT, MAX_ROOMS
 
 HUB_MAX_DEGREE = 6
@@ -661,7 +661,6 @@ def _fill_empty_storeys(kb: KnowledgeBase, slots: list[Slot], top: int) -> None:
             slots.append(s)
 
 
-_ORDINALS = {"first": 1, "1st": 1, "second": 2, "2nd": 2, "third": 3, "3rd": 3}
 _NOT_ADJACENT = re.compile(r"[,.;:]|\b(?:and|with|plus|or|then|while)\b")
 
 
@@ -704,6 +703,8 @@ def _worded_levels(parsed: Parsed, slots: list[Slot], top: int, up_types: set[st
         placed.add(word)
         if word.startswith("tier:"):  # "the lower level", "the middle level": parse._find_tiers
             s.level = max(-1 if parsed.basement else 0, min(top, int(word[5:])))
+            if s.level < 0:  # the storey under the entry is the basement: no basement room of its own
+                placed.add("basement")
         elif word in ("ground", "downstairs"):
             s.level = 0
         elif word in ("upstairs", "upper"):
@@ -714,8 +715,8 @@ def _worded_levels(parsed: Parsed, slots: list[Slot], top: int, up_types: set[st
             s.level = -1 if parsed.basement else s.level
         elif word == "attic":
             s.level = top + 1 if parsed.attic else s.level
-        elif word in _ORDINALS:
-            s.level = max(0, min(top, _ORDINALS[word] - (0 if british else 1)))
+        elif word in ORDINAL_FLOORS:
+            s.level = max(0, min(top, ORDINAL_FLOORS[word] - (0 if british else 1)))
     for s in [s for s in slots if _storey_room(s) and s.name.split()[-1] in placed]:  # "a study in the attic": no attic room
         slots.remove(s)
 
