@@ -172,8 +172,9 @@ def _print_summary(house, files, timings: dict[str, float], total: float) -> Non
         print(f"  {_shown(room.id):<14} {_shown(room.name):<22} {area:6.1f} m2  {per_room[room.id]:3d} objects")
     if house.dropped:
         print(f"Dropped {len(house.dropped)} item(s) that did not fit:")
-        for d in house.dropped[:10]:
-            print(f"  {_shown(d.room)}: {_shown(d.name)} ({_shown(d.reason)})")
+        for d in sorted(house.dropped, key=lambda d: not d.key)[:10]:  # asked-for items first
+            key = "Warning: asked for, " if d.key else ""
+            print(f"  {key}{_shown(d.room)}: {_shown(d.name)} ({_shown(d.reason)})")
         if len(house.dropped) > 10:
             print(f"  ... and {len(house.dropped) - 10} more (see house.json 'dropped')")
     for w in house.warnings:

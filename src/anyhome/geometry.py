@@ -154,6 +154,9 @@ class NavResult:
     """The raster step used (coarser than ``NAV_CELL_M`` only for a very large house)."""
     skipped: str = ""
     """Why the check did not run (empty when it ran)."""
+    targets_reached: tuple[bool, ...] = ()
+    """For each of the ``targets`` given: whether a reachable cell lies within the agent's
+    reach (``agent_radius_m`` + 2 cells) of it."""
 
     @property
     def checked(self) -> bool:
@@ -207,6 +210,7 @@ def navigability(
     obstacles: Iterable[Polygon],
     cell_m: float = NAV_CELL_M,
     agent_radius_m: float = AGENT_RADIUS_M,
+    targets: Sequence[Polygon] = (),
 ) -> NavResult:
     """Rule 6 of SCENE_FORMAT.md.
 
@@ -219,7 +223,8 @@ def navigability(
     Every room polygon is rasterized at ``cell_m``; walls (room boundaries) block except
     along door segments; obstacles block; the free space is eroded by the agent radius
     and flood-filled from the entrance door(s). A room is reachable if any of its free
-    cells is; a door if a reachable cell lies within ``agent_radius_m + 2 cells`` of it.
+    cells is; a door if a reachable cell lies within ``agent_radius_m + 2 cells`` of it,
+    and so is each of ``targets`` (object footprints: can the agent get to it?).
     """
     rooms = list(rooms)
     doors = list(doors)
@@ -288,8 +293,12 @@ def navigability(
     unreachable_doors = tuple(
         did for did, lab in door_labels.items() if not (lab & entrance_labels)
     )
+    reached_targets = []
+    for t in targets:
+        win = _raster_window(t.buffer(near), gx, gy, xs, ys)
+        reached_targets.append(win is not None and bool(np.any(reach[win[0]] & win[1])))
     return NavResult(unreachable_rooms, unreachable_doors, int(walkable.sum()), int(reach.sum()),
-                     cell_m=cell_m)
+                     cell_m=cell_m, targets_reached=tuple(reached_targets))
 
 
 def _window_cells(geoms: Sequence, cell_m: float) -> float:

@@ -195,6 +195,8 @@ class Dropped(_Model):
     room: str
     name: str
     reason: str
+    key: bool = False
+    """A key item: the text asked for it, or it makes the room what it is (a bed, a sofa)."""
 
 
 class Floorplan(_Model):

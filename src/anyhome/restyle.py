@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from anyhome.errors import AnyHomeError
-from anyhome.house import House
+from anyhome.house import House, HouseObject
 
 if TYPE_CHECKING:
     from anyhome.plan.kb import KnowledgeBase
@@ -52,6 +52,7 @@ def restyle(house: House, style: str | Sequence[str], knowledge: KnowledgeBase |
     (None: the one in force).
     """
     from anyhome.assets import assign_asset
+    from anyhome.assets.sets import matched_record, set_key
     from anyhome.pipeline import STAGES, _knowledge
     from anyhome.plan.appearance import item_material, look_for, room_materials
 
@@ -64,9 +65,17 @@ def restyle(house: House, style: str | Sequence[str], knowledge: KnowledgeBase |
     rooms = [r.model_copy(update={"style": look.describe, "materials": {**r.materials, **room_materials(look, r.type, kb)}})
              for r in house.rooms]
     objects = []
+    first: dict[tuple[str, str, str], HouseObject] = {}  # a set keeps one look (anyhome.assets.sets)
     for obj in house.objects:
-        new = obj.model_copy(update={"material": item_material(obj.category, look, look.furniture, material_rng, kb)})
-        new.asset = assign_asset(new, asset_rng, keys, kb)
+        key = set_key(obj)
+        if key is not None and key in first:
+            new = obj.model_copy(update={"material": first[key].material})
+            new.asset = matched_record(first[key].asset or {}, new)
+        else:
+            new = obj.model_copy(update={"material": item_material(obj.category, look, look.furniture, material_rng, kb)})
+            new.asset = assign_asset(new, asset_rng, keys, kb)
+            if key is not None:
+                first[key] = new
         objects.append(new)
     data = house.model_dump()
     data.update(style=look.describe, styles=keys, palette=look.palette,

@@ -31,6 +31,8 @@ EPS_COLLIDE_M = 0.002
 DOOR_MARGIN_M = 0.015
 """Gap kept between a floor object and a door's keep-clear rectangle."""
 INSIDE_TOL_M = 0.004
+VIEW_CLEAR_M = 0.6
+"""Floor objects up to this tall may stand in a sightline (a coffee table); taller ones not."""
 """How far a footprint may poke out of its room polygon (the contract allows 1 cm)."""
 WALL_OPENING_MARGIN_M = 0.05
 """Gap kept along a wall between a wall object and a door or window opening."""
@@ -152,6 +154,8 @@ class Placed:
     z1: float
     floor: bool
     nav_mask: np.ndarray | None = None
+    layer: bool = False
+    """A rug laid under furniture (:mod:`anyhome.layout.layers`): only other layers collide with it."""
 
 
 def room_polygon(room: Room) -> Polygon:
@@ -191,6 +195,9 @@ class RoomSpace:
     room: Room
     poly: Polygon = field(init=False)
     placed: list[Placed] = field(default_factory=list)
+    keep_clear: list[np.ndarray] = field(default_factory=list)
+    """Sightlines (corners (4, 2)): between a seat and the TV across from it; no floor
+    object taller than ``VIEW_CLEAR_M`` may enter one."""
 
     def __post_init__(self) -> None:
         self.poly = room_polygon(self.room)
@@ -246,20 +253,25 @@ class RoomSpace:
     def objects(self) -> list[HouseObject]:
         return [p.obj for p in self.placed]
 
-    def _arrays(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        if not self.placed:
+    def _arrays(self, layer: bool = False) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Corners, bottoms and tops of the placed objects (``layer``: of the layers only,
+        else of all but the layers)."""
+        placed = [p for p in self.placed if p.layer == layer]
+        if not placed:
             return np.zeros((0, 4, 2)), np.zeros(0), np.zeros(0)
         return (
-            np.stack([p.corners for p in self.placed]),
-            np.array([p.z0 for p in self.placed]),
-            np.array([p.z1 for p in self.placed]),
+            np.stack([p.corners for p in placed]),
+            np.array([p.z0 for p in placed]),
+            np.array([p.z1 for p in placed]),
         )
 
     # ------------------------------------------------------------ validity
     def valid(
-        self, corners: np.ndarray, z0: np.ndarray | float, z1: np.ndarray | float, floor: bool, doors: bool = True
+        self, corners: np.ndarray, z0: np.ndarray | float, z1: np.ndarray | float, floor: bool, doors: bool = True,
+        layer: bool = False,
     ) -> np.ndarray:
-        """Mask of poses that are in bounds, collision-free and (floor/wall) clear of doors."""
+        """Mask of poses that are in bounds, collision-free and (floor/wall) clear of doors;
+        ``layer``: a rug laid under furniture, tested against the other layers only."""
         n = len(corners)
         ok = np.ones(n, dtype=bool)
         if n == 0:
@@ -286,8 +298,15 @@ class RoomSpace:
             ov = sat_overlap(corners[idx], self.door_zones)
             ok[idx] = np.all(ov < -DOOR_MARGIN_M, 1)
         idx = np.nonzero(ok)[0]
-        if idx.size and self.placed:
-            pc, pz0, pz1 = self._arrays()
+        idx = np.nonzero(ok)[0]
+        if idx.size and floor and not layer and self.keep_clear:
+            tall = z1[idx] > VIEW_CLEAR_M
+            if tall.any():
+                ov = sat_overlap(corners[idx], np.stack(self.keep_clear))
+                ok[idx] = ~(tall & np.any(ov > EPS_COLLIDE_M, 1))
+        idx = np.nonzero(ok)[0]
+        pc, pz0, pz1 = self._arrays(layer)
+        if idx.size and len(pc):
             zov = np.minimum(z1[idx, None], pz1[None]) - np.maximum(z0[idx, None], pz0[None])
             ov = sat_overlap(corners[idx], pc)
             ok[idx] = ~np.any((zov > EPS_COLLIDE_M) & (ov > EPS_COLLIDE_M), 1)
@@ -308,7 +327,7 @@ class RoomSpace:
     def clearance(self, corners: np.ndarray, cap_m: float = 1.0) -> np.ndarray:
         """Approximate free distance from each footprint to floor objects and door zones."""
         out = np.full(len(corners), cap_m)
-        floor = [p.corners for p in self.placed if p.floor]
+        floor = [p.corners for p in self.placed if p.floor and not p.layer]
         others = floor + list(self.door_zones)
         if others and len(corners):
             ov = sat_overlap(corners, np.stack(others))

@@ -23,6 +23,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from anyhome.assets import assign_asset
+from anyhome.assets.sets import matched_record, set_key
 from anyhome.errors import AnyHomeError
 from anyhome.floorplan.levels import solve_levels
 from anyhome.house import Floorplan, HouseObject
@@ -55,9 +56,17 @@ def plan_text(text: str, rng: np.random.Generator, planner: Planner) -> HouseSpe
 
 def assign_assets(objects: list[HouseObject], rng: np.random.Generator, spec: HouseSpec,
                   kb: KnowledgeBase) -> list[HouseObject]:
-    """The default assets stage: an asset record per object, drawn in order from ``rng``."""
+    """The default assets stage: an asset record per object, drawn in order from ``rng``;
+    the copies of one item in one group share the first copy's (:mod:`anyhome.assets.sets`)."""
+    first: dict[tuple[str, str, str], dict] = {}
     for obj in objects:
+        key = set_key(obj)
+        if key is not None and key in first:
+            obj.asset = matched_record(first[key], obj)
+            continue
         obj.asset = assign_asset(obj, rng, spec.styles_for(obj.room), kb)
+        if key is not None:
+            first[key] = obj.asset
     return objects
 
 

@@ -30,6 +30,7 @@ BAD_VALUES = {  # a wrong value for each parameter a rule takes
     ("place_around", "sides"): "some",
     ("place_front", "distance_m"): -1.0,
     ("place_front", "facing"): "sideways",
+    ("place_front", "to_wall"): "maybe",
     ("place_on_wall", "elevation_m"): "high",
 }
 
@@ -219,6 +220,8 @@ def _params_strategy(rule: str) -> st.SearchStrategy[dict]:
     for name, field in REGISTRY[rule].params.model_fields.items():
         if get_origin(field.annotation) is Literal:
             fields[name] = st.sampled_from(get_args(field.annotation))
+        elif field.annotation is bool or field.annotation == "bool":
+            fields[name] = st.booleans()
         else:
             hi = 2.0 if name == "elevation_m" else 1.5
             fields[name] = st.floats(0.0, hi, allow_nan=False).map(lambda v: round(v, 3))

@@ -7,6 +7,7 @@ import time
 from typing import Any
 
 from anyhome.evaluate.coverage import evaluate_coverage
+from anyhome.evaluate.furnish_metrics import furnish_metrics
 from anyhome.evaluate.plan_metrics import plan_metrics
 from anyhome.evaluate.report import EvalReport
 from anyhome.evaluate.validity import check_validity
@@ -34,7 +35,8 @@ def evaluate_house(house: House, expect: dict[str, Any] | None = None,
         ``violations`` (empty for a valid house), ``metrics`` (counts, ``oob_rate``,
         violations per rule, ``connections_realized``, ``nav_reachable_fraction``,
         ``objects_per_habitable_room``, ``eval_s``...), ``coverage`` and ``plan`` (the
-        figures of :mod:`anyhome.evaluate.plan_metrics`: not violations).
+        figures of :mod:`anyhome.evaluate.plan_metrics`) and ``furnish`` (those of
+        :mod:`anyhome.evaluate.furnish_metrics`): figures, not violations.
 
     Raises
     ------
@@ -49,10 +51,12 @@ def evaluate_house(house: House, expect: dict[str, Any] | None = None,
 
         kb = knowledge_base()
     plan = plan_metrics(house, kb)
+    furnish = furnish_metrics(house)
     metrics = dict(validity.metrics)
     if coverage is not None:
         metrics["coverage"] = coverage.score
     metrics["eval_s"] = time.perf_counter() - t0
     log.debug("evaluated house in %.3f s: %d violations", metrics["eval_s"],
               len(validity.violations))
-    return EvalReport(violations=validity.violations, metrics=metrics, coverage=coverage, plan=plan)
+    return EvalReport(violations=validity.violations, metrics=metrics, coverage=coverage, plan=plan,
+                      furnish=furnish)

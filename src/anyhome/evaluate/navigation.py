@@ -36,11 +36,22 @@ def navigation_obstacles(house: House, footprints: Sequence[Polygon] | None = No
 
 def run_navigability(house: House, footprints: Sequence[Polygon] | None = None
                      ) -> geometry.NavResult:
+    """Rule 6 on ``house``; its ``targets_reached`` are those of :func:`furniture`, in order."""
+    if footprints is None:
+        footprints = [geometry.footprint_polygon(o.position, o.size, o.yaw) for o in house.objects]
     return geometry.navigability(
         rooms=[(r.id, r.polygon) for r in house.rooms if is_usable(room_polygon(r.polygon))],
         doors=[(d.id, d.rooms, d.segment) for d in house.doors],
         obstacles=navigation_obstacles(house, footprints),
+        targets=[footprints[i] for i in furniture(house)],
     )
+
+
+def furniture(house: House) -> list[int]:
+    """Indices of the objects an agent walks up to: on the floor, blocking, not stairs."""
+    return [i for i, o in enumerate(house.objects)
+            if o.support == "floor" and o.category != "stairs"
+            and geometry.blocks_navigation(o.category, o.size[2], o.support, o.tags)]
 
 
 def check_navigable(nav: geometry.NavResult) -> list[Violation]:

@@ -11,6 +11,7 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
+    from anyhome.evaluate.furnish_metrics import FurnishMetrics
     from anyhome.evaluate.plan_metrics import PlanMetrics
 
 MAX_SUMMARY_VIOLATIONS = 12
@@ -112,6 +113,8 @@ class EvalReport:
     coverage: Coverage | None = None
     plan: PlanMetrics | None = None
     """Plan figures (circulation, proportions, size words, open air, levels): not violations."""
+    furnish: FurnishMetrics | None = None
+    """Furnishing figures (drops, rugs, TV stands, sets, floor coverage): not violations."""
 
     @property
     def ok(self) -> bool:
@@ -131,6 +134,7 @@ class EvalReport:
             "metrics": {k: _plain(v) for k, v in self.metrics.items()},
             "coverage": self.coverage.to_dict() if self.coverage is not None else None,
             "plan": self.plan.to_dict() if self.plan is not None else None,
+            "furnish": self.furnish.to_dict() if self.furnish is not None else None,
         }
 
     def summary_lines(self) -> list[str]:
@@ -167,6 +171,8 @@ class EvalReport:
                 lines.append(f"  {c}")
         if self.plan is not None:
             lines += self.plan.summary_lines()
+        if self.furnish is not None:
+            lines += self.furnish.summary_lines()
         return lines
 
 

@@ -57,7 +57,7 @@ def check_validity(house: House) -> ValidityResult:
                    for r in house.rooms if r.id not in reached and r.level != 0]
     order = {rule: k for k, rule in enumerate(RULES)}
     violations.sort(key=lambda v: order.get(v.rule, len(order)))
-    metrics = dict(results[0].metrics)
+    metrics = dict(results[0].metrics)  # objects reached: on the ground floor (entered from outside)
     for key in ("n_rooms", "n_objects", "n_doors", "n_windows", "n_oob_objects", "n_colliding_pairs"):
         metrics[key] = sum(int(results[k].metrics[key]) for k in numbers)
     metrics["n_violations"] = len(violations)
@@ -121,6 +121,8 @@ def _check_one(house: House) -> ValidityResult:
         "nav_cell_m": nav.cell_m,
         "complete": not index.notes and nav.checked,
         "objects_per_habitable_room": in_habitable / len(habitable) if habitable else 0.0,
+        "n_floor_objects": len(nav.targets_reached),
+        "n_floor_objects_reached": sum(nav.targets_reached),
     }
     return ValidityResult(violations, metrics)
 

@@ -3,9 +3,11 @@ relative to it; a few anchor poses are tried when members do not fit."""
 
 from __future__ import annotations
 
+import numpy as np
+
 from anyhome.house import Dropped, HouseObject
 from anyhome.layout import arrangements, placement, scoring
-from anyhome.layout.rules import REGISTRY
+from anyhome.layout.rules import REGISTRY, front_dir
 from anyhome.layout.rules import place_around as around_rule
 from anyhome.layout.rules.place_around import (
     around_allocation,
@@ -15,6 +17,7 @@ from anyhome.layout.rules.place_around import (
 )
 from anyhome.layout.state import Choice, RoomState
 from anyhome.plan.spec import GroupSpec, ItemSpec
+from anyhome.space import rect_corners
 
 
 def place_group_copy(st: RoomState, g: GroupSpec, copy: int, prev: HouseObject | None) -> HouseObject | None:
@@ -49,24 +52,37 @@ def try_choices(st: RoomState, g: GroupSpec, label: str, choices: list[Choice], 
         return None
     support = "wall" if kind == "wall" else "floor"
     snap = st.snapshot()
-    best: tuple[int, int] | None = None  # (number of drops, choice index)
+    best: tuple[int, int, int] | None = None  # (number of drops, compromises, choice index)
     for k, ch in enumerate(choices):
         anchor = st.commit(item, item.size_m, ch, support, rule, label, None)
         if kind != "top" and not st.nav.ok():
             st.restore(snap)
             continue
         drops = place_members(st, g, label, anchor)
-        if not drops:
+        bent = compromises(st, g, label, anchor)
+        if not drops and not bent:
             return anchor
-        if best is None or len(drops) < best[0]:
-            best = (len(drops), k)
+        if best is None or (len(drops), bent) < best[:2]:
+            best = (len(drops), bent, k)
         st.restore(snap)
     if best is None:
         drop_group(st, g, "would block a walkway or a door")
         return None
-    anchor = st.commit(item, item.size_m, choices[best[1]], support, rule, label, None)
+    anchor = st.commit(item, item.size_m, choices[best[2]], support, rule, label, None)
     st.dropped.extend(place_members(st, g, label, anchor))
     return anchor
+
+
+def compromises(st: RoomState, g: GroupSpec, label: str, anchor: HouseObject) -> int:
+    """Members of this copy placed by a fallback: a ``to_wall`` item (a TV stand) not on
+    the wall straight ahead of the anchor, facing it."""
+    names = {m.name for m in g.members if m.rule == "place_front" and m.params.get("to_wall")
+             and m.target in (None, g.anchor.name)}
+    if not names:
+        return 0
+    back = front_dir(anchor.yaw)
+    return sum(1 for o in st.space.objects if o.group == label and o.name in names
+               and float(front_dir(o.yaw) @ back) > -0.99)
 
 
 def drop_group(st: RoomState, g: GroupSpec, reason: str) -> None:
@@ -126,11 +142,25 @@ def place_item_copies(st: RoomState, m: ItemSpec, refs: list[HouseObject], label
         if obj is None:
             drops.append(st.dropped_entry(m.name, reason))
             continue
+        if ref is not None and m.rule == "place_front" and m.params.get("to_wall"):
+            st.space.keep_clear.append(sightline(ref, obj))
         objs.append(obj)
         prev_same = obj
         if REGISTRY[obj.rule].runs_along_wall:
             prev_wall = obj
     return objs, drops
+
+
+def sightline(seat: HouseObject, screen: HouseObject) -> np.ndarray:
+    """Corners of the strip between ``seat``'s front and ``screen``'s, as wide as the narrower."""
+    a, b = np.asarray(seat.position[:2]), np.asarray(screen.position[:2])
+    a = a + front_dir(seat.yaw) * seat.size[1] / 2
+    b = b + front_dir(screen.yaw) * screen.size[1] / 2
+    v = b - a
+    length = float(np.linalg.norm(v))
+    yaw = float(np.arctan2(-v[0], v[1])) if length > 1e-6 else seat.yaw
+    width = min(seat.size[0], screen.size[0])
+    return rect_corners(((a + b) / 2)[None], (width, max(length, 1e-3)), [yaw])[0]
 
 
 def place_around(st: RoomState, m: ItemSpec, refs: list[HouseObject], label: str | None,

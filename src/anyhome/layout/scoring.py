@@ -18,13 +18,14 @@ from anyhome.plan.spec import GroupSpec
 from anyhome.space import rect_corners
 
 
-def rank(st: RoomState, c: Cands, size: Sequence[float], kind: str, noise: float, spacing: bool) -> np.ndarray:
-    """Indices of the valid candidates, best first."""
+def rank(st: RoomState, c: Cands, size: Sequence[float], kind: str, noise: float, spacing: bool,
+         layer: bool = False) -> np.ndarray:
+    """Indices of the valid candidates, best first (``layer``: a rug, see RoomSpace.valid)."""
     if not len(c):
         return np.zeros(0, dtype=int)
     o = st.options
     corners = rect_corners(c.xy, size[:2], c.yaw)
-    mask = st.space.valid(corners, c.z, c.z + size[2], floor=kind == "floor", doors=kind != "top")
+    mask = st.space.valid(corners, c.z, c.z + size[2], floor=kind == "floor", doors=kind != "top", layer=layer)
     idx = np.nonzero(mask)[0]
     if not idx.size:
         return idx

@@ -37,6 +37,7 @@ class Snapshot:
     n_placed: int
     counters: dict[str, int]
     n_dropped: int
+    n_keep_clear: int = 0
 
 
 @dataclass
@@ -66,10 +67,11 @@ class RoomState:
 
     # ------------------------------------------------------------ bookkeeping
     def snapshot(self) -> Snapshot:
-        return Snapshot(len(self.space.placed), dict(self.counters), len(self.dropped))
+        return Snapshot(len(self.space.placed), dict(self.counters), len(self.dropped), len(self.space.keep_clear))
 
     def restore(self, snap: Snapshot) -> None:
         del self.space.placed[snap.n_placed:]
+        del self.space.keep_clear[snap.n_keep_clear:]
         del self.dropped[snap.n_dropped:]
         self.counters = dict(snap.counters)
         self.nav.set_blocked(self.space.placed)
@@ -87,8 +89,9 @@ class RoomState:
         return f"{self.room.id}-{slug}-{k}"
 
     def commit(self, item: ItemSpec, size: Sequence[float], ch: Choice, support: str, rule: str,
-               group: str | None, anchor: str | None) -> HouseObject:
-        """Place ``item`` at ``ch``: it joins the room's objects and blocks walkways."""
+               group: str | None, anchor: str | None, layer: bool = False) -> HouseObject:
+        """Place ``item`` at ``ch``: it joins the room's objects and blocks walkways
+        (``layer``: a rug under furniture, :mod:`anyhome.layout.layers`)."""
         obj = HouseObject(
             id=self.new_id(item.name), room=self.room.id, name=item.name, category=item.category,
             description=item.description,
@@ -99,7 +102,7 @@ class RoomState:
         )
         corners = rect_corners(ch.xy[None], size[:2], [obj.yaw])[0]
         mask = self.nav.obstacle_mask(corners) if nav_blocks(obj) else None
-        self.space.placed.append(Placed(obj, corners, ch.z, ch.z + size[2], support == "floor", mask))
+        self.space.placed.append(Placed(obj, corners, ch.z, ch.z + size[2], support == "floor", mask, layer))
         if mask is not None:
             self.nav.blocked |= mask
         return obj
@@ -114,6 +117,10 @@ class RoomState:
                 return obj
             self.restore(snap)
         return None
+
+    def room_windows(self) -> bool:
+        """Whether the room has a window."""
+        return any(not op[4] for w in self.space.walls for op in w.openings)
 
     # ------------------------------------------------------------ lookup
     def match(self, target: str | None, exclude: str | None = None) -> list[HouseObject]:

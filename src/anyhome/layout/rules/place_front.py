@@ -21,6 +21,7 @@ from anyhome.layout.rules.base import (
     right_dir,
     wrap,
 )
+from anyhome.layout.rules.place_wall import place_wall
 from anyhome.space import RoomSpace
 
 DISTANCE_FACTORS = (1.0, 0.8, 1.25, 0.6, 1.5, 0.4, 2.0, 0.2, 0.0)
@@ -33,6 +34,17 @@ WALL_SNAP_PREF = 0.95
 """Preference of the pose flush with a wall straight ahead (a TV stand)."""
 WALL_SNAP_MIN_M = 0.4
 """The wall snap reaches at least 2.5 times this far (a short ``distance_m`` still snaps)."""
+MIN_TO_WALL_M = 1.0
+"""With ``to_wall``: the nearest the wall ahead may be to the target's front."""
+TO_WALL_PREF = 1.5
+"""With ``to_wall``: preference of the pose on the wall ahead, centred on the target..."""
+TO_WALL_OFF_PER_M = 0.2
+"""...less this much per metre off the distance asked or off centre."""
+OTHER_WALL_PREF = 0.6
+"""With ``to_wall`` and no wall ahead: preference of another wall's pose facing the target
+straight (times the cosine of the angle; poses turned away by more than 60 degrees are not offered)."""
+TO_WALL_SHIFTS_M = (0.0, 0.15, -0.15, 0.3, -0.3, 0.5, -0.5, 0.8, -0.8, 1.1, -1.1, 1.5, -1.5)
+"""Sideways shifts of the pose on the wall ahead."""
 
 
 class Params(RuleParams):
@@ -40,6 +52,10 @@ class Params(RuleParams):
     """Gap between the target's front and the object, in metres."""
     facing: Literal["toward", "same", "away"] = "toward"
     """Face the target, or look the way it looks."""
+    to_wall: bool = False
+    """Stand against the wall ahead of the target (a TV stand across from a sofa): poses
+    flush with that wall, at least ``MIN_TO_WALL_M`` from the target; else against
+    another wall, turned toward the target."""
 
 
 def place_front(space: RoomSpace, target: HouseObject, size: Sequence[float], distance_m: float = 0.4,
@@ -75,14 +91,48 @@ def place_front(space: RoomSpace, target: HouseObject, size: Sequence[float], di
     return Cands(xy, np.asarray(yaws), np.zeros(len(xy)), np.asarray(pref))
 
 
+def front_to_wall(space: RoomSpace, target: HouseObject, size: Sequence[float], distance_m: float) -> Cands:
+    """Poses against the wall ahead of ``target`` (``to_wall``), else against another wall turned toward it."""
+    txy = np.asarray(target.position[:2])
+    f = front_dir(target.yaw)
+    pts: list[np.ndarray] = []
+    yaws: list[float] = []
+    pref: list[float] = []
+    for wall in space.walls:
+        if float(f @ wall.n) > -0.999:
+            continue
+        rel = txy - wall.a
+        gap = float(rel @ wall.n) - target.size[1] / 2 - size[1]
+        t0 = float(rel @ wall.u)
+        if gap < MIN_TO_WALL_M or gap > 2.5 * max(distance_m, WALL_SNAP_MIN_M):
+            continue
+        for lo in TO_WALL_SHIFTS_M:
+            t = t0 + lo
+            if size[0] / 2 <= t <= wall.length - size[0] / 2:
+                pts.append(wall.a + wall.u * t + wall.n * (size[1] / 2))
+                yaws.append(wall.yaw)
+                pref.append(TO_WALL_PREF - TO_WALL_OFF_PER_M * (abs(gap - distance_m) + abs(lo)))
+    out = Cands(np.asarray(pts).reshape(-1, 2), np.asarray(yaws), np.zeros(len(pts)), np.asarray(pref))
+    others = place_wall(space, size)
+    if len(others):
+        to_t = txy[None] - others.xy
+        cos = np.einsum("nc,nc->n", np.stack([-np.sin(others.yaw), np.cos(others.yaw)], 1), to_t)
+        cos = cos / np.maximum(np.linalg.norm(to_t, axis=1), 1e-6)
+        keep = cos > 0.5
+        out = out + Cands(others.xy[keep], others.yaw[keep], others.z[keep], OTHER_WALL_PREF * cos[keep])
+    return out
+
+
 def candidates(ctx: RuleContext) -> tuple[Cands, Kind]:
     assert isinstance(ctx.params, Params) and ctx.ref is not None
+    if ctx.params.to_wall:
+        return front_to_wall(ctx.space, ctx.ref, ctx.size, ctx.params.distance_m), "floor"
     return place_front(ctx.space, ctx.ref, ctx.size, ctx.params.distance_m, ctx.params.facing), "floor"
 
 
 def copy_candidates(ctx: RuleContext) -> tuple[Cands, Kind]:
     """Several copies stand side by side, centred on the target."""
-    if ctx.count <= 1:
+    if ctx.count <= 1 or (isinstance(ctx.params, Params) and ctx.params.to_wall):
         return candidates(ctx)
     assert isinstance(ctx.params, Params) and ctx.ref is not None
     lat = (ctx.copy - (ctx.count - 1) / 2) * (ctx.size[0] + COPY_GAP_M)

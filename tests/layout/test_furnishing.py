@@ -1,0 +1,126 @@
+"""Furnishing as a designer would (issue 14): rugs under their group, the TV stand on the
+wall across from the sofa with its sightline kept clear, key groups kept by making room,
+curtains beside windows, ornaments set down on the floor when no top is free."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from shapely.geometry import LineString, Polygon
+
+from anyhome.geometry import footprint_polygon
+from anyhome.layout import layout_house
+from anyhome.layout.layers import LAYER_HEIGHT_M
+from tests.layout.helpers import check_valid, front, group, house_spec, item, rect, single_room
+
+SOFA = item("sofa", "sofa", (2.1, 0.9, 0.85), "place_wall", params={"wall": "longest"}, tags=["seat"])
+COFFEE = item("coffee table", "coffee_table", (1.1, 0.6, 0.45), "place_front", params={"distance_m": 0.45},
+              tags=["table"])
+TV_STAND = item("tv stand", "tv_stand", (1.6, 0.45, 0.5), "place_front",
+                params={"distance_m": 2.2, "facing": "toward", "to_wall": True}, tags=["storage", "surface"])
+RUG = item("rug", "rug", (2.0, 1.4, 0.01), "place_center", tags=["floor_layer"])
+ARMCHAIR = item("armchair", "armchair", (0.85, 0.85, 0.9), "place_center", tags=["seat"])
+"""Drawn to the middle of the room, where the sightline runs."""
+
+
+def _lounge(polygon=rect(0, 0, 5.5, 4.2), door=((0.3, 0.0), (1.2, 0.0)), extra=(), seed=0):
+    fp = single_room(polygon, door=door)
+    groups = [group("lounge", SOFA, [COFFEE, TV_STAND], priority=0),
+              group("rug", RUG, priority=6), *extra]
+    res = layout_house(house_spec({"r1": groups}), fp, np.random.default_rng(seed))
+    return fp, res
+
+
+def _one(res, name):
+    objs = [o for o in res.objects if o.name == name]
+    assert len(objs) == 1, (name, res.dropped)
+    return objs[0]
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_rug_lies_under_the_seating_group(seed):
+    fp, res = _lounge(seed=seed)
+    assert check_valid(fp, res.objects) == []
+    rug, sofa, table = _one(res, "rug"), _one(res, "sofa"), _one(res, "coffee table")
+    assert rug.size[2] == pytest.approx(LAYER_HEIGHT_M)
+    under = footprint_polygon(rug.position, rug.size, rug.yaw)
+    # under the coffee table and the sofa's front legs, not out in the room
+    assert under.contains(footprint_polygon(table.position, table.size, table.yaw).centroid)
+    assert under.intersects(footprint_polygon(sofa.position, sofa.size, sofa.yaw))
+    assert rug.anchor == sofa.id
+
+
+def test_rug_is_not_an_obstacle_for_furniture_placed_later():
+    """Furniture may stand on a laid rug (it overlaps it by at most the 1 cm tolerance),
+    but a second rug may not overlap the first."""
+    fp, res = _lounge(extra=[group("rug2", RUG.model_copy(update={"name": "second rug"}), priority=7)])
+    assert check_valid(fp, res.objects) == []
+    rugs = [o for o in res.objects if "floor_layer" in o.tags]
+    assert len(rugs) == 2
+    a, b = (footprint_polygon(o.position, o.size, o.yaw) for o in rugs)
+    assert a.intersection(b).area < 1e-6
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_tv_stand_stands_on_the_wall_across_from_the_sofa(seed):
+    fp, res = _lounge(seed=seed)
+    sofa, tv = _one(res, "sofa"), _one(res, "tv stand")
+    room = Polygon(fp.rooms[0].polygon)
+    back = np.asarray(tv.position[:2]) - front(tv.yaw) * tv.size[1] / 2
+    assert room.exterior.distance(Polygon([back, back + 1e-6, back + [0, 1e-6]]).centroid) < 0.02
+    assert float(front(tv.yaw) @ front(sofa.yaw)) < -0.99  # they face each other
+
+
+def test_armchairs_stay_out_of_the_sightline():
+    chairs = group("armchairs", ARMCHAIR, repeat=3, priority=2)
+    for seed in range(4):
+        fp, res = _lounge(polygon=rect(0, 0, 6.5, 5.0), extra=[chairs], seed=seed)
+        assert check_valid(fp, res.objects) == []
+        sofa, tv = _one(res, "sofa"), _one(res, "tv stand")
+        a = np.asarray(sofa.position[:2]) + front(sofa.yaw) * sofa.size[1] / 2
+        b = np.asarray(tv.position[:2]) + front(tv.yaw) * tv.size[1] / 2
+        strip = LineString([a, b]).buffer(min(sofa.size[0], tv.size[0]) / 2, cap_style="flat")
+        chairs_placed = [o for o in res.objects if o.name == "armchair"]
+        assert chairs_placed
+        for o in chairs_placed:
+            assert footprint_polygon(o.position, o.size, o.yaw).intersection(strip).area < 0.01
+
+
+def test_key_group_is_kept_by_making_room():
+    """A bed the room can hold is kept even when optional groups, placed first, would
+    have taken its place: the room is furnished again, key groups first."""
+    fp = single_room(rect(0, 0, 3.2, 3.0), door=((0.2, 0.0), (1.1, 0.0)))
+    shelves = group("shelves", item("bookshelf", "shelf", (1.0, 0.4, 2.0), "place_wall"), repeat=4,
+                    priority=-1, arrangement="along_walls")
+    bed = group("bed", item("bed", "bed", (1.6, 2.0, 0.5), "place_wall", tags=["bed"]), priority=0, required=True)
+    res = layout_house(house_spec({"r1": [shelves, bed]}), fp, np.random.default_rng(0))
+    assert check_valid(fp, res.objects) == []
+    assert any(o.name == "bed" for o in res.objects), res.dropped
+    assert all(not d.key for d in res.dropped)
+
+
+def test_key_item_that_cannot_fit_is_marked():
+    fp = single_room(rect(0, 0, 2.0, 2.0), door=((0.2, 0.0), (1.1, 0.0)))
+    bed = group("bed", item("bed", "bed", (1.8, 2.1, 0.5), "place_wall", tags=["bed"]), priority=0)
+    res = layout_house(house_spec({"r1": [bed]}), fp, np.random.default_rng(0))
+    assert [d.key for d in res.dropped if d.name == "bed"] == [True]
+
+
+def test_curtain_hangs_beside_a_window():
+    win = ((1.5, 3.0), (3.0, 3.0))
+    fp = single_room(rect(0, 0, 4.0, 3.0), windows=[win])
+    curtain = item("curtain", "curtain", (1.4, 0.08, 2.3), "place_on_wall", params={"elevation_m": 0.1})
+    res = layout_house(house_spec({"r1": []}, ornaments={"r1": [curtain]}), fp, np.random.default_rng(0))
+    assert check_valid(fp, res.objects) == []
+    c = _one(res, "curtain")
+    assert c.support == "wall" and abs(c.position[1] - 3.0) < 0.1
+    x0, x1 = c.position[0] - c.size[0] / 2, c.position[0] + c.size[0] / 2
+    assert min(abs(x1 - 1.5), abs(x0 - 3.0)) < 0.1  # right at the window's edge
+
+
+def test_plant_goes_on_the_floor_when_no_top_is_free():
+    fp = single_room(rect(0, 0, 3.0, 3.0))
+    plant = item("small plant", "plant", (0.25, 0.25, 0.35), "place_top")
+    res = layout_house(house_spec({"r1": []}, ornaments={"r1": [plant]}), fp, np.random.default_rng(0))
+    assert check_valid(fp, res.objects) == []
+    assert _one(res, "small plant").support == "floor"
