@@ -263,33 +263,54 @@ def table(results: list[dict[str, Any]], seeds: list[int]) -> str:
     return "\n".join(lines)
 
 
-def main(argv: list[str] | None = None) -> int:
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("--sets", default="public,heldout_c,heldout_plan")
+def add_common_args(ap: argparse.ArgumentParser, default_sets: str) -> None:
+    """The options every per-set benchmark takes: --sets, --seeds, --out, -q."""
+    ap.add_argument("--sets", default=default_sets)
     ap.add_argument("--seeds", default="0,1,2")
     ap.add_argument("--out", default=None, help="write the markdown table here")
     ap.add_argument("-q", "--quiet", action="store_true", help="no line per house")
-    args = ap.parse_args(argv)
+
+
+def chosen(args: argparse.Namespace, sets: dict[str, Path]) -> tuple[list[int], list[str]] | None:
+    """(seeds, set names) from the common options; None (and one error line) for an unknown set."""
     seeds = [int(s) for s in args.seeds.split(",")]
     names = [s.strip() for s in args.sets.split(",") if s.strip()]
-    unknown = [n for n in names if n not in SETS]
+    unknown = [n for n in names if n not in sets]
     if unknown:
-        print(f"error: unknown set {unknown[0]!r} (known: {', '.join(SETS)})", file=sys.stderr)
-        return 2
+        print(f"error: unknown set {unknown[0]!r} (known: {', '.join(sets)})", file=sys.stderr)
+        return None
+    return seeds, names
 
+
+def line_logger(args: argparse.Namespace) -> Callable[[str], None]:
     def log(line: str) -> None:
         if not args.quiet:
             print(line, flush=True)
 
-    t0 = time.perf_counter()
-    results = [run_set(n, load_prompts(SETS[n]), seeds, log) for n in names]
-    big = forty_rooms()
-    md = (table(results, seeds) + f"\n\n40-room program, floorplan stage: {big}\n"
-          + f"\nWall time of the run: {time.perf_counter() - t0:.0f} s\n")
+    return log
+
+
+def emit(md: str, out: str | None) -> None:
+    """Print the table, and write it to ``out`` when given."""
     print(md)
-    if args.out:
-        Path(args.out).parent.mkdir(parents=True, exist_ok=True)
-        Path(args.out).write_text(md, encoding="utf-8")
+    if out:
+        Path(out).parent.mkdir(parents=True, exist_ok=True)
+        Path(out).write_text(md, encoding="utf-8")
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    add_common_args(ap, "public,heldout_c,heldout_plan")
+    args = ap.parse_args(argv)
+    picked = chosen(args, SETS)
+    if picked is None:
+        return 2
+    seeds, names = picked
+    t0 = time.perf_counter()
+    results = [run_set(n, load_prompts(SETS[n]), seeds, line_logger(args)) for n in names]
+    big = forty_rooms()
+    emit(table(results, seeds) + f"\n\n40-room program, floorplan stage: {big}\n"
+         + f"\nWall time of the run: {time.perf_counter() - t0:.0f} s\n", args.out)
     return 0
 
 

@@ -36,7 +36,7 @@ from anyhome.stages import Stages
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from floorplans import SETS as PLAN_SETS  # noqa: E402
-from floorplans import load_prompts, pct  # noqa: E402
+from floorplans import add_common_args, chosen, emit, line_logger, load_prompts, pct  # noqa: E402
 
 HERE = Path(__file__).resolve().parent
 SETS = {**PLAN_SETS, "heldout_furnish": HERE / "prompts" / "heldout_furnish.jsonl"}
@@ -139,34 +139,21 @@ def table(results: list[dict[str, Any]], seeds: list[int]) -> str:
 
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("--sets", default="public,heldout_c,heldout_furnish")
-    ap.add_argument("--seeds", default="0,1,2")
-    ap.add_argument("--out", default=None, help="write the markdown table here")
+    add_common_args(ap, "public,heldout_c,heldout_furnish")
     ap.add_argument("--list", action="store_true", help="list the key items dropped and the mismatched sets")
-    ap.add_argument("-q", "--quiet", action="store_true", help="no line per house")
     args = ap.parse_args(argv)
-    seeds = [int(s) for s in args.seeds.split(",")]
-    names = [s.strip() for s in args.sets.split(",") if s.strip()]
-    unknown = [n for n in names if n not in SETS]
-    if unknown:
-        print(f"error: unknown set {unknown[0]!r} (known: {', '.join(SETS)})", file=sys.stderr)
+    picked = chosen(args, SETS)
+    if picked is None:
         return 2
-
-    def log(line: str) -> None:
-        if not args.quiet:
-            print(line, flush=True)
-
+    seeds, names = picked
     t0 = time.perf_counter()
-    results = [run_set(n, load_prompts(SETS[n]), seeds, log) for n in names]
+    results = [run_set(n, load_prompts(SETS[n]), seeds, line_logger(args)) for n in names]
     md = table(results, seeds) + f"\n\nWall time of the run: {time.perf_counter() - t0:.0f} s\n"
     if args.list:
         for r in results:
             md += f"\n{r['set']}: key items dropped: {', '.join(r['key_dropped']) or 'none'}\n"
             md += f"{r['set']}: mismatched sets: {', '.join(r['mismatched'][:40]) or 'none'}\n"
-    print(md)
-    if args.out:
-        Path(args.out).parent.mkdir(parents=True, exist_ok=True)
-        Path(args.out).write_text(md, encoding="utf-8")
+    emit(md, args.out)
     return 0
 
 

@@ -11,7 +11,8 @@ planned items
     ``dropped`` entries. **drop rate**: dropped over planned.
 key items
     The anchor of every group the text asked for (``required``) or that makes the room
-    what it is (priority 0: the bed, the sofa, the kitchen run). A dropped entry is a key
+    what it is (priority ``KEY_PRIORITY`` or lower, as :attr:`anyhome.plan.spec.GroupSpec.key`:
+    the bed, the sofa, the kitchen run). A dropped entry is a key
     item dropped when its room holds a key item of that name.
 floor layers
     Objects tagged ``floor_layer`` (rugs, mats, runners). **rugs kept**: placed floor
@@ -48,6 +49,7 @@ from anyhome import geometry
 from anyhome.assets.sets import set_key
 from anyhome.evaluate.polygons import is_usable, room_polygon
 from anyhome.house import House, HouseObject, is_habitable
+from anyhome.plan.spec import KEY_PRIORITY
 from anyhome.tags import is_floor_layer
 
 WALL_GAP_M = 0.15
@@ -58,8 +60,6 @@ VIEW_HEIGHT_M = 0.6
 """Objects taller than this between a seat and its TV block the view (a coffee table does not)."""
 LOW_COVERAGE = 0.15
 """A habitable room whose furniture covers less of its floor than this is empty."""
-KEY_PRIORITY = 0
-"""A group of this priority or lower makes its room what it is."""
 SEAT_CATEGORIES = ("sofa", "sectional", "couch", "loveseat", "bench", "armchair")
 """Seats a TV is watched from, the first found in a room chosen."""
 

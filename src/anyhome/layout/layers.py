@@ -23,6 +23,7 @@ from collections.abc import Iterator
 import numpy as np
 
 from anyhome.house import HouseObject
+from anyhome.layout import placement, scoring
 from anyhome.layout.rules import front_dir, right_dir
 from anyhome.layout.state import Choice, RoomState
 from anyhome.plan.spec import GroupSpec, ItemSpec
@@ -125,10 +126,6 @@ def _lay(st: RoomState, item: ItemSpec, label: str, anchor: HouseObject, ext: tu
 
 def place_layers(st: RoomState, groups: list[GroupSpec]) -> None:
     """Every rug group of the room under the furniture already placed (see module doc)."""
-    from anyhome.layout import (
-        scoring,  # imported here: it imports the state this module's users build
-    )
-
     taken: set[str] = set()
     for g in groups:
         item = g.anchor.model_copy(update={"size_m": (*g.anchor.size_m[:2], LAYER_HEIGHT_M)})
@@ -148,8 +145,6 @@ def place_layers(st: RoomState, groups: list[GroupSpec]) -> None:
 def _own_rule(st: RoomState, item: ItemSpec, label: str) -> bool:
     """A rug with nothing to lie under, by its own rule, still a layer: at its planned
     size, else shorter (a runner between two doors)."""
-    from anyhome.layout import placement, scoring
-
     w, d, h = item.size_m
     for s in SHRINK_STEPS:
         size = (w * s, d, h) if w >= d else (w, d * s, h)

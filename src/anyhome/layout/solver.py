@@ -23,7 +23,7 @@ from anyhome.layout import arrangements, layers, ornaments
 from anyhome.layout.options import DEFAULT_OPTIONS, LayoutOptions
 from anyhome.layout.state import RoomState
 from anyhome.layout.zones import arm_zones
-from anyhome.plan.spec import GroupSpec, HouseSpec, ItemSpec, RoomSpec
+from anyhome.plan.spec import HouseSpec, ItemSpec, RoomSpec
 
 
 @dataclass
@@ -78,27 +78,20 @@ def layout_house(spec: HouseSpec, floorplan: Floorplan, rng: np.random.Generator
     return result
 
 
-KEY_PRIORITY = 0
-"""A group of this priority or lower makes its room what it is (the bed, the sofa)."""
 SHRINK_SCALES = (0.85, 0.7)
 """Footprint scales of a key anchor tried when it does not fit at its planned size."""
-
-
-def is_key(g: GroupSpec) -> bool:
-    """A group the room must keep: asked for by the text, or what makes the room what it is."""
-    return g.required or g.priority <= KEY_PRIORITY
 
 
 def furnish_room(st: RoomState) -> None:
     """The room's groups in priority order, each by its arrangement, then its rugs under
     them (:mod:`.layers`), then its ornaments.
 
-    When a key group's anchor (:func:`is_key`) is dropped, the room is furnished again
+    When a key group's anchor (:attr:`GroupSpec.key`) is dropped, the room is furnished again
     making room for it: key groups first, the others after; then with each dropped key
     anchor smaller (:data:`SHRINK_SCALES`). The furnishing that drops the fewest key
     anchors, then the fewest items, is kept; a key anchor is dropped only when none fits."""
     _make_room(st)
-    keys = {g.anchor.name for g in st.spec.groups if is_key(g)}
+    keys = {g.anchor.name for g in st.spec.groups if g.key}
     st.dropped[:] = [d.model_copy(update={"key": True}) if d.name in keys else d for d in st.dropped]
 
 
@@ -109,27 +102,31 @@ def _make_room(st: RoomState) -> None:
     missing = _key_dropped(st)
     if not missing:
         return
-    best = (len(missing), len(st.dropped), st.space.placed[:], st.dropped[:], dict(st.counters), st.space.keep_clear[:])
-    keys_first = sorted(order, key=lambda i: not is_key(st.spec.groups[i]))
+    best = _outcome(st, len(missing))
+    keys_first = sorted(order, key=lambda i: not st.spec.groups[i].key)
     for scale in (1.0, *SHRINK_SCALES):
         st.restore(start)
         _furnish(st, keys_first, {i: scale for i in missing})
-        missing_now = _key_dropped(st)
-        if (len(missing_now), len(st.dropped)) < best[:2]:
-            best = (len(missing_now), len(st.dropped), st.space.placed[:], st.dropped[:], dict(st.counters),
-                    st.space.keep_clear[:])
-        if not missing_now:
+        now = _outcome(st, len(_key_dropped(st)))
+        if now[:2] < best[:2]:
+            best = now
+        if now[0] == 0:
             return
     st.restore(start)
-    st.space.placed[:], st.dropped[:], st.space.keep_clear[:] = best[2], best[3], best[5]
-    st.counters = best[4]
+    _, _, st.space.placed[:], st.dropped[:], st.space.keep_clear[:], st.counters = best
     st.nav.set_blocked(st.space.placed)
+
+
+def _outcome(st: RoomState, n_key_dropped: int) -> tuple:
+    """A furnishing as it stands, ranked by (key anchors dropped, items dropped)."""
+    return (n_key_dropped, len(st.dropped), st.space.placed[:], st.dropped[:], st.space.keep_clear[:],
+            dict(st.counters))
 
 
 def _key_dropped(st: RoomState) -> list[int]:
     """Indices of the key groups with an anchor (a copy of it) dropped in this furnishing."""
     gone = {d.name for d in st.dropped}
-    return [i for i, g in enumerate(st.spec.groups) if is_key(g) and g.anchor.name in gone]
+    return [i for i, g in enumerate(st.spec.groups) if g.key and g.anchor.name in gone]
 
 
 def _furnish(st: RoomState, order: list[int], scales: dict[int, float]) -> None:

@@ -189,6 +189,16 @@ class GroupSpec(_Model):
     priority: int = Field(default=0, description="lower is placed earlier")
     required: bool = Field(default=False, description="the text asked for it explicitly")
 
+    @property
+    def key(self) -> bool:
+        """A group its room must keep: asked for by the text, or what makes the room what
+        it is (priority :data:`KEY_PRIORITY` or lower: the bed, the sofa)."""
+        return self.required or self.priority <= KEY_PRIORITY
+
+
+KEY_PRIORITY = 0
+"""A group of this priority or lower makes its room what it is (:attr:`GroupSpec.key`)."""
+
 
 def _style_keys(v: Any) -> Any:
     """Style keys as written in styles.yaml: lower case, ``_`` for spaces and hyphens,
