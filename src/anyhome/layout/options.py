@@ -22,6 +22,10 @@ class LayoutOptions:
     spacing_weight: float = 0.3
     """Weight of the free distance (capped at ``spacing_cap_m``) around an anchor."""
     spacing_cap_m: float = 0.8
+    zone_spacing_weight: float = 1.5
+    """Weight of the free distance (capped at ``zone_spacing_cap_m``) around the anchor of a
+    zone (:mod:`anyhome.layout.fill`): a reading corner away from the sofa, not beside it."""
+    zone_spacing_cap_m: float = 2.0
     window_penalty: float = 0.6
     """Score taken from tall floor objects standing in front of a window."""
     tall_m: float = 1.0

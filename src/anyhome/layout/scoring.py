@@ -31,7 +31,8 @@ def rank(st: RoomState, c: Cands, size: Sequence[float], kind: str, noise: float
         return idx
     score = c.pref[idx] + noise * st.rng.random(idx.size)
     if spacing and kind == "floor":
-        score += o.spacing_weight * st.space.clearance(corners[idx], o.spacing_cap_m) / o.spacing_cap_m
+        weight, cap = (o.zone_spacing_weight, o.zone_spacing_cap_m) if st.spread else (o.spacing_weight, o.spacing_cap_m)
+        score += weight * st.space.clearance(corners[idx], cap) / cap
     if kind == "floor" and st.zone is not None:
         score += o.zone_bonus * shapely.contains_xy(st.zone, c.xy[idx, 0], c.xy[idx, 1])
     if kind == "floor" and size[2] > o.tall_m:

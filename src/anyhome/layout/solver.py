@@ -7,7 +7,8 @@ rule relative to the anchor or to its ``target`` (:mod:`.groups`). A few anchor 
 are tried when members do not fit. Arrangements (:mod:`.arrangements`) lay out the
 copies in rows, along the walls or about the centre. After every floor object the
 room's walkways are re-checked on the 5 cm navigation raster; what does not fit is
-dropped and reported, never forced. Ornaments (:mod:`.ornaments`) follow. Every weight
+dropped and reported, never forced. Zones offered to a bare room (:mod:`.fill`), rugs
+(:mod:`.layers`) and ornaments (:mod:`.ornaments`) follow. Every weight
 is a named option (:class:`~anyhome.layout.options.LayoutOptions`).
 """
 
@@ -19,7 +20,7 @@ import numpy as np
 from shapely.geometry import Polygon
 
 from anyhome.house import Dropped, Floorplan, HouseObject, Room
-from anyhome.layout import arrangements, layers, ornaments
+from anyhome.layout import arrangements, fill, layers, ornaments
 from anyhome.layout.options import DEFAULT_OPTIONS, LayoutOptions
 from anyhome.layout.state import RoomState
 from anyhome.layout.zones import arm_zones
@@ -131,6 +132,7 @@ def _key_dropped(st: RoomState) -> list[int]:
 
 def _furnish(st: RoomState, order: list[int], scales: dict[int, float]) -> None:
     rugs = []
+    zones = []
     for i in order:
         g = st.spec.groups[i]
         if scales.get(i, 1.0) != 1.0:
@@ -140,12 +142,16 @@ def _furnish(st: RoomState, order: list[int], scales: dict[int, float]) -> None:
         if layers.is_layer_group(g):
             rugs.append(g)
             continue
+        if g.fill:
+            zones.append(g)
+            continue
         st.zone = st.group_zones.get(i)
         if g.arrangement == "rows":
             arrangements.place_rows(st, g)
         else:
             arrangements.place_free(st, g)
     st.zone = None
+    fill.place_zones(st, zones)
     layers.place_layers(st, rugs)
     ornaments.place_ornaments(st)
 

@@ -60,6 +60,9 @@ class RoomState:
     (:mod:`anyhome.layout.zones`)."""
     zone: Polygon | None = None
     """The arm of the group being placed: floor poses inside it score higher."""
+    spread: bool = False
+    """A zone is being placed (:mod:`anyhome.layout.fill`): anchor poses away from the
+    furniture already there score higher."""
 
     def __post_init__(self) -> None:
         self.space = RoomSpace(self.floorplan, self.room)

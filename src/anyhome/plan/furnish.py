@@ -32,6 +32,10 @@ MAX_TABLE_M = 8.0
 ORNAMENT_RULES = ("place_top", "place_on_wall")
 """Rules an ornament may use."""
 
+
+ZONE_PRIORITY = 7
+"""Priority of a zone group: placed after every group of its room's own set."""
+
 Item = dict[str, Any]
 Group = dict[str, Any]
 
@@ -174,6 +178,31 @@ def furnish_room(kb: KnowledgeBase, furnish: str, room_type: str, area_m2: float
         if p >= 1.0 or rng.random() < p:
             ornaments.append(make_item(kb, entry, rng, ornament=True))
     return groups, ornaments, unused
+
+
+def zone_groups(kb: KnowledgeBase, furnish: str, room_type: str, area_m2: float, groups: list[Group],
+                rng: np.random.Generator) -> list[Group]:
+    """The zones offered to a room (``fill`` groups, see :attr:`anyhome.plan.spec.GroupSpec.fill`):
+    furniture.yaml ``zones:`` of its furnishing set, else of its type, each built once,
+    leaving out the templates ``groups`` already has. The layout places them only while
+    the room's floor is under-furnished (:mod:`anyhome.layout.fill`)."""
+    zones = kb.raw("furniture").get("zones", {})
+    entries = zones.get(furnish) or zones.get(room_type) or []
+    have = {g["name"] for g in groups}
+    out = []
+    for entry in entries:
+        if entry.get("one_of"):
+            choices = entry["one_of"]
+            entry = {**entry, "group": choices[int(rng.integers(len(choices)))]}
+        d = group_def(kb, entry)
+        if d["key"] in have:
+            continue
+        g = build_group(kb, d, area_m2, rng)
+        g["fill"] = True
+        g["priority"] = ZONE_PRIORITY
+        have.add(g["name"])
+        out.append(g)
+    return out
 
 
 def _words(text: str) -> set[str]:

@@ -375,6 +375,8 @@ class FurnitureSet(_Model):
 class FurnitureFile(_Model):
     groups: dict[str, Group]
     sets: dict[str, FurnitureSet]
+    zones: dict[str, list[SetEntry]] = Field(
+        default_factory=dict, description="furnishing set or room type -> zone groups a large room may get")
 
 
 # ------------------------------------------------------------------ styles.yaml
@@ -773,6 +775,14 @@ class KnowledgeBase:
                 need(it.use is not None, "furniture", ("sets", s, "ornaments", j), "missing use (the object prototype)")
                 need(it.use in objects, "furniture", ("sets", s, "ornaments", j, "use"), lambda: known(str(it.use), objects, "object"))
                 self._check_item_params(it, "furniture", ("sets", s, "ornaments", j, "params"))
+        for z, entries in self.furniture.zones.items():
+            need(z in sets or z in types, "furniture", ("zones", z), lambda: known(z, sets, "furnishing set"))
+            for j, e in enumerate(entries):
+                for g in e.one_of or [str(e.group)]:
+                    need(g in groups, "furniture", ("zones", z, j), lambda: known(str(g), groups, "group"))
+                for part in [e.anchor, *(e.members or [])]:
+                    if part is not None:
+                        self._check_item_params(part, "furniture", ("zones", z, j, "params"))
         # styles.yaml
         classes = self.styles.asset_classes
         need("plain" in classes, "styles", ("asset_classes",), "needs the 'plain' class (no particular look)")

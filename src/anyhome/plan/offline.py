@@ -285,7 +285,29 @@ def _furnish(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], main_key: str
     for s, (groups, _) in zip(slots, out):
         _grow_area(s, groups, warnings, factor=_floor_use(kb, s.type))
     _cap_house_area(slots, warnings)
+    _add_zones(kb, parsed, slots, out, rng)
     return out
+
+
+def _add_zones(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], rooms: list[tuple[list[fu.Group], list[fu.Item]]],
+               rng: np.random.Generator) -> None:
+    """Each room's zones (:func:`anyhome.plan.furnish.zone_groups`) after its groups, less
+    what the text rules out, within the per-room and per-house object caps."""
+    total = sum(fu.object_count(g, o) for g, o in rooms)
+    negated = [m for m in parsed.objects if m.negated]
+    for s, (groups, ornaments) in zip(slots, rooms):
+        fill = fu.zone_groups(kb, s.furnish, s.type, s.area, groups, rng)
+        for m in negated:
+            if m.room is None or s.mention == m.room:
+                fu.remove_mention(kb, m, fill, [])
+        n = fu.object_count(groups, ornaments)
+        for g in fill:
+            k = fu.object_count([g], [])
+            if n + k > MAX_ROOM_OBJECTS or total + k > MAX_HOUSE_OBJECTS:
+                break
+            groups.append(g)
+            n += k
+            total += k
 
 
 def _cap_objects(slots: list[Slot], rooms: list[tuple[list[fu.Group], list[fu.Item]]], warnings: list[str]) -> None:
@@ -452,7 +474,7 @@ def _room_spec(kb: KnowledgeBase, s: Slot, groups: list[fu.Group], ornaments: li
         group_specs.append(
             GroupSpec(
                 name=name, anchor=items[0], members=items[1:], arrangement=g["arrangement"],
-                repeat=g["repeat"], priority=g["priority"], required=g["required"],
+                repeat=g["repeat"], priority=g["priority"], required=g["required"], fill=g.get("fill", False),
             )  # fmt: skip
         )
     return RoomSpec(

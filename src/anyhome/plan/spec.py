@@ -188,12 +188,16 @@ class GroupSpec(_Model):
     repeat: int = Field(default=1, ge=1, le=MAX_COUNT)
     priority: int = Field(default=0, description="lower is placed earlier")
     required: bool = Field(default=False, description="the text asked for it explicitly")
+    fill: bool = Field(default=False, description=(
+        "a zone proposed for a large room (a reading corner, a second seating group): placed "
+        "only while the room's floor is under-furnished, and left out without a warning when it "
+        "does not fit (anyhome.layout.fill)"))
 
     @property
     def key(self) -> bool:
         """A group its room must keep: asked for by the text, or what makes the room what
         it is (priority :data:`KEY_PRIORITY` or lower: the bed, the sofa)."""
-        return self.required or self.priority <= KEY_PRIORITY
+        return not self.fill and (self.required or self.priority <= KEY_PRIORITY)
 
 
 KEY_PRIORITY = 0

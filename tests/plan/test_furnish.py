@@ -1,0 +1,42 @@
+"""Zones offered to rooms (anyhome.plan.furnish.zone_groups) and their place in the plan."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from anyhome.plan import get_planner
+from anyhome.plan.furnish import ZONE_PRIORITY, furnish_room, zone_groups
+from anyhome.plan.knowledge import knowledge_base
+
+
+def test_zones_come_from_the_set_and_skip_what_the_room_has():
+    kb = knowledge_base()
+    rng = np.random.default_rng(0)
+    groups, _, _ = furnish_room(kb, "living_room", "living_room", 30.0, rng)
+    zones = zone_groups(kb, "living_room", "living_room", 30.0, groups, rng)
+    offered = [e["group"] for e in kb.raw("furniture")["zones"]["living_room"]]
+    have = {g["name"] for g in groups}
+    assert [z["name"] for z in zones] == [k for k in offered if k not in have]
+    assert all(z["fill"] and z["priority"] == ZONE_PRIORITY and not z["required"] for z in zones)
+
+
+def test_a_type_without_zones_gets_none():
+    kb = knowledge_base()
+    assert zone_groups(kb, "bathroom", "bathroom", 40.0, [], np.random.default_rng(0)) == []
+
+
+def test_planned_zones_are_fill_groups_after_the_rooms_own():
+    spec = get_planner("offline").plan("a large living room with a sofa", np.random.default_rng(1))
+    room = next(r for r in spec.rooms if r.type == "living_room")
+    fill = [g for g in room.groups if g.fill]
+    assert fill, [g.name for g in room.groups]
+    assert all(not g.key for g in fill)
+    assert max(g.priority for g in room.groups if not g.fill) < min(g.priority for g in fill)
+
+
+def test_a_ruled_out_object_is_not_offered_as_a_zone():
+    """'no armchairs': the conversation and reading corners (armchairs) are not offered."""
+    spec = get_planner("offline").plan("a large living room with a sofa and no armchairs", np.random.default_rng(1))
+    room = next(r for r in spec.rooms if r.type == "living_room")
+    names = [it.name for g in room.groups for it in [g.anchor, *g.members]]
+    assert not any("armchair" in n or "club chair" in n or "lounge chair" in n for n in names), names
