@@ -10,6 +10,7 @@ from shapely.geometry import LineString, Point, Polygon
 
 from anyhome.geometry import footprint_polygon
 from anyhome.layout import layout_house
+from anyhome.layout.groups import sightline as sightline_corners
 from anyhome.layout.layers import LAYER_HEIGHT_M
 from tests.layout.helpers import check_valid, front, group, house_spec, item, rect, single_room
 
@@ -124,3 +125,30 @@ def test_plant_goes_on_the_floor_when_no_top_is_free():
     res = layout_house(house_spec({"r1": []}, ornaments={"r1": [plant]}), fp, np.random.default_rng(0))
     assert check_valid(fp, res.objects) == []
     assert _one(res, "small plant").support == "floor"
+
+
+def test_a_tv_stand_of_its_own_faces_the_sofa_and_keeps_its_view_clear():
+    """A TV group placed after the lounge (place_front to_wall, target sofa): on the wall
+    across from the sofa, and an armchair placed later stays out of the sightline."""
+    stand = TV_STAND.model_copy(update={"target": "sofa"})
+    chair = ARMCHAIR.model_copy(update={"size_m": (0.85, 0.85, 0.9)})
+    for seed in range(3):
+        fp = single_room(rect(0, 0, 5.5, 4.2), door=((0.3, 0.0), (1.2, 0.0)))
+        groups = [group("lounge", SOFA, [COFFEE], priority=0), group("tv", stand, priority=1),
+                  group("armchairs", chair, priority=2)]
+        res = layout_house(house_spec({"r1": groups}), fp, np.random.default_rng(seed))
+        assert check_valid(fp, res.objects) == []
+        sofa, tv = _one(res, "sofa"), _one(res, "tv stand")
+        assert float(front(sofa.yaw) @ front(tv.yaw)) < -0.99  # face each other
+        strip = Polygon(sightline_corners(sofa, tv))
+        arm = _one(res, "armchair")
+        assert not strip.intersects(footprint_polygon(arm.position, arm.size, arm.yaw))
+
+
+def test_a_tv_stand_with_no_sofa_stands_against_a_wall():
+    stand = TV_STAND.model_copy(update={"target": "sofa"})
+    fp = single_room(rect(0, 0, 4.0, 3.5))
+    res = layout_house(house_spec({"r1": [group("tv", stand)]}), fp, np.random.default_rng(0))
+    tv = _one(res, "tv stand")
+    back = np.asarray(tv.position[:2]) - front(tv.yaw) * tv.size[1] / 2
+    assert Polygon(fp.rooms[0].polygon).exterior.distance(Point(back)) < 0.05

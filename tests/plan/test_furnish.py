@@ -40,3 +40,34 @@ def test_a_ruled_out_object_is_not_offered_as_a_zone():
     room = next(r for r in spec.rooms if r.type == "living_room")
     names = [it.name for g in room.groups for it in [g.anchor, *g.members]]
     assert not any("armchair" in n or "club chair" in n or "lounge chair" in n for n in names), names
+
+
+def test_a_tv_asked_for_joins_the_sofa_group():
+    """'a sofa and a TV': the TV stand goes with the lounge group (placed across from the
+    sofa, which is posed so the wall ahead can take it), not as a group of its own."""
+    for seed in range(6):
+        spec = get_planner("offline").plan("a living room with a sofa and a big TV", np.random.default_rng(seed))
+        room = next(r for r in spec.rooms if r.type == "living_room")
+        assert "tv" not in [g.name for g in room.groups]
+        lounge = next(g for g in room.groups if g.name == "lounge")
+        stands = [m for m in lounge.members if m.category == "tv_stand"]
+        assert len(stands) == 1
+        assert stands[0].rule == "place_front" and stands[0].params.get("to_wall")
+        assert stands[0].target in (None, lounge.anchor.name)
+
+
+def test_join_groups_keeps_a_group_with_no_host():
+    kb = knowledge_base()
+    rng = np.random.default_rng(0)
+    from anyhome.plan.furnish import build_group, group_def, join_groups
+
+    tv = build_group(kb, group_def(kb, {"group": "tv"}), 12.0, rng)
+    bed = build_group(kb, group_def(kb, {"group": "bed"}), 12.0, rng)
+    groups = [bed, tv]
+    join_groups(groups)
+    assert [g["name"] for g in groups] == ["bed", "tv"]
+    lounge = build_group(kb, group_def(kb, {"group": "lounge", "members": [{}, {"prob": 0.0}]}), 12.0, rng)
+    groups = [lounge, tv]
+    join_groups(groups)
+    assert [g["name"] for g in groups] == ["lounge"]
+    assert [m["target"] for m in lounge["members"] if m["category"] == "tv_stand"] == [lounge["anchor"]["name"]]

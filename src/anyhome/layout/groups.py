@@ -32,14 +32,17 @@ def place_group_copy(st: RoomState, g: GroupSpec, copy: int, prev: HouseObject |
             return None
         st.dropped.extend(place_members(st, g, label, obj))
         return obj
-    c, kind, rule, _ = arrangements.anchor_candidates(st, g, prev)
+    c, kind, rule, ref = arrangements.anchor_candidates(st, g, prev)
     o = st.options
     tries = o.anchor_tries_required if g.required else o.anchor_tries
     if kind == "floor" and g.members and len(c):
         c = scoring.group_room_bonus(st, g, c)
     order = scoring.rank(st, c, size, kind, o.noise, spacing=True)
     choices = scoring.verified(st, c, order, size, kind, None, k=tries, min_sep_m=o.anchor_min_sep_m)
-    return try_choices(st, g, label, choices, kind, rule)
+    anchor = try_choices(st, g, label, choices, kind, rule)
+    if anchor is not None and ref is not None and rule == "place_front" and item.params.get("to_wall"):
+        st.space.keep_clear.append(sightline(ref, anchor))  # a TV of its own, across from the sofa
+    return anchor
 
 
 def try_choices(st: RoomState, g: GroupSpec, label: str, choices: list[Choice], kind: str,

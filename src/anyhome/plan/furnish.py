@@ -136,6 +136,7 @@ def build_group(kb: KnowledgeBase, d: dict[str, Any], area_m2: float, rng: np.ra
         repeat = int(np.clip(round(area_m2 / float(d["per_m2"])), lo, hi))
     g = {
         "name": d.get("key", "group"),
+        "join": list(d.get("join", [])),
         "anchor": anchor,
         "members": members,
         "arrangement": d.get("arrangement", "free"),
@@ -448,7 +449,7 @@ def _apply_ornament(kb: KnowledgeBase, m: Mention, proto: dict[str, Any], catego
         found["params"] = {"elevation_m": float(proto["wall_mount_m"])}
         return
     target = found.get("target")
-    if target and not any(_matches(it, target, target.split("_")[-1]) for g in groups for it in [g["anchor"], *g["members"]]):
+    if target and not _has_target(groups, target):  # "tv stand" or "tv_stand"
         if proto.get("group"):
             g = build_group(kb, group_def(kb, {"group": proto["group"]}), area_m2, rng)
             g["required"] = True
@@ -468,6 +469,20 @@ def _has_target(groups: list[Group], target: str) -> bool:
             if it["name"] == t or it["category"] == target or it["category"] == t.replace(" ", "_"):
                 return True
     return False
+
+
+def join_groups(groups: list[Group]) -> None:
+    """Groups that join another (furniture.yaml ``join:``) become its members when the
+    room has it: the anchor is placed relative to the host's anchor (its ``target``), the
+    members as before. A TV asked for in a room with a sofa group goes with that group, so
+    the sofa is placed where the wall ahead can take the TV."""
+    for g in list(groups):
+        host = next((h for key in g.get("join", []) for h in groups if h is not g and h["name"] == key), None)
+        if host is None:
+            continue
+        host["members"] = [*host["members"], {**g["anchor"], "target": host["anchor"]["name"]}, *g["members"]]
+        host["required"] = host["required"] or g["required"]
+        groups.remove(g)
 
 
 def finalize_ornaments(groups: list[Group], ornaments: list[Item]) -> list[Item]:

@@ -334,6 +334,9 @@ class GroupItem(_Model):
 class Group(_Model):
     anchor: GroupItem
     members: list[GroupItem] = Field(default_factory=list)
+    join: list[str] = Field(default_factory=list, description=(
+        "groups (by template) this one joins when its room has one: its items become that "
+        "group's members (a TV asked for by itself goes with the sofa's group)"))
     priority: int = 0
     arrangement: Arrangement = "free"
     repeat: Annotated[int, Field(ge=1)] | tuple[Annotated[int, Field(ge=1)], Annotated[int, Field(ge=1)]] = 1
@@ -759,6 +762,8 @@ class KnowledgeBase:
                 need(it.use is not None, "furniture", loc, "missing use (the object prototype)")
                 need(it.use in objects, "furniture", (*loc, "use"), lambda: known(str(it.use), objects, "object"))
                 self._check_item_params(it, "furniture", (*loc, "params"))
+            for host in grp.join:
+                need(host in groups, "furniture", ("groups", g, "join"), lambda: known(host, groups, "group"))
         need("other" in sets, "furniture", ("sets",), "needs a set named 'other' (rooms with no set of their own)")
         for s, fs in sets.items():
             for j, e in enumerate(fs.groups):
