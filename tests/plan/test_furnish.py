@@ -64,10 +64,23 @@ def test_join_groups_keeps_a_group_with_no_host():
     tv = build_group(kb, group_def(kb, {"group": "tv"}), 12.0, rng)
     bed = build_group(kb, group_def(kb, {"group": "bed"}), 12.0, rng)
     groups = [bed, tv]
-    join_groups(groups)
+    join_groups(kb, groups)
     assert [g["name"] for g in groups] == ["bed", "tv"]
     lounge = build_group(kb, group_def(kb, {"group": "lounge", "members": [{}, {"prob": 0.0}]}), 12.0, rng)
     groups = [lounge, tv]
-    join_groups(groups)
+    join_groups(kb, groups)
     assert [g["name"] for g in groups] == ["lounge"]
     assert [m["target"] for m in lounge["members"] if m["category"] == "tv_stand"] == [lounge["anchor"]["name"]]
+
+
+def test_a_set_listing_its_own_zones_gets_only_those():
+    """A home cinema (type living_room) lists its own: no living-room reading corner; a
+    prayer hall lists none; a set that lists nothing gets its type's."""
+    kb = knowledge_base()
+    rng = np.random.default_rng(0)
+    cinema = {z["name"] for z in zone_groups(kb, "home_cinema", "living_room", 40.0, [], rng)}
+    assert cinema and "reading_chair" not in cinema and "conversation" not in cinema
+    assert zone_groups(kb, "prayer_hall", "hall", 80.0, [], rng) == []
+    assert "game_room" not in kb.raw("furniture")["zones"]
+    assert {z["name"] for z in zone_groups(kb, "game_room", "living_room", 40.0, [], rng)} == {
+        z["name"] for z in zone_groups(kb, "living_room", "living_room", 40.0, [], rng)}

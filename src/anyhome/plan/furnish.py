@@ -136,7 +136,6 @@ def build_group(kb: KnowledgeBase, d: dict[str, Any], area_m2: float, rng: np.ra
         repeat = int(np.clip(round(area_m2 / float(d["per_m2"])), lo, hi))
     g = {
         "name": d.get("key", "group"),
-        "join": list(d.get("join", [])),
         "anchor": anchor,
         "members": members,
         "arrangement": d.get("arrangement", "free"),
@@ -184,11 +183,12 @@ def furnish_room(kb: KnowledgeBase, furnish: str, room_type: str, area_m2: float
 def zone_groups(kb: KnowledgeBase, furnish: str, room_type: str, area_m2: float, groups: list[Group],
                 rng: np.random.Generator) -> list[Group]:
     """The zones offered to a room (``fill`` groups, see :attr:`anyhome.plan.spec.GroupSpec.fill`):
-    furniture.yaml ``zones:`` of its furnishing set, else of its type, each built once,
+    furniture.yaml ``zones:`` of its furnishing set when it lists them (``[]``: none, a
+    prayer hall stays open), else of its type, each built once,
     leaving out the templates ``groups`` already has. The layout places them only while
     the room's floor is under-furnished (:mod:`anyhome.layout.fill`)."""
     zones = kb.raw("furniture").get("zones", {})
-    entries = zones.get(furnish) or zones.get(room_type) or []
+    entries = zones[furnish] if furnish in zones else zones.get(room_type, [])
     have = {g["name"] for g in groups}
     out = []
     for entry in entries:
@@ -471,13 +471,15 @@ def _has_target(groups: list[Group], target: str) -> bool:
     return False
 
 
-def join_groups(groups: list[Group]) -> None:
+def join_groups(kb: KnowledgeBase, groups: list[Group]) -> None:
     """Groups that join another (furniture.yaml ``join:``) become its members when the
     room has it: the anchor is placed relative to the host's anchor (its ``target``), the
     members as before. A TV asked for in a room with a sofa group goes with that group, so
     the sofa is placed where the wall ahead can take the TV."""
+    templates = kb.raw("furniture")["groups"]
     for g in list(groups):
-        host = next((h for key in g.get("join", []) for h in groups if h is not g and h["name"] == key), None)
+        joins = templates.get(g["name"], {}).get("join", [])
+        host = next((h for key in joins for h in groups if h is not g and h["name"] == key), None)
         if host is None:
             continue
         host["members"] = [*host["members"], {**g["anchor"], "target": host["anchor"]["name"]}, *g["members"]]

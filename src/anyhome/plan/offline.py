@@ -280,7 +280,7 @@ def _furnish(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], main_key: str
             fu.remove_mention(kb, m, groups, ornaments)
     out = []
     for s, (groups, ornaments, _) in zip(slots, built):
-        fu.join_groups(groups)
+        fu.join_groups(kb, groups)
         out.append((groups, fu.finalize_ornaments(groups, ornaments)))
     _cap_objects(slots, out, warnings)
     for s, (groups, _) in zip(slots, out):
