@@ -6,6 +6,7 @@ from collections.abc import Sequence
 from typing import Literal
 
 import numpy as np
+from pydantic import Field
 
 from anyhome.layout.rules.base import (
     Cands,
@@ -29,6 +30,9 @@ AWAY_FROM_DOOR_PREF = 0.6
 class Params(RuleParams):
     wall: Literal["any", "longest", "opposite_door"] = "any"
     """Which wall: any, the longest, or the one furthest from the doors."""
+    far_m: float = Field(default=0.0, ge=0.0, le=50.0)
+    """At least this far (metres, footprint to footprint) from the target (the item's
+    ``target``, else its group's anchor); 0: no such wish."""
 
 
 def place_wall(space: RoomSpace, size: Sequence[float], which: str = "any") -> Cands:
