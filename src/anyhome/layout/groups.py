@@ -37,7 +37,10 @@ def place_group_copy(st: RoomState, g: GroupSpec, copy: int, prev: HouseObject |
     tries = o.anchor_tries_required if g.required else o.anchor_tries
     if kind == "floor" and g.members and len(c):
         c = scoring.group_room_bonus(st, g, c)
-    order = scoring.rank(st, c, size, kind, o.noise, spacing=True)
+    if kind == "floor":
+        c = scoring.run_room_bonus(st, g, c, rule, prev is None)
+    run_on = prev is not None and REGISTRY[rule].continues  # the copy continues a run: no jump
+    order = scoring.rank(st, c, size, kind, o.member_noise if run_on else o.noise, spacing=not run_on)
     choices = scoring.verified(st, c, order, size, kind, None, k=tries, min_sep_m=o.anchor_min_sep_m)
     return try_choices(st, g, label, choices, kind, rule)
 
@@ -97,6 +100,7 @@ def place_members(st: RoomState, g: GroupSpec, label: str, anchor: HouseObject) 
     drops: list[Dropped] = []
     pending = list(g.members)
     prev_wall = anchor if REGISTRY[anchor.rule].against_wall else None
+    run: list[HouseObject] = [anchor] if prev_wall is not None else []
     names = {m.name for m in g.members} | {g.anchor.name}
     while pending:
         ready = [m for m in pending if (m.target or g.anchor.name) in placed or (m.target or "") not in names]
@@ -110,7 +114,7 @@ def place_members(st: RoomState, g: GroupSpec, label: str, anchor: HouseObject) 
         refs = placed.get(tname)
         if refs is None:  # target names something outside the group
             refs = st.match(tname) or [anchor]
-        objs, d = place_item_copies(st, m, refs, label, anchor.id, prev_wall)
+        objs, d = place_item_copies(st, m, refs, label, anchor.id, prev_wall, run)
         placed.setdefault(m.name, []).extend(objs)
         for o in objs:
             if REGISTRY[o.rule].runs_along_wall:
@@ -120,8 +124,11 @@ def place_members(st: RoomState, g: GroupSpec, label: str, anchor: HouseObject) 
 
 
 def place_item_copies(st: RoomState, m: ItemSpec, refs: list[HouseObject], label: str | None,
-                      anchor_id: str | None, prev_wall: HouseObject | None) -> tuple[list[HouseObject], list[Dropped]]:
-    """The ``count`` copies of member ``m`` against ``refs`` (its target's copies, in turn)."""
+                      anchor_id: str | None, prev_wall: HouseObject | None,
+                      run: list[HouseObject] | None = None) -> tuple[list[HouseObject], list[Dropped]]:
+    """The ``count`` copies of member ``m`` against ``refs`` (its target's copies, in turn);
+    ``run``: the group's pieces against a wall so far (grown as copies join it)."""
+    run = [] if run is None else run
     rule = REGISTRY[m.rule]
     objs: list[HouseObject] = []
     drops: list[Dropped] = []
@@ -137,7 +144,7 @@ def place_item_copies(st: RoomState, m: ItemSpec, refs: list[HouseObject], label
             reason = "does not fit on top of its target"
         else:
             params = rule.copy_params(dict(m.params), i, m.count)
-            obj = placement.place_single(st, m, params, ref, prev_same, prev_wall, label, anchor_id, i)
+            obj = placement.place_single(st, m, params, ref, prev_same, prev_wall, label, anchor_id, i, run)
             reason = scoring.no_fit_reason(st, m.size_m)
         if obj is None:
             drops.append(st.dropped_entry(m.name, reason))
@@ -148,6 +155,7 @@ def place_item_copies(st: RoomState, m: ItemSpec, refs: list[HouseObject], label
         prev_same = obj
         if REGISTRY[obj.rule].runs_along_wall:
             prev_wall = obj
+            run.append(obj)
     return objs, drops
 
 

@@ -16,6 +16,7 @@ from anyhome.layout.rules.base import (
     PlacementRule,
     RuleContext,
     RuleParams,
+    prefer_far,
     yaw_facing,
 )
 from anyhome.space import RoomSpace
@@ -77,7 +78,8 @@ def place_center(space: RoomSpace, size: Sequence[float], facing: str = "any") -
 
 def candidates(ctx: RuleContext) -> tuple[Cands, Kind]:
     assert isinstance(ctx.params, Params)
-    return place_center(ctx.space, ctx.size, ctx.params.facing), "floor"
+    c = place_center(ctx.space, ctx.size, ctx.params.facing)
+    return prefer_far(c, ctx.size, ctx.ref, ctx.params.far_m), "floor"
 
 
 RULE = PlacementRule("place_center", Params, candidates, __doc__ or "")

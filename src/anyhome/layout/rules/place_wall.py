@@ -15,6 +15,7 @@ from anyhome.layout.rules.base import (
     RuleContext,
     RuleParams,
     on_wall,
+    prefer_far,
     wall_positions,
 )
 from anyhome.space import RoomSpace
@@ -58,7 +59,7 @@ def place_wall(space: RoomSpace, size: Sequence[float], which: str = "any") -> C
 
 def candidates(ctx: RuleContext) -> tuple[Cands, Kind]:
     assert isinstance(ctx.params, Params)
-    return place_wall(ctx.space, ctx.size, ctx.params.wall), "floor"
+    return prefer_far(place_wall(ctx.space, ctx.size, ctx.params.wall), ctx.size, ctx.ref, ctx.params.far_m), "floor"
 
 
 RULE = PlacementRule("place_wall", Params, candidates, __doc__ or "", against_wall=True)
