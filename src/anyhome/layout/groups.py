@@ -10,6 +10,7 @@ from anyhome.layout import arrangements, placement, scoring
 from anyhome.layout.rules import REGISTRY, front_dir
 from anyhome.layout.rules import place_around as around_rule
 from anyhome.layout.rules import place_beside as beside_rule
+from anyhome.layout.rules import place_next_wall as next_wall_rule
 from anyhome.layout.rules import place_on_wall as on_wall_rule
 from anyhome.layout.rules.place_around import (
     around_allocation,
@@ -82,18 +83,21 @@ def compromises(st: RoomState, g: GroupSpec, label: str, anchor: HouseObject) ->
     """Members of this copy placed by a fallback: a ``to_wall`` item (a TV stand) not on
     the wall straight ahead of the anchor, facing it; an item beside the anchor placed by
     the last relaxation of ``place_beside`` (against a wall near it); a wall item not
-    centred behind an anchor that stands against a wall (a window in the way)."""
+    centred behind an anchor that stands against a wall (a window in the way); a piece
+    of a run along the walls that jumped (:func:`~.rules.place_next_wall.jumps`)."""
     names = {m.name for m in g.members if m.rule == "place_front" and m.params.get("to_wall")
              and m.target in (None, g.anchor.name)}
     beside = {m.name for m in g.members if m.rule == "place_beside" and m.target in (None, g.anchor.name)}
     over = {m.name for m in g.members if m.rule == "place_on_wall" and m.target in (None, g.anchor.name)}
-    if not names and not beside and not over:
+    runs = REGISTRY[anchor.rule].runs_along_wall and any(m.rule == "place_next_wall" for m in g.members)
+    if not names and not beside and not over and not runs:
         return 0
     back = front_dir(anchor.yaw)
     mine = [o for o in st.space.objects if o.group == label]
     return (sum(1 for o in mine if o.name in names and float(front_dir(o.yaw) @ back) > -0.99)
             + sum(1 for o in mine if o.name in beside and not beside_rule.stands_beside(o, anchor))
-            + sum(1 for o in mine if o.name in over and not on_wall_rule.centred_behind(o, anchor)))
+            + sum(1 for o in mine if o.name in over and not on_wall_rule.centred_behind(o, anchor))
+            + (next_wall_rule.jumps([anchor, *(o for o in mine if o.rule == "place_next_wall")]) if runs else 0))
 
 
 def drop_group(st: RoomState, g: GroupSpec, reason: str) -> None:

@@ -7,7 +7,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from anyhome.geometry import footprint_corners
+from anyhome.geometry import footprint_corners, footprint_polygon
 from anyhome.house import HouseObject
 from anyhome.layout.rules.base import (
     Cands,
@@ -27,6 +27,8 @@ EARLIER_PIECE_PREF = -0.3
 CORNER_REACH_M = 0.3
 """The run turns a corner onto a wall the previous piece stands at most this much further
 from than the new piece is deep (the two then touch or nearly so)."""
+JOIN_GAP_M = 0.3
+"""A piece of a run further than this from every earlier piece jumped (a compromise)."""
 NEAR_TARGET_PER_M = 0.5
 """With a target and no run: preference lost per metre between the footprints."""
 
@@ -66,6 +68,13 @@ def place_next_wall(space: RoomSpace, size: Sequence[float], prev: HouseObject |
                 out = out + Cands(on_wall(wall, ts, d), np.full(len(ts), wall.yaw), np.zeros(len(ts)),
                                   np.full(len(ts), 0.8))
     return out
+
+
+def jumps(pieces: Sequence[HouseObject]) -> int:
+    """How many of ``pieces`` (a run, first piece first) stand more than
+    :data:`JOIN_GAP_M` from every piece before them: the run jumped there."""
+    polys = [footprint_polygon(p.position, p.size, p.yaw) for p in pieces]
+    return sum(1 for i in range(1, len(polys)) if min(polys[i].distance(q) for q in polys[:i]) > JOIN_GAP_M)
 
 
 def candidates(ctx: RuleContext) -> tuple[Cands, Kind]:
