@@ -359,3 +359,22 @@ def test_run_of_anchors_continues_rather_than_jumps():
         _, res = run([g], polygon=room, seed=seed, door=((2.5, 0.0), (3.4, 0.0)))
         runs = [r for r in room_relations([g], res.objects, room) if r.kind == RUN]
         assert len(runs) == 3 and all(r.met for r in runs), (seed, runs)
+
+
+def test_footprint_gaps_match_shapely():
+    import shapely
+
+    from anyhome.layout.rules.base import HALF_PI, footprint_gaps
+    from anyhome.space import rect_corners
+
+    rng = np.random.default_rng(0)
+    for t in range(60):
+        turn = 0.0 if t % 3 else float(rng.uniform(-1, 1))  # some refs not axis-aligned
+        ref = res_obj("ref", (rng.uniform(0, 5), rng.uniform(0, 5)), (rng.uniform(0.2, 2), rng.uniform(0.2, 2), 1.0),
+                      float(rng.integers(-2, 3)) * HALF_PI + turn)
+        xy = rng.uniform(0, 6, (40, 2))
+        yaw = rng.integers(-2, 3, 40) * HALF_PI + np.where(rng.random(40) < 0.2, rng.uniform(-1, 1, 40), 0.0)
+        size = (rng.uniform(0.2, 2), rng.uniform(0.2, 2), 1.0)
+        want = shapely.distance(shapely.polygons(rect_corners(xy, size[:2], yaw)),
+                                footprint_polygon(ref.position, ref.size, ref.yaw))
+        assert np.allclose(footprint_gaps(xy, size, yaw, ref), want, atol=1e-9)

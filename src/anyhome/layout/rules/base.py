@@ -210,8 +210,26 @@ def footprint_gaps(xy: np.ndarray, size: Sequence[float], yaw: np.ndarray, ref: 
     ``yaw`` (n,) and ``ref``'s footprint; (n,) float, 0 where they touch."""
     if not len(xy):
         return np.zeros(0)
-    polys = shapely.polygons(rect_corners(xy, size[:2], yaw))
-    return np.asarray(shapely.distance(polys, footprint_polygon(ref.position, ref.size, ref.yaw)), dtype=float)
+    out = np.empty(len(xy))
+    # boxes turned by a multiple of 90 degrees, like ref: the gap of two axis-aligned rectangles
+    quarter = np.round(np.asarray(yaw) / HALF_PI)
+    aligned = np.abs(np.asarray(yaw) - quarter * HALF_PI) < 1e-6
+    rq = round(ref.yaw / HALF_PI)
+    if abs(ref.yaw - rq * HALF_PI) >= 1e-6:
+        aligned[:] = False
+    if aligned.any():
+        odd = (quarter[aligned].astype(int) % 2) == 1
+        hx = np.where(odd, size[1], size[0]) / 2
+        hy = np.where(odd, size[0], size[1]) / 2
+        rx, ry = (ref.size[1], ref.size[0]) if rq % 2 else (ref.size[0], ref.size[1])
+        dx = np.maximum(0.0, np.abs(xy[aligned, 0] - ref.position[0]) - hx - rx / 2)
+        dy = np.maximum(0.0, np.abs(xy[aligned, 1] - ref.position[1]) - hy - ry / 2)
+        out[aligned] = np.hypot(dx, dy)
+    rest = ~aligned
+    if rest.any():
+        polys = shapely.polygons(rect_corners(xy[rest], size[:2], np.asarray(yaw)[rest]))
+        out[rest] = shapely.distance(polys, footprint_polygon(ref.position, ref.size, ref.yaw))
+    return out
 
 
 def prefer_far(c: Cands, size: Sequence[float], ref: HouseObject | None, far_m: float) -> Cands:
