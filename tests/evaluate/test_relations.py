@@ -180,3 +180,22 @@ def test_unplaced_target_states_nothing():
     g = sofa_group(item("coffee table", "place_front", (1.0, 0.5, 0.4)))
     table = obj("t", "coffee table", (3.0, 1.6), (1.0, 0.5, 0.4), math.pi)
     assert rel.room_relations([g], [table], ROOM) == []
+
+
+def test_a_generated_house_reports_the_relations_its_plan_states():
+    from anyhome.evaluate.furnish_metrics import furnish_metrics
+    from anyhome.pipeline import generate
+
+    house = generate("a bedroom with a double bed, two nightstands and a desk", seed=0)
+    got = rel.house_relations(house)
+    assert got, "a bed with nightstands states relations"
+    assert {r.kind for r in got} >= {rel.BESIDE}
+    per_room = []
+    for room in house.rooms:
+        spec = next(r for r in house.plan["rooms"] if r["id"] == room.id)
+        groups = [GroupSpec.model_validate(g) for g in spec["groups"]]
+        per_room += rel.room_relations(groups, [o for o in house.objects if o.room == room.id], room.polygon)
+    assert got == per_room
+    m = furnish_metrics(house)
+    assert m.relations == {k: list(v) for k, v in rel.met_by_kind(got).items()}
+    assert any(line.strip().startswith("relations met") for line in m.summary_lines())

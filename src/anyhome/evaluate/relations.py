@@ -32,10 +32,12 @@ from dataclasses import dataclass
 
 import numpy as np
 import shapely
+from pydantic import ValidationError
 from shapely.geometry import Polygon
+from shapely.ops import nearest_points
 
 from anyhome.geometry import footprint_corners, footprint_polygon
-from anyhome.house import HouseObject
+from anyhome.house import House, HouseObject
 from anyhome.plan.spec import GroupSpec, ItemSpec
 
 NEAR = "near"
@@ -154,7 +156,7 @@ def facing_angle_deg(o: HouseObject, target: HouseObject) -> float:
     tp = _poly(target)
     if tp.contains(c):
         return 0.0
-    near = shapely.ops.nearest_points(tp, c)[0]
+    near = nearest_points(tp, c)[0]
     v = np.array([near.x, near.y]) - _xy(o)
     n = float(np.linalg.norm(v))
     if n < 1e-9:
@@ -395,4 +397,26 @@ def met_by_kind(relations: Sequence[Relation]) -> dict[str, tuple[int, int]]:
         rs = [r for r in relations if r.kind == k]
         if rs:
             out[k] = (sum(r.met for r in rs), len(rs))
+    return out
+
+
+def house_relations(house: House) -> list[Relation]:
+    """Every relation the plan recorded in ``house`` (``house.plan``) states, checked room
+    by room (an open-plan room with the groups of every planned room it holds); a group
+    the plan records in a form the current rules refuse is left out."""
+    plan = house.plan or {}
+    host = {h: r.id for r in house.rooms for h in r.merged}
+    groups: dict[str, list[GroupSpec]] = {}
+    for rs in plan.get("rooms", []) if isinstance(plan, dict) else []:
+        rid = host.get(rs.get("id", ""), rs.get("id", ""))
+        for g in rs.get("groups", []):
+            try:
+                groups.setdefault(rid, []).append(GroupSpec.model_validate(g))
+            except ValidationError:
+                continue
+    out: list[Relation] = []
+    for r in house.rooms:
+        if r.id in groups:
+            objs = [o for o in house.objects if o.room == r.id]
+            out += room_relations(groups[r.id], objs, r.polygon)
     return out
