@@ -68,7 +68,7 @@ def run_set(name: str, prompts: list[tuple[str, str]], seeds: list[int],
             log: Callable[[str], None]) -> dict[str, Any]:
     kb = knowledge_base()
     tot: dict[str, Any] = {"set": name, "houses": 0, "violations": 0, "key_dropped": [],
-                           "mismatched": [], "coverage": []}
+                           "mismatched": [], "coverage": [], "relations": {}}
     keys = ("n_planned", "n_dropped", "n_key", "n_layers_planned", "n_layers_placed", "n_tv_stands",
             "n_tv_against_wall", "n_tv_with_seat", "n_tv_facing_seat", "n_tv_view_blocked", "n_sets")
     for k in keys + ("n_floor_objects", "n_floor_objects_reached"):
@@ -89,6 +89,10 @@ def run_set(name: str, prompts: list[tuple[str, str]], seeds: list[int],
                 tot["key_dropped"] += [f"{pid}/s{seed}/{k}" for k in f.key_dropped]
                 tot["mismatched"] += [f"{pid}/s{seed}/{k}" for k in f.mismatched_sets]
                 tot["coverage"] += list(f.coverage.values())
+                for k, (met, n) in f.relations.items():
+                    tot["relations"].setdefault(k, [0, 0])
+                    tot["relations"][k][0] += met
+                    tot["relations"][k][1] += n
                 log(f"{name:16s} {pid[:28]:28s} s{seed} drop {f.n_dropped}/{f.n_planned} "
                     f"key {len(f.key_dropped)} rugs {f.n_layers_placed}/{f.n_layers_planned} "
                     f"tv {f.n_tv_against_wall}/{f.n_tv_stands} sets {len(f.mismatched_sets)}/{f.n_sets} "
@@ -133,6 +137,11 @@ def table(results: list[dict[str, Any]], seeds: list[int]) -> str:
         lambda r: f"{100 * pct(r['coverage'], 50):.0f} % / {100 * pct(r['coverage'], 90):.0f} %" if r["coverage"] else "-")
     row("furniture reachable (ground floor, 0.25 m agent)", ">= 95 %",
         lambda r: _frac(r["n_floor_objects_reached"], r["n_floor_objects"]))
+    row("relations the plans state, met", "", lambda r: _frac(sum(v[0] for v in r["relations"].values()),
+                                                              sum(v[1] for v in r["relations"].values())))
+    row("... kinds met below 95 %", "", lambda r: ", ".join(
+        f"{k} {100 * v[0] / v[1]:.0f} % ({v[0]}/{v[1]})" for k, v in r["relations"].items()
+        if v[1] and v[0] < 0.95 * v[1]) or "none")
     row("layout ms per room, median by objects placed", "30 objects <= 50", lambda r: _ms_by_count(r["rooms"]))
     return "\n".join(lines)
 

@@ -25,7 +25,9 @@ ROOM = rect(0, 0, 5, 4)
 
 BAD_VALUES = {  # a wrong value for each parameter a rule takes
     ("place_wall", "wall"): "north",
+    ("place_wall", "far_m"): -2.0,
     ("place_center", "facing"): "up",
+    ("place_center", "far_m"): "far",
     ("place_beside", "side"): "above",
     ("place_around", "sides"): "some",
     ("place_front", "distance_m"): -1.0,

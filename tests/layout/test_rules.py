@@ -277,3 +277,104 @@ def test_doors_kept_clear_and_ids_readable():
     ids = [o.id for o in res.objects]
     assert len(set(ids)) == len(ids)
     assert all(i.startswith("r1-cabinet-") for i in ids)
+
+
+def _gap(a, b):
+    return footprint_polygon(a.position, a.size, a.yaw).distance(footprint_polygon(b.position, b.size, b.yaw))
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_far_m_keeps_away_from_its_target(seed):
+    room = rect(0, 0, 7, 4)
+    tree = item("cat tree", "cat_tree", (0.6, 0.6, 1.5), "place_corner")
+    box = item("litter box", "box", (0.5, 0.4, 0.4), "place_wall", params={"far_m": 4.0})
+    _, res = run([group("pets", tree, [box])], polygon=room, seed=seed, door=((3.0, 0.0), (3.9, 0.0)))
+    assert _gap(named(res, "cat tree")[0], named(res, "litter box")[0]) >= 4.0 - 0.01
+
+
+def test_far_m_out_of_reach_is_relaxed_not_dropped():
+    tree = item("cat tree", "cat_tree", (0.6, 0.6, 1.5), "place_corner")
+    box = item("litter box", "box", (0.5, 0.4, 0.4), "place_center", params={"far_m": 30.0})
+    _, res = run([group("pets", tree, [box])])
+    assert not res.dropped
+    # the furthest free pose: well beyond half the room's length
+    assert _gap(named(res, "cat tree")[0], named(res, "litter box")[0]) > 2.5
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_place_next_wall_near_a_free_standing_target(seed):
+    from anyhome.evaluate.relations import NEAR, room_relations
+
+    room = rect(0, 0, 9, 4)
+    table = item("dining table", "table", (1.6, 0.9, 0.75), "place_center")
+    g = group("dining", table, [item("sideboard", "cabinet", (1.4, 0.45, 0.85), "place_next_wall")])
+    _, res = run([g], polygon=room, seed=seed, door=((0.5, 0.0), (1.4, 0.0)))
+    near = [r for r in room_relations([g], res.objects, room) if r.kind == NEAR]
+    assert len(near) == 1 and near[0].met, near
+
+
+def test_place_next_wall_keeps_to_its_wall_past_an_inner_corner():
+    from anyhome.layout.rules.place_next_wall import place_next_wall
+    from anyhome.layout.state import RoomState
+    from anyhome.plan.spec import RoomSpec
+
+    poly = l_shape(6.5, 4.5, 3.1, 2.2)  # inner corner at (3.4, 2.3)
+    fp = single_room(poly)
+    st = RoomState(fp, fp.rooms[0], RoomSpec(id="r1", name="r", type="other", area_m2=20.0),
+                   np.random.default_rng(0), __import__("anyhome.layout.options", fromlist=["x"]).DEFAULT_OPTIONS)
+    size = (0.9, 0.35, 1.9)
+    # a bookcase with its back on the wall y = 2.3, its left side at the inner corner
+    prev = res_obj("bookcase", (3.85, 2.3 - 0.175), size, math.pi)
+    c = place_next_wall(st.space, size, prev)
+    assert len(c)
+    for xy, yaw in zip(c.xy, c.yaw):
+        assert on_boundary(Polygon(poly), back_edge((xy[0], xy[1], 0.0), size, yaw))
+
+
+def res_obj(name, xy, size, yaw):
+    from anyhome.house import HouseObject
+
+    return HouseObject(id=name, room="r1", name=name, category=name, position=(xy[0], xy[1], 0.0), size=size, yaw=yaw)
+
+
+def test_place_beside_relaxed_to_a_wall_rather_than_dropped():
+    room = rect(0, 0, 1.8, 4.5)  # the bed fills the short wall: no side is free
+    bed = item("bed", "bed", (1.6, 2.0, 0.6), "place_wall")
+    stand = item("nightstand", "nightstand", (0.45, 0.4, 0.55), "place_beside", count=2)
+    _, res = run([group("bed", bed, [stand])], polygon=room, door=((0.45, 0.0), (1.35, 0.0)))
+    b = named(res, "bed")[0]
+    stands = named(res, "nightstand")
+    assert len(stands) == 2 and not res.dropped
+    for s in stands:
+        assert on_boundary(Polygon(room), back_edge(s.position, s.size, s.yaw))
+        assert _gap(s, b) <= 1.5 + 0.01
+
+
+def test_run_of_anchors_continues_rather_than_jumps():
+    from anyhome.evaluate.relations import RUN, room_relations
+
+    room = rect(0, 0, 6, 5)
+    g = group("shelves", item("bookcase", "shelf", (0.9, 0.35, 1.9), "place_next_wall"), repeat=4)
+    for seed in range(4):
+        _, res = run([g], polygon=room, seed=seed, door=((2.5, 0.0), (3.4, 0.0)))
+        runs = [r for r in room_relations([g], res.objects, room) if r.kind == RUN]
+        assert len(runs) == 3 and all(r.met for r in runs), (seed, runs)
+
+
+def test_footprint_gaps_match_shapely():
+    import shapely
+
+    from anyhome.layout.rules.base import HALF_PI, footprint_gaps
+    from anyhome.space import rect_corners
+
+    rng = np.random.default_rng(0)
+    for t in range(60):
+        turn = 0.0 if t % 3 else float(rng.uniform(-1, 1))  # some refs not axis-aligned
+        ref = res_obj("ref", (rng.uniform(0, 5), rng.uniform(0, 5)), (rng.uniform(0.2, 2), rng.uniform(0.2, 2), 1.0),
+                      float(rng.integers(-2, 3)) * HALF_PI + turn)
+        xy = rng.uniform(0, 6, (40, 2))
+        yaw = rng.integers(-2, 3, 40) * HALF_PI + np.where(rng.random(40) < 0.2, rng.uniform(-1, 1, 40), 0.0)
+        size = (rng.uniform(0.2, 2), rng.uniform(0.2, 2), 1.0)
+        want = shapely.distance(shapely.polygons(rect_corners(xy, size[:2], yaw)),
+                                footprint_polygon(ref.position, ref.size, ref.yaw))
+        assert np.allclose(footprint_gaps(xy, size, yaw, ref), want, atol=1e-9)

@@ -30,6 +30,10 @@ sets
     A set is **mismatched** when their asset records differ in anything but size (family,
     colours, shape parameters). Sets whose words ask for variety
     (:func:`anyhome.assets.sets.set_key`: "mismatched chairs") are left out.
+relations
+    Every relation the plan's groups state (near, far, in front, beside, symmetric pair,
+    around, facing, aligned, run), checked on the placed geometry by
+    :func:`anyhome.evaluate.relations.house_relations`: met and checked, by kind.
 floor coverage
     For a habitable room: the area of the union of its floor objects' footprints (floor
     layers and stairs left out) over the room's area.
@@ -48,6 +52,7 @@ from shapely.geometry import Polygon
 from anyhome import geometry
 from anyhome.assets.sets import set_key
 from anyhome.evaluate.polygons import is_usable, room_polygon
+from anyhome.evaluate.relations import house_relations, met_by_kind
 from anyhome.house import House, HouseObject, is_habitable
 from anyhome.plan.spec import KEY_PRIORITY
 from anyhome.tags import is_floor_layer
@@ -83,6 +88,9 @@ class FurnishMetrics:
     mismatched_sets: list[str] = field(default_factory=list)
     coverage: dict[str, float] = field(default_factory=dict)
     """Habitable room id -> floor coverage."""
+    relations: dict[str, list[int]] = field(default_factory=dict)
+    """Relation kind -> [met, checked] over the relations the plan's groups state
+    (:mod:`anyhome.evaluate.relations`)."""
 
     @property
     def drop_rate(self) -> float:
@@ -110,6 +118,9 @@ class FurnishMetrics:
             f"{self.n_tv_with_seat}, view blocked {self.n_tv_view_blocked}",
             f"  mismatched sets {len(self.mismatched_sets)}/{self.n_sets}; habitable rooms with floor "
             f"coverage < {100 * LOW_COVERAGE:.0f}%: {self.n_low_coverage}/{len(self.coverage)} (median {med})",
+            f"  relations met {sum(v[0] for v in self.relations.values())}/"
+            f"{sum(v[1] for v in self.relations.values())}"
+            + (" (" + ", ".join(f"{k} {v[0]}/{v[1]}" for k, v in self.relations.items()) + ")" if self.relations else ""),
         ]
 
 
@@ -144,6 +155,8 @@ def furnish_metrics(house: House) -> FurnishMetrics:
                    if o.support == "floor" and not is_floor_layer(o.tags)]
             covered = shapely.union_all(fps).intersection(poly).area if fps else 0.0
             m.coverage[r.id] = round(covered / poly.area, 4)
+    if len(placeable) == len(objects) and len(polys) == len(house.rooms):  # every pose measurable
+        m.relations = {k: list(v) for k, v in met_by_kind(house_relations(house)).items()}
     return m
 
 

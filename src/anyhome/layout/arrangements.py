@@ -24,12 +24,13 @@ def anchor_candidates(st: RoomState, g: GroupSpec, prev: HouseObject | None) -> 
     item = g.anchor
     size = item.size_m
     rule = item.rule
+    run = run_so_far(st, g)
     if g.arrangement == "along_walls":
         if prev is None:
             rule = rule if rule in ("place_wall", "place_corner") else "place_wall"
         else:
             rule = "place_next_wall"
-        c, kind = placement.candidates(st, item, rule, size, None, prev, prev)
+        c, kind = placement.candidates(st, item, rule, size, None, prev, prev, run=run)
         return c, kind, rule, None
     if g.arrangement == "center":
         params = REGISTRY["place_center"].parse(item.params, lenient=True)
@@ -38,13 +39,21 @@ def anchor_candidates(st: RoomState, g: GroupSpec, prev: HouseObject | None) -> 
         c.pref = c.pref * st.options.center_pref_scale
         return c, "floor", "place_center", None
     ref = None
-    if REGISTRY[rule].relative:
+    if REGISTRY[rule].relative or item.target:  # a target of another rule: far_m, a wall run near it
         refs = st.match(item.target)
         ref = refs[0] if refs else None
     if REGISTRY[rule].placement == "top":
         return Cands.empty(), "top", rule, ref
-    c, kind = placement.candidates(st, item, rule, size, ref, prev, prev)
+    c, kind = placement.candidates(st, item, rule, size, ref, prev, prev, run=run)
     return c, kind, rule, ref
+
+
+def run_so_far(st: RoomState, g: GroupSpec) -> list[HouseObject]:
+    """The anchors of ``g``'s copies placed so far that stand against a wall (a run of
+    bookcases), oldest first."""
+    return [o for o in st.space.objects if o.anchor is None and o.group is not None
+            and o.group.rsplit("-", 1)[0] == g.name and o.name == g.anchor.name
+            and REGISTRY[o.rule].runs_along_wall]
 
 
 def board_wall(st: RoomState) -> Wall | None:

@@ -9,6 +9,9 @@ from anyhome.house import Dropped, HouseObject
 from anyhome.layout import arrangements, placement, scoring
 from anyhome.layout.rules import REGISTRY, front_dir
 from anyhome.layout.rules import place_around as around_rule
+from anyhome.layout.rules import place_beside as beside_rule
+from anyhome.layout.rules import place_next_wall as next_wall_rule
+from anyhome.layout.rules import place_on_wall as on_wall_rule
 from anyhome.layout.rules.place_around import (
     around_allocation,
     around_positions,
@@ -37,7 +40,10 @@ def place_group_copy(st: RoomState, g: GroupSpec, copy: int, prev: HouseObject |
     tries = o.anchor_tries_required if g.required else o.anchor_tries
     if kind == "floor" and g.members and len(c):
         c = scoring.group_room_bonus(st, g, c)
-    order = scoring.rank(st, c, size, kind, o.noise, spacing=True)
+    if kind == "floor":
+        c = scoring.run_room_bonus(st, g, c, rule, prev is None)
+    run_on = prev is not None and REGISTRY[rule].continues  # the copy continues a run: no jump
+    order = scoring.rank(st, c, size, kind, o.member_noise if run_on else o.noise, spacing=not run_on)
     choices = scoring.verified(st, c, order, size, kind, None, k=tries, min_sep_m=o.anchor_min_sep_m)
     anchor = try_choices(st, g, label, choices, kind, rule)
     if anchor is not None and ref is not None and rule == "place_front" and item.params.get("to_wall"):
@@ -78,14 +84,23 @@ def try_choices(st: RoomState, g: GroupSpec, label: str, choices: list[Choice], 
 
 def compromises(st: RoomState, g: GroupSpec, label: str, anchor: HouseObject) -> int:
     """Members of this copy placed by a fallback: a ``to_wall`` item (a TV stand) not on
-    the wall straight ahead of the anchor, facing it."""
+    the wall straight ahead of the anchor, facing it; an item beside the anchor placed by
+    the last relaxation of ``place_beside`` (against a wall near it); a wall item not
+    centred behind an anchor that stands against a wall (a window in the way); a piece
+    of a run along the walls that jumped (:func:`~.rules.place_next_wall.jumps`)."""
     names = {m.name for m in g.members if m.rule == "place_front" and m.params.get("to_wall")
              and m.target in (None, g.anchor.name)}
-    if not names:
+    beside = {m.name for m in g.members if m.rule == "place_beside" and m.target in (None, g.anchor.name)}
+    over = {m.name for m in g.members if m.rule == "place_on_wall" and m.target in (None, g.anchor.name)}
+    runs = REGISTRY[anchor.rule].runs_along_wall and any(m.rule == "place_next_wall" for m in g.members)
+    if not names and not beside and not over and not runs:
         return 0
     back = front_dir(anchor.yaw)
-    return sum(1 for o in st.space.objects if o.group == label and o.name in names
-               and float(front_dir(o.yaw) @ back) > -0.99)
+    mine = [o for o in st.space.objects if o.group == label]
+    return (sum(1 for o in mine if o.name in names and float(front_dir(o.yaw) @ back) > -0.99)
+            + sum(1 for o in mine if o.name in beside and not beside_rule.stands_beside(o, anchor))
+            + sum(1 for o in mine if o.name in over and not on_wall_rule.centred_behind(o, anchor))
+            + (next_wall_rule.jumps([anchor, *(o for o in mine if o.rule == "place_next_wall")]) if runs else 0))
 
 
 def drop_group(st: RoomState, g: GroupSpec, reason: str) -> None:
@@ -100,6 +115,7 @@ def place_members(st: RoomState, g: GroupSpec, label: str, anchor: HouseObject) 
     drops: list[Dropped] = []
     pending = list(g.members)
     prev_wall = anchor if REGISTRY[anchor.rule].against_wall else None
+    run: list[HouseObject] = [anchor] if prev_wall is not None else []
     names = {m.name for m in g.members} | {g.anchor.name}
     while pending:
         ready = [m for m in pending if (m.target or g.anchor.name) in placed or (m.target or "") not in names]
@@ -113,7 +129,7 @@ def place_members(st: RoomState, g: GroupSpec, label: str, anchor: HouseObject) 
         refs = placed.get(tname)
         if refs is None:  # target names something outside the group
             refs = st.match(tname) or [anchor]
-        objs, d = place_item_copies(st, m, refs, label, anchor.id, prev_wall)
+        objs, d = place_item_copies(st, m, refs, label, anchor.id, prev_wall, run)
         placed.setdefault(m.name, []).extend(objs)
         for o in objs:
             if REGISTRY[o.rule].runs_along_wall:
@@ -123,8 +139,11 @@ def place_members(st: RoomState, g: GroupSpec, label: str, anchor: HouseObject) 
 
 
 def place_item_copies(st: RoomState, m: ItemSpec, refs: list[HouseObject], label: str | None,
-                      anchor_id: str | None, prev_wall: HouseObject | None) -> tuple[list[HouseObject], list[Dropped]]:
-    """The ``count`` copies of member ``m`` against ``refs`` (its target's copies, in turn)."""
+                      anchor_id: str | None, prev_wall: HouseObject | None,
+                      run: list[HouseObject] | None = None) -> tuple[list[HouseObject], list[Dropped]]:
+    """The ``count`` copies of member ``m`` against ``refs`` (its target's copies, in turn);
+    ``run``: the group's pieces against a wall so far (grown as copies join it)."""
+    run = [] if run is None else run
     rule = REGISTRY[m.rule]
     objs: list[HouseObject] = []
     drops: list[Dropped] = []
@@ -140,7 +159,7 @@ def place_item_copies(st: RoomState, m: ItemSpec, refs: list[HouseObject], label
             reason = "does not fit on top of its target"
         else:
             params = rule.copy_params(dict(m.params), i, m.count)
-            obj = placement.place_single(st, m, params, ref, prev_same, prev_wall, label, anchor_id, i)
+            obj = placement.place_single(st, m, params, ref, prev_same, prev_wall, label, anchor_id, i, run)
             reason = scoring.no_fit_reason(st, m.size_m)
         if obj is None:
             drops.append(st.dropped_entry(m.name, reason))
@@ -151,6 +170,7 @@ def place_item_copies(st: RoomState, m: ItemSpec, refs: list[HouseObject], label
         prev_same = obj
         if REGISTRY[obj.rule].runs_along_wall:
             prev_wall = obj
+            run.append(obj)
     return objs, drops
 
 

@@ -26,15 +26,16 @@ def front_item(item: ItemSpec) -> bool:
 
 def candidates(st: RoomState, item: ItemSpec, rule_name: str, size: Sequence[float], ref: HouseObject | None,
                prev_same: HouseObject | None, prev_wall: HouseObject | None, params: dict[str, Any] | None = None,
-               copy: int | None = None) -> tuple[Cands, Kind]:
+               copy: int | None = None, run: Sequence[HouseObject] = ()) -> tuple[Cands, Kind]:
     """Candidates for one copy of ``item`` by the rule ``rule_name`` (not always the item's
     own: an arrangement may place it by another); returns (cands, kind).
 
-    ``copy`` set: a member's or ornament's copy (the rule's ``copy_candidates``)."""
+    ``copy`` set: a member's or ornament's copy (the rule's ``copy_candidates``); ``run``:
+    the pieces of the run along the walls it continues (:attr:`RuleContext.run`)."""
     rule = REGISTRY[rule_name]
     raw = item.params if params is None else params
     ctx = RuleContext(st.space, size, rule.parse(raw, lenient=True), st.options, ref, prev_same, prev_wall,
-                      copy=copy or 0, count=item.count, rng=st.rng)
+                      copy=copy or 0, count=item.count, rng=st.rng, run=run)
     kind: Kind
     if rule.needs_target and ref is None:  # relative rule with nothing to relate to
         to_wall = bool(getattr(ctx.params, "to_wall", False))  # a TV stand with no sofa: on a wall
@@ -54,10 +55,10 @@ def candidates(st: RoomState, item: ItemSpec, rule_name: str, size: Sequence[flo
 
 def place_single(st: RoomState, m: ItemSpec, params: dict[str, Any], ref: HouseObject | None,
                  prev_same: HouseObject | None, prev_wall: HouseObject | None, label: str | None,
-                 anchor_id: str | None, copy: int) -> HouseObject | None:
+                 anchor_id: str | None, copy: int, run: Sequence[HouseObject] = ()) -> HouseObject | None:
     """Copy ``copy`` of a member or ornament by its own rule; None if nothing fits."""
     size = m.size_m
-    c, kind = candidates(st, m, m.rule, size, ref, prev_same, prev_wall, params=params, copy=copy)
+    c, kind = candidates(st, m, m.rule, size, ref, prev_same, prev_wall, params=params, copy=copy, run=run)
     order = scoring.rank(st, c, size, kind, st.options.member_noise, spacing=False)
     choices = scoring.verified(st, c, order, size, kind, None, k=st.options.member_nav_retries)
     support = "wall" if kind == "wall" else "floor"

@@ -125,3 +125,37 @@ def group_room_bonus(st: RoomState, g: GroupSpec, c: Cands) -> Cands:
     corners = rect_corners(xy, (x1 - x0, y1 - y0), c.yaw)
     ok = st.space.valid(corners, 0.0, min(o.group_room_height_m, g.anchor.size_m[2]), floor=True)
     return Cands(c.xy, c.yaw, c.z, c.pref + o.group_room_bonus * ok)
+
+
+def run_length(g: GroupSpec, rule: str, first: bool) -> tuple[float, float]:
+    """(length, depth) of the run along the walls that follows ``g``'s anchor (placed by
+    ``rule``): its members continuing it and, for the first copy of a run of anchors,
+    the later copies; (0, 0) when none follows."""
+    if not REGISTRY[rule].runs_along_wall:
+        return 0.0, 0.0
+    pieces = [(m.size_m, m.count) for m in g.members
+              if REGISTRY[m.rule].continues and REGISTRY[m.rule].runs_along_wall]
+    if first and (REGISTRY[g.anchor.rule].continues or g.arrangement == "along_walls"):
+        pieces.append((g.anchor.size_m, g.repeat - 1))
+    length = sum(s[0] * n for s, n in pieces)
+    depth = max((s[1] for s, n in pieces if n), default=0.0)
+    return length, depth
+
+
+def run_room_bonus(st: RoomState, g: GroupSpec, c: Cands, rule: str, first: bool) -> Cands:
+    """Prefer anchor poses with free wall beside them (on either side) for the run that
+    follows (:func:`run_length`), so that it continues rather than jumps."""
+    length, depth = run_length(g, rule, first)
+    if length <= 0 or not len(c):
+        return c
+    w, d = g.anchor.size_m[0], g.anchor.size_m[1]
+    cos, sin = np.cos(c.yaw), np.sin(c.yaw)
+    right = np.stack([cos, sin], 1)
+    front = np.stack([-sin, cos], 1)
+    back = c.xy - front * (d / 2)  # middle of the anchor's back, on the wall
+    ok = np.zeros(len(c), dtype=bool)
+    for sgn in (1.0, -1.0):
+        xy = back + right * (sgn * (w / 2 + length / 2)) + front * (depth / 2)
+        corners = rect_corners(xy, (length, depth), c.yaw)
+        ok |= st.space.valid(corners, 0.0, min(st.options.group_room_height_m, g.anchor.size_m[2]), floor=True)
+    return Cands(c.xy, c.yaw, c.z, c.pref + st.options.group_room_bonus * ok)

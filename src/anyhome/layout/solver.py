@@ -88,8 +88,8 @@ def furnish_room(st: RoomState) -> None:
     them (:mod:`.layers`), then its ornaments.
 
     When a key group's anchor (:attr:`GroupSpec.key`) is dropped, the room is furnished again
-    making room for it: key groups first, the others after; then with each dropped key
-    anchor smaller (:data:`SHRINK_SCALES`). The furnishing that drops the fewest key
+    making room for it: key groups first, the others after; then with each key anchor
+    dropped so far (in any of these furnishings) smaller (:data:`SHRINK_SCALES`). The furnishing that drops the fewest key
     anchors, then the fewest items, is kept; a key anchor is dropped only when none fits."""
     _make_room(st)
     keys = {g.anchor.name for g in st.spec.groups if g.key}
@@ -108,7 +108,9 @@ def _make_room(st: RoomState) -> None:
     for scale in (1.0, *SHRINK_SCALES):
         st.restore(start)
         _furnish(st, keys_first, {i: scale for i in missing})
-        now = _outcome(st, len(_key_dropped(st)))
+        dropped_now = _key_dropped(st)
+        missing += [i for i in dropped_now if i not in missing]  # shrink these too next time
+        now = _outcome(st, len(dropped_now))
         if now[:2] < best[:2]:
             best = now
         if now[0] == 0:

@@ -14,10 +14,11 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any, Literal
 
 import numpy as np
+import shapely
 from pydantic import BaseModel, ConfigDict
 
-from anyhome.geometry import wrap_yaw
-from anyhome.space import RoomSpace, Wall
+from anyhome.geometry import footprint_polygon, wrap_yaw
+from anyhome.space import RoomSpace, Wall, rect_corners
 
 if TYPE_CHECKING:
     from anyhome.house import HouseObject
@@ -25,6 +26,12 @@ if TYPE_CHECKING:
 
 GRID_STEP_M = 0.1
 """Spacing of candidate positions along walls and over the room."""
+FAR_MET_PREF = 2.0
+"""Preference added to a pose at least ``far_m`` from its target (more than noise,
+spacing and the group's room bonus together can add)..."""
+FAR_PER_M = 0.5
+"""...and per metre of distance up to ``far_m``: when no pose is far enough, the
+furthest wins (the relation relaxed, the object kept)."""
 HALF_PI = np.pi / 2
 
 Kind = Literal["floor", "wall", "top"]
@@ -94,6 +101,9 @@ class RuleContext:
     copy: int = 0
     count: int = 1
     rng: np.random.Generator | None = None
+    run: Sequence[HouseObject] = ()
+    """Pieces of the run the object continues (its group's objects against a wall, the
+    previous copies of a run of anchors), oldest first; ``prev_wall`` is among them."""
 
 
 Candidates = Callable[[RuleContext], tuple[Cands, Kind]]
@@ -126,6 +136,8 @@ class PlacementRule:
     extent : grows a group copy's extent (anchor frame) by a member placed by this rule;
         ``near_m`` not None leaves out members placed further than that (a TV)
     faces_anchor : whether a member by this rule (with these params) faces the anchor
+    continues : a copy goes next to the previous one (a run): ranked without spacing
+        and with a member's noise, so the run continues rather than jumps
     """
 
     name: str
@@ -141,6 +153,7 @@ class PlacementRule:
     copy_params: Callable[[dict[str, Any], int, int], dict[str, Any]] = _same_params
     extent: Callable[[Extent, Sequence[float], Sequence[float], Any, int, float | None], Extent] = _no_extent
     faces_anchor: Callable[[Any], bool] = lambda params: False
+    continues: bool = False
 
     @property
     def runs_along_wall(self) -> bool:
@@ -190,3 +203,41 @@ def wall_positions(wall: Wall, width: float, step: float = GRID_STEP_M) -> np.nd
 def on_wall(wall: Wall, t: np.ndarray, depth: float) -> np.ndarray:
     """Centres of objects ``depth`` deep with their backs on ``wall`` at positions ``t``."""
     return wall.a[None] + wall.u[None] * t[:, None] + wall.n[None] * (depth / 2)
+
+
+def footprint_gaps(xy: np.ndarray, size: Sequence[float], yaw: np.ndarray, ref: HouseObject) -> np.ndarray:
+    """Distances (m) between the footprints of boxes ``size`` at poses ``xy`` (n, 2),
+    ``yaw`` (n,) and ``ref``'s footprint; (n,) float, 0 where they touch."""
+    if not len(xy):
+        return np.zeros(0)
+    out = np.empty(len(xy))
+    # boxes turned by a multiple of 90 degrees, like ref: the gap of two axis-aligned rectangles
+    quarter = np.round(np.asarray(yaw) / HALF_PI)
+    aligned = np.abs(np.asarray(yaw) - quarter * HALF_PI) < 1e-6
+    rq = round(ref.yaw / HALF_PI)
+    if abs(ref.yaw - rq * HALF_PI) >= 1e-6:
+        aligned[:] = False
+    if aligned.any():
+        odd = (quarter[aligned].astype(int) % 2) == 1
+        hx = np.where(odd, size[1], size[0]) / 2
+        hy = np.where(odd, size[0], size[1]) / 2
+        rx, ry = (ref.size[1], ref.size[0]) if rq % 2 else (ref.size[0], ref.size[1])
+        dx = np.maximum(0.0, np.abs(xy[aligned, 0] - ref.position[0]) - hx - rx / 2)
+        dy = np.maximum(0.0, np.abs(xy[aligned, 1] - ref.position[1]) - hy - ry / 2)
+        out[aligned] = np.hypot(dx, dy)
+    rest = ~aligned
+    if rest.any():
+        polys = shapely.polygons(rect_corners(xy[rest], size[:2], np.asarray(yaw)[rest]))
+        out[rest] = shapely.distance(polys, footprint_polygon(ref.position, ref.size, ref.yaw))
+    return out
+
+
+def prefer_far(c: Cands, size: Sequence[float], ref: HouseObject | None, far_m: float) -> Cands:
+    """``c`` with poses at least ``far_m`` from ``ref`` preferred (:data:`FAR_MET_PREF`),
+    and the further the better up to it (:data:`FAR_PER_M`); unchanged without a
+    target or a distance."""
+    if far_m <= 0 or ref is None or not len(c):
+        return c
+    gaps = footprint_gaps(c.xy, size, c.yaw, ref)
+    bonus = FAR_MET_PREF * (gaps >= far_m) + FAR_PER_M * np.minimum(gaps, far_m)
+    return Cands(c.xy, c.yaw, c.z, c.pref + bonus)

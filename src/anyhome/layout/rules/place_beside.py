@@ -15,14 +15,23 @@ from anyhome.layout.rules.base import (
     PlacementRule,
     RuleContext,
     RuleParams,
+    footprint_gaps,
     front_dir,
     right_dir,
 )
+from anyhome.layout.rules.place_wall import place_wall
+from anyhome.space import RoomSpace
 
 BESIDE_GAPS_M = (0.03, 0.08, 0.15, 0.25)
 """Gaps tried between an object and the one it stands beside (first is preferred)."""
 GAP_PREF_STEP = 0.15
 """Preference lost per wider gap."""
+RELAXED_NEAR_M = 1.5
+"""Last relaxation, when neither side of the target is free: against a wall, with at
+most this gap to the target..."""
+RELAXED_PREF = -1.0
+"""...at this preference, less :data:`RELAXED_PER_M` per metre of gap."""
+RELAXED_PER_M = 0.3
 
 
 class Params(RuleParams):
@@ -45,9 +54,33 @@ def place_beside(target: HouseObject, size: Sequence[float], side: str = "both")
     return Cands(xy, np.full(len(xy), target.yaw), np.full(len(xy), target.position[2]), np.asarray(pref))
 
 
+def stands_beside(obj: HouseObject, target: HouseObject) -> bool:
+    """Whether ``obj`` stands where :func:`place_beside` puts it (a side of ``target``,
+    one of the gaps, backs aligned, same facing), not where a relaxation did."""
+    rel = np.asarray(obj.position[:2]) - np.asarray(target.position[:2])
+    lat = abs(float(rel @ right_dir(target.yaw)))
+    fwd = float(rel @ front_dir(target.yaw))
+    side_gap = lat - (target.size[0] + obj.size[0]) / 2
+    return (abs(float(np.cos(obj.yaw - target.yaw)) - 1.0) < 1e-6 and -0.01 <= side_gap <= BESIDE_GAPS_M[-1] + 0.01
+            and abs(fwd - (obj.size[1] - target.size[1]) / 2) < 0.01)
+
+
+def near_on_walls(space: RoomSpace, target: HouseObject, size: Sequence[float]) -> Cands:
+    """Wall poses within :data:`RELAXED_NEAR_M` of ``target``, the nearest preferred."""
+    c = place_wall(space, size)
+    if not len(c) or target.support != "floor":
+        return Cands.empty()
+    gaps = footprint_gaps(c.xy, size, c.yaw, target)
+    keep = gaps <= RELAXED_NEAR_M
+    return Cands(c.xy[keep], c.yaw[keep], c.z[keep], RELAXED_PREF - RELAXED_PER_M * gaps[keep])
+
+
 def candidates(ctx: RuleContext) -> tuple[Cands, Kind]:
+    """Relaxed in this order: the side asked for, at growing gaps; the other side
+    (copies, see :func:`copy_candidates`); against a wall near the target
+    (:func:`near_on_walls`)."""
     assert isinstance(ctx.params, Params) and ctx.ref is not None
-    return place_beside(ctx.ref, ctx.size, ctx.params.side), "floor"
+    return place_beside(ctx.ref, ctx.size, ctx.params.side) + near_on_walls(ctx.space, ctx.ref, ctx.size), "floor"
 
 
 def copy_candidates(ctx: RuleContext) -> tuple[Cands, Kind]:

@@ -6,6 +6,7 @@ from collections.abc import Sequence
 from typing import Literal
 
 import numpy as np
+from pydantic import Field
 
 from anyhome.layout.rules.base import (
     GRID_STEP_M,
@@ -15,6 +16,7 @@ from anyhome.layout.rules.base import (
     PlacementRule,
     RuleContext,
     RuleParams,
+    prefer_far,
     yaw_facing,
 )
 from anyhome.space import RoomSpace
@@ -28,6 +30,9 @@ ALIGNED_PREF = 0.15
 class Params(RuleParams):
     facing: Literal["door", "wall", "any"] = "any"
     """Face the nearest door, the nearest wall, or any of the four axis directions."""
+    far_m: float = Field(default=0.0, ge=0.0, le=50.0)
+    """At least this far (metres, footprint to footprint) from the target (the item's
+    ``target``, else its group's anchor); 0: no such wish."""
 
 
 def place_center(space: RoomSpace, size: Sequence[float], facing: str = "any") -> Cands:
@@ -73,7 +78,8 @@ def place_center(space: RoomSpace, size: Sequence[float], facing: str = "any") -
 
 def candidates(ctx: RuleContext) -> tuple[Cands, Kind]:
     assert isinstance(ctx.params, Params)
-    return place_center(ctx.space, ctx.size, ctx.params.facing), "floor"
+    c = place_center(ctx.space, ctx.size, ctx.params.facing)
+    return prefer_far(c, ctx.size, ctx.ref, ctx.params.far_m), "floor"
 
 
 RULE = PlacementRule("place_center", Params, candidates, __doc__ or "")

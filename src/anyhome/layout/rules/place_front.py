@@ -27,7 +27,10 @@ from anyhome.space import RoomSpace
 DISTANCE_FACTORS = (1.0, 0.8, 1.25, 0.6, 1.5, 0.4, 2.0, 0.2, 0.0)
 """Multiples of ``distance_m`` tried, the first preferred."""
 LATERAL_SHIFTS_M = (0.0, 0.1, -0.1, 0.2, -0.2, 0.3, -0.3)
-"""Sideways shifts tried at each distance, the first preferred."""
+"""Sideways shifts tried at each distance, the first preferred..."""
+LATERAL_PER_M = 1.0
+"""...losing this much preference per metre off centre (more than a member's noise
+per 0.1 m: the object stays centred on its target whenever that pose is free)."""
 COPY_GAP_M = 0.1
 """Gap between copies standing side by side in front of one target (chairs at a desk)."""
 WALL_SNAP_PREF = 0.95
@@ -39,7 +42,9 @@ MIN_TO_WALL_M = 1.0
 TO_WALL_PREF = 1.5
 """With ``to_wall``: preference of the pose on the wall ahead, centred on the target..."""
 TO_WALL_OFF_PER_M = 0.2
-"""...less this much per metre off the distance asked or off centre."""
+"""...less this much per metre off the distance asked..."""
+TO_WALL_LATERAL_PER_M = 1.0
+"""...and this much per metre off centre (steep: a member's noise keeps it centred)."""
 OTHER_WALL_PREF = 0.6
 """With ``to_wall`` and no wall ahead: preference of another wall's pose facing the target
 straight (times the cosine of the angle; poses turned away by more than 60 degrees are not offered)."""
@@ -71,10 +76,10 @@ def place_front(space: RoomSpace, target: HouseObject, size: Sequence[float], di
     yaws: list[float] = []
     pref: list[float] = []
     for dd, p in zip(dists, prefs):
-        for lk, lo in enumerate(LATERAL_SHIFTS_M):
+        for lo in LATERAL_SHIFTS_M:
             pts.append(txy + f * (target.size[1] / 2 + dd + size[1] / 2) + r * (lateral + lo))
             yaws.append(yaw)
-            pref.append(p - 0.05 * lk)
+            pref.append(p - LATERAL_PER_M * abs(lo))
     # snap flush to a wall straight ahead (a TV stand in front of a sofa)
     for wall in space.walls:
         if float(f @ wall.n) > -0.999:
@@ -111,7 +116,7 @@ def front_to_wall(space: RoomSpace, target: HouseObject, size: Sequence[float], 
             if size[0] / 2 <= t <= wall.length - size[0] / 2:
                 pts.append(wall.a + wall.u * t + wall.n * (size[1] / 2))
                 yaws.append(wall.yaw)
-                pref.append(TO_WALL_PREF - TO_WALL_OFF_PER_M * (abs(gap - distance_m) + abs(lo)))
+                pref.append(TO_WALL_PREF - TO_WALL_OFF_PER_M * abs(gap - distance_m) - TO_WALL_LATERAL_PER_M * abs(lo))
     out = Cands(np.asarray(pts).reshape(-1, 2), np.asarray(yaws), np.zeros(len(pts)), np.asarray(pref))
     others = place_wall(space, size)
     if len(others):

@@ -51,4 +51,4 @@ def candidates(ctx: RuleContext) -> tuple[Cands, Kind]:
     return place_next(ctx.space, ctx.size, ctx.prev_same), "floor"
 
 
-RULE = PlacementRule("place_next", NoParams, candidates, __doc__ or "")
+RULE = PlacementRule("place_next", NoParams, candidates, __doc__ or "", continues=True)

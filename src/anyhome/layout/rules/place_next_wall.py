@@ -7,7 +7,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from anyhome.geometry import footprint_corners
+from anyhome.geometry import footprint_corners, footprint_polygon
 from anyhome.house import HouseObject
 from anyhome.layout.rules.base import (
     Cands,
@@ -15,11 +15,22 @@ from anyhome.layout.rules.base import (
     NoParams,
     PlacementRule,
     RuleContext,
+    footprint_gaps,
     front_dir,
     on_wall,
 )
 from anyhome.layout.rules.place_wall import place_wall
 from anyhome.space import RoomSpace
+
+EARLIER_PIECE_PREF = -0.3
+"""Preference shift of a pose beside an earlier piece of the run than the last."""
+CORNER_REACH_M = 0.3
+"""The run turns a corner onto a wall the previous piece stands at most this much further
+from than the new piece is deep (the two then touch or nearly so)."""
+JOIN_GAP_M = 0.3
+"""A piece of a run further than this from every earlier piece jumped (a compromise)."""
+NEAR_TARGET_PER_M = 0.5
+"""With a target and no run: preference lost per metre between the footprints."""
 
 
 def place_next_wall(space: RoomSpace, size: Sequence[float], prev: HouseObject | None) -> Cands:
@@ -39,14 +50,16 @@ def place_next_wall(space: RoomSpace, size: Sequence[float], prev: HouseObject |
             ts = np.array([t_prev - pw / 2 - w / 2, t_prev + pw / 2 + w / 2])
             ts = np.concatenate([ts, ts + [-0.02, 0.02]])
             pref = np.array([1.0, 1.0, 0.9, 0.9])
-            out = out + Cands(on_wall(wall, ts, d), np.full(4, wall.yaw), np.zeros(4), pref)
+            ok = (ts >= w / 2 - 1e-9) & (ts <= wall.length - w / 2 + 1e-9)  # on this wall, not past its end
+            out = out + Cands(on_wall(wall, ts[ok], d), np.full(int(ok.sum()), wall.yaw), np.zeros(int(ok.sum())),
+                              pref[ok])
         else:
             # perpendicular wall: continue the run around a corner
             corners = footprint_corners(prev.position, prev.size, prev.yaw)
             tmin = min(float((c - wall.a) @ wall.u) for c in corners)
             tmax = max(float((c - wall.a) @ wall.u) for c in corners)
             dmin = min(float((c - wall.a) @ wall.n) for c in corners)
-            if dmin > 0.02:
+            if not -0.02 <= dmin <= d + CORNER_REACH_M:  # too far from this wall, or beyond its line
                 continue
             ts = np.array([tmax + w / 2, tmin - w / 2])
             ok = (ts >= w / 2 - 1e-9) & (ts <= wall.length - w / 2 + 1e-9)
@@ -57,14 +70,30 @@ def place_next_wall(space: RoomSpace, size: Sequence[float], prev: HouseObject |
     return out
 
 
+def jumps(pieces: Sequence[HouseObject]) -> int:
+    """How many of ``pieces`` (a run, first piece first) stand more than
+    :data:`JOIN_GAP_M` from every piece before them: the run jumped there."""
+    polys = [footprint_polygon(p.position, p.size, p.yaw) for p in pieces]
+    return sum(1 for i in range(1, len(polys)) if min(polys[i].distance(q) for q in polys[:i]) > JOIN_GAP_M)
+
+
 def candidates(ctx: RuleContext) -> tuple[Cands, Kind]:
-    """Beside the previous wall object; any wall pose, the nearer the better, after it."""
+    """Relaxed in this order: beside the previous wall object of the run (on its wall,
+    then round a corner); beside an earlier piece of the run; any wall pose, the nearer
+    the run the better. With no run to continue but a target (a sideboard by a table
+    standing free): the wall poses nearest the target first (:data:`NEAR_TARGET_PER_M`)."""
     near = place_next_wall(ctx.space, ctx.size, ctx.prev_wall)
+    for piece in ctx.run:
+        if piece is not ctx.prev_wall:
+            near = near + place_next_wall(ctx.space, ctx.size, piece).shifted_pref(EARLIER_PIECE_PREF)
     fb = place_wall(ctx.space, ctx.size)
-    if ctx.prev_wall is not None and len(fb):
-        d = np.linalg.norm(fb.xy - np.asarray(ctx.prev_wall.position[:2])[None], axis=1)
+    pieces = [p for p in [*ctx.run, ctx.prev_wall] if p is not None]
+    if pieces and len(fb):
+        d = np.min([np.linalg.norm(fb.xy - np.asarray(p.position[:2])[None], axis=1) for p in pieces], axis=0)
         fb.pref = ctx.options.next_wall_fallback_pref - ctx.options.next_wall_fallback_per_m * d
+    elif ctx.ref is not None and len(fb):
+        fb.pref = fb.pref - NEAR_TARGET_PER_M * footprint_gaps(fb.xy, ctx.size, fb.yaw, ctx.ref)
     return near + fb, "floor"
 
 
-RULE = PlacementRule("place_next_wall", NoParams, candidates, __doc__ or "", against_wall=True)
+RULE = PlacementRule("place_next_wall", NoParams, candidates, __doc__ or "", against_wall=True, continues=True)

@@ -6,6 +6,7 @@ from collections.abc import Sequence
 from typing import Literal
 
 import numpy as np
+from pydantic import Field
 
 from anyhome.layout.rules.base import (
     Cands,
@@ -14,6 +15,7 @@ from anyhome.layout.rules.base import (
     RuleContext,
     RuleParams,
     on_wall,
+    prefer_far,
     wall_positions,
 )
 from anyhome.space import RoomSpace
@@ -29,6 +31,9 @@ AWAY_FROM_DOOR_PREF = 0.6
 class Params(RuleParams):
     wall: Literal["any", "longest", "opposite_door"] = "any"
     """Which wall: any, the longest, or the one furthest from the doors."""
+    far_m: float = Field(default=0.0, ge=0.0, le=50.0)
+    """At least this far (metres, footprint to footprint) from the target (the item's
+    ``target``, else its group's anchor); 0: no such wish."""
 
 
 def place_wall(space: RoomSpace, size: Sequence[float], which: str = "any") -> Cands:
@@ -54,7 +59,7 @@ def place_wall(space: RoomSpace, size: Sequence[float], which: str = "any") -> C
 
 def candidates(ctx: RuleContext) -> tuple[Cands, Kind]:
     assert isinstance(ctx.params, Params)
-    return place_wall(ctx.space, ctx.size, ctx.params.wall), "floor"
+    return prefer_far(place_wall(ctx.space, ctx.size, ctx.params.wall), ctx.size, ctx.ref, ctx.params.far_m), "floor"
 
 
 RULE = PlacementRule("place_wall", Params, candidates, __doc__ or "", against_wall=True)
