@@ -84,3 +84,18 @@ def test_a_set_listing_its_own_zones_gets_only_those():
     assert "game_room" not in kb.raw("furniture")["zones"]
     assert {z["name"] for z in zone_groups(kb, "game_room", "living_room", 40.0, [], rng)} == {
         z["name"] for z in zone_groups(kb, "living_room", "living_room", 40.0, [], rng)}
+
+
+def test_a_room_is_planned_high_enough_for_what_it_holds():
+    """A fire engine (2.5-2.7 m tall) gets a bay with headroom over it, whatever the
+    garage's usual height."""
+    from anyhome.plan.offline import HEADROOM_M
+
+    for seed in range(3):
+        spec = get_planner("offline").plan("a fire station with an apparatus bay for a fire engine",
+                                           np.random.default_rng(seed))
+        for r in spec.rooms:
+            floor = [it for g in r.groups for it in [g.anchor, *g.members]
+                     if it.rule not in ("place_top", "place_on_wall")]
+            if not r.open_air and floor:
+                assert r.height_m >= max(it.size_m[2] for it in floor) + HEADROOM_M - 1e-6, r.id

@@ -12,6 +12,7 @@ the same plan. The knowledge lives in YAML files under ``knowledge/``
 from __future__ import annotations
 
 import logging
+import math
 from collections.abc import Callable
 from typing import Any
 
@@ -454,10 +455,27 @@ def _rows_cell_m2(g: fu.Group) -> float:
     return (width + ROW_AISLE_M) * (depth + ROW_AISLE_M)
 
 
+HEADROOM_M = 0.4
+"""Free height kept over the tallest thing a room holds (a fire engine in its bay)."""
+
+MAX_PLANNED_HEIGHT_M = 12.0
+"""Highest a room is raised to fit what it holds (RoomSpec's limit)."""
+
+
+def _fits_tallest(height: RoomHeight, groups: list[GroupSpec], open_air: bool) -> RoomHeight:
+    """``height`` raised, where needed, to hold the room's tallest floor item with
+    :data:`HEADROOM_M` over it: a garage planned 2.6 m high for a 2.6 m fire truck is 3.0 m."""
+    if open_air:
+        return height
+    tallest = max((it.size_m[2] for g in groups for it in [g.anchor, *g.members]
+                   if it.rule not in ("place_top", "place_on_wall")), default=0.0)
+    need = min(MAX_PLANNED_HEIGHT_M, math.ceil((tallest + HEADROOM_M) * 20) / 20)  # up to 5 cm
+    return RoomHeight(need, height.ceiling) if need > height.height_m else height
+
+
 def _room_spec(kb: KnowledgeBase, s: Slot, groups: list[fu.Group], ornaments: list[fu.Item], look: Look,
                rng: np.random.Generator, height: RoomHeight | None = None) -> RoomSpec:
     rt = kb.rooms.types.get(s.type, kb.rooms.types["other"])
-    height = height or RoomHeight(rt.height_m)
     materials = room_materials(look, s.type, kb)
     furniture = look.furniture
     if s.mention is not None:
@@ -478,6 +496,7 @@ def _room_spec(kb: KnowledgeBase, s: Slot, groups: list[fu.Group], ornaments: li
                 repeat=g["repeat"], priority=g["priority"], required=g["required"], fill=g.get("fill", False),
             )  # fmt: skip
         )
+    height = _fits_tallest(height or RoomHeight(rt.height_m), group_specs, rt.open_air or s.open_air)
     return RoomSpec(
         id=s.id,
         name=s.name,
