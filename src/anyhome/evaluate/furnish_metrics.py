@@ -30,6 +30,9 @@ sets
     A set is **mismatched** when their asset records differ in anything but size (family,
     colours, shape parameters). Sets whose words ask for variety
     (:func:`anyhome.assets.sets.set_key`: "mismatched chairs") are left out.
+kitchens
+    :mod:`anyhome.evaluate.kitchen_metrics`: kitchens whose sink, cooktop and fridge
+    stand in counter runs (**work run**), kitchens with wall cabinets over the counters.
 floor coverage
     For a habitable room: the area of the union of its floor objects' footprints (floor
     layers and stairs left out) over the room's area.
@@ -47,6 +50,7 @@ from shapely.geometry import Polygon
 
 from anyhome import geometry
 from anyhome.assets.sets import set_key
+from anyhome.evaluate.kitchen_metrics import kitchen_figures
 from anyhome.evaluate.polygons import is_usable, room_polygon
 from anyhome.house import House, HouseObject, is_habitable
 from anyhome.plan.spec import KEY_PRIORITY
@@ -83,6 +87,9 @@ class FurnishMetrics:
     mismatched_sets: list[str] = field(default_factory=list)
     coverage: dict[str, float] = field(default_factory=dict)
     """Habitable room id -> floor coverage."""
+    n_kitchens: int = 0
+    n_kitchen_work_run: int = 0
+    n_kitchen_wall_cabinets: int = 0
 
     @property
     def drop_rate(self) -> float:
@@ -110,6 +117,8 @@ class FurnishMetrics:
             f"{self.n_tv_with_seat}, view blocked {self.n_tv_view_blocked}",
             f"  mismatched sets {len(self.mismatched_sets)}/{self.n_sets}; habitable rooms with floor "
             f"coverage < {100 * LOW_COVERAGE:.0f}%: {self.n_low_coverage}/{len(self.coverage)} (median {med})",
+            f"  kitchens with sink, cooktop and fridge in counter runs {self.n_kitchen_work_run}/{self.n_kitchens}, "
+            f"with wall cabinets {self.n_kitchen_wall_cabinets}/{self.n_kitchens}",
         ]
 
 
@@ -137,6 +146,8 @@ def furnish_metrics(house: House) -> FurnishMetrics:
         if o.category == "tv_stand" and o.support == "floor":
             _tv_stand(m, o, polys.get(o.room), by_room.get(o.room, []))
     _sets(m, objects)
+    k = kitchen_figures(polys, by_room)
+    m.n_kitchens, m.n_kitchen_work_run, m.n_kitchen_wall_cabinets = k.n_kitchens, k.n_work_run, k.n_wall_cabinets
     for r in house.rooms:
         poly = polys.get(r.id)
         if poly is not None and is_habitable(r.type) and poly.area > 0:

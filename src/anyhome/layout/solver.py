@@ -19,7 +19,7 @@ import numpy as np
 from shapely.geometry import Polygon
 
 from anyhome.house import Dropped, Floorplan, HouseObject, Room
-from anyhome.layout import arrangements, layers, ornaments
+from anyhome.layout import arrangements, kitchens, layers, ornaments
 from anyhome.layout.options import DEFAULT_OPTIONS, LayoutOptions
 from anyhome.layout.state import RoomState
 from anyhome.layout.zones import arm_zones
@@ -143,6 +143,10 @@ def _furnish(st: RoomState, order: list[int], scales: dict[int, float]) -> None:
         st.zone = st.group_zones.get(i)
         if g.arrangement == "rows":
             arrangements.place_rows(st, g)
+        elif kitchens.is_kitchen_run(g):
+            kitchens.place_kitchen(st, g)
+        elif kitchens.is_island(st, g):
+            kitchens.place_island(st, g)
         else:
             arrangements.place_free(st, g)
     st.zone = None
