@@ -205,9 +205,9 @@ def _hang_cabinets(st: RoomState, m: ItemSpec, pieces: list[HouseObject], label:
                 n = int(np.ceil((c1 - c0) / MAX_CABINET_M - 1e-9))
                 step = (c1 - c0) / n
                 for j in range(n):
-                    t = np.array([c0 + (j + 0.5) * step])
+                    mid = np.array([c0 + (j + 0.5) * step])
                     size = (step, w_d, h)
-                    ch = Choice(on_wall(wall, t, w_d)[0], wall.yaw, z)
+                    ch = Choice(on_wall(wall, mid, w_d)[0], wall.yaw, z)
                     corners = rect_corners(ch.xy[None], size[:2], [ch.yaw])
                     if st.space.valid(corners, z, z + h, floor=False)[0] and scoring.exact_ok(st, ch, size, "wall", None):
                         st.commit(m, size, ch, "wall", "place_on_wall", label, anchor_id)
