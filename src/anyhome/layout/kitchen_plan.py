@@ -22,6 +22,8 @@ from anyhome.space import RoomSpace, Wall, rect_corners
 
 PROBE_STEP_M = 0.05
 """Step of the probes that find the free stretches of a wall."""
+SLIDE_STEP_M = 0.5
+"""Step of the start of a capped one-wall run along a free stretch longer than it."""
 MIN_LEG_M = 0.9
 """Shortest leg of an L or a U beyond its corner square."""
 CORNER_CLEAR_M = 0.3
@@ -128,7 +130,8 @@ def run_shapes(space: RoomSpace, depth: float, deepest: float, height: float, ca
                 out.append(RunShape("one", (Leg(w, a, b, a, b),)))
             else:
                 c = min(cap_m, b - a)
-                out += [RunShape("one", (Leg(w, a, a + c, a, a + c),)), RunShape("one", (Leg(w, b - c, b, b - c, b),))]
+                starts = sorted({a, b - c, *np.arange(a + SLIDE_STEP_M, b - c, SLIDE_STEP_M)})
+                out += [RunShape("one", (Leg(w, t, t + c, t, t + c),)) for t in starts]
     for i in range(k):
         wa, wb, wc = walls[i], walls[(i + 1) % k], walls[(i + 2) % k]
         if not _convex(wa, wb):
@@ -198,34 +201,37 @@ def _xy(leg: Leg, t: float) -> np.ndarray:
     return leg.wall.a + leg.wall.u * t
 
 
-def _gaps_ok(leg: Leg, items: list[tuple[str, float, float]]) -> bool:
-    """Pieces on one leg: none overlap, appliances at least LANDING_M apart, every gap 0
-    (a run end) or a counter of at least MIN_COUNTER_M, counter on both sides of a cooktop."""
+def _gaps_ok(leg: Leg, items: list[tuple[str, float, float]], landing_m: float = LANDING_M) -> bool:
+    """Pieces on one leg: none overlap, appliances at least ``landing_m`` apart, every gap
+    0 (a run end) or a counter of at least MIN_COUNTER_M, ``landing_m`` of counter on both
+    sides of a cooktop."""
     items = sorted(items, key=lambda x: x[1])
     edges = [("end", leg.t0, leg.t0), *items, ("end", leg.t1, leg.t1)]
     for (ra, _a0, a1), (rb, b0, _b1) in zip(edges, edges[1:]):
         gap = b0 - a1
         if gap < -1e-6:
             return False
-        if ra != "end" and rb != "end" and gap < LANDING_M - 1e-6:
+        if ra != "end" and rb != "end" and gap < landing_m - 1e-6:
             return False
-        if "stove" in (ra, rb) and gap < LANDING_M - 1e-6:
+        if "stove" in (ra, rb) and gap < landing_m - 1e-6:
             return False
         if 1e-3 < gap < MIN_COUNTER_M - 1e-6:
             return False
     return True
 
 
-def plan_run(space: RoomSpace, shape: RunShape, widths: dict[str, float]) -> list[Slot] | None:
+def plan_run(space: RoomSpace, shape: RunShape, widths: dict[str, float],
+             landing_m: float = LANDING_M) -> list[Slot] | None:
     """Fridge, sink and cooktop on ``shape`` (``widths``: role -> width; a role left out is
-    not placed) and counters in every gap; None when they do not fit."""
+    not placed), ``landing_m`` of counter between them and beside the cooktop, and
+    counters in every gap; None when they do not fit."""
     legs = shape.legs
     best: tuple[float, list[tuple[int, str, float, float]]] | None = None
-    for fridge in _fridge_options(shape, widths):
-        sinks = _sink_options(space, shape, widths, fridge)
+    for fridge in _fridge_options(shape, widths, landing_m):
+        sinks = _sink_options(space, shape, widths, fridge, landing_m)
         for s_score, sink in sinks[:6]:
             fixed = [x for x in (fridge, sink) if x is not None]
-            for st_score, stove in _stove_options(shape, widths, fixed):
+            for st_score, stove in _stove_options(shape, widths, fixed, landing_m):
                 score = s_score + st_score + _triangle(shape, fridge, sink, stove)
                 if best is None or score > best[0]:
                     best = (score, [x for x in (*fixed, stove) if x is not None])
@@ -247,7 +253,7 @@ def plan_run(space: RoomSpace, shape: RunShape, widths: dict[str, float]) -> lis
 Piece = tuple[int, str, float, float]
 
 
-def _fridge_options(shape: RunShape, widths: dict[str, float]) -> list[Piece | None]:
+def _fridge_options(shape: RunShape, widths: dict[str, float], landing_m: float) -> list[Piece | None]:
     """The fridge at each free run end that is not in front of a window."""
     if "fridge" not in widths:
         return [None]
@@ -259,11 +265,11 @@ def _fridge_options(shape: RunShape, widths: dict[str, float]) -> list[Piece | N
     ends += [(i, "fridge", legs[i].t0, legs[i].t0 + w) for i in firsts]
     ends += [(i, "fridge", legs[i].t1 - w, legs[i].t1) for i in lasts]
     return [e for e in ends if legs[e[0]].lo - 1e-6 <= e[2] and e[3] <= legs[e[0]].hi + 1e-6
-            and not _under_window(legs[e[0]], e[2], e[3]) and _gaps_ok(legs[e[0]], [e[1:]])]
+            and not _under_window(legs[e[0]], e[2], e[3]) and _gaps_ok(legs[e[0]], [e[1:]], landing_m)]
 
 
 def _sink_options(space: RoomSpace, shape: RunShape, widths: dict[str, float],
-                  fridge: Piece | None) -> list[tuple[float, Piece | None]]:
+                  fridge: Piece | None, landing_m: float) -> list[tuple[float, Piece | None]]:
     """Sink poses, best first: centred under a window, else anywhere along the run."""
     if "sink" not in widths:
         return [(0.0, None)]
@@ -278,7 +284,7 @@ def _sink_options(space: RoomSpace, shape: RunShape, widths: dict[str, float],
             t0 = min(max(float(t0), leg.lo), leg.hi - w)
             p: Piece = (i, "sink", t0, t0 + w)
             mine = [x[1:] for x in (fridge, p) if x is not None and x[0] == i]
-            if not _gaps_ok(leg, mine):
+            if not _gaps_ok(leg, mine, landing_m):
                 continue
             score = 2.0 if _under_window(leg, t0 + w / 2 - 0.05, t0 + w / 2 + 0.05) else 0.0
             out.append((score - 0.01 * abs(t0 + w / 2 - (leg.t0 + leg.t1) / 2), p))
@@ -286,7 +292,8 @@ def _sink_options(space: RoomSpace, shape: RunShape, widths: dict[str, float],
     return list(out)
 
 
-def _stove_options(shape: RunShape, widths: dict[str, float], fixed: list[Piece]) -> list[tuple[float, Piece | None]]:
+def _stove_options(shape: RunShape, widths: dict[str, float], fixed: list[Piece],
+                   landing_m: float) -> list[tuple[float, Piece | None]]:
     if "stove" not in widths:
         return [(0.0, None)]
     w = widths["stove"]
@@ -294,7 +301,7 @@ def _stove_options(shape: RunShape, widths: dict[str, float], fixed: list[Piece]
     for i, leg in enumerate(shape.legs):
         for t0 in np.arange(leg.lo, leg.hi - w + 1e-6, 0.1):
             p: Piece = (i, "stove", float(t0), float(t0) + w)
-            if not _gaps_ok(leg, [x[1:] for x in (*fixed, p) if x[0] == i]):
+            if not _gaps_ok(leg, [x[1:] for x in (*fixed, p) if x[0] == i], landing_m):
                 continue
             score = -3.0 if _under_window(leg, p[2], p[3]) else 0.0
             out.append((score, p))

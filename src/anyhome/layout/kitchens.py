@@ -32,6 +32,9 @@ MIN_CABINET_M = 0.3
 """Narrowest wall cabinet."""
 MAX_CABINET_M = 0.9
 """Widest wall cabinet; longer stretches get several of equal width."""
+LANDINGS_M = (0.4, 0.0)
+"""Counter kept between appliances and beside the cooktop: a designer's landing first,
+then none (a small room's run still continuous rather than scattered)."""
 MAX_SHAPE_TRIES = 10
 """Run plans tried (best first) before the group falls back to its own rules."""
 ISLAND_AISLE_M = 1.1
@@ -43,6 +46,9 @@ ISLAND_SHIFTS_M = (0.0, -0.3, 0.3, -0.6, 0.6, -1.0, 1.0)
 PENINSULA_STEP_M = 0.1
 """Step along the walls of the peninsula poses tried."""
 KITCHEN_ROOM_TYPE = "kitchen"
+RUN_WITH_TABLE_M = 5.4
+"""Run length kept in a kitchen room that holds a table or an island too (the rest of
+its walls left for them)."""
 """A room of this type (not open-plan) gets its walls' full length of run."""
 
 
@@ -85,9 +91,10 @@ def place_kitchen(st: RoomState, g: GroupSpec) -> None:
         arrangements.place_free(st, g)
         return
     anchor, pieces = slots
-    for m in roles.values():  # copies beyond the first of each appliance
-        if m.count > 1:
-            _place_rest(st, g, [m.model_copy(update={"count": m.count - 1})], label, anchor, pieces[-1])
+    for role, m in roles.items():  # copies beyond the first of each appliance, and one left out of the run
+        n = m.count - sum(1 for p in pieces if p.name == m.name)
+        if n > 0:
+            _place_rest(st, g, [m.model_copy(update={"count": n})], label, anchor, pieces[-1])
     for m in cabinets:
         if not _hang_cabinets(st, m, pieces, label, anchor.id):
             st.drop(m.name, "no free wall above the counters", m.count)
@@ -104,22 +111,24 @@ def _place_rest(st: RoomState, g: GroupSpec, items: list[ItemSpec], label: str, 
         st.dropped.extend(drops)
 
 
-def _cap_m(st: RoomState, g: GroupSpec, roles: dict[str, ItemSpec]) -> float | None:
-    """Run length of an open-plan kitchen or a kitchenette (its pieces and a landing);
-    None for a kitchen room of its own, whose run takes its walls."""
-    if st.room.type == KITCHEN_ROOM_TYPE and not st.room.merged:
-        return None
+def _cap_m(st: RoomState, g: GroupSpec, roles: dict[str, ItemSpec], more: bool) -> float | None:
+    """Run length of an open-plan kitchen or a kitchenette (its pieces and a landing), or
+    of a kitchen room that holds a table or an island too (``more``); None for a kitchen
+    room of its own, whose run takes its walls."""
     counters = [g.anchor.size_m[0], *(m.size_m[0] for m in g.members if m.category == "counter")]
-    return sum(counters) + sum(m.size_m[0] for m in roles.values()) + 0.4
+    natural = sum(counters) + sum(m.size_m[0] for m in roles.values()) + 0.4
+    if st.room.type == KITCHEN_ROOM_TYPE and not st.room.merged:
+        return max(natural, RUN_WITH_TABLE_M) if more else None
+    return natural
 
 
 def _ranked_shapes(st: RoomState, g: GroupSpec, roles: dict[str, ItemSpec]) -> list[RunShape]:
     items = [g.anchor, *roles.values()]
     depth, height = g.anchor.size_m[1], max(m.size_m[2] for m in items)
-    cap = _cap_m(st, g, roles)
+    more = any(x is not g and x.anchor.rule == "place_center" for x in st.spec.groups)
+    cap = _cap_m(st, g, roles, more)
     shapes = run_shapes(st.space, depth, max(m.size_m[1] for m in items), height, cap)
     ext = st.space.bmax - st.space.bmin
-    more = any(x is not g and x.anchor.rule == "place_center" for x in st.spec.groups)
     order = shape_order(float(ext.min()), cap is not None, more)
 
     def score(s: RunShape) -> tuple[int, float]:
@@ -136,18 +145,25 @@ def _ranked_shapes(st: RoomState, g: GroupSpec, roles: dict[str, ItemSpec]) -> l
 
 def _place_run(st: RoomState, g: GroupSpec, roles: dict[str, ItemSpec],
                label: str) -> tuple[HouseObject, list[HouseObject]] | None:
-    """The first ranked run plan whose every piece fits and keeps the walkways open:
+    """The first ranked run plan whose every piece fits and keeps the walkways open, with
+    full landings, else with appliances side by side (:data:`LANDINGS_M`), else without
+    the fridge (placed after by its own rule):
     (its anchor counter, its pieces in run order); None when none does."""
     widths = {r: m.size_m[0] for r, m in roles.items()}
-    for shape in _ranked_shapes(st, g, roles):
-        slots = plan_run(st.space, shape, widths)
-        if slots is None:
-            continue
-        snap = st.snapshot()
-        got = _commit_run(st, g, roles, shape, slots, label)
-        if got is not None and st.nav.ok():
-            return got
-        st.restore(snap)
+    shapes = _ranked_shapes(st, g, roles)
+    passes = [(landing, widths) for landing in LANDINGS_M]
+    if "fridge" in widths and len(widths) > 1:  # the fridge by its own rule, the rest a run
+        passes.append((LANDINGS_M[-1], {r: w for r, w in widths.items() if r != "fridge"}))
+    for landing, widths in passes:
+        for shape in shapes:
+            slots = plan_run(st.space, shape, widths, landing)
+            if slots is None:
+                continue
+            snap = st.snapshot()
+            got = _commit_run(st, g, roles, shape, slots, label)
+            if got is not None and st.nav.ok():
+                return got
+            st.restore(snap)
     return None
 
 
@@ -244,12 +260,15 @@ def _clear_parts(st: RoomState, wall, a: float, b: float, z0: float, z1: float) 
 def place_island(st: RoomState, g: GroupSpec) -> None:
     """The island parallel to the run's longest leg, a work aisle in front of it, with
     :data:`AISLE_MIN_M` of floor free round it (beyond its seats); else a peninsula, one
-    end against a wall near the run, the same aisles along its sides; dropped when
-    neither has room."""
+    end against a wall near the run, the same aisles along its sides; when neither has
+    room, dropped, or placed by its own rule when the text asked for it."""
     label = f"{g.name}-0"
     choices = _island_choices(st, g) or _peninsula_choices(st, g)
     if not choices:
-        groups.drop_group(st, g, "no room for an island or a peninsula with 1.0 m work aisles")
+        if g.key:  # asked for by the text: kept where its own rule finds room
+            arrangements.place_free(st, g)
+        else:
+            groups.drop_group(st, g, "no room for an island or a peninsula with 1.0 m work aisles")
         return
     groups.try_choices(st, g, label, choices[:4], "floor", "place_center")
     if g.repeat > 1:
@@ -286,25 +305,35 @@ def _island_choices(st: RoomState, g: GroupSpec) -> list[Choice]:
 
 
 def _peninsula_choices(st: RoomState, g: GroupSpec) -> list[Choice]:
-    """Peninsula poses (long side perpendicular to a wall, one end on it), nearest the run first."""
+    """Peninsula poses, one end on a wall and the long side perpendicular to it: its back
+    against the end of the run (continuing it), or free-standing with an aisle behind it
+    too; seats on the side away from the run; nearest the run first."""
     w, d, h = g.anchor.size_m
     seat = _seat_depth_m(g)
     pieces = _run_pieces(st)
     centres = np.array([p.position[:2] for p in pieces]).reshape(-1, 2)
     out: list[tuple[float, Choice]] = []
     for wall in st.space.walls:
-        for t in np.arange(d / 2, wall.length - d / 2 + 1e-6, PENINSULA_STEP_M):
+        ends = []
+        for p in pieces:  # just past each run piece standing on this wall
+            rel = np.asarray(p.position[:2]) - wall.a
+            if abs(float(front_dir(p.yaw) @ wall.n) - 1) < 1e-3 and abs(float(rel @ wall.n) - p.size[1] / 2) < 0.02:
+                t = float(rel @ wall.u)
+                ends += [t - p.size[0] / 2 - d / 2, t + p.size[0] / 2 + d / 2]
+        grid = np.arange(d / 2, wall.length - d / 2 + 1e-6, PENINSULA_STEP_M)
+        for t in [*ends, *grid]:
             xy = wall.a + wall.u * t + wall.n * (w / 2)
             for side in (1.0, -1.0):  # seats on the side away from the run
                 front = wall.u * side
                 if len(centres) and float(np.mean((centres - xy) @ front)) > 0:
                     continue
                 ch = Choice(xy, float(np.arctan2(-front[0], front[1])), 0.0)
-                cx = xy + front * (seat + AISLE_MIN_M - AISLE_MIN_M) / 2 + wall.n * AISLE_MIN_M / 2
+                back = AISLE_MIN_M if t not in ends else 0.0  # a peninsula on the run's end needs none
                 # local frame: width along the wall's normal, depth along the wall
-                if _fits(st, ch, (w, d, h), cx, (w + AISLE_MIN_M, d + seat + 2 * AISLE_MIN_M)):
+                cx = xy + front * (seat + AISLE_MIN_M - back) / 2 + wall.n * AISLE_MIN_M / 2
+                if _fits(st, ch, (w, d, h), cx, (w + AISLE_MIN_M, d + seat + AISLE_MIN_M + back)):
                     near = float(np.min(np.linalg.norm(centres - xy, axis=1))) if len(centres) else 0.0
-                    out.append((near, ch))
+                    out.append((near - (1.0 if back == 0.0 else 0.0), ch))
     out.sort(key=lambda x: x[0])
     return [c for _, c in out]
 
