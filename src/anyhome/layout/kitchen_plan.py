@@ -36,6 +36,8 @@ GALLEY_AISLE_M = (1.0, 1.6)
 """Aisle between the two runs of a galley, least and most, in metres."""
 U_AISLE_MIN_M = 1.2
 """Least aisle between the two arms of a U."""
+SINK_WINDOW_SCORE = 2.0
+"""Score of a sink under a window (less a point per metre off the window's centre)."""
 WORK_LEG_M = (1.2, 2.7)
 """Work-triangle leg lengths (centre to centre) a designer aims for, least and most."""
 MAX_COUNTER_M = 2.4
@@ -286,8 +288,13 @@ def _sink_options(space: RoomSpace, shape: RunShape, widths: dict[str, float],
             mine = [x[1:] for x in (fridge, p) if x is not None and x[0] == i]
             if not _gaps_ok(leg, mine, landing_m):
                 continue
-            score = 2.0 if _under_window(leg, t0 + w / 2 - 0.05, t0 + w / 2 + 0.05) else 0.0
-            out.append((score - 0.01 * abs(t0 + w / 2 - (leg.t0 + leg.t1) / 2), p))
+            mid = t0 + w / 2
+            off = min((abs(mid - (a + b) / 2) for a, b, _z0, _z1, door in leg.wall.openings if not door), default=None)
+            if off is not None and _under_window(leg, mid - 0.05, mid + 0.05):
+                score = SINK_WINDOW_SCORE - off  # under the window, centred best
+            else:
+                score = -0.01 * abs(mid - (leg.t0 + leg.t1) / 2)
+            out.append((score, p))
     out.sort(key=lambda x: -x[0])
     return list(out)
 
