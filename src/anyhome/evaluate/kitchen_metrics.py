@@ -4,8 +4,9 @@ and are there wall cabinets over the counters?
 Definitions
 -----------
 kitchen
-    A room holding a floor object of category ``counter`` and one of category ``stove``
-    or ``refrigerator``.
+    A room holding a floor object of category ``counter`` and floor objects of at least
+    two of the categories ``sink``, ``stove`` and ``refrigerator`` (a shop's counter and
+    drinks fridge is no kitchen).
 run piece
     A floor object of category ``counter``, ``sink``, ``stove`` or ``refrigerator`` whose
     back edge (middle) lies within :data:`WALL_GAP_M` of its room's outline.
@@ -13,13 +14,13 @@ run
     Run pieces chained by touching footprints (at most :data:`TOUCH_M` apart), along a
     wall and round a corner.
 work run
-    A kitchen's sink, cooktop and fridge (the first of each category) each stand in a run
-    that holds a counter, and the kitchen's run pieces form at most two runs (one run,
-    an L or a U; or the two facing runs of a galley).
+    Of each of sink, cooktop and fridge the kitchen has, one stands in a run that holds a
+    counter, and the kitchen's run pieces form at most two runs (one run, an L or a U; or
+    the two facing runs of a galley).
 wall cabinets
     A kitchen has them when an object of category ``cabinet`` hung on a wall (support
-    ``wall``) lies over a counter: their footprints overlap seen from above and its
-    bottom is above the counter's top.
+    ``wall``) lies over a counter: their footprints overlap seen from above by more than
+    :data:`OVER_M2` and its bottom is above the counter's top.
 """
 
 from __future__ import annotations
@@ -38,6 +39,8 @@ WALL_GAP_M = 0.15
 """A run piece whose back is at most this far from a wall stands against it."""
 TOUCH_M = 0.03
 """Two run pieces this close (footprint to footprint) are side by side in one run."""
+OVER_M2 = 0.01
+"""Least overlap (seen from above) of a wall cabinet with a counter it hangs over."""
 RUN_CATEGORIES = frozenset({"counter", "sink", "stove", "refrigerator"})
 """Categories of the pieces of a kitchen's counter run."""
 WORK_CATEGORIES = ("sink", "stove", "refrigerator")
@@ -61,7 +64,7 @@ def kitchen_figures(rooms: dict[str, Polygon], objects: dict[str, list[HouseObje
     for rid, poly in rooms.items():
         objs = objects.get(rid, [])
         cats = {o.category for o in objs if o.support == "floor"}
-        if "counter" not in cats or not cats & {"stove", "refrigerator"}:
+        if "counter" not in cats or len(cats & set(WORK_CATEGORIES)) < 2:
             continue
         out.n_kitchens += 1
         pieces = [o for o in objs if o.support == "floor" and o.category in RUN_CATEGORIES and _on_wall(o, poly)]
@@ -105,12 +108,11 @@ def _runs(pieces: list[HouseObject]) -> list[list[HouseObject]]:
 def _work_run(runs: list[list[HouseObject]], objs: list[HouseObject]) -> bool:
     if not runs or len(runs) > MAX_RUNS:
         return False
+    with_counter = [r for r in runs if any(o.category == "counter" for o in r)]
     for cat in WORK_CATEGORIES:
-        first = next((o for o in objs if o.support == "floor" and o.category == cat), None)
-        if first is None:
-            return False
-        run = next((r for r in runs if any(o.id == first.id for o in r)), None)
-        if run is None or not any(o.category == "counter" for o in run):
+        if not any(o.support == "floor" and o.category == cat for o in objs):
+            continue
+        if not any(o.category == cat for r in with_counter for o in r):
             return False
     return True
 
@@ -122,6 +124,7 @@ def _has_wall_cabinets(objs: list[HouseObject]) -> bool:
         cfp = geometry.footprint_polygon(c.position, c.size, c.yaw)
         top = c.position[2] + c.size[2]
         for h in hung:
-            if h.position[2] >= top and geometry.footprint_polygon(h.position, h.size, h.yaw).intersects(cfp):
+            hfp = geometry.footprint_polygon(h.position, h.size, h.yaw)
+            if h.position[2] >= top and hfp.intersection(cfp).area > OVER_M2:
                 return True
     return False
