@@ -70,7 +70,8 @@ def run_set(name: str, prompts: list[tuple[str, str]], seeds: list[int],
     tot: dict[str, Any] = {"set": name, "houses": 0, "violations": 0, "key_dropped": [],
                            "mismatched": [], "coverage": [], "relations": {}}
     keys = ("n_planned", "n_dropped", "n_key", "n_layers_planned", "n_layers_placed", "n_tv_stands",
-            "n_tv_against_wall", "n_tv_with_seat", "n_tv_facing_seat", "n_tv_view_blocked", "n_sets")
+            "n_tv_against_wall", "n_tv_with_seat", "n_tv_facing_seat", "n_tv_view_blocked", "n_sets",
+            "n_kitchens", "n_kitchen_work_run", "n_kitchen_wall_cabinets")
     for k in keys + ("n_floor_objects", "n_floor_objects_reached"):
         tot[k] = 0
     with RoomTimer() as timer:
@@ -135,6 +136,8 @@ def table(results: list[dict[str, Any]], seeds: list[int]) -> str:
         lambda r: _frac(sum(c < 0.15 for c in r["coverage"]), len(r["coverage"])))
     row("floor coverage of habitable rooms: median / p90", "20-50 %",
         lambda r: f"{100 * pct(r['coverage'], 50):.0f} % / {100 * pct(r['coverage'], 90):.0f} %" if r["coverage"] else "-")
+    row("kitchens with sink, cooktop and fridge in counter runs", "", lambda r: _frac(r["n_kitchen_work_run"], r["n_kitchens"]))
+    row("kitchens with wall cabinets over the counters", "", lambda r: _frac(r["n_kitchen_wall_cabinets"], r["n_kitchens"]))
     row("furniture reachable (ground floor, 0.25 m agent)", ">= 95 %",
         lambda r: _frac(r["n_floor_objects_reached"], r["n_floor_objects"]))
     row("relations the plans state, met", "", lambda r: _frac(sum(v[0] for v in r["relations"].values()),

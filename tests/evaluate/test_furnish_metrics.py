@@ -64,3 +64,30 @@ def test_dropped_key_item_and_rug_are_counted(house):
 def test_floor_objects_reached_by_the_agent(house):
     rep = evaluate_house(house)
     assert 0 < rep.metrics["n_floor_objects_reached"] <= rep.metrics["n_floor_objects"]
+
+
+KITCHEN_TEXT = "a small house with a kitchen, a living room and a bedroom"
+
+
+@pytest.fixture(scope="module")
+def kitchen_house() -> House:
+    return generate(KITCHEN_TEXT, seed=0)
+
+
+def test_a_generated_kitchen_has_its_work_run_and_wall_cabinets(kitchen_house):
+    m = furnish_metrics(kitchen_house)
+    assert m.n_kitchens >= 1
+    assert m.n_kitchen_work_run == m.n_kitchens and m.n_kitchen_wall_cabinets == m.n_kitchens
+
+
+def test_a_fridge_moved_off_the_run_and_cabinets_taken_down_are_counted(kitchen_house):
+    before = furnish_metrics(kitchen_house)
+    objs = [o.model_copy() for o in kitchen_house.objects]
+    fridge = next(o for o in objs if o.category == "refrigerator")
+    f = np.array([-np.sin(fridge.yaw), np.cos(fridge.yaw)])
+    fridge.position = (fridge.position[0] + 1.0 * f[0], fridge.position[1] + 1.0 * f[1], 0.0)  # out into the room
+    moved = furnish_metrics(_edited(kitchen_house, objects=objs))
+    assert moved.n_kitchen_work_run == before.n_kitchen_work_run - 1
+    bare = [o for o in kitchen_house.objects if not (o.category == "cabinet" and o.support == "wall"
+                                                     and o.room == fridge.room)]
+    assert furnish_metrics(_edited(kitchen_house, objects=bare)).n_kitchen_wall_cabinets == before.n_kitchen_wall_cabinets - 1

@@ -34,6 +34,9 @@ relations
     Every relation the plan's groups state (near, far, in front, beside, symmetric pair,
     around, facing, aligned, run), checked on the placed geometry by
     :func:`anyhome.evaluate.relations.house_relations`: met and checked, by kind.
+kitchens
+    :mod:`anyhome.evaluate.kitchen_metrics`: kitchens whose sink, cooktop and fridge
+    stand in counter runs (**work run**), kitchens with wall cabinets over the counters.
 floor coverage
     For a habitable room: the area of the union of its floor objects' footprints (floor
     layers and stairs left out) over the room's area.
@@ -51,6 +54,7 @@ from shapely.geometry import Polygon
 
 from anyhome import geometry
 from anyhome.assets.sets import set_key
+from anyhome.evaluate.kitchen_metrics import kitchen_figures
 from anyhome.evaluate.polygons import is_usable, room_polygon
 from anyhome.evaluate.relations import house_relations, met_by_kind
 from anyhome.house import House, HouseObject, is_habitable
@@ -91,6 +95,9 @@ class FurnishMetrics:
     relations: dict[str, list[int]] = field(default_factory=dict)
     """Relation kind -> [met, checked] over the relations the plan's groups state
     (:mod:`anyhome.evaluate.relations`)."""
+    n_kitchens: int = 0
+    n_kitchen_work_run: int = 0
+    n_kitchen_wall_cabinets: int = 0
 
     @property
     def drop_rate(self) -> float:
@@ -121,6 +128,8 @@ class FurnishMetrics:
             f"  relations met {sum(v[0] for v in self.relations.values())}/"
             f"{sum(v[1] for v in self.relations.values())}"
             + (" (" + ", ".join(f"{k} {v[0]}/{v[1]}" for k, v in self.relations.items()) + ")" if self.relations else ""),
+            f"  kitchens with sink, cooktop and fridge in counter runs {self.n_kitchen_work_run}/{self.n_kitchens}, "
+            f"with wall cabinets {self.n_kitchen_wall_cabinets}/{self.n_kitchens}",
         ]
 
 
@@ -148,6 +157,8 @@ def furnish_metrics(house: House) -> FurnishMetrics:
         if o.category == "tv_stand" and o.support == "floor":
             _tv_stand(m, o, polys.get(o.room), by_room.get(o.room, []))
     _sets(m, objects)
+    k = kitchen_figures(polys, by_room)
+    m.n_kitchens, m.n_kitchen_work_run, m.n_kitchen_wall_cabinets = k.n_kitchens, k.n_work_run, k.n_wall_cabinets
     for r in house.rooms:
         poly = polys.get(r.id)
         if poly is not None and is_habitable(r.type) and poly.area > 0:

@@ -15,10 +15,13 @@ them. A zone's anchor prefers floor away from the furniture already there
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import shapely
 from shapely.geometry import Polygon
 
-from anyhome.layout.arrangements import place_free, place_rows
+from anyhome.layout.arrangements import place_free
+from anyhome.layout.kitchens import is_island
 from anyhome.layout.state import RoomState
 from anyhome.plan.spec import GroupSpec
 
@@ -44,31 +47,29 @@ def coverage(st: RoomState) -> float:
     return float(covered / st.space.area)
 
 
-def place_zones(st: RoomState, zones: list[GroupSpec]) -> None:
-    """Place copies of ``zones`` while the room needs them (see the module docstring)."""
+def place_zones(st: RoomState, zones: list[GroupSpec], place: Callable[[RoomState, GroupSpec], None]) -> None:
+    """Place copies of ``zones`` while the room needs them (see the module docstring): the
+    first round each by ``place`` (the solver's, by arrangement), later rounds one more
+    copy of each freely arranged zone."""
     if not zones or st.space.area < FILL_MIN_AREA_M2:
         return
     rounds = min(ZONE_ROUNDS, 1 + int(st.space.area // ZONE_ROUND_M2))
     st.spread = True
     try:
-        _rounds(st, zones, rounds)
+        for r in range(rounds):
+            for g in zones:
+                if coverage(st) >= FILL_COVERAGE:
+                    return
+                if r > 0 and (g.arrangement != "free" or is_island(st, g)):
+                    continue
+                snap = st.snapshot()
+                if r == 0:
+                    place(st, g)
+                else:
+                    place_free(st, g.model_copy(update={"repeat": g.repeat * (r + 1)}), start=g.repeat * r)
+                if len(st.space.placed) == snap.n_placed:
+                    st.restore(snap)
+                else:
+                    del st.dropped[snap.n_dropped:]
     finally:
         st.spread = False
-
-
-def _rounds(st: RoomState, zones: list[GroupSpec], rounds: int) -> None:
-    for r in range(rounds):
-        for g in zones:
-            if coverage(st) >= FILL_COVERAGE:
-                return
-            if g.arrangement == "rows" and r > 0:
-                continue
-            snap = st.snapshot()
-            if g.arrangement == "rows":
-                place_rows(st, g)
-            else:
-                place_free(st, g.model_copy(update={"repeat": g.repeat * (r + 1)}), start=g.repeat * r)
-            if len(st.space.placed) == snap.n_placed:
-                st.restore(snap)
-            else:
-                del st.dropped[snap.n_dropped:]

@@ -20,11 +20,11 @@ import numpy as np
 from shapely.geometry import Polygon
 
 from anyhome.house import Dropped, Floorplan, HouseObject, Room
-from anyhome.layout import arrangements, fill, layers, ornaments
+from anyhome.layout import arrangements, fill, kitchens, layers, ornaments
 from anyhome.layout.options import DEFAULT_OPTIONS, LayoutOptions
 from anyhome.layout.state import RoomState
 from anyhome.layout.zones import arm_zones
-from anyhome.plan.spec import HouseSpec, ItemSpec, RoomSpec
+from anyhome.plan.spec import GroupSpec, HouseSpec, ItemSpec, RoomSpec
 
 
 @dataclass
@@ -148,14 +148,23 @@ def _furnish(st: RoomState, order: list[int], scales: dict[int, float]) -> None:
             zones.append(g)
             continue
         st.zone = st.group_zones.get(i)
-        if g.arrangement == "rows":
-            arrangements.place_rows(st, g)
-        else:
-            arrangements.place_free(st, g)
+        place_group(st, g)
     st.zone = None
-    fill.place_zones(st, zones)
+    fill.place_zones(st, zones, place_group)
     layers.place_layers(st, rugs)
     ornaments.place_ornaments(st)
+
+
+def place_group(st: RoomState, g: GroupSpec) -> None:
+    """Every copy of ``g`` by its arrangement: rows, a kitchen run, an island, else free."""
+    if g.arrangement == "rows":
+        arrangements.place_rows(st, g)
+    elif kitchens.is_kitchen_run(g):
+        kitchens.place_kitchen(st, g)
+    elif kitchens.is_island(st, g):
+        kitchens.place_island(st, g)
+    else:
+        arrangements.place_free(st, g)
 
 
 def _group_zones(room: Room, rs: RoomSpec, others: list[RoomSpec]) -> dict[int, Polygon]:
