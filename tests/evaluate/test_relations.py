@@ -80,6 +80,29 @@ def test_aligned_wall_item_over_its_target(x, met):
     assert kinds(g, [SOFA, painting], rel.ALIGNED)[0].met is met
 
 
+@pytest.mark.parametrize("x,met", [(1.2, True), (2.4, True), (3.3, False), (0.2, False)])
+def test_wall_cabinets_lie_over_the_counter_run_not_centred_on_a_piece(x, met):
+    """Two counters (0.6 m, side by side from x = 0.9 to 2.7) and wall cabinets over them:
+    a cabinet is aligned when its span lies over the run, wherever along it."""
+    run = GroupSpec(name="k", anchor=item("counter", "place_wall", (0.6, 0.6, 0.9)),
+                    members=[item("counter", "place_next_wall", (0.6, 0.6, 0.9)),
+                             item("wall cabinet", "place_on_wall", (0.6, 0.35, 0.7), target="counter", count=2)])
+    c1 = obj("a", "counter", (1.2, 0.3), (0.6, 0.6, 0.9), anchor=None, group="k-0", rule="place_wall")
+    c2 = obj("c2", "counter", (1.8, 0.3), (0.6, 0.6, 0.9), group="k-0", rule="place_next_wall")
+    c3 = obj("c3", "counter", (2.4, 0.3), (0.6, 0.6, 0.9), group="k-0", rule="place_next_wall")
+    cab = [obj("w1", "wall cabinet", (x, 0.175), (0.6, 0.35, 0.7), group="k-0", z=1.45, support="wall"),
+           obj("w2", "wall cabinet", (1.8, 0.175), (0.6, 0.35, 0.7), group="k-0", z=1.45, support="wall")]
+    got = {r.item: r.met for r in rel.room_relations([run], [c1, c2, c3, *cab], ROOM) if r.kind == rel.ALIGNED}
+    assert got["w1"] is met and got["w2"] is True
+
+
+def test_rows_of_anchors_state_no_run():
+    """Beds set out in rows (a nap room) are placed by the arrangement, not as a run along a wall."""
+    g = GroupSpec(name="n", anchor=item("cot", "place_next_wall", (0.7, 1.4, 0.35)), arrangement="rows", repeat=3)
+    cots = [obj(f"c{i}", "cot", (1.0 + 1.5 * i, 2.5), (0.7, 1.4, 0.35), anchor=None, group=f"n-{i}") for i in range(3)]
+    assert rel.room_relations([g], cots, ROOM) == []
+
+
 @pytest.mark.parametrize("xy,yaw,side,met", [
     ((4.3, 0.25), 0.0, "right", True),    # right of the sofa, backs aligned
     ((1.7, 0.25), 0.0, "left", True),

@@ -246,6 +246,25 @@ def check_aligned_wall(o: HouseObject, t: HouseObject) -> Relation:
                     f"{'same' if same_wall else 'other'} wall, along {lat:+.2f} m")
 
 
+def check_over_run(o: HouseObject, run: Sequence[HouseObject]) -> Relation:
+    """:data:`ALIGNED` for one of several wall items over several targets (wall cabinets
+    over a counter run): on the wall of a target, its span within the span of the
+    targets against that wall (to :data:`ALIGN_TOL_M`), not centred on any one of them."""
+    ob = _xy(o) - _front(o.yaw) * o.size[1] / 2
+    r = _right(o.yaw)
+    spans = []
+    for t in run:
+        tb = _xy(t) - _front(t.yaw) * t.size[1] / 2
+        if abs(float((ob - tb) @ _front(o.yaw))) <= WALL_GAP_M and float(_front(o.yaw) @ _front(t.yaw)) > 0.99:
+            c = float((tb - ob) @ r)
+            spans.append((c - t.size[0] / 2, c + t.size[0] / 2))
+    if not spans:
+        return Relation(ALIGNED, o.id, run[0].id, False, "over no piece of the run")
+    lo, hi = min(a for a, _ in spans), max(b for _, b in spans)
+    ok = lo <= -o.size[0] / 2 + ALIGN_TOL_M and hi >= o.size[0] / 2 - ALIGN_TOL_M
+    return Relation(ALIGNED, o.id, run[0].id, ok, f"run spans {lo:+.2f}..{hi:+.2f} m about it")
+
+
 def check_far(o: HouseObject, t: HouseObject, far_m: float) -> Relation:
     """:data:`FAR`."""
     g = gap(o, t)
@@ -344,6 +363,8 @@ def item_relations(m: ItemSpec, objs: Sequence[HouseObject], targets: Sequence[H
         out += check_near_copies(objs)
     elif m.rule == "place_next_wall" and not anchor_on_wall:
         out += [check_near_wall(o, near[o.id], outline) for o in objs]
+    elif m.rule == "place_on_wall" and len(objs) > 1 and len(targets) > 1:  # wall cabinets over a counter run
+        out += [check_over_run(o, targets) for o in objs]
     elif m.rule == "place_on_wall":
         out += [check_aligned_wall(o, near[o.id]) for o in objs if against_wall(near[o.id], outline)]
     if _far_m(m) > 0:
@@ -356,7 +377,9 @@ def group_relations(g: GroupSpec, objects: Sequence[HouseObject], outline: Polyg
     out: list[Relation] = []
     copies = _copies(g, objects)
     anchors = [o for objs in copies.values() for o in objs if o.anchor is None and o.name == g.anchor.name]
-    if len(anchors) > 1 and (g.anchor.rule == "place_next_wall" or g.arrangement == "along_walls"):
+    if g.arrangement == "rows":  # the rows arrangement places the anchors, not their rule
+        pass
+    elif len(anchors) > 1 and (g.anchor.rule == "place_next_wall" or g.arrangement == "along_walls"):
         out += check_run(anchors, anchors[0], outline)
     elif len(anchors) > 1 and g.anchor.rule == "place_next":
         out += check_near_copies(anchors)
