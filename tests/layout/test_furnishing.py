@@ -152,3 +152,17 @@ def test_a_tv_stand_with_no_sofa_stands_against_a_wall():
     tv = _one(res, "tv stand")
     back = np.asarray(tv.position[:2]) - front(tv.yaw) * tv.size[1] / 2
     assert Polygon(fp.rooms[0].polygon).exterior.distance(Point(back)) < 0.05
+
+
+def test_a_dresser_with_a_mirror_keeps_off_the_windows():
+    """A dresser (0.85 m, low enough to stand under a window) with a mirror to hang behind
+    it stands on a wall without a window, so the mirror hangs over it, not on another wall."""
+    dresser = item("dresser", "dresser", (1.2, 0.5, 0.85), "place_wall", tags=["storage"])
+    mirror = item("dresser mirror", "mirror", (0.6, 0.03, 0.8), "place_on_wall", params={"elevation_m": 1.0})
+    wins = [((0.3, 4.0), (3.7, 4.0)), ((4.0, 0.5), (4.0, 3.5))]  # north and east walls
+    for seed in range(5):
+        fp = single_room(rect(0, 0, 4.0, 4.0), door=((0.3, 0.0), (1.2, 0.0)), windows=wins)
+        res = layout_house(house_spec({"r1": [group("dresser", dresser, [mirror])]}), fp, np.random.default_rng(seed))
+        d, m = _one(res, "dresser"), _one(res, "dresser mirror")
+        assert float(front(d.yaw) @ front(m.yaw)) > 0.99, seed  # on the wall behind the dresser
+        assert np.linalg.norm(np.subtract(d.position[:2], m.position[:2])) < 0.6, seed

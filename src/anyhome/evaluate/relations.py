@@ -248,21 +248,12 @@ def check_aligned_wall(o: HouseObject, t: HouseObject) -> Relation:
 
 def check_over_run(o: HouseObject, run: Sequence[HouseObject]) -> Relation:
     """:data:`ALIGNED` for one of several wall items over several targets (wall cabinets
-    over a counter run): on the wall of a target, its span within the span of the
-    targets against that wall (to :data:`ALIGN_TOL_M`), not centred on any one of them."""
-    ob = _xy(o) - _front(o.yaw) * o.size[1] / 2
-    r = _right(o.yaw)
-    spans = []
-    for t in run:
-        tb = _xy(t) - _front(t.yaw) * t.size[1] / 2
-        if abs(float((ob - tb) @ _front(o.yaw))) <= WALL_GAP_M and float(_front(o.yaw) @ _front(t.yaw)) > 0.99:
-            c = float((tb - ob) @ r)
-            spans.append((c - t.size[0] / 2, c + t.size[0] / 2))
-    if not spans:
-        return Relation(ALIGNED, o.id, run[0].id, False, "over no piece of the run")
-    lo, hi = min(a for a, _ in spans), max(b for _, b in spans)
-    ok = lo <= -o.size[0] / 2 + ALIGN_TOL_M and hi >= o.size[0] / 2 - ALIGN_TOL_M
-    return Relation(ALIGNED, o.id, run[0].id, ok, f"run spans {lo:+.2f}..{hi:+.2f} m about it")
+    over a counter run): its footprint lies over the pieces of ``run`` (the targets and
+    the other floor pieces of their group: sink, cooktop, round the corner too), to
+    :data:`ALIGN_TOL_M`, rather than centred on any one of them."""
+    under = shapely.union_all([_poly(t) for t in run]).buffer(ALIGN_TOL_M, join_style="mitre")
+    out = _poly(o).difference(under).area
+    return Relation(ALIGNED, o.id, run[0].id, out <= 1e-6, f"{out:.3f} m2 of it over no piece of the run")
 
 
 def check_far(o: HouseObject, t: HouseObject, far_m: float) -> Relation:
@@ -328,9 +319,10 @@ def _far_m(item: ItemSpec) -> float:
 
 
 def item_relations(m: ItemSpec, objs: Sequence[HouseObject], targets: Sequence[HouseObject],
-                   outline: Polygon, anchor_on_wall: bool) -> list[Relation]:
+                   outline: Polygon, anchor_on_wall: bool, floor: Sequence[HouseObject] = ()) -> list[Relation]:
     """The relations member ``m`` states, checked on its placed copies ``objs`` against
-    its target's placed copies ``targets``."""
+    its target's placed copies ``targets`` (``floor``: the group copy's floor objects,
+    the run that several wall items hang over)."""
     if not objs or not targets:
         return []
     out: list[Relation] = []
@@ -364,7 +356,7 @@ def item_relations(m: ItemSpec, objs: Sequence[HouseObject], targets: Sequence[H
     elif m.rule == "place_next_wall" and not anchor_on_wall:
         out += [check_near_wall(o, near[o.id], outline) for o in objs]
     elif m.rule == "place_on_wall" and len(objs) > 1 and len(targets) > 1:  # wall cabinets over a counter run
-        out += [check_over_run(o, targets) for o in objs]
+        out += [check_over_run(o, [*targets, *(f for f in floor if f not in targets)]) for o in objs]
     elif m.rule == "place_on_wall":
         out += [check_aligned_wall(o, near[o.id]) for o in objs if against_wall(near[o.id], outline)]
     if _far_m(m) > 0:
@@ -395,7 +387,8 @@ def group_relations(g: GroupSpec, objects: Sequence[HouseObject], outline: Polyg
             tname = m.target or g.anchor.name
             pool = objs if tname in names else objects
             targets = [o for o in pool if o.name == tname and o not in mine]
-            out += item_relations(m, mine, targets, outline, on_wall)
+            floor = [o for o in objs if o.support == "floor"]
+            out += item_relations(m, mine, targets, outline, on_wall, floor)
         run = [o for o in objs if o.rule == "place_next_wall" and o.anchor is not None]
         if on_wall and anchor is not None and run:
             out += check_run([anchor, *run], anchor, outline)

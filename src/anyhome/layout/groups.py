@@ -43,7 +43,9 @@ def place_group_copy(st: RoomState, g: GroupSpec, copy: int, prev: HouseObject |
     if kind == "floor":
         c = scoring.run_room_bonus(st, g, c, rule, prev is None)
     run_on = prev is not None and REGISTRY[rule].continues  # the copy continues a run: no jump
-    order = scoring.rank(st, c, size, kind, o.member_noise if run_on else o.noise, spacing=not run_on)
+    hangs = any(m.rule == "place_on_wall" and m.target in (None, item.name) for m in g.members)
+    order = scoring.rank(st, c, size, kind, o.member_noise if run_on else o.noise, spacing=not run_on,
+                         avoid_windows=hangs)
     choices = scoring.verified(st, c, order, size, kind, None, k=tries, min_sep_m=o.anchor_min_sep_m)
     anchor = try_choices(st, g, label, choices, kind, rule)
     if anchor is not None and ref is not None and rule == "place_front" and item.params.get("to_wall"):

@@ -19,8 +19,10 @@ from anyhome.space import rect_corners
 
 
 def rank(st: RoomState, c: Cands, size: Sequence[float], kind: str, noise: float, spacing: bool,
-         layer: bool = False) -> np.ndarray:
-    """Indices of the valid candidates, best first (``layer``: a rug, see RoomSpace.valid)."""
+         layer: bool = False, avoid_windows: bool = False) -> np.ndarray:
+    """Indices of the valid candidates, best first (``layer``: a rug, see RoomSpace.valid;
+    ``avoid_windows``: keep off windows as tall objects do, for an anchor with something
+    to hang on the wall behind it, a dresser's mirror)."""
     if not len(c):
         return np.zeros(0, dtype=int)
     o = st.options
@@ -35,7 +37,7 @@ def rank(st: RoomState, c: Cands, size: Sequence[float], kind: str, noise: float
         score += weight * st.space.clearance(corners[idx], cap) / cap
     if kind == "floor" and st.zone is not None:
         score += o.zone_bonus * shapely.contains_xy(st.zone, c.xy[idx, 0], c.xy[idx, 1])
-    if kind == "floor" and size[2] > o.tall_m:
+    if kind == "floor" and (size[2] > o.tall_m or avoid_windows):
         score -= o.window_penalty * st.space.window_penalty(corners[idx])
     return idx[np.argsort(-score, kind="stable")]
 
