@@ -99,3 +99,17 @@ def test_a_room_is_planned_high_enough_for_what_it_holds():
                      if it.rule not in ("place_top", "place_on_wall")]
             if not r.open_air and floor:
                 assert r.height_m >= max(it.size_m[2] for it in floor) + HEADROOM_M - 1e-6, r.id
+
+
+def test_three_barber_chairs_are_three_stations_each_chair_facing_its_own():
+    from anyhome.pipeline import generate
+
+    h = generate("a barbershop with three barber chairs", seed=0)
+    chairs = [o for o in h.objects if o.category == "salon_chair"]
+    stations = {o.id: o for o in h.objects if o.group and o.group.startswith("salon_station") and o.anchor is None}
+    assert len(chairs) == 3 and len(stations) == 3
+    for c in chairs:
+        s = stations[c.anchor]
+        face = np.array([-np.sin(c.yaw), np.cos(c.yaw)])
+        to_station = np.subtract(s.position[:2], c.position[:2])
+        assert face @ to_station / np.linalg.norm(to_station) > 0.9  # the chair faces its station and mirror

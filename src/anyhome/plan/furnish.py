@@ -298,13 +298,16 @@ def apply_mention(kb: KnowledgeBase, m: Mention, groups: list[Group], ornaments:
         item["name"] = m.name
     if m.size != 1.0:
         item["size_m"] = tuple(round(min(20.0, s * m.size), 3) for s in item["size_m"])
+    # a member of the group made for it (its objects.yaml group: a chair at a styling
+    # station) is counted in copies of the group: three barber chairs, three stations
+    per_group = item is not g["anchor"] and proto.get("group") == g["name"] and item["count"] == 1
     if n is not None and m.count is not None:
-        if item is g["anchor"]:
+        if item is g["anchor"] or per_group:
             g["repeat"] = max(1, min(MAX_COUNT, n))
         else:
             item["count"] = max(1, min(MAX_COUNT, math.ceil(n / g["repeat"])))
     elif n is not None and g["repeat"] * item["count"] < n:
-        if item is g["anchor"]:
+        if item is g["anchor"] or per_group:
             g["repeat"] = max(1, min(MAX_COUNT, n))
         else:
             item["count"] = max(1, min(MAX_COUNT, math.ceil(n / g["repeat"])))
