@@ -12,8 +12,9 @@ from shapely.geometry import Polygon
 from anyhome.house import Dropped, Floorplan, HouseObject, Room
 from anyhome.layout.options import LayoutOptions
 from anyhome.layout.rules import wrap
+from anyhome.navgrid import NavGrid
 from anyhome.plan.spec import ItemSpec, RoomSpec
-from anyhome.space import NavGrid, Placed, RoomSpace, Wall, nav_blocks, rect_corners
+from anyhome.space import Placed, RoomSpace, Wall, nav_blocks, rect_corners
 
 SLUG_MAX_CHARS = 40
 """Longest name part of an object id (ids are at most 128 characters, see anyhome.sanitize)."""
@@ -101,10 +102,10 @@ class RoomState:
             tags=list(item.tags),
         )
         corners = rect_corners(ch.xy[None], size[:2], [obj.yaw])[0]
-        mask = self.nav.obstacle_mask(corners) if nav_blocks(obj) else None
-        self.space.placed.append(Placed(obj, corners, ch.z, ch.z + size[2], support == "floor", mask, layer))
-        if mask is not None:
-            self.nav.blocked |= mask
+        obs = self.nav.obstacle(corners, reachable=False) if nav_blocks(obj) else None
+        self.space.placed.append(Placed(obj, corners, ch.z, ch.z + size[2], support == "floor", obs, layer))
+        if obs is not None:
+            self.nav.add(obs)
         return obj
 
     def commit_if_walkable(self, item: ItemSpec, size: Sequence[float], choices: list[Choice], support: str,

@@ -1,0 +1,259 @@
+"""Walkways of one room while it is furnished: the house's navigation raster over the
+room, kept up to date object by object (used by the layout stage).
+
+A per-room version of :func:`anyhome.geometry.navigability` on the same 5 cm raster. The
+room is rasterized together with its door strips and the keep-clear zones of its doors
+in the neighbouring rooms (which rule 4 keeps free of floor objects). The room passes
+when one walkable component (the *door component*) touches all its doors and some of
+its own cells, and every floor object that must stay reachable has a walkable cell of
+that component within reach (:data:`REACH_M`). The free space here is a subset of the
+house-wide one, so what passes here passes the house-wide check.
+
+Speed: a cell is walkable when no blocked cell lies within the agent radius of it. The
+empty room's walkable cells come from one distance transform; each obstacle then takes
+away its *shadow*, its cells dilated by the agent's disc on a window around it, which
+is exactly what a distance transform of the furnished room would take away. Components
+are labelled again only when an obstacle took walkable cells away since the last time.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Literal
+
+import numpy as np
+import shapely
+from scipy import ndimage
+from shapely.geometry import LineString
+
+from anyhome.geometry import AGENT_RADIUS_M, NAV_CELL_M, WALL_INSET_CELLS, opening_zone
+from anyhome.house import Floorplan
+from anyhome.space import Placed, RoomSpace, room_polygon
+
+NAV_OBSTACLE_PAD_M = 0.002
+"""Obstacles block raster cells this far outside them too (robust to rounding)."""
+WALKWAY_RADIUS_M = 0.3
+"""Agent radius of the per-room walkway check (0.6 m walkways) when the empty room allows it."""
+REACH_MARGIN_M = 0.01
+"""An object counts as reachable here when a walkable cell lies this much closer to it
+than the evaluator asks (robust to rounding and to the corners of its buffered outline)."""
+REACH_M = AGENT_RADIUS_M + 2 * NAV_CELL_M - REACH_MARGIN_M
+"""A floor object is reachable from a walkable cell whose centre lies this close to its
+footprint (the evaluator's ``agent_radius_m + 2 cells``, less :data:`REACH_MARGIN_M`)."""
+
+Verdict = Literal["ok", "unreached", "blocked"]
+"""Outcome of :meth:`NavGrid.check`: all clear; walkways and earlier objects clear but
+the newest object cannot be reached; a door or an earlier object cut off."""
+
+
+@dataclass(frozen=True)
+class Patch:
+    """Raster cells ``mask`` in the window whose first cell is at row ``i0``, column ``j0``."""
+
+    i0: int
+    j0: int
+    mask: np.ndarray
+
+    @property
+    def window(self) -> tuple[slice, slice]:
+        h, w = self.mask.shape
+        return slice(self.i0, self.i0 + h), slice(self.j0, self.j0 + w)
+
+
+@dataclass(frozen=True)
+class Obstacle:
+    """What one placed object does to the walkways (:attr:`anyhome.space.Placed.nav`)."""
+
+    cells: Patch
+    """Cells it blocks."""
+    shadow: Patch
+    """Cells it makes unwalkable (``cells`` dilated by the agent's disc)."""
+    reach: Patch | None = None
+    """Cells from which the agent reaches it; None when it need not stay reachable."""
+
+
+class NavGrid:
+    """The walkway and reachability check of one room (see the module docstring)."""
+
+    def __init__(self, floorplan: Floorplan, space: RoomSpace, cell_m: float = NAV_CELL_M) -> None:
+        self.cell = cell_m
+        polys = [room_polygon(r) for r in floorplan.rooms]
+        minx, miny, _, _ = shapely.bounds(shapely.union_all(polys))
+        pad = 2 * cell_m
+        x0, y0 = minx - pad + cell_m / 2, miny - pad + cell_m / 2
+        bx0, by0 = space.bmin - 1.0
+        bx1, by1 = space.bmax + 1.0
+        j0 = max(0, int(np.floor((bx0 - x0) / cell_m)))
+        i0 = max(0, int(np.floor((by0 - y0) / cell_m)))
+        j1 = int(np.ceil((bx1 - x0) / cell_m)) + 1
+        i1 = int(np.ceil((by1 - y0) / cell_m)) + 1
+        self.xs = x0 + cell_m * np.arange(j0, j1)
+        self.ys = y0 + cell_m * np.arange(i0, i1)
+        self.gx, self.gy = np.meshgrid(self.xs, self.ys)
+        half = cell_m / 2
+        inset = WALL_INSET_CELLS * cell_m
+        self.room_mask = self._raster(space.poly.buffer(-inset, join_style="mitre"))
+        free = self.room_mask.copy()
+        others = {r.id: p for r, p in zip(floorplan.rooms, polys)}
+        near = AGENT_RADIUS_M + 2 * cell_m
+        self.door_near = []
+        for d in space.doors:
+            free |= self._raster(LineString(d.segment).buffer(half * 1.5, cap_style="flat"))
+            for rid in d.rooms:
+                if rid != space.room.id and rid in others:
+                    inner = others[rid].buffer(-inset, join_style="mitre")
+                    free |= self._raster(opening_zone(d.segment).intersection(inner))
+            self.door_near.append(self._raster(LineString(d.segment).buffer(near)))
+        self.base_free = free
+        self.obstacles: list[Obstacle] = []
+        self.walk = np.zeros_like(free)
+        """Walkable cells of the room as furnished."""
+        self._labels: np.ndarray | None = None
+        """Walkable components of ``walk`` (None: to be labelled again)."""
+        self._door_labels = np.zeros(0, dtype=np.int32)
+        """Labels of the door component (with ``_labels``)."""
+        self.radius: float | None = None
+        for r in (WALKWAY_RADIUS_M, AGENT_RADIUS_M):
+            self._use_radius(r)
+            if self.ok():
+                break
+        else:
+            self._use_radius(None)
+
+    # ------------------------------------------------------------ raster
+    def _use_radius(self, radius: float | None) -> None:
+        """Check walkways for an agent of ``radius`` (None: not at all, the empty room fails)."""
+        self.radius = radius
+        if radius is None:
+            self._disc = np.ones((1, 1), dtype=bool)
+            self.base_walk = np.zeros_like(self.base_free)
+        else:
+            k = int(np.ceil(radius / self.cell)) + 1
+            off = np.arange(-k, k + 1, dtype=float)
+            # as distance_transform_edt computes it: sqrt of the summed squares, times the cell
+            far = np.sqrt(off[:, None] ** 2 + off[None, :] ** 2) * self.cell > radius
+            rows, cols = np.nonzero(~far)
+            self._disc = ~far[rows.min():rows.max() + 1, cols.min():cols.max() + 1]
+            self.base_walk = ndimage.distance_transform_edt(self.base_free) * self.cell > radius
+        self.set_blocked([])
+
+    def _raster(self, geom) -> np.ndarray:
+        mask = np.zeros(self.gx.shape, dtype=bool)
+        if geom.is_empty:
+            return mask
+        x0, y0, x1, y1 = geom.bounds
+        i0, i1 = np.searchsorted(self.ys, [y0, y1])
+        j0, j1 = np.searchsorted(self.xs, [x0, x1])
+        if i0 >= i1 or j0 >= j1:
+            return mask
+        mask[i0:i1, j0:j1] = shapely.contains_xy(geom, self.gx[i0:i1, j0:j1], self.gy[i0:i1, j0:j1])
+        return mask
+
+    def _rect_patch(self, corners: np.ndarray, grow_m: float, rounded: bool) -> Patch:
+        """Cells whose centre lies in a rotated rectangle, (4, 2) corners, grown by ``grow_m``
+        (``rounded``: within ``grow_m`` of it; else in the rectangle grown square)."""
+        lo, hi = corners.min(0) - grow_m, corners.max(0) + grow_m
+        i0, i1 = (int(v) for v in np.searchsorted(self.ys, [lo[1], hi[1]]))
+        j0, j1 = (int(v) for v in np.searchsorted(self.xs, [lo[0], hi[0]]))
+        if i0 >= i1 or j0 >= j1:
+            return Patch(0, 0, np.zeros((0, 0), dtype=bool))
+        c = corners.mean(0)
+        ex, ey = corners[1] - corners[0], corners[3] - corners[0]
+        hw, hd = np.linalg.norm(ex) / 2, np.linalg.norm(ey) / 2
+        ex, ey = ex / (2 * hw), ey / (2 * hd)
+        px = self.xs[None, j0:j1] - c[0]
+        py = self.ys[i0:i1, None] - c[1]
+        lx = np.abs(px * ex[0] + py * ex[1])
+        ly = np.abs(px * ey[0] + py * ey[1])
+        if rounded:
+            mask = np.hypot(np.maximum(lx - hw, 0.0), np.maximum(ly - hd, 0.0)) <= grow_m
+        else:
+            mask = (lx <= hw + grow_m) & (ly <= hd + grow_m)
+        return Patch(i0, j0, mask)
+
+    def obstacle(self, corners: np.ndarray, reachable: bool) -> Obstacle:
+        """What an object of footprint ``corners`` (4, 2) does to the walkways; ``reachable``:
+        it must stay reachable (a floor object an agent walks up to)."""
+        cells = self._rect_patch(corners, NAV_OBSTACLE_PAD_M, rounded=False)
+        reach = self._rect_patch(corners, REACH_M, rounded=True) if reachable else None
+        return Obstacle(cells, self._shadow(cells), reach)
+
+    def _shadow(self, cells: Patch) -> Patch:
+        """``cells`` dilated by the agent's disc, clipped to the raster."""
+        if self.radius is None or not cells.mask.any():
+            return Patch(0, 0, np.zeros((0, 0), dtype=bool))
+        k = self._disc.shape[0] // 2
+        h, w = cells.mask.shape
+        ny, nx = self.base_free.shape
+        i0, j0 = max(0, cells.i0 - k), max(0, cells.j0 - k)
+        i1, j1 = min(ny, cells.i0 + h + k), min(nx, cells.j0 + w + k)
+        pad = np.zeros((h + 2 * k, w + 2 * k), dtype=bool)
+        pad[k:k + h, k:k + w] = cells.mask
+        grown = ndimage.binary_dilation(pad, structure=self._disc)
+        a, b = i0 - (cells.i0 - k), j0 - (cells.j0 - k)
+        return Patch(i0, j0, grown[a:a + i1 - i0, b:b + j1 - j0])
+
+    # ------------------------------------------------------------ state
+    def add(self, obs: Obstacle) -> None:
+        """Block ``obs`` (a committed object)."""
+        self.obstacles.append(obs)
+        win = obs.shadow.window
+        lost = self.walk[win] & obs.shadow.mask
+        if lost.any():
+            self.walk[win] &= ~obs.shadow.mask
+            self._labels = None
+
+    def set_blocked(self, placed: list[Placed]) -> None:
+        """Start again from the empty room with the obstacles of ``placed``."""
+        self.walk = self.base_walk.copy()
+        self._labels = None
+        self.obstacles = []
+        for p in placed:
+            if p.nav is not None:
+                self.obstacles.append(p.nav)
+                self.walk[p.nav.shadow.window] &= ~p.nav.shadow.mask
+
+    # ------------------------------------------------------------ checks
+    def ok(self) -> bool:
+        """Whether the doors share a walkable component with the room and every object that
+        must stay reachable is reached from it."""
+        return self.check() == "ok"
+
+    def check(self, newest: Obstacle | None = None) -> Verdict:
+        """:data:`Verdict` of the room as it stands; ``newest``: the object just added,
+        which alone may be unreachable for the verdict ``"unreached"``."""
+        if self.radius is None:
+            return "ok"
+        door = self._door_component()
+        if door is None:
+            return "blocked"
+        verdict: Verdict = "ok"
+        for obs in self.obstacles:
+            if obs.reach is None or self._reached(obs.reach, door):
+                continue
+            if obs is not newest:
+                return "blocked"
+            verdict = "unreached"
+        return verdict
+
+    def _reached(self, reach: Patch, door: np.ndarray) -> bool:
+        assert self._labels is not None
+        lab = self._labels[reach.window][reach.mask]
+        if len(door) == 1:
+            return bool(np.any(lab == door[0]))
+        return bool(np.isin(lab, door).any())
+
+    def _door_component(self) -> np.ndarray | None:
+        """Labels of the walkable components that touch every door and some room cells
+        (None: none does)."""
+        if self._labels is None:
+            labels, _ = ndimage.label(self.walk)
+            self._labels = labels
+            common: set[int] | None = None
+            for m in self.door_near:
+                lab = set(np.unique(labels[m & self.walk]).tolist()) - {0}
+                common = lab if common is None else common & lab
+            in_room = set(np.unique(labels[self.room_mask & self.walk]).tolist()) - {0}
+            keep = in_room if common is None else common & in_room
+            self._door_labels = np.array(sorted(keep), dtype=np.int32)
+        return self._door_labels if len(self._door_labels) else None
