@@ -19,7 +19,6 @@ are labelled again only when an obstacle took walkable cells away since the last
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Literal
 
 import numpy as np
 import shapely
@@ -40,11 +39,6 @@ than the evaluator asks (robust to rounding and to the corners of its buffered o
 REACH_M = AGENT_RADIUS_M + 2 * NAV_CELL_M - REACH_MARGIN_M
 """A floor object is reachable from a walkable cell whose centre lies this close to its
 footprint (the evaluator's ``agent_radius_m + 2 cells``, less :data:`REACH_MARGIN_M`)."""
-
-Verdict = Literal["ok", "unreached", "blocked"]
-"""Outcome of :meth:`NavGrid.check`: all clear; walkways and earlier objects clear but
-the newest object cannot be reached; a door or an earlier object cut off."""
-
 
 @dataclass(frozen=True)
 class Patch:
@@ -106,6 +100,10 @@ class NavGrid:
             self.door_near.append(self._raster(LineString(d.segment).buffer(near)))
         self.base_free = free
         self.obstacles: list[Obstacle] = []
+        """The placed objects' obstacles, in order."""
+        self.waived: list[Obstacle] = []
+        """Obstacles that need not stay reachable (out of reach when placed, or cut off
+        when nothing else fitted); the layout keeps this list with its snapshots."""
         self.walk = np.zeros_like(free)
         """Walkable cells of the room as furnished."""
         self._labels: np.ndarray | None = None
@@ -217,24 +215,19 @@ class NavGrid:
     def ok(self) -> bool:
         """Whether the doors share a walkable component with the room and every object that
         must stay reachable is reached from it."""
-        return self.check() == "ok"
+        return self.unreached() == []
 
-    def check(self, newest: Obstacle | None = None) -> Verdict:
-        """:data:`Verdict` of the room as it stands; ``newest``: the object just added,
-        which alone may be unreachable for the verdict ``"unreached"``."""
+    def unreached(self) -> list[Obstacle] | None:
+        """The obstacles that must stay reachable (``reach`` set, not waived) and are not;
+        None when no walkable component touches every door and some of the room."""
         if self.radius is None:
-            return "ok"
+            return []
         door = self._door_component()
         if door is None:
-            return "blocked"
-        verdict: Verdict = "ok"
-        for obs in self.obstacles:
-            if obs.reach is None or self._reached(obs.reach, door):
-                continue
-            if obs is not newest:
-                return "blocked"
-            verdict = "unreached"
-        return verdict
+            return None
+        waived = {id(o) for o in self.waived}
+        return [o for o in self.obstacles
+                if o.reach is not None and id(o) not in waived and not self._reached(o.reach, door)]
 
     def _reached(self, reach: Patch, door: np.ndarray) -> bool:
         assert self._labels is not None

@@ -52,23 +52,26 @@ def try_choices(st: RoomState, g: GroupSpec, label: str, choices: list[Choice], 
         return None
     support = "wall" if kind == "wall" else "floor"
     snap = st.snapshot()
-    best: tuple[int, int, int] | None = None  # (number of drops, compromises, choice index)
+    best: tuple[int, int, int, int] | None = None  # (drops, objects out of reach, compromises, choice index)
     for k, ch in enumerate(choices):
-        anchor = st.commit(item, item.size_m, ch, support, rule, label, None)
-        if kind != "top" and not st.nav.ok():
-            st.restore(snap)
+        got = st.commit_checked(item, item.size_m, ch, support, rule, label, None, check=kind != "top")
+        if got is None:
             continue
+        anchor = got[0]
         drops = place_members(st, g, label, anchor)
         bent = compromises(st, g, label, anchor)
-        if not drops and not bent:
+        unreached = st.unreached_since(snap)
+        if not drops and not bent and not unreached:
             return anchor
-        if best is None or (len(drops), bent) < best[:2]:
-            best = (len(drops), bent, k)
+        if best is None or (len(drops), unreached, bent) < best[:3]:
+            best = (len(drops), unreached, bent, k)
         st.restore(snap)
     if best is None:
         drop_group(st, g, "would block a walkway or a door")
         return None
-    anchor = st.commit(item, item.size_m, choices[best[2]], support, rule, label, None)
+    got = st.commit_checked(item, item.size_m, choices[best[3]], support, rule, label, None, check=kind != "top")
+    assert got is not None  # it passed in this very state
+    anchor = got[0]
     st.dropped.extend(place_members(st, g, label, anchor))
     return anchor
 
