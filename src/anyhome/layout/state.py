@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import re
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -120,7 +120,7 @@ class RoomState:
         if cut is None:
             return None
         last = self.space.placed[-1].nav if self.space.placed else None
-        itself = int(any(o is last for o in cut))
+        itself = int(last in cut)
         return len(cut) - itself, itself
 
     def commit_checked(self, item: ItemSpec, size: Sequence[float], ch: Choice, support: str, rule: str,
@@ -140,21 +140,29 @@ class RoomState:
         return obj, cost
 
     def commit_if_walkable(self, item: ItemSpec, size: Sequence[float], choices: list[Choice], support: str,
-                           rule: str, group: str | None, anchor: str | None) -> HouseObject | None:
+                           rule: str, group: str | None, anchor: str | None,
+                           more: Callable[[], list[Choice]] | None = None) -> HouseObject | None:
         """The first of ``choices`` that keeps every walkway open and every floor object
-        reachable, itself included, committed; else the one that keeps the walkways open
-        and leaves the fewest earlier objects, then itself, out of reach; None if none
+        reachable, itself included, committed; when none does, the same among ``more()``
+        (a longer list that starts with ``choices``); else the one that keeps the walkways
+        open and leaves the fewest earlier objects, then itself, out of reach; None if none
         keeps the walkways open."""
         best: tuple[tuple[int, int], Choice] | None = None
-        for ch in choices:
-            snap = self.snapshot()
-            obj = self.commit(item, size, ch, support, rule, group, anchor)
-            cost = self.reach_cost() if nav_blocks(obj) else (0, 0)
-            if cost == (0, 0):
-                return obj
-            self.restore(snap)
-            if cost is not None and (best is None or cost < best[0]):
-                best = (cost, ch)
+        tried = 0
+        for batch in (choices, more):
+            todo = batch if isinstance(batch, list) else (batch()[tried:] if batch is not None else [])
+            for ch in todo:
+                tried += 1
+                snap = self.snapshot()
+                obj = self.commit(item, size, ch, support, rule, group, anchor)
+                cost = self.reach_cost() if nav_blocks(obj) else (0, 0)
+                if cost == (0, 0):
+                    return obj
+                self.restore(snap)
+                if cost is not None and (best is None or cost < best[0]):
+                    best = (cost, ch)
+            if best is None and tried:  # every pose closes a walkway: more of them would too
+                return None
         if best is None:
             return None
         got = self.commit_checked(item, size, best[1], support, rule, group, anchor)
