@@ -54,7 +54,7 @@ class Patch:
         return slice(self.i0, self.i0 + h), slice(self.j0, self.j0 + w)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Obstacle:
     """What one placed object does to the walkways (:attr:`anyhome.space.Placed.nav`)."""
 
@@ -99,6 +99,10 @@ class NavGrid:
                     free |= self._raster(opening_zone(d.segment).intersection(inner))
             self.door_near.append(self._raster(LineString(d.segment).buffer(near)))
         self.base_free = free
+        self._door_idx = [np.flatnonzero(m) for m in self.door_near]
+        self._room_idx = np.flatnonzero(self.room_mask)
+        self._known: set[Obstacle] = set()
+        """Obstacles seen reached since the components were last labelled."""
         self.obstacles: list[Obstacle] = []
         """The placed objects' obstacles, in order."""
         self.waived: list[Obstacle] = []
@@ -225,9 +229,16 @@ class NavGrid:
         door = self._door_component()
         if door is None:
             return None
-        waived = {id(o) for o in self.waived}
-        return [o for o in self.obstacles
-                if o.reach is not None and id(o) not in waived and not self._reached(o.reach, door)]
+        waived = set(self.waived)
+        out = []
+        for o in self.obstacles:
+            if o.reach is None or o in waived or o in self._known:
+                continue
+            if self._reached(o.reach, door):
+                self._known.add(o)
+            else:
+                out.append(o)
+        return out
 
     def _reached(self, reach: Patch, door: np.ndarray) -> bool:
         assert self._labels is not None
@@ -242,11 +253,15 @@ class NavGrid:
         if self._labels is None:
             labels, _ = ndimage.label(self.walk)
             self._labels = labels
+            self._known = set()
+            flat = labels.ravel()
             common: set[int] | None = None
-            for m in self.door_near:
-                lab = set(np.unique(labels[m & self.walk]).tolist()) - {0}
+            for idx in self._door_idx:
+                lab = set(np.unique(flat[idx]).tolist()) - {0}
                 common = lab if common is None else common & lab
-            in_room = set(np.unique(labels[self.room_mask & self.walk]).tolist()) - {0}
-            keep = in_room if common is None else common & in_room
-            self._door_labels = np.array(sorted(keep), dtype=np.int32)
+            room = flat[self._room_idx]
+            if common is None:
+                common = set(np.unique(room).tolist()) - {0}
+            keep = [lab for lab in sorted(common) if np.any(room == lab)]
+            self._door_labels = np.array(keep, dtype=np.int32)
         return self._door_labels if len(self._door_labels) else None

@@ -247,6 +247,14 @@ class RoomSpace:
     def objects(self) -> list[HouseObject]:
         return [p.obj for p in self.placed]
 
+    def near(self, lo: np.ndarray, hi: np.ndarray) -> list[Placed]:
+        """Placed objects whose footprint's bounding box meets the box ``lo``-``hi`` (2,)."""
+        if not self.placed:
+            return []
+        c = np.stack([p.corners for p in self.placed])
+        keep = np.all(_cmin(c) <= hi, 1) & np.all(_cmax(c) >= lo, 1)
+        return [self.placed[i] for i in np.flatnonzero(keep)]
+
     def _arrays(self, layer: bool = False) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Corners, bottoms and tops of the placed objects (``layer``: of the layers only,
         else of all but the layers)."""
