@@ -17,7 +17,7 @@ import shapely
 from shapely.geometry import Polygon
 from shapely.geometry.polygon import orient
 
-from anyhome.geometry import blocks_navigation, opening_zone
+from anyhome.geometry import TOLERANCE_M, blocks_navigation, opening_zone
 from anyhome.house import Floorplan, HouseObject, Room
 
 if TYPE_CHECKING:
@@ -197,6 +197,9 @@ class RoomSpace:
         self.poly = room_polygon(self.room)
         self.buf = self.poly.buffer(INSIDE_TOL_M, join_style="mitre")
         shapely.prepare(self.buf)
+        self.outline = self.poly.buffer(TOLERANCE_M, join_style="mitre")
+        """The room as :func:`anyhome.geometry.inside` tests a footprint against it (prepared)."""
+        shapely.prepare(self.outline)
         self.vertices = np.asarray(self.poly.exterior.coords)[:-1]
         self.bmin = self.vertices.min(0)
         self.bmax = self.vertices.max(0)

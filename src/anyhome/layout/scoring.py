@@ -61,7 +61,7 @@ def exact_ok(st: RoomState, ch: Choice, size: Sequence[float], kind: str, suppor
     """The contract's own checks (anyhome.geometry), as the evaluator runs them."""
     pos = (ch.xy[0], ch.xy[1], ch.z)
     fp = footprint_polygon(pos, size, ch.yaw)
-    if not inside(st.space.poly, fp):
+    if not st.space.outline.contains(fp):
         return False
     if supporter is not None:
         sfp = footprint_polygon(supporter.position, supporter.size, supporter.yaw)
