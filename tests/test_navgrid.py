@@ -6,7 +6,8 @@ import numpy as np
 import pytest
 from scipy import ndimage
 
-from anyhome.navgrid import NavGrid
+from anyhome.geometry import AGENT_RADIUS_M
+from anyhome.navgrid import WALKWAY_RADIUS_M, NavGrid
 from anyhome.space import RoomSpace, rect_corners
 from tests.layout.helpers import rect, single_room
 
@@ -20,25 +21,26 @@ def _box(x0, y0, x1, y1, yaw=0.0):
     return rect_corners([((x0 + x1) / 2, (y0 + y1) / 2)], (x1 - x0, y1 - y0), [yaw])[0]
 
 
-def _walk_from_scratch(nav: NavGrid) -> np.ndarray:
+def _walk_from_scratch(nav: NavGrid, radius: float) -> np.ndarray:
     """The walkable cells as a distance transform of the furnished room gives them."""
     blocked = np.zeros_like(nav.base_free)
     for o in nav.obstacles:
         blocked[o.cells.window] |= o.cells.mask
-    assert nav.radius is not None
-    return ndimage.distance_transform_edt(nav.base_free & ~blocked) * nav.cell > nav.radius
+    return ndimage.distance_transform_edt(nav.base_free & ~blocked) * nav.cell > radius
 
 
 @pytest.mark.parametrize("seed", range(6))
 def test_walk_kept_up_to_date_equals_a_distance_transform(seed):
     rng = np.random.default_rng(seed)
     nav = _grid(5.0, 4.0)
+    assert nav.radius == WALKWAY_RADIUS_M
     for _ in range(8):
         x, y = rng.uniform(0.2, 4.8), rng.uniform(0.9, 3.8)
         w, d = rng.uniform(0.2, 1.5, 2)
         corners = rect_corners([(x, y)], (w, d), [rng.uniform(-np.pi, np.pi)])[0]
         nav.add(nav.obstacle(corners, reachable=True))
-        assert np.array_equal(nav.walk, _walk_from_scratch(nav))
+        assert np.array_equal(nav.walk, _walk_from_scratch(nav, WALKWAY_RADIUS_M))
+        assert np.array_equal(nav.walk_a, _walk_from_scratch(nav, AGENT_RADIUS_M))
 
 
 def test_set_blocked_starts_again_from_the_empty_room():

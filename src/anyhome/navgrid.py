@@ -5,8 +5,9 @@ A per-room version of :func:`anyhome.geometry.navigability` on the same 5 cm ras
 room is rasterized together with its door strips and the keep-clear zones of its doors
 in the neighbouring rooms (which rule 4 keeps free of floor objects). The room passes
 when one walkable component (the *door component*) touches all its doors and some of
-its own cells, and every floor object that must stay reachable has a walkable cell of
-that component within reach (:data:`REACH_M`). The free space here is a subset of the
+its own cells, and every floor object that must stay reachable has a cell within reach
+(:data:`REACH_M`) that an agent of the evaluator's radius walks to from that component
+(the walkways may be checked wider, :data:`WALKWAY_RADIUS_M`). The free space here is a subset of the
 house-wide one, so what passes here passes the house-wide check.
 
 Speed: a cell is walkable when no blocked cell lies within the agent radius of it. The
@@ -61,9 +62,12 @@ class Obstacle:
     cells: Patch
     """Cells it blocks."""
     shadow: Patch
-    """Cells it makes unwalkable (``cells`` dilated by the agent's disc)."""
+    """Cells it makes unwalkable (``cells`` dilated by the walkway disc)."""
     reach: Patch | None = None
     """Cells from which the agent reaches it; None when it need not stay reachable."""
+    reach_shadow: Patch | None = None
+    """Cells it makes unwalkable for the agent (:data:`AGENT_RADIUS_M`) when the walkways
+    are checked wider; None when they are not."""
 
 
 class NavGrid:
@@ -110,6 +114,12 @@ class NavGrid:
         when nothing else fitted); the layout keeps this list with its snapshots."""
         self.walk = np.zeros_like(free)
         """Walkable cells of the room as furnished."""
+        self.walk_a: np.ndarray | None = None
+        """The same for the evaluator's agent when the walkways are checked wider (else None)."""
+        self._labels_a: np.ndarray | None = None
+        self._door_a = np.zeros(0, dtype=np.int32)
+        """Labels of ``walk_a``'s components holding the door component (with ``_labels_a``)."""
+        self._door_a_stale = True
         self._labels: np.ndarray | None = None
         """Walkable components of ``walk`` (None: to be labelled again)."""
         self._door_labels = np.zeros(0, dtype=np.int32)
@@ -124,20 +134,27 @@ class NavGrid:
 
     # ------------------------------------------------------------ raster
     def _use_radius(self, radius: float | None) -> None:
-        """Check walkways for an agent of ``radius`` (None: not at all, the empty room fails)."""
+        """Check walkways for an agent of ``radius`` (None: not at all, the empty room fails);
+        objects are reached by the evaluator's agent (:data:`AGENT_RADIUS_M`) in any case."""
         self.radius = radius
-        if radius is None:
-            self._disc = np.ones((1, 1), dtype=bool)
-            self.base_walk = np.zeros_like(self.base_free)
-        else:
-            k = int(np.ceil(radius / self.cell)) + 1
-            off = np.arange(-k, k + 1, dtype=float)
-            # as distance_transform_edt computes it: sqrt of the summed squares, times the cell
-            far = np.sqrt(off[:, None] ** 2 + off[None, :] ** 2) * self.cell > radius
-            rows, cols = np.nonzero(~far)
-            self._disc = ~far[rows.min():rows.max() + 1, cols.min():cols.max() + 1]
-            self.base_walk = ndimage.distance_transform_edt(self.base_free) * self.cell > radius
+        self._disc = self._disc_of(radius or AGENT_RADIUS_M)
+        self.base_walk = self._walkable(radius) if radius is not None else np.zeros_like(self.base_free)
+        wider = radius is not None and radius != AGENT_RADIUS_M
+        self._disc_a = self._disc_of(AGENT_RADIUS_M) if wider else None
+        self.base_walk_a = self._walkable(AGENT_RADIUS_M) if wider else None
         self.set_blocked([])
+
+    def _disc_of(self, radius: float) -> np.ndarray:
+        """The cells within ``radius`` of the centre one, as the distance transform measures."""
+        k = int(np.ceil(radius / self.cell)) + 1
+        off = np.arange(-k, k + 1, dtype=float)
+        # as distance_transform_edt computes it: sqrt of the summed squares, times the cell
+        far = np.sqrt(off[:, None] ** 2 + off[None, :] ** 2) * self.cell > radius
+        rows, cols = np.nonzero(~far)
+        return ~far[rows.min():rows.max() + 1, cols.min():cols.max() + 1]
+
+    def _walkable(self, radius: float) -> np.ndarray:
+        return ndimage.distance_transform_edt(self.base_free) * self.cell > radius
 
     def _raster(self, geom) -> np.ndarray:
         mask = np.zeros(self.gx.shape, dtype=bool)
@@ -178,20 +195,21 @@ class NavGrid:
         it must stay reachable (a floor object an agent walks up to)."""
         cells = self._rect_patch(corners, NAV_OBSTACLE_PAD_M, rounded=False)
         reach = self._rect_patch(corners, REACH_M, rounded=True) if reachable else None
-        return Obstacle(cells, self._shadow(cells), reach)
+        shadow_a = self._shadow(cells, self._disc_a) if self._disc_a is not None else None
+        return Obstacle(cells, self._shadow(cells, self._disc), reach, shadow_a)
 
-    def _shadow(self, cells: Patch) -> Patch:
-        """``cells`` dilated by the agent's disc, clipped to the raster."""
+    def _shadow(self, cells: Patch, disc: np.ndarray) -> Patch:
+        """``cells`` dilated by ``disc``, clipped to the raster."""
         if self.radius is None or not cells.mask.any():
             return Patch(0, 0, np.zeros((0, 0), dtype=bool))
-        k = self._disc.shape[0] // 2
+        k = disc.shape[0] // 2
         h, w = cells.mask.shape
         ny, nx = self.base_free.shape
         i0, j0 = max(0, cells.i0 - k), max(0, cells.j0 - k)
         i1, j1 = min(ny, cells.i0 + h + k), min(nx, cells.j0 + w + k)
         pad = np.zeros((h + 2 * k, w + 2 * k), dtype=bool)
         pad[k:k + h, k:k + w] = cells.mask
-        grown = ndimage.binary_dilation(pad, structure=self._disc)
+        grown = ndimage.binary_dilation(pad, structure=disc)
         a, b = i0 - (cells.i0 - k), j0 - (cells.j0 - k)
         return Patch(i0, j0, grown[a:a + i1 - i0, b:b + j1 - j0])
 
@@ -204,16 +222,24 @@ class NavGrid:
         if lost.any():
             self.walk[win] &= ~obs.shadow.mask
             self._labels = None
+        sa = obs.reach_shadow
+        if self.walk_a is not None and sa is not None and (self.walk_a[sa.window] & sa.mask).any():
+            self.walk_a[sa.window] &= ~sa.mask
+            self._labels_a = None
 
     def set_blocked(self, placed: list[Placed]) -> None:
         """Start again from the empty room with the obstacles of ``placed``."""
         self.walk = self.base_walk.copy()
-        self._labels = None
+        self.walk_a = None if self.base_walk_a is None else self.base_walk_a.copy()
+        self._labels = self._labels_a = None
         self.obstacles = []
         for p in placed:
             if p.nav is not None:
                 self.obstacles.append(p.nav)
                 self.walk[p.nav.shadow.window] &= ~p.nav.shadow.mask
+                sa = p.nav.reach_shadow
+                if self.walk_a is not None and sa is not None:
+                    self.walk_a[sa.window] &= ~sa.mask
 
     # ------------------------------------------------------------ checks
     def ok(self) -> bool:
@@ -229,20 +255,36 @@ class NavGrid:
         door = self._door_component()
         if door is None:
             return None
+        labels, door = self._reach_labels(door)
         waived = set(self.waived)
         out = []
         for o in self.obstacles:
             if o.reach is None or o in waived or o in self._known:
                 continue
-            if self._reached(o.reach, door):
+            if self._reached(labels, o.reach, door):
                 self._known.add(o)
             else:
                 out.append(o)
         return out
 
-    def _reached(self, reach: Patch, door: np.ndarray) -> bool:
+    def _reach_labels(self, door: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Components of the agent's walkable cells and those holding the door component."""
         assert self._labels is not None
-        lab = self._labels[reach.window][reach.mask]
+        if self.walk_a is None:
+            return self._labels, door
+        if self._labels_a is None:
+            self._labels_a, _ = ndimage.label(self.walk_a)
+            self._known = set()
+            self._door_a_stale = True
+        if self._door_a_stale:
+            self._door_a_stale = False
+            cells = np.concatenate(self._door_idx) if self._door_idx else self._room_idx
+            on = cells[np.isin(self._labels.ravel()[cells], door)]
+            self._door_a = np.unique(self._labels_a.ravel()[on])
+        return self._labels_a, self._door_a
+
+    def _reached(self, labels: np.ndarray, reach: Patch, door: np.ndarray) -> bool:
+        lab = labels[reach.window][reach.mask]
         if len(door) == 1:
             return bool(np.any(lab == door[0]))
         return bool(np.isin(lab, door).any())
@@ -254,6 +296,7 @@ class NavGrid:
             labels, _ = ndimage.label(self.walk)
             self._labels = labels
             self._known = set()
+            self._door_a_stale = True
             flat = labels.ravel()
             common: set[int] | None = None
             for idx in self._door_idx:
