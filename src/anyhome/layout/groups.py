@@ -3,6 +3,8 @@ relative to it; a few anchor poses are tried when members do not fit."""
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import numpy as np
 
 from anyhome.house import Dropped, HouseObject
@@ -39,13 +41,20 @@ def place_group_copy(st: RoomState, g: GroupSpec, copy: int, prev: HouseObject |
         c = scoring.group_room_bonus(st, g, c)
     order = scoring.rank(st, c, size, kind, o.noise, spacing=True)
     choices = scoring.verified(st, c, order, size, kind, None, k=tries, min_sep_m=o.anchor_min_sep_m)
-    return try_choices(st, g, label, choices, kind, rule)
+
+    def more() -> list[Choice]:
+        return scoring.verified(st, c, order, size, kind, None, k=tries + o.anchor_reach_retries,
+                                min_sep_m=o.anchor_min_sep_m)
+
+    return try_choices(st, g, label, choices, kind, rule, more)
 
 
 def try_choices(st: RoomState, g: GroupSpec, label: str, choices: list[Choice], kind: str,
-                rule: str) -> HouseObject | None:
-    """The anchor at the first of ``choices`` where every member fits, else where the fewest
-    are dropped; None (all dropped) when no choice keeps the walkways open."""
+                rule: str, more: Callable[[], list[Choice]] | None = None) -> HouseObject | None:
+    """The anchor at the first of ``choices`` where every member fits and every object stays
+    reachable, else where the fewest are dropped, then left out of reach (when some would be,
+    among ``more()`` too, a longer list starting with ``choices``); None (all dropped) when no
+    choice keeps the walkways open."""
     item = g.anchor
     if not choices:
         drop_group(st, g, scoring.no_fit_reason(st, item.size_m))
@@ -53,7 +62,8 @@ def try_choices(st: RoomState, g: GroupSpec, label: str, choices: list[Choice], 
     support = "wall" if kind == "wall" else "floor"
     snap = st.snapshot()
     best: tuple[int, int, int, int] | None = None  # (drops, objects out of reach, compromises, choice index)
-    for k, ch in enumerate(choices):
+    pool = list(choices)
+    for k, ch in enumerate(pool):  # grows (once) while being walked
         got = st.commit_checked(item, item.size_m, ch, support, rule, label, None, check=kind != "top")
         if got is None:
             continue
@@ -66,10 +76,13 @@ def try_choices(st: RoomState, g: GroupSpec, label: str, choices: list[Choice], 
         if best is None or (len(drops), unreached, bent) < best[:3]:
             best = (len(drops), unreached, bent, k)
         st.restore(snap)
+        if k == len(pool) - 1 and more is not None and best[1]:
+            pool += more()[len(pool):]
+            more = None
     if best is None:
         drop_group(st, g, "would block a walkway or a door")
         return None
-    got = st.commit_checked(item, item.size_m, choices[best[3]], support, rule, label, None, check=kind != "top")
+    got = st.commit_checked(item, item.size_m, pool[best[3]], support, rule, label, None, check=kind != "top")
     assert got is not None  # it passed in this very state
     anchor = got[0]
     st.dropped.extend(place_members(st, g, label, anchor))
