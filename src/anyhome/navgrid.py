@@ -70,22 +70,6 @@ class Obstacle:
     are checked wider; None when they are not."""
 
 
-@dataclass(frozen=True)
-class NavState:
-    """A :class:`NavGrid` as it stood (:meth:`NavGrid.save`): its obstacles, walkable cells
-    and their components (label arrays are replaced, never changed, so they are shared)."""
-
-    obstacles: tuple[Obstacle, ...]
-    walk: np.ndarray
-    walk_a: np.ndarray | None
-    labels: np.ndarray | None
-    door_labels: np.ndarray
-    labels_a: np.ndarray | None
-    door_a: np.ndarray
-    door_a_stale: bool
-    known: frozenset[Obstacle]
-
-
 class NavGrid:
     """The walkway and reachability check of one room (see the module docstring)."""
 
@@ -256,27 +240,6 @@ class NavGrid:
                 sa = p.nav.reach_shadow
                 if self.walk_a is not None and sa is not None:
                     self.walk_a[sa.window] &= ~sa.mask
-
-    def save(self) -> NavState:
-        """The grid as it stands, for :meth:`restore`."""
-        return NavState(tuple(self.obstacles), self.walk.copy(), None if self.walk_a is None else self.walk_a.copy(),
-                        self._labels, self._door_labels, self._labels_a, self._door_a, self._door_a_stale,
-                        frozenset(self._known))
-
-    def restore(self, placed: list[Placed], saved: NavState | None) -> None:
-        """Back to ``saved`` when ``placed`` holds exactly its obstacles (no labelling
-        again), else :meth:`set_blocked`."""
-        obs = [p.nav for p in placed if p.nav is not None]
-        if saved is None or len(obs) != len(saved.obstacles) or any(
-                a is not b for a, b in zip(obs, saved.obstacles)):
-            self.set_blocked(placed)
-            return
-        self.obstacles = obs
-        self.walk = saved.walk.copy()
-        self.walk_a = None if saved.walk_a is None else saved.walk_a.copy()
-        self._labels, self._door_labels = saved.labels, saved.door_labels
-        self._labels_a, self._door_a, self._door_a_stale = saved.labels_a, saved.door_a, saved.door_a_stale
-        self._known = set(saved.known)
 
     # ------------------------------------------------------------ checks
     def ok(self) -> bool:

@@ -12,7 +12,7 @@ from shapely.geometry import Polygon
 from anyhome.house import Dropped, Floorplan, HouseObject, Room
 from anyhome.layout.options import LayoutOptions
 from anyhome.layout.rules import wrap
-from anyhome.navgrid import NavGrid, NavState
+from anyhome.navgrid import NavGrid
 from anyhome.plan.spec import ItemSpec, RoomSpec
 from anyhome.space import Placed, RoomSpace, Wall, nav_blocks, rect_corners, walked_up_to
 
@@ -40,7 +40,6 @@ class Snapshot:
     n_dropped: int
     n_keep_clear: int = 0
     n_waived: int = 0
-    nav: NavState | None = None
 
 
 @dataclass
@@ -71,7 +70,7 @@ class RoomState:
     # ------------------------------------------------------------ bookkeeping
     def snapshot(self) -> Snapshot:
         return Snapshot(len(self.space.placed), dict(self.counters), len(self.dropped), len(self.space.keep_clear),
-                        len(self.nav.waived), self.nav.save())
+                        len(self.nav.waived))
 
     def restore(self, snap: Snapshot) -> None:
         del self.space.placed[snap.n_placed:]
@@ -79,7 +78,7 @@ class RoomState:
         del self.dropped[snap.n_dropped:]
         self.counters = dict(snap.counters)
         del self.nav.waived[snap.n_waived:]
-        self.nav.restore(self.space.placed, snap.nav)
+        self.nav.set_blocked(self.space.placed)
 
     def drop(self, name: str, reason: str, copies: int = 1) -> None:
         self.dropped.extend(self.dropped_entry(name, reason) for _ in range(copies))
