@@ -34,10 +34,11 @@ def test_walk_kept_up_to_date_equals_a_distance_transform(seed):
     rng = np.random.default_rng(seed)
     nav = _grid(5.0, 4.0)
     assert nav.radius == WALKWAY_RADIUS_M
-    for _ in range(8):
+    for i in range(8):
         x, y = rng.uniform(0.2, 4.8), rng.uniform(0.9, 3.8)
         w, d = rng.uniform(0.2, 1.5, 2)
-        corners = rect_corners([(x, y)], (w, d), [rng.uniform(-np.pi, np.pi)])[0]
+        yaw = rng.uniform(-np.pi, np.pi) if i % 2 else 0.0  # square to the raster: a full block of cells
+        corners = rect_corners([(x, y)], (w, d), [yaw])[0]
         nav.add(nav.obstacle(corners, reachable=True))
         assert np.array_equal(nav.walk, _walk_from_scratch(nav, WALKWAY_RADIUS_M))
         assert np.array_equal(nav.walk_a, _walk_from_scratch(nav, AGENT_RADIUS_M))

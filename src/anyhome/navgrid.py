@@ -195,11 +195,12 @@ class NavGrid:
         it must stay reachable (a floor object an agent walks up to)."""
         cells = self._rect_patch(corners, NAV_OBSTACLE_PAD_M, rounded=False)
         reach = self._rect_patch(corners, REACH_M, rounded=True) if reachable else None
-        shadow_a = self._shadow(cells, self._disc_a) if self._disc_a is not None else None
-        return Obstacle(cells, self._shadow(cells, self._disc), reach, shadow_a)
+        shadow_a = self._shadow(cells, self._disc_a, AGENT_RADIUS_M) if self._disc_a is not None else None
+        return Obstacle(cells, self._shadow(cells, self._disc, self.radius or AGENT_RADIUS_M), reach, shadow_a)
 
-    def _shadow(self, cells: Patch, disc: np.ndarray) -> Patch:
-        """``cells`` dilated by ``disc``, clipped to the raster."""
+    def _shadow(self, cells: Patch, disc: np.ndarray, radius: float) -> Patch:
+        """``cells`` dilated by ``disc`` (the cells within ``radius``), clipped to the raster;
+        a full block of cells (an object square to the raster) by the distance to it."""
         if self.radius is None or not cells.mask.any():
             return Patch(0, 0, np.zeros((0, 0), dtype=bool))
         k = disc.shape[0] // 2
@@ -207,6 +208,12 @@ class NavGrid:
         ny, nx = self.base_free.shape
         i0, j0 = max(0, cells.i0 - k), max(0, cells.j0 - k)
         i1, j1 = min(ny, cells.i0 + h + k), min(nx, cells.j0 + w + k)
+        if cells.mask.all():
+            rows, cols = np.arange(i0, i1), np.arange(j0, j1)
+            dy = np.maximum(0, np.maximum(cells.i0 - rows, rows - (cells.i0 + h - 1))).astype(float)
+            dx = np.maximum(0, np.maximum(cells.j0 - cols, cols - (cells.j0 + w - 1))).astype(float)
+            # as _disc_of measures: sqrt of the summed squares, times the cell
+            return Patch(i0, j0, ~(np.sqrt(dy[:, None] ** 2 + dx[None, :] ** 2) * self.cell > radius))
         pad = np.zeros((h + 2 * k, w + 2 * k), dtype=bool)
         pad[k:k + h, k:k + w] = cells.mask
         grown = ndimage.binary_dilation(pad, structure=disc)
