@@ -1,5 +1,5 @@
 """Free space of one room (shared by layout and refine): walls, openings, placed objects,
-vectorized validity, navigation.
+vectorized validity (the walkways: :mod:`anyhome.navgrid`).
 
 The checks here are *stricter* than the definitions in :mod:`anyhome.geometry` (small
 margins everywhere), so a pose accepted here stays valid after house.json rounds it to
@@ -9,22 +9,19 @@ margins everywhere), so a pose accepted here stays valid after house.json rounds
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
 import numpy.typing as npt
 import shapely
-from scipy import ndimage
-from shapely.geometry import LineString, Polygon
+from shapely.geometry import Polygon
 from shapely.geometry.polygon import orient
 
-from anyhome import geometry
-from anyhome.geometry import (
-    AGENT_RADIUS_M,
-    NAV_CELL_M,
-    blocks_navigation,
-    opening_zone,
-)
+from anyhome.geometry import TOLERANCE_M, blocks_navigation, opening_zone
 from anyhome.house import Floorplan, HouseObject, Room
+
+if TYPE_CHECKING:
+    from anyhome.navgrid import Obstacle
 
 EPS_COLLIDE_M = 0.002
 """Two boxes may touch or overlap by at most this much (the contract allows 1 cm)."""
@@ -38,10 +35,6 @@ WALL_OPENING_MARGIN_M = 0.05
 """Gap kept along a wall between a wall object and a door or window opening."""
 CEILING_GAP_M = 0.05
 """Gap kept between the top of a wall or on-top object and the ceiling."""
-NAV_OBSTACLE_PAD_M = 0.002
-"""Obstacles block raster cells this far outside them too (robust to rounding)."""
-WALKWAY_RADIUS_M = 0.3
-"""Agent radius of the per-room walkway check (0.6 m walkways) when the empty room allows it."""
 
 
 @dataclass(frozen=True)
@@ -153,7 +146,8 @@ class Placed:
     z0: float
     z1: float
     floor: bool
-    nav_mask: np.ndarray | None = None
+    nav: Obstacle | None = None
+    """What it does to the room's walkways (:class:`anyhome.navgrid.NavGrid`); None when nothing."""
     layer: bool = False
     """A rug laid under furniture (:mod:`anyhome.layout.layers`): only other layers collide with it."""
 
@@ -203,6 +197,9 @@ class RoomSpace:
         self.poly = room_polygon(self.room)
         self.buf = self.poly.buffer(INSIDE_TOL_M, join_style="mitre")
         shapely.prepare(self.buf)
+        self.outline = self.poly.buffer(TOLERANCE_M, join_style="mitre")
+        """The room as :func:`anyhome.geometry.inside` tests a footprint against it (prepared)."""
+        shapely.prepare(self.outline)
         self.vertices = np.asarray(self.poly.exterior.coords)[:-1]
         self.bmin = self.vertices.min(0)
         self.bmax = self.vertices.max(0)
@@ -252,6 +249,14 @@ class RoomSpace:
     @property
     def objects(self) -> list[HouseObject]:
         return [p.obj for p in self.placed]
+
+    def near(self, lo: np.ndarray, hi: np.ndarray) -> list[Placed]:
+        """Placed objects whose footprint's bounding box meets the box ``lo``-``hi`` (2,)."""
+        if not self.placed:
+            return []
+        c = np.stack([p.corners for p in self.placed])
+        keep = np.all(_cmin(c) <= hi, 1) & np.all(_cmax(c) >= lo, 1)
+        return [self.placed[i] for i in np.flatnonzero(keep)]
 
     def _arrays(self, layer: bool = False) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Corners, bottoms and tops of the placed objects (``layer``: of the layers only,
@@ -355,110 +360,11 @@ class RoomSpace:
         return ok
 
 
-# ---------------------------------------------------------------- navigation
-class NavGrid:
-    """Per-room version of :func:`anyhome.geometry.navigability` on the same raster.
-
-    The room is rasterized on the house's 5 cm grid together with its door strips and
-    the keep-clear zones of its doors in the neighbouring rooms (which rule 4 keeps free
-    of floor objects). The room passes when one walkable component touches all its
-    doors and some of its own cells. The free space here is a subset of the house-wide
-    one, so a room that passes here passes the house-wide check.
-    """
-
-    def __init__(self, floorplan: Floorplan, space: RoomSpace, cell_m: float = NAV_CELL_M) -> None:
-        self.cell = cell_m
-        polys = [room_polygon(r) for r in floorplan.rooms]
-        minx, miny, _, _ = shapely.bounds(shapely.union_all(polys))
-        pad = 2 * cell_m
-        x0, y0 = minx - pad + cell_m / 2, miny - pad + cell_m / 2
-        bx0, by0 = space.bmin - 1.0
-        bx1, by1 = space.bmax + 1.0
-        j0 = max(0, int(np.floor((bx0 - x0) / cell_m)))
-        i0 = max(0, int(np.floor((by0 - y0) / cell_m)))
-        j1 = int(np.ceil((bx1 - x0) / cell_m)) + 1
-        i1 = int(np.ceil((by1 - y0) / cell_m)) + 1
-        self.xs = x0 + cell_m * np.arange(j0, j1)
-        self.ys = y0 + cell_m * np.arange(i0, i1)
-        self.gx, self.gy = np.meshgrid(self.xs, self.ys)
-        half = cell_m / 2
-        inset = getattr(geometry, "WALL_INSET_CELLS", 0.4995) * cell_m
-        self.room_mask = self._raster(space.poly.buffer(-inset, join_style="mitre"))
-        free = self.room_mask.copy()
-        others = {r.id: p for r, p in zip(floorplan.rooms, polys)}
-        near = AGENT_RADIUS_M + 2 * cell_m
-        self.door_near = []
-        for d in space.doors:
-            free |= self._raster(LineString(d.segment).buffer(half * 1.5, cap_style="flat"))
-            for rid in d.rooms:
-                if rid != space.room.id and rid in others:
-                    inner = others[rid].buffer(-inset, join_style="mitre")
-                    free |= self._raster(opening_zone(d.segment).intersection(inner))
-            self.door_near.append(self._raster(LineString(d.segment).buffer(near)))
-        self.base_free = free
-        self.blocked = np.zeros_like(free)
-        self.radius: float | None = None
-        for r in (WALKWAY_RADIUS_M, AGENT_RADIUS_M):
-            self.radius = r
-            if self.ok():
-                break
-        else:
-            self.radius = None
-
-    def _raster(self, geom) -> np.ndarray:
-        mask = np.zeros(self.gx.shape, dtype=bool)
-        if geom.is_empty:
-            return mask
-        x0, y0, x1, y1 = geom.bounds
-        i0, i1 = np.searchsorted(self.ys, [y0, y1])
-        j0, j1 = np.searchsorted(self.xs, [x0, x1])
-        if i0 >= i1 or j0 >= j1:
-            return mask
-        mask[i0:i1, j0:j1] = shapely.contains_xy(geom, self.gx[i0:i1, j0:j1], self.gy[i0:i1, j0:j1])
-        return mask
-
-    def obstacle_mask(self, corners: np.ndarray) -> np.ndarray:
-        """Cells whose centre lies in (or on the edge of) a rotated rectangle."""
-        mask = np.zeros(self.gx.shape, dtype=bool)
-        lo, hi = corners.min(0), corners.max(0)
-        i0, i1 = np.searchsorted(self.ys, [lo[1] - NAV_OBSTACLE_PAD_M, hi[1] + NAV_OBSTACLE_PAD_M])
-        j0, j1 = np.searchsorted(self.xs, [lo[0] - NAV_OBSTACLE_PAD_M, hi[0] + NAV_OBSTACLE_PAD_M])
-        if i0 >= i1 or j0 >= j1:
-            return mask
-        c = corners.mean(0)
-        ex, ey = corners[1] - corners[0], corners[3] - corners[0]
-        hw, hd = np.linalg.norm(ex) / 2, np.linalg.norm(ey) / 2
-        ex, ey = ex / (2 * hw), ey / (2 * hd)
-        px = self.gx[i0:i1, j0:j1] - c[0]
-        py = self.gy[i0:i1, j0:j1] - c[1]
-        lx = np.abs(px * ex[0] + py * ex[1])
-        ly = np.abs(px * ey[0] + py * ey[1])
-        mask[i0:i1, j0:j1] = (lx <= hw + NAV_OBSTACLE_PAD_M) & (ly <= hd + NAV_OBSTACLE_PAD_M)
-        return mask
-
-    def ok(self, extra: np.ndarray | None = None) -> bool:
-        if self.radius is None:
-            return True
-        free = self.base_free & ~self.blocked
-        if extra is not None:
-            free &= ~extra
-        walk = ndimage.distance_transform_edt(free) * self.cell > self.radius
-        labels, _ = ndimage.label(walk)
-        common: set[int] | None = None
-        for m in self.door_near:
-            lab = set(np.unique(labels[m & walk]).tolist()) - {0}
-            common = lab if common is None else common & lab
-        in_room = set(np.unique(labels[self.room_mask & walk]).tolist()) - {0}
-        if common is None:
-            return bool(in_room)
-        return bool(common & in_room)
-
-    def set_blocked(self, placed: list[Placed]) -> None:
-        self.blocked = np.zeros_like(self.base_free)
-        for p in placed:
-            if p.nav_mask is not None:
-                self.blocked |= p.nav_mask
-
-
 def nav_blocks(obj: HouseObject) -> bool:
     return blocks_navigation(obj.category, obj.size[2], obj.support, obj.tags)
+
+
+def walked_up_to(obj: HouseObject) -> bool:
+    """Whether an agent must be able to walk up to ``obj``: a blocking floor object, stairs
+    excepted (the objects :func:`anyhome.evaluate.navigation.furniture` counts)."""
+    return obj.support == "floor" and obj.category != "stairs" and nav_blocks(obj)

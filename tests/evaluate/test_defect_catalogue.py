@@ -350,7 +350,9 @@ def disconnected_room(h):
 
 
 def connection_without_door(h):
-    a, b = bedroom(h).id, room(h, lambda r: r.type == "kitchen").id
+    a = bedroom(h).id
+    doored = {r for d in h.doors if a in d.rooms for r in d.rooms}
+    b = room(h, lambda r: r.id not in doored).id  # a room no door joins to the bedroom
     h.connections.append((a, b))
 
 

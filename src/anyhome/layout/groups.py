@@ -3,6 +3,8 @@ relative to it; a few anchor poses are tried when members do not fit."""
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import numpy as np
 
 from anyhome.house import Dropped, HouseObject
@@ -47,39 +49,53 @@ def place_group_copy(st: RoomState, g: GroupSpec, copy: int, prev: HouseObject |
     order = scoring.rank(st, c, size, kind, o.member_noise if run_on else o.noise, spacing=not run_on,
                          avoid_windows=hangs)
     choices = scoring.verified(st, c, order, size, kind, None, k=tries, min_sep_m=o.anchor_min_sep_m)
-    anchor = try_choices(st, g, label, choices, kind, rule)
+
+    def more() -> list[Choice]:
+        return scoring.verified(st, c, order, size, kind, None, k=tries + o.anchor_reach_retries,
+                                min_sep_m=o.anchor_min_sep_m)
+
+    anchor = try_choices(st, g, label, choices, kind, rule, more)
     if anchor is not None and ref is not None and rule == "place_front" and item.params.get("to_wall"):
         st.space.keep_clear.append(sightline(ref, anchor))  # a TV of its own, across from the sofa
     return anchor
 
 
 def try_choices(st: RoomState, g: GroupSpec, label: str, choices: list[Choice], kind: str,
-                rule: str) -> HouseObject | None:
-    """The anchor at the first of ``choices`` where every member fits, else where the fewest
-    are dropped; None (all dropped) when no choice keeps the walkways open."""
+                rule: str, more: Callable[[], list[Choice]] | None = None) -> HouseObject | None:
+    """The anchor at the first of ``choices`` where every member fits and every object stays
+    reachable, else where the fewest are dropped, then left out of reach (when some would be,
+    among ``more()`` too, a longer list starting with ``choices``); None (all dropped) when no
+    choice keeps the walkways open."""
     item = g.anchor
     if not choices:
         drop_group(st, g, scoring.no_fit_reason(st, item.size_m))
         return None
     support = "wall" if kind == "wall" else "floor"
     snap = st.snapshot()
-    best: tuple[int, int, int] | None = None  # (number of drops, compromises, choice index)
-    for k, ch in enumerate(choices):
-        anchor = st.commit(item, item.size_m, ch, support, rule, label, None)
-        if kind != "top" and not st.nav.ok():
-            st.restore(snap)
+    best: tuple[int, int, int, int] | None = None  # (drops, objects out of reach, compromises, choice index)
+    pool = list(choices)
+    for k, ch in enumerate(pool):  # grows (once) while being walked
+        got = st.commit_checked(item, item.size_m, ch, support, rule, label, None, check=kind != "top")
+        if got is None:
             continue
+        anchor = got[0]
         drops = place_members(st, g, label, anchor)
         bent = compromises(st, g, label, anchor)
-        if not drops and not bent:
+        unreached = st.unreached_since(snap)
+        if not drops and not bent and not unreached:
             return anchor
-        if best is None or (len(drops), bent) < best[:2]:
-            best = (len(drops), bent, k)
+        if best is None or (len(drops), unreached, bent) < best[:3]:
+            best = (len(drops), unreached, bent, k)
         st.restore(snap)
+        if k == len(pool) - 1 and more is not None and best[1]:
+            pool += more()[len(pool):]
+            more = None
     if best is None:
         drop_group(st, g, "would block a walkway or a door")
         return None
-    anchor = st.commit(item, item.size_m, choices[best[2]], support, rule, label, None)
+    got = st.commit_checked(item, item.size_m, pool[best[3]], support, rule, label, None, check=kind != "top")
+    assert got is not None  # it passed in this very state
+    anchor = got[0]
     st.dropped.extend(place_members(st, g, label, anchor))
     return anchor
 

@@ -41,6 +41,11 @@ class LayoutOptions:
     """Members placed further than this in front (a TV) do not count for the room bonus."""
     member_nav_retries: int = 4
     """Next-best poses tried when a member would block a walkway."""
+    anchor_reach_retries: int = 4
+    """Further anchor poses tried when every one tried leaves some floor object out of reach."""
+    reach_retries: int = 8
+    """Further poses tried for a member or ornament when none of the first keeps every
+    floor object reachable."""
     verify_factor: int = 40
     """Candidates checked exactly per pose wanted."""
     corner_wall_pref: float = -1.0

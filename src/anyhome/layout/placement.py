@@ -14,7 +14,7 @@ from anyhome.layout.rules import REGISTRY, Cands, Kind, RuleContext
 from anyhome.layout.rules.place_center import place_center
 from anyhome.layout.rules.place_top import fit_on_top, place_top
 from anyhome.layout.rules.place_wall import place_wall
-from anyhome.layout.state import RoomState
+from anyhome.layout.state import Choice, RoomState
 from anyhome.plan.spec import ItemSpec
 from anyhome.tags import is_front_of_room, is_supporter
 
@@ -60,9 +60,14 @@ def place_single(st: RoomState, m: ItemSpec, params: dict[str, Any], ref: HouseO
     size = m.size_m
     c, kind = candidates(st, m, m.rule, size, ref, prev_same, prev_wall, params=params, copy=copy, run=run)
     order = scoring.rank(st, c, size, kind, st.options.member_noise, spacing=False)
-    choices = scoring.verified(st, c, order, size, kind, None, k=st.options.member_nav_retries)
+    k = st.options.member_nav_retries
+    choices = scoring.verified(st, c, order, size, kind, None, k=k)
     support = "wall" if kind == "wall" else "floor"
-    return st.commit_if_walkable(m, size, choices, support, m.rule, label, anchor_id)
+
+    def more() -> list[Choice]:
+        return scoring.verified(st, c, order, size, kind, None, k=k + st.options.reach_retries)
+
+    return st.commit_if_walkable(m, size, choices, support, m.rule, label, anchor_id, more=more)
 
 
 def supporters(st: RoomState, target: str | None) -> list[HouseObject]:

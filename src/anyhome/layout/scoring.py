@@ -64,7 +64,7 @@ def exact_ok(st: RoomState, ch: Choice, size: Sequence[float], kind: str, suppor
     """The contract's own checks (anyhome.geometry), as the evaluator runs them."""
     pos = (ch.xy[0], ch.xy[1], ch.z)
     fp = footprint_polygon(pos, size, ch.yaw)
-    if not inside(st.space.poly, fp):
+    if not st.space.outline.contains(fp):
         return False
     if supporter is not None:
         sfp = footprint_polygon(supporter.position, supporter.size, supporter.yaw)
@@ -75,10 +75,7 @@ def exact_ok(st: RoomState, ch: Choice, size: Sequence[float], kind: str, suppor
             if fp.intersects(zone) and fp.intersection(zone).area > 1e-6:
                 return False
     lo, hi = np.min(fp.exterior.coords, 0), np.max(fp.exterior.coords, 0)
-    for p in st.space.placed:
-        plo, phi = p.corners.min(0), p.corners.max(0)
-        if np.any(plo > hi) or np.any(phi < lo):
-            continue
+    for p in st.space.near(lo, hi):
         o = p.obj
         if boxes_collide(pos, size, ch.yaw, o.position, o.size, o.yaw):
             return False

@@ -116,14 +116,14 @@ def _make_room(st: RoomState) -> None:
         if now[0] == 0:
             return
     st.restore(start)
-    _, _, st.space.placed[:], st.dropped[:], st.space.keep_clear[:], st.counters = best
+    _, _, st.space.placed[:], st.dropped[:], st.space.keep_clear[:], st.counters, st.nav.waived[:] = best
     st.nav.set_blocked(st.space.placed)
 
 
 def _outcome(st: RoomState, n_key_dropped: int) -> tuple:
     """A furnishing as it stands, ranked by (key anchors dropped, items dropped)."""
     return (n_key_dropped, len(st.dropped), st.space.placed[:], st.dropped[:], st.space.keep_clear[:],
-            dict(st.counters))
+            dict(st.counters), st.nav.waived[:])
 
 
 def _key_dropped(st: RoomState) -> list[int]:

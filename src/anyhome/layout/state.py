@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import re
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -12,8 +12,9 @@ from shapely.geometry import Polygon
 from anyhome.house import Dropped, Floorplan, HouseObject, Room
 from anyhome.layout.options import LayoutOptions
 from anyhome.layout.rules import wrap
+from anyhome.navgrid import NavGrid
 from anyhome.plan.spec import ItemSpec, RoomSpec
-from anyhome.space import NavGrid, Placed, RoomSpace, Wall, nav_blocks, rect_corners
+from anyhome.space import Placed, RoomSpace, Wall, nav_blocks, rect_corners, walked_up_to
 
 SLUG_MAX_CHARS = 40
 """Longest name part of an object id (ids are at most 128 characters, see anyhome.sanitize)."""
@@ -38,6 +39,7 @@ class Snapshot:
     counters: dict[str, int]
     n_dropped: int
     n_keep_clear: int = 0
+    n_waived: int = 0
 
 
 @dataclass
@@ -70,13 +72,15 @@ class RoomState:
 
     # ------------------------------------------------------------ bookkeeping
     def snapshot(self) -> Snapshot:
-        return Snapshot(len(self.space.placed), dict(self.counters), len(self.dropped), len(self.space.keep_clear))
+        return Snapshot(len(self.space.placed), dict(self.counters), len(self.dropped), len(self.space.keep_clear),
+                        len(self.nav.waived))
 
     def restore(self, snap: Snapshot) -> None:
         del self.space.placed[snap.n_placed:]
         del self.space.keep_clear[snap.n_keep_clear:]
         del self.dropped[snap.n_dropped:]
         self.counters = dict(snap.counters)
+        del self.nav.waived[snap.n_waived:]
         self.nav.set_blocked(self.space.placed)
 
     def drop(self, name: str, reason: str, copies: int = 1) -> None:
@@ -94,7 +98,8 @@ class RoomState:
     def commit(self, item: ItemSpec, size: Sequence[float], ch: Choice, support: str, rule: str,
                group: str | None, anchor: str | None, layer: bool = False) -> HouseObject:
         """Place ``item`` at ``ch``: it joins the room's objects and blocks walkways
-        (``layer``: a rug under furniture, :mod:`anyhome.layout.layers`)."""
+        (``layer``: a rug under furniture, :mod:`anyhome.layout.layers`); a floor object an
+        agent walks up to must stay reachable from then on (:meth:`reach_cost`)."""
         obj = HouseObject(
             id=self.new_id(item.name), room=self.room.id, name=item.name, category=item.category,
             description=item.description,
@@ -104,22 +109,71 @@ class RoomState:
             tags=list(item.tags),
         )
         corners = rect_corners(ch.xy[None], size[:2], [obj.yaw])[0]
-        mask = self.nav.obstacle_mask(corners) if nav_blocks(obj) else None
-        self.space.placed.append(Placed(obj, corners, ch.z, ch.z + size[2], support == "floor", mask, layer))
-        if mask is not None:
-            self.nav.blocked |= mask
+        obs = self.nav.obstacle(corners, reachable=walked_up_to(obj)) if nav_blocks(obj) else None
+        self.space.placed.append(Placed(obj, corners, ch.z, ch.z + size[2], support == "floor", obs, layer))
+        if obs is not None:
+            self.nav.add(obs)
         return obj
 
-    def commit_if_walkable(self, item: ItemSpec, size: Sequence[float], choices: list[Choice], support: str,
-                           rule: str, group: str | None, anchor: str | None) -> HouseObject | None:
-        """The first of ``choices`` that keeps every walkway open, committed; None if none does."""
-        for ch in choices:
-            snap = self.snapshot()
-            obj = self.commit(item, size, ch, support, rule, group, anchor)
-            if not nav_blocks(obj) or self.nav.ok():
-                return obj
+    def reach_cost(self) -> tuple[int, int] | None:
+        """What the object committed last costs: None when the doors no longer share a
+        walkable component with the room, else (earlier objects it cuts off, 1 when it
+        cannot be reached itself); (0, 0) when every object stays reachable."""
+        cut = self.nav.unreached()
+        if cut is None:
+            return None
+        last = self.space.placed[-1].nav if self.space.placed else None
+        itself = int(last in cut)
+        return len(cut) - itself, itself
+
+    def commit_checked(self, item: ItemSpec, size: Sequence[float], ch: Choice, support: str, rule: str,
+                       group: str | None, anchor: str | None, check: bool = True
+                       ) -> tuple[HouseObject, tuple[int, int]] | None:
+        """``item`` committed at ``ch`` with its :meth:`reach_cost` (``check`` False:
+        unchecked, (0, 0)); None (left out) when it closes a walkway; what it leaves out of
+        reach need not stay reachable from then on."""
+        snap = self.snapshot()
+        obj = self.commit(item, size, ch, support, rule, group, anchor)
+        cost = self.reach_cost() if check and nav_blocks(obj) else (0, 0)
+        if cost is None:
             self.restore(snap)
-        return None
+            return None
+        if cost != (0, 0):
+            self.nav.waived.extend(self.nav.unreached() or [])
+        return obj, cost
+
+    def commit_if_walkable(self, item: ItemSpec, size: Sequence[float], choices: list[Choice], support: str,
+                           rule: str, group: str | None, anchor: str | None,
+                           more: Callable[[], list[Choice]] | None = None) -> HouseObject | None:
+        """The first of ``choices`` that keeps every walkway open and every floor object
+        reachable, itself included, committed; when none does, the same among ``more()``
+        (a longer list that starts with ``choices``); else the one that keeps the walkways
+        open and leaves the fewest earlier objects, then itself, out of reach; None if none
+        keeps the walkways open."""
+        best: tuple[tuple[int, int], Choice] | None = None
+        tried = 0
+        for batch in (choices, more):
+            todo = batch if isinstance(batch, list) else (batch()[tried:] if batch is not None else [])
+            for ch in todo:
+                tried += 1
+                snap = self.snapshot()
+                obj = self.commit(item, size, ch, support, rule, group, anchor)
+                cost = self.reach_cost() if nav_blocks(obj) else (0, 0)
+                if cost == (0, 0):
+                    return obj
+                self.restore(snap)
+                if cost is not None and (best is None or cost < best[0]):
+                    best = (cost, ch)
+            if best is None and tried:  # every pose closes a walkway: more of them would too
+                return None
+        if best is None:
+            return None
+        got = self.commit_checked(item, size, best[1], support, rule, group, anchor)
+        return None if got is None else got[0]
+
+    def unreached_since(self, snap: Snapshot) -> int:
+        """Objects left out of reach since ``snap``."""
+        return len(self.nav.waived) - snap.n_waived
 
     def room_windows(self) -> bool:
         """Whether the room has a window."""

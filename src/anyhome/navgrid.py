@@ -1,0 +1,317 @@
+"""Walkways of one room while it is furnished: the house's navigation raster over the
+room, kept up to date object by object (used by the layout stage).
+
+A per-room version of :func:`anyhome.geometry.navigability` on the same 5 cm raster. The
+room is rasterized together with its door strips and the keep-clear zones of its doors
+in the neighbouring rooms (which rule 4 keeps free of floor objects). The room passes
+when one walkable component (the *door component*) touches all its doors and some of
+its own cells, and every floor object that must stay reachable has a cell within reach
+(:data:`REACH_M`) that an agent of the evaluator's radius walks to from that component
+(the walkways may be checked wider, :data:`WALKWAY_RADIUS_M`). The free space here is a subset of the
+house-wide one, so what passes here passes the house-wide check.
+
+Speed: a cell is walkable when no blocked cell lies within the agent radius of it. The
+empty room's walkable cells come from one distance transform; each obstacle then takes
+away its *shadow*, its cells dilated by the agent's disc on a window around it, which
+is exactly what a distance transform of the furnished room would take away. Components
+are labelled again only when an obstacle took walkable cells away since the last time.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import shapely
+from scipy import ndimage
+from shapely.geometry import LineString
+
+from anyhome.geometry import AGENT_RADIUS_M, NAV_CELL_M, WALL_INSET_CELLS, opening_zone
+from anyhome.house import Floorplan
+from anyhome.space import Placed, RoomSpace, room_polygon
+
+NAV_OBSTACLE_PAD_M = 0.002
+"""Obstacles block raster cells this far outside them too (robust to rounding)."""
+WALKWAY_RADIUS_M = 0.3
+"""Agent radius of the per-room walkway check (0.6 m walkways) when the empty room allows it."""
+REACH_MARGIN_M = 0.01
+"""An object counts as reachable here when a walkable cell lies this much closer to it
+than the evaluator asks (robust to rounding and to the corners of its buffered outline)."""
+REACH_M = AGENT_RADIUS_M + 2 * NAV_CELL_M - REACH_MARGIN_M
+"""A floor object is reachable from a walkable cell whose centre lies this close to its
+footprint (the evaluator's ``agent_radius_m + 2 cells``, less :data:`REACH_MARGIN_M`)."""
+
+@dataclass(frozen=True)
+class Patch:
+    """Raster cells ``mask`` in the window whose first cell is at row ``i0``, column ``j0``."""
+
+    i0: int
+    j0: int
+    mask: np.ndarray
+
+    @property
+    def window(self) -> tuple[slice, slice]:
+        h, w = self.mask.shape
+        return slice(self.i0, self.i0 + h), slice(self.j0, self.j0 + w)
+
+
+@dataclass(frozen=True, eq=False)
+class Obstacle:
+    """What one placed object does to the walkways (:attr:`anyhome.space.Placed.nav`)."""
+
+    cells: Patch
+    """Cells it blocks."""
+    shadow: Patch
+    """Cells it makes unwalkable (``cells`` dilated by the walkway disc)."""
+    reach: Patch | None = None
+    """Cells from which the agent reaches it; None when it need not stay reachable."""
+    reach_shadow: Patch | None = None
+    """Cells it makes unwalkable for the agent (:data:`AGENT_RADIUS_M`) when the walkways
+    are checked wider; None when they are not."""
+
+
+class NavGrid:
+    """The walkway and reachability check of one room (see the module docstring)."""
+
+    def __init__(self, floorplan: Floorplan, space: RoomSpace, cell_m: float = NAV_CELL_M) -> None:
+        self.cell = cell_m
+        polys = [room_polygon(r) for r in floorplan.rooms]
+        minx, miny, _, _ = shapely.bounds(shapely.union_all(polys))
+        pad = 2 * cell_m
+        x0, y0 = minx - pad + cell_m / 2, miny - pad + cell_m / 2
+        bx0, by0 = space.bmin - 1.0
+        bx1, by1 = space.bmax + 1.0
+        j0 = max(0, int(np.floor((bx0 - x0) / cell_m)))
+        i0 = max(0, int(np.floor((by0 - y0) / cell_m)))
+        j1 = int(np.ceil((bx1 - x0) / cell_m)) + 1
+        i1 = int(np.ceil((by1 - y0) / cell_m)) + 1
+        self.xs = x0 + cell_m * np.arange(j0, j1)
+        self.ys = y0 + cell_m * np.arange(i0, i1)
+        self.gx, self.gy = np.meshgrid(self.xs, self.ys)
+        half = cell_m / 2
+        inset = WALL_INSET_CELLS * cell_m
+        self.room_mask = self._raster(space.poly.buffer(-inset, join_style="mitre"))
+        free = self.room_mask.copy()
+        others = {r.id: p for r, p in zip(floorplan.rooms, polys)}
+        near = AGENT_RADIUS_M + 2 * cell_m
+        self.door_near = []
+        for d in space.doors:
+            free |= self._raster(LineString(d.segment).buffer(half * 1.5, cap_style="flat"))
+            for rid in d.rooms:
+                if rid != space.room.id and rid in others:
+                    inner = others[rid].buffer(-inset, join_style="mitre")
+                    free |= self._raster(opening_zone(d.segment).intersection(inner))
+            self.door_near.append(self._raster(LineString(d.segment).buffer(near)))
+        self.base_free = free
+        self._door_idx = [np.flatnonzero(m) for m in self.door_near]
+        self._room_idx = np.flatnonzero(self.room_mask)
+        self._known: set[Obstacle] = set()
+        """Obstacles seen reached since the components were last labelled."""
+        self.obstacles: list[Obstacle] = []
+        """The placed objects' obstacles, in order."""
+        self.waived: list[Obstacle] = []
+        """Obstacles that need not stay reachable (out of reach when placed, or cut off
+        when nothing else fitted); the layout keeps this list with its snapshots."""
+        self.walk = np.zeros_like(free)
+        """Walkable cells of the room as furnished."""
+        self.walk_a: np.ndarray | None = None
+        """The same for the evaluator's agent when the walkways are checked wider (else None)."""
+        self._labels_a: np.ndarray | None = None
+        self._door_a = np.zeros(0, dtype=np.int32)
+        """Labels of ``walk_a``'s components holding the door component (with ``_labels_a``)."""
+        self._door_a_stale = True
+        self._labels: np.ndarray | None = None
+        """Walkable components of ``walk`` (None: to be labelled again)."""
+        self._door_labels = np.zeros(0, dtype=np.int32)
+        """Labels of the door component (with ``_labels``)."""
+        self.radius: float | None = None
+        for r in (WALKWAY_RADIUS_M, AGENT_RADIUS_M):
+            self._use_radius(r)
+            if self.ok():
+                break
+        else:
+            self._use_radius(None)
+
+    # ------------------------------------------------------------ raster
+    def _use_radius(self, radius: float | None) -> None:
+        """Check walkways for an agent of ``radius`` (None: not at all, the empty room fails);
+        objects are reached by the evaluator's agent (:data:`AGENT_RADIUS_M`) in any case."""
+        self.radius = radius
+        self._disc = self._disc_of(radius or AGENT_RADIUS_M)
+        self.base_walk = self._walkable(radius) if radius is not None else np.zeros_like(self.base_free)
+        wider = radius is not None and radius != AGENT_RADIUS_M
+        self._disc_a = self._disc_of(AGENT_RADIUS_M) if wider else None
+        self.base_walk_a = self._walkable(AGENT_RADIUS_M) if wider else None
+        self.set_blocked([])
+
+    def _disc_of(self, radius: float) -> np.ndarray:
+        """The cells within ``radius`` of the centre one, as the distance transform measures."""
+        k = int(np.ceil(radius / self.cell)) + 1
+        off = np.arange(-k, k + 1, dtype=float)
+        # as distance_transform_edt computes it: sqrt of the summed squares, times the cell
+        far = np.sqrt(off[:, None] ** 2 + off[None, :] ** 2) * self.cell > radius
+        rows, cols = np.nonzero(~far)
+        return ~far[rows.min():rows.max() + 1, cols.min():cols.max() + 1]
+
+    def _walkable(self, radius: float) -> np.ndarray:
+        return ndimage.distance_transform_edt(self.base_free) * self.cell > radius
+
+    def _raster(self, geom) -> np.ndarray:
+        mask = np.zeros(self.gx.shape, dtype=bool)
+        if geom.is_empty:
+            return mask
+        x0, y0, x1, y1 = geom.bounds
+        i0, i1 = np.searchsorted(self.ys, [y0, y1])
+        j0, j1 = np.searchsorted(self.xs, [x0, x1])
+        if i0 >= i1 or j0 >= j1:
+            return mask
+        mask[i0:i1, j0:j1] = shapely.contains_xy(geom, self.gx[i0:i1, j0:j1], self.gy[i0:i1, j0:j1])
+        return mask
+
+    def _rect_patch(self, corners: np.ndarray, grow_m: float, rounded: bool) -> Patch:
+        """Cells whose centre lies in a rotated rectangle, (4, 2) corners, grown by ``grow_m``
+        (``rounded``: within ``grow_m`` of it; else in the rectangle grown square)."""
+        lo, hi = corners.min(0) - grow_m, corners.max(0) + grow_m
+        i0, i1 = (int(v) for v in np.searchsorted(self.ys, [lo[1], hi[1]]))
+        j0, j1 = (int(v) for v in np.searchsorted(self.xs, [lo[0], hi[0]]))
+        if i0 >= i1 or j0 >= j1:
+            return Patch(0, 0, np.zeros((0, 0), dtype=bool))
+        c = corners.mean(0)
+        ex, ey = corners[1] - corners[0], corners[3] - corners[0]
+        hw, hd = np.linalg.norm(ex) / 2, np.linalg.norm(ey) / 2
+        ex, ey = ex / (2 * hw), ey / (2 * hd)
+        px = self.xs[None, j0:j1] - c[0]
+        py = self.ys[i0:i1, None] - c[1]
+        lx = np.abs(px * ex[0] + py * ex[1])
+        ly = np.abs(px * ey[0] + py * ey[1])
+        if rounded:
+            mask = np.hypot(np.maximum(lx - hw, 0.0), np.maximum(ly - hd, 0.0)) <= grow_m
+        else:
+            mask = (lx <= hw + grow_m) & (ly <= hd + grow_m)
+        return Patch(i0, j0, mask)
+
+    def obstacle(self, corners: np.ndarray, reachable: bool) -> Obstacle:
+        """What an object of footprint ``corners`` (4, 2) does to the walkways; ``reachable``:
+        it must stay reachable (a floor object an agent walks up to)."""
+        cells = self._rect_patch(corners, NAV_OBSTACLE_PAD_M, rounded=False)
+        reach = self._rect_patch(corners, REACH_M, rounded=True) if reachable else None
+        shadow_a = self._shadow(cells, self._disc_a, AGENT_RADIUS_M) if self._disc_a is not None else None
+        return Obstacle(cells, self._shadow(cells, self._disc, self.radius or AGENT_RADIUS_M), reach, shadow_a)
+
+    def _shadow(self, cells: Patch, disc: np.ndarray, radius: float) -> Patch:
+        """``cells`` dilated by ``disc`` (the cells within ``radius``), clipped to the raster;
+        a full block of cells (an object square to the raster) by the distance to it."""
+        if self.radius is None or not cells.mask.any():
+            return Patch(0, 0, np.zeros((0, 0), dtype=bool))
+        k = disc.shape[0] // 2
+        h, w = cells.mask.shape
+        ny, nx = self.base_free.shape
+        i0, j0 = max(0, cells.i0 - k), max(0, cells.j0 - k)
+        i1, j1 = min(ny, cells.i0 + h + k), min(nx, cells.j0 + w + k)
+        if cells.mask.all():
+            rows, cols = np.arange(i0, i1), np.arange(j0, j1)
+            dy = np.maximum(0, np.maximum(cells.i0 - rows, rows - (cells.i0 + h - 1))).astype(float)
+            dx = np.maximum(0, np.maximum(cells.j0 - cols, cols - (cells.j0 + w - 1))).astype(float)
+            # as _disc_of measures: sqrt of the summed squares, times the cell
+            return Patch(i0, j0, ~(np.sqrt(dy[:, None] ** 2 + dx[None, :] ** 2) * self.cell > radius))
+        pad = np.zeros((h + 2 * k, w + 2 * k), dtype=bool)
+        pad[k:k + h, k:k + w] = cells.mask
+        grown = ndimage.binary_dilation(pad, structure=disc)
+        a, b = i0 - (cells.i0 - k), j0 - (cells.j0 - k)
+        return Patch(i0, j0, grown[a:a + i1 - i0, b:b + j1 - j0])
+
+    # ------------------------------------------------------------ state
+    def add(self, obs: Obstacle) -> None:
+        """Block ``obs`` (a committed object)."""
+        self.obstacles.append(obs)
+        win = obs.shadow.window
+        lost = self.walk[win] & obs.shadow.mask
+        if lost.any():
+            self.walk[win] &= ~obs.shadow.mask
+            self._labels = None
+        sa = obs.reach_shadow
+        if self.walk_a is not None and sa is not None and (self.walk_a[sa.window] & sa.mask).any():
+            self.walk_a[sa.window] &= ~sa.mask
+            self._labels_a = None
+
+    def set_blocked(self, placed: list[Placed]) -> None:
+        """Start again from the empty room with the obstacles of ``placed``."""
+        self.walk = self.base_walk.copy()
+        self.walk_a = None if self.base_walk_a is None else self.base_walk_a.copy()
+        self._labels = self._labels_a = None
+        self.obstacles = []
+        for p in placed:
+            if p.nav is not None:
+                self.obstacles.append(p.nav)
+                self.walk[p.nav.shadow.window] &= ~p.nav.shadow.mask
+                sa = p.nav.reach_shadow
+                if self.walk_a is not None and sa is not None:
+                    self.walk_a[sa.window] &= ~sa.mask
+
+    # ------------------------------------------------------------ checks
+    def ok(self) -> bool:
+        """Whether the doors share a walkable component with the room and every object that
+        must stay reachable is reached from it."""
+        return self.unreached() == []
+
+    def unreached(self) -> list[Obstacle] | None:
+        """The obstacles that must stay reachable (``reach`` set, not waived) and are not;
+        None when no walkable component touches every door and some of the room."""
+        if self.radius is None:
+            return []
+        door = self._door_component()
+        if door is None:
+            return None
+        labels, door = self._reach_labels(door)
+        waived = set(self.waived)
+        out = []
+        for o in self.obstacles:
+            if o.reach is None or o in waived or o in self._known:
+                continue
+            if self._reached(labels, o.reach, door):
+                self._known.add(o)
+            else:
+                out.append(o)
+        return out
+
+    def _reach_labels(self, door: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Components of the agent's walkable cells and those holding the door component."""
+        assert self._labels is not None
+        if self.walk_a is None:
+            return self._labels, door
+        if self._labels_a is None:
+            self._labels_a, _ = ndimage.label(self.walk_a)
+            self._known = set()
+            self._door_a_stale = True
+        if self._door_a_stale:
+            self._door_a_stale = False
+            cells = np.concatenate(self._door_idx) if self._door_idx else self._room_idx
+            on = cells[np.isin(self._labels.ravel()[cells], door)]
+            self._door_a = np.unique(self._labels_a.ravel()[on])
+        return self._labels_a, self._door_a
+
+    def _reached(self, labels: np.ndarray, reach: Patch, door: np.ndarray) -> bool:
+        lab = labels[reach.window][reach.mask]
+        if len(door) == 1:
+            return bool(np.any(lab == door[0]))
+        return bool(np.isin(lab, door).any())
+
+    def _door_component(self) -> np.ndarray | None:
+        """Labels of the walkable components that touch every door and some room cells
+        (None: none does)."""
+        if self._labels is None:
+            labels, _ = ndimage.label(self.walk)
+            self._labels = labels
+            self._known = set()
+            self._door_a_stale = True
+            flat = labels.ravel()
+            common: set[int] | None = None
+            for idx in self._door_idx:
+                lab = set(np.unique(flat[idx]).tolist()) - {0}
+                common = lab if common is None else common & lab
+            room = flat[self._room_idx]
+            if common is None:
+                common = set(np.unique(room).tolist()) - {0}
+            keep = [lab for lab in sorted(common) if np.any(room == lab)]
+            self._door_labels = np.array(keep, dtype=np.int32)
+        return self._door_labels if len(self._door_labels) else None
