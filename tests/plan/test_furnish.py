@@ -113,3 +113,21 @@ def test_three_barber_chairs_are_three_stations_each_chair_facing_its_own():
         face = np.array([-np.sin(c.yaw), np.cos(c.yaw)])
         to_station = np.subtract(s.position[:2], c.position[:2])
         assert face @ to_station / np.linalg.norm(to_station) > 0.9  # the chair faces its station and mirror
+
+
+def test_an_island_asked_for_is_the_island_not_the_kitchen_runs_counter():
+    """'a kitchen with an island': 'island' is a word for a counter, but the island template
+    is named by it; the kitchen run keeps its counters, and the island is laid out after
+    the run, across an aisle from it."""
+    from anyhome.pipeline import generate
+
+    for seed in range(3):
+        spec = get_planner("offline").plan("a house with a kitchen with an island", np.random.default_rng(seed))
+        kitchen = next(r for r in spec.rooms if r.type == "kitchen")
+        names = {g.name: g for g in kitchen.groups}
+        assert "island" in names and names["island"].required
+        assert names["kitchen_run"].anchor.name != "island"
+    h = generate("a house with a kitchen with an island", seed=0)
+    kitchen = [o for o in h.objects if o.room.startswith("kitchen") and o.support == "floor"]
+    groups = [o.group for o in kitchen]
+    assert max(i for i, g in enumerate(groups) if g.startswith("kitchen_run")) < groups.index("island-0")

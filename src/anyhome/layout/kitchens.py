@@ -63,6 +63,12 @@ def _run_pieces(st: RoomState) -> list[HouseObject]:
             and o.rule in ("place_corner", "place_wall", "place_next_wall")]
 
 
+def waits_for_run(g: GroupSpec) -> bool:
+    """A free-standing counter (an island): laid out after the kitchen runs of its
+    priority, so that it can stand across an aisle from them (:func:`place_island`)."""
+    return g.anchor.category == "counter" and g.anchor.rule == "place_center"
+
+
 def is_island(st: RoomState, g: GroupSpec) -> bool:
     """A counter placed free-standing (``place_center``) in a room whose run stands."""
     return g.anchor.category == "counter" and g.anchor.rule == "place_center" and bool(_run_pieces(st))

@@ -98,7 +98,8 @@ def furnish_room(st: RoomState) -> None:
 
 def _make_room(st: RoomState) -> None:
     start = st.snapshot()
-    order = sorted(range(len(st.spec.groups)), key=lambda i: st.spec.groups[i].priority)
+    groups = st.spec.groups
+    order = sorted(range(len(groups)), key=lambda i: (groups[i].priority, kitchens.waits_for_run(groups[i])))
     _furnish(st, order, {})
     missing = _key_dropped(st)
     if not missing:

@@ -206,6 +206,22 @@ def zone_groups(kb: KnowledgeBase, furnish: str, room_type: str, area_m2: float,
     return out
 
 
+def _named_template(kb: KnowledgeBase, m: Mention) -> str | None:
+    """The group template whose anchor is the mentioned object under the mentioned word
+    (its ``use`` the mention's prototype, one of its names holding the word: "an island"
+    is the ``island`` template's "kitchen island", a counter), if exactly one is."""
+    if not m.key:
+        return None
+    word = m.name.split()[-1]
+    hits = []
+    for key, t in kb.raw("furniture")["groups"].items():
+        a = t.get("anchor", {})
+        names = a.get("names") or [a.get("name") or ""]
+        if a.get("use") == m.key and any(word in _words(str(n)) for n in names) and word != m.key.split()[-1]:
+            hits.append(key)
+    return hits[0] if len(hits) == 1 else None
+
+
 def _words(text: str) -> set[str]:
     return set(text.replace("_", " ").split())
 
@@ -277,8 +293,15 @@ def apply_mention(kb: KnowledgeBase, m: Mention, groups: list[Group], ornaments:
         return
     # a one-word name ("table") may stand for any table; "bunk bed" only for bunk beds
     g, item = _find(groups, category, head, loose=" " not in (m.key or m.name))
+    named_group = _named_template(kb, m)
+    if g is not None and named_group is not None and g["name"] != named_group:
+        word = m.name.split()[-1]
+        if word not in _words(item["name"]) if item is not None else True:
+            g = None  # "an island": the template named so, not the kitchen run's counter
     if g is None:
         d = next((u for u in unused if _matches(u_anchor(kb, u), category, head)), None)
+        if d is None and named_group is not None:
+            d = group_def(kb, {"group": named_group})
         if d is None and proto.get("group"):
             d = group_def(kb, {"group": proto["group"]})
         if d is None and m.key:
