@@ -116,6 +116,29 @@ def sat_overlap(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     return out
 
 
+_BOX_EDGE_M = 1e-9
+"""Points this close to an axis-aligned rectangle's outline are left to shapely."""
+
+
+def _convex(v: np.ndarray) -> bool:
+    """Whether the CCW polygon of vertices ``v`` (n, 2) turns left (or goes straight) at every vertex."""
+    e = np.roll(v, -1, 0) - v
+    f = np.roll(e, -1, 0)
+    return bool(np.all(e[:, 0] * f[:, 1] - e[:, 1] * f[:, 0] >= 0.0))
+
+
+def _axis_box(ring: np.ndarray) -> tuple[float, float, float, float] | None:
+    """(x0, y0, x1, y1) of a closed ring (5, 2) that is an axis-aligned rectangle, else None."""
+    if len(ring) != 5:
+        return None
+    x0, y0 = ring.min(0)
+    x1, y1 = ring.max(0)
+    corners = {(float(x), float(y)) for x, y in ring[:4]}
+    if corners != {(x0, y0), (x1, y0), (x1, y1), (x0, y1)}:
+        return None
+    return float(x0), float(y0), float(x1), float(y1)
+
+
 def _cmin(c: np.ndarray) -> np.ndarray:
     """(n, 4, 2) corners -> (n, 2) lower bounds (faster than ``min(1)`` on a short axis)."""
     return np.minimum(np.minimum(c[:, 0], c[:, 1]), np.minimum(c[:, 2], c[:, 3]))
@@ -201,6 +224,11 @@ class RoomSpace:
         """The room as :func:`anyhome.geometry.inside` tests a footprint against it (prepared)."""
         shapely.prepare(self.outline)
         self.vertices = np.asarray(self.poly.exterior.coords)[:-1]
+        self.convex = _convex(self.vertices)
+        """A convex room: no room vertex can lie inside a footprint whose corners are in ``buf``."""
+        self.buf_box = _axis_box(np.asarray(self.buf.exterior.coords)) if not self.buf.interiors else None
+        """``buf``'s (x0, y0, x1, y1) when it is an axis-aligned rectangle, else None."""
+        self._cache: tuple[list[Placed], dict[object, object]] = ([], {})
         self.bmin = self.vertices.min(0)
         self.bmax = self.vertices.max(0)
         self.height = float(self.room.height)
@@ -226,6 +254,7 @@ class RoomSpace:
 
             zones += stair_zones(self.floorplan).get(self.room.id, [])
         self.door_zones = np.asarray(zones).reshape(-1, 4, 2)
+        self.zone_lo, self.zone_hi = self.door_zones.min(1), self.door_zones.max(1)
         self.zone_polys = [Polygon(z) for z in zones]
         wzones = []
         for w in self.floorplan.windows:
@@ -250,25 +279,37 @@ class RoomSpace:
     def objects(self) -> list[HouseObject]:
         return [p.obj for p in self.placed]
 
+    def _memo(self) -> dict[object, object]:
+        """Arrays derived from ``placed``, kept while the list holds the same objects."""
+        held, memo = self._cache
+        if len(held) != len(self.placed) or any(a is not b for a, b in zip(held, self.placed, strict=True)):
+            self._cache = (list(self.placed), {})
+        return self._cache[1]
+
     def near(self, lo: np.ndarray, hi: np.ndarray) -> list[Placed]:
         """Placed objects whose footprint's bounding box meets the box ``lo``-``hi`` (2,)."""
         if not self.placed:
             return []
-        c = np.stack([p.corners for p in self.placed])
-        keep = np.all(_cmin(c) <= hi, 1) & np.all(_cmax(c) >= lo, 1)
+        memo = self._memo()
+        if "bounds" not in memo:
+            c = np.stack([p.corners for p in self.placed])
+            memo["bounds"] = (_cmin(c), _cmax(c))
+        cmin, cmax = memo["bounds"]  # type: ignore[misc]
+        keep = np.all(cmin <= hi, 1) & np.all(cmax >= lo, 1)
         return [self.placed[i] for i in np.flatnonzero(keep)]
 
     def _arrays(self, layer: bool = False) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Corners, bottoms and tops of the placed objects (``layer``: of the layers only,
         else of all but the layers)."""
-        placed = [p for p in self.placed if p.layer == layer]
-        if not placed:
-            return np.zeros((0, 4, 2)), np.zeros(0), np.zeros(0)
-        return (
-            np.stack([p.corners for p in placed]),
-            np.array([p.z0 for p in placed]),
-            np.array([p.z1 for p in placed]),
-        )
+        memo = self._memo()
+        if ("arrays", layer) not in memo:
+            placed = [p for p in self.placed if p.layer == layer]
+            memo["arrays", layer] = (np.zeros((0, 4, 2)), np.zeros(0), np.zeros(0)) if not placed else (
+                np.stack([p.corners for p in placed]),
+                np.array([p.z0 for p in placed]),
+                np.array([p.z1 for p in placed]),
+            )
+        return memo["arrays", layer]  # type: ignore[return-value]
 
     # ------------------------------------------------------------ validity
     def valid(
@@ -291,12 +332,15 @@ class RoomSpace:
         idx = np.nonzero(ok)[0]
         if idx.size:
             c = corners[idx]
-            pin = shapely.contains_xy(self.buf, c[..., 0].ravel(), c[..., 1].ravel()).reshape(-1, 4)
+            pin = self._in_buf(c[..., 0].ravel(), c[..., 1].ravel()).reshape(-1, 4)
             pin = pin[:, 0] & pin[:, 1] & pin[:, 2] & pin[:, 3]
-            sub = np.nonzero(pin)[0]
-            inner = np.zeros(len(idx), dtype=bool)
-            if sub.size:
-                inner[sub] = ~self._vertex_inside(c[sub])
+            if self.convex:
+                inner = pin
+            else:
+                sub = np.nonzero(pin)[0]
+                inner = np.zeros(len(idx), dtype=bool)
+                if sub.size:
+                    inner[sub] = ~self._vertex_inside(c[sub])
             ok[idx] = inner
         idx = np.nonzero(ok)[0]
         if idx.size and doors and len(self.door_zones):
@@ -316,6 +360,20 @@ class RoomSpace:
             ov = sat_overlap(corners[idx], pc)
             ok[idx] = ~np.any((zov > EPS_COLLIDE_M) & (ov > EPS_COLLIDE_M), 1)
         return ok
+
+    def _in_buf(self, x: np.ndarray, y: np.ndarray) -> np.ndarray:
+        """``shapely.contains_xy(self.buf, x, y)``; for an axis-aligned rectangle by comparing
+        coordinates, shapely asked only about points within a hair of its outline."""
+        if self.buf_box is None:
+            return shapely.contains_xy(self.buf, x, y)
+        x0, y0, x1, y1 = self.buf_box
+        out = (x > x0) & (x < x1) & (y > y0) & (y < y1)
+        e = _BOX_EDGE_M
+        edge = (x > x0 - e) & (x < x1 + e) & (y > y0 - e) & (y < y1 + e) & ~(
+            (x > x0 + e) & (x < x1 - e) & (y > y0 + e) & (y < y1 - e))
+        if edge.any():
+            out[edge] = shapely.contains_xy(self.buf, x[edge], y[edge])
+        return out
 
     def _vertex_inside(self, c: np.ndarray) -> np.ndarray:
         centre = c.mean(1)

@@ -70,11 +70,14 @@ def exact_ok(st: RoomState, ch: Choice, size: Sequence[float], kind: str, suppor
         sfp = footprint_polygon(supporter.position, supporter.size, supporter.yaw)
         if not inside(sfp, fp):
             return False
+    lo, hi = np.min(fp.exterior.coords, 0), np.max(fp.exterior.coords, 0)
     if kind != "top":
-        for zone in st.space.zone_polys:
+        sp = st.space
+        for zone, zlo, zhi in zip(sp.zone_polys, sp.zone_lo, sp.zone_hi, strict=True):
+            if np.any(zlo > hi) or np.any(zhi < lo):
+                continue  # bounding boxes apart: no intersection
             if fp.intersects(zone) and fp.intersection(zone).area > 1e-6:
                 return False
-    lo, hi = np.min(fp.exterior.coords, 0), np.max(fp.exterior.coords, 0)
     for p in st.space.near(lo, hi):
         o = p.obj
         if boxes_collide(pos, size, ch.yaw, o.position, o.size, o.yaw):
