@@ -56,6 +56,21 @@ class Patch:
 
 
 @dataclass(frozen=True, eq=False)
+class NavState:
+    """A copy of a :class:`NavGrid`'s walkways and their labels (:meth:`NavGrid.state`)."""
+
+    walk: np.ndarray
+    walk_a: np.ndarray | None
+    obstacles: list[Obstacle]
+    labels: np.ndarray | None
+    door_labels: np.ndarray
+    labels_a: np.ndarray | None
+    door_a: np.ndarray
+    door_a_stale: bool
+    known: set[Obstacle]
+
+
+@dataclass(frozen=True, eq=False)
 class Obstacle:
     """What one placed object does to the walkways (:attr:`anyhome.space.Placed.nav`)."""
 
@@ -247,6 +262,22 @@ class NavGrid:
                 sa = p.nav.reach_shadow
                 if self.walk_a is not None and sa is not None:
                     self.walk_a[sa.window] &= ~sa.mask
+
+    def state(self) -> NavState:
+        """What :meth:`load` needs to come back to the walkways as they are now."""
+        return NavState(
+            self.walk.copy(), None if self.walk_a is None else self.walk_a.copy(), list(self.obstacles),
+            self._labels, self._door_labels, self._labels_a, self._door_a, self._door_a_stale, set(self._known),
+        )
+
+    def load(self, s: NavState) -> None:
+        """Come back to the walkways of :meth:`state` (the labels with them: none to relabel)."""
+        self.walk = s.walk.copy()
+        self.walk_a = None if s.walk_a is None else s.walk_a.copy()
+        self.obstacles = list(s.obstacles)
+        self._labels, self._door_labels = s.labels, s.door_labels
+        self._labels_a, self._door_a, self._door_a_stale = s.labels_a, s.door_a, s.door_a_stale
+        self._known = set(s.known)
 
     # ------------------------------------------------------------ checks
     def ok(self) -> bool:

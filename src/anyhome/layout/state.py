@@ -12,7 +12,7 @@ from shapely.geometry import Polygon
 from anyhome.house import Dropped, Floorplan, HouseObject, Room
 from anyhome.layout.options import LayoutOptions
 from anyhome.layout.rules import wrap
-from anyhome.navgrid import NavGrid
+from anyhome.navgrid import NavGrid, NavState
 from anyhome.plan.spec import ItemSpec, RoomSpec
 from anyhome.space import Placed, RoomSpace, Wall, nav_blocks, rect_corners, walked_up_to
 
@@ -40,6 +40,9 @@ class Snapshot:
     n_dropped: int
     n_keep_clear: int = 0
     n_waived: int = 0
+    placed: list[Placed] | None = None
+    """The placed objects then, and the walkways with them: restored without rebuilding."""
+    nav: NavState | None = None
 
 
 @dataclass
@@ -73,7 +76,7 @@ class RoomState:
     # ------------------------------------------------------------ bookkeeping
     def snapshot(self) -> Snapshot:
         return Snapshot(len(self.space.placed), dict(self.counters), len(self.dropped), len(self.space.keep_clear),
-                        len(self.nav.waived))
+                        len(self.nav.waived), list(self.space.placed), self.nav.state())
 
     def restore(self, snap: Snapshot) -> None:
         del self.space.placed[snap.n_placed:]
@@ -81,7 +84,12 @@ class RoomState:
         del self.dropped[snap.n_dropped:]
         self.counters = dict(snap.counters)
         del self.nav.waived[snap.n_waived:]
-        self.nav.set_blocked(self.space.placed)
+        then = snap.placed
+        if snap.nav is not None and then is not None and len(then) == len(self.space.placed) and all(
+                a is b for a, b in zip(then, self.space.placed, strict=True)):
+            self.nav.load(snap.nav)  # the same objects: the walkways as they were
+        else:
+            self.nav.set_blocked(self.space.placed)
 
     def drop(self, name: str, reason: str, copies: int = 1) -> None:
         self.dropped.extend(self.dropped_entry(name, reason) for _ in range(copies))
