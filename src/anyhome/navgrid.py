@@ -121,6 +121,8 @@ class NavGrid:
         self._door_idx = [np.flatnonzero(m) for m in self.door_near]
         self._room_idx = np.flatnonzero(self.room_mask)
         self._known: set[Obstacle] = set()
+        self._cells: dict[Obstacle, np.ndarray] = {}
+        """Flat indices of each obstacle's reach cells (:meth:`_reach_cells`)."""
         """Obstacles seen reached since the components were last labelled."""
         self.obstacles: list[Obstacle] = []
         """The placed objects' obstacles, in order."""
@@ -295,15 +297,35 @@ class NavGrid:
             return None
         labels, door = self._reach_labels(door)
         waived = set(self.waived)
+        todo = [o for o in self.obstacles if o.reach is not None and o not in waived and o not in self._known]
+        if not todo:
+            return []
+        cells = [self._reach_cells(o) for o in todo]
+        n = np.array([len(c) for c in cells])
+        reached = np.zeros(len(todo), dtype=bool)
+        some = np.flatnonzero(n)  # an obstacle with no reach cells is not reached
+        if some.size:
+            lab = labels.ravel()[np.concatenate([cells[i] for i in some])]
+            hit = lab == door[0] if len(door) == 1 else np.isin(lab, door)
+            starts = np.concatenate(([0], np.cumsum(n[some])[:-1]))
+            reached[some] = np.logical_or.reduceat(hit, starts)
         out = []
-        for o in self.obstacles:
-            if o.reach is None or o in waived or o in self._known:
-                continue
-            if self._reached(labels, o.reach, door):
+        for o, r in zip(todo, reached, strict=True):
+            if r:
                 self._known.add(o)
             else:
                 out.append(o)
         return out
+
+    def _reach_cells(self, o: Obstacle) -> np.ndarray:
+        """Flat raster indices of the cells ``o`` is reached from (cached per obstacle)."""
+        got = self._cells.get(o)
+        if got is None:
+            assert o.reach is not None
+            rows, cols = np.nonzero(o.reach.mask)
+            got = (rows + o.reach.i0) * self.walk.shape[1] + cols + o.reach.j0
+            self._cells[o] = got
+        return got
 
     def _reach_labels(self, door: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Components of the agent's walkable cells and those holding the door component."""
@@ -320,12 +342,6 @@ class NavGrid:
             on = cells[np.isin(self._labels.ravel()[cells], door)]
             self._door_a = np.unique(self._labels_a.ravel()[on])
         return self._labels_a, self._door_a
-
-    def _reached(self, labels: np.ndarray, reach: Patch, door: np.ndarray) -> bool:
-        lab = labels[reach.window][reach.mask]
-        if len(door) == 1:
-            return bool(np.any(lab == door[0]))
-        return bool(np.isin(lab, door).any())
 
     def _door_component(self) -> np.ndarray | None:
         """Labels of the walkable components that touch every door and some room cells

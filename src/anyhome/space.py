@@ -9,7 +9,7 @@ margins everywhere), so a pose accepted here stays valid after house.json rounds
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, cast
 
 import numpy as np
 import numpy.typing as npt
@@ -228,6 +228,8 @@ class RoomSpace:
         """A convex room: no room vertex can lie inside a footprint whose corners are in ``buf``."""
         self.buf_box = _axis_box(np.asarray(self.buf.exterior.coords)) if not self.buf.interiors else None
         """``buf``'s (x0, y0, x1, y1) when it is an axis-aligned rectangle, else None."""
+        self.outline_box = _axis_box(np.asarray(self.outline.exterior.coords)) if not self.outline.interiors else None
+        """``outline``'s (x0, y0, x1, y1) when it is an axis-aligned rectangle, else None."""
         self._cache: tuple[list[Placed], dict[object, object]] = ([], {})
         self.bmin = self.vertices.min(0)
         self.bmax = self.vertices.max(0)
@@ -294,7 +296,7 @@ class RoomSpace:
         if "bounds" not in memo:
             c = np.stack([p.corners for p in self.placed])
             memo["bounds"] = (_cmin(c), _cmax(c))
-        cmin, cmax = memo["bounds"]  # type: ignore[misc]
+        cmin, cmax = cast(tuple[np.ndarray, np.ndarray], memo["bounds"])
         keep = np.all(cmin <= hi, 1) & np.all(cmax >= lo, 1)
         return [self.placed[i] for i in np.flatnonzero(keep)]
 
@@ -374,6 +376,19 @@ class RoomSpace:
         if edge.any():
             out[edge] = shapely.contains_xy(self.buf, x[edge], y[edge])
         return out
+
+    def in_outline_box(self, lo: np.ndarray, hi: np.ndarray) -> bool | None:
+        """Whether ``outline`` contains a footprint of bounding box ``lo``-``hi`` (2,), settled by
+        coordinates for an axis-aligned rectangular room; None: ask shapely."""
+        if self.outline_box is None:
+            return None
+        x0, y0, x1, y1 = self.outline_box
+        e = _BOX_EDGE_M
+        if lo[0] > x0 + e and lo[1] > y0 + e and hi[0] < x1 - e and hi[1] < y1 - e:
+            return True
+        if lo[0] < x0 - e or lo[1] < y0 - e or hi[0] > x1 + e or hi[1] > y1 + e:
+            return False
+        return None
 
     def _vertex_inside(self, c: np.ndarray) -> np.ndarray:
         centre = c.mean(1)
