@@ -4,7 +4,7 @@ verify the best with the contract's exact geometry; the room a whole group needs
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
 
 import numpy as np
 import shapely
@@ -49,6 +49,13 @@ def rank(st: RoomState, c: Cands, size: Sequence[float], kind: str, noise: float
 def verified(st: RoomState, c: Cands, order: np.ndarray, size: Sequence[float], kind: str,
              supporter: HouseObject | None, k: int = 1, min_sep_m: float = 0.0) -> list[Choice]:
     """Up to ``k`` candidates from ``order`` that pass the exact geometry checks."""
+    return list(verified_lazily(st, c, order, size, kind, supporter, k, min_sep_m))
+
+
+def verified_lazily(st: RoomState, c: Cands, order: np.ndarray, size: Sequence[float], kind: str,
+                    supporter: HouseObject | None, k: int = 1, min_sep_m: float = 0.0) -> Iterator[Choice]:
+    """:func:`verified`'s choices, each checked when asked for (the same choices as long as
+    the room is the same whenever one is asked for)."""
     out: list[Choice] = []
     for i in order[: st.options.verify_factor * k]:
         ch = Choice(c.xy[i].copy(), float(c.yaw[i]), float(c.z[i]))
@@ -59,9 +66,9 @@ def verified(st: RoomState, c: Cands, order: np.ndarray, size: Sequence[float], 
             continue
         if exact_ok(st, ch, size, kind, supporter):
             out.append(ch)
+            yield ch
             if len(out) >= k:
-                break
-    return out
+                return
 
 
 def exact_ok(st: RoomState, ch: Choice, size: Sequence[float], kind: str, supporter: HouseObject | None) -> bool:

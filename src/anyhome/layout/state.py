@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import re
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -150,18 +150,19 @@ class RoomState:
             self.nav.waived.extend(self.nav.unreached() or [])
         return obj, cost
 
-    def commit_if_walkable(self, item: ItemSpec, size: Sequence[float], choices: list[Choice], support: str,
+    def commit_if_walkable(self, item: ItemSpec, size: Sequence[float], choices: Iterable[Choice], support: str,
                            rule: str, group: str | None, anchor: str | None,
                            more: Callable[[], list[Choice]] | None = None) -> HouseObject | None:
         """The first of ``choices`` that keeps every walkway open and every floor object
         reachable, itself included, committed; when none does, the same among ``more()``
         (a longer list that starts with ``choices``); else the one that keeps the walkways
         open and leaves the fewest earlier objects, then itself, out of reach; None if none
-        keeps the walkways open."""
+        keeps the walkways open. ``choices`` may be checked lazily
+        (:func:`~anyhome.layout.scoring.verified_lazily`): each is taken with the room as it was."""
         best: tuple[tuple[int, int], Choice] | None = None
         tried = 0
-        for batch in (choices, more):
-            todo = batch if isinstance(batch, list) else (batch()[tried:] if batch is not None else [])
+        for stage in range(2):
+            todo: Iterable[Choice] = choices if stage == 0 else (more()[tried:] if more is not None else [])
             for ch in todo:
                 tried += 1
                 snap = self.snapshot()
