@@ -139,6 +139,40 @@ def _axis_box(ring: np.ndarray) -> tuple[float, float, float, float] | None:
     return float(x0), float(y0), float(x1), float(y1)
 
 
+_SAT_SLACK_M = 1e-9
+"""Rounding allowed for in :func:`overlap_above` (m)."""
+
+
+def overlap_above(a: np.ndarray, b: np.ndarray, thr: float, inclusive: bool = False,
+                  amin: np.ndarray | None = None, amax: np.ndarray | None = None,
+                  pairs: np.ndarray | None = None) -> np.ndarray:
+    """``sat_overlap(a, b) > thr`` (``inclusive``: ``>=``), (n, m) bool, separating axes
+    tested only for pairs whose bounding boxes overlap by ``thr`` or more (the overlap
+    along a rectangle's own axes is at most that along x or y); ``pairs`` (n, m) bool:
+    only these pairs can be True; ``amin``, ``amax``: ``a``'s bounds when known."""
+    n, m = len(a), len(b)
+    if n == 0 or m == 0:
+        return np.zeros((n, m), dtype=bool)
+    amin = _cmin(a) if amin is None else amin
+    amax = _cmax(a) if amax is None else amax
+    bmin, bmax = _cmin(b), _cmax(b)
+    ox = np.minimum(amax[:, 0, None], bmax[None, :, 0]) - np.maximum(amin[:, 0, None], bmin[None, :, 0])
+    oy = np.minimum(amax[:, 1, None], bmax[None, :, 1]) - np.maximum(amin[:, 1, None], bmin[None, :, 1])
+    bb = np.minimum(ox, oy)
+    out = bb >= thr if inclusive else bb > thr
+    maybe = bb >= thr - _SAT_SLACK_M
+    if pairs is not None:
+        out &= pairs
+        maybe &= pairs
+    al_a, al_b = _aligned(a), _aligned(b)
+    need = maybe & ~(al_a[:, None] & al_b[None]) & (bb > -0.05)
+    if need.any():
+        i, j = np.nonzero(need)
+        ov = _sat_pairs(a[i], b[j])
+        out[i, j] = ov >= thr if inclusive else ov > thr
+    return out
+
+
 def _cmin(c: np.ndarray) -> np.ndarray:
     """(n, 4, 2) corners -> (n, 2) lower bounds (faster than ``min(1)`` on a short axis)."""
     return np.minimum(np.minimum(c[:, 0], c[:, 1]), np.minimum(c[:, 2], c[:, 3]))
@@ -346,21 +380,23 @@ class RoomSpace:
             ok[idx] = inner
         idx = np.nonzero(ok)[0]
         if idx.size and doors and len(self.door_zones):
-            ov = sat_overlap(corners[idx], self.door_zones)
-            ok[idx] = np.all(ov < -DOOR_MARGIN_M, 1)
-        idx = np.nonzero(ok)[0]
+            near_door = overlap_above(corners[idx], self.door_zones, -DOOR_MARGIN_M, inclusive=True,
+                                      amin=mins[idx], amax=maxs[idx])
+            ok[idx] = ~np.any(near_door, 1)
         idx = np.nonzero(ok)[0]
         if idx.size and floor and not layer and self.keep_clear:
             tall = z1[idx] > VIEW_CLEAR_M
             if tall.any():
-                ov = sat_overlap(corners[idx], np.stack(self.keep_clear))
-                ok[idx] = ~(tall & np.any(ov > EPS_COLLIDE_M, 1))
+                seen = overlap_above(corners[idx], np.stack(self.keep_clear), EPS_COLLIDE_M,
+                                     amin=mins[idx], amax=maxs[idx])
+                ok[idx] = ~(tall & np.any(seen, 1))
         idx = np.nonzero(ok)[0]
         pc, pz0, pz1 = self._arrays(layer)
         if idx.size and len(pc):
             zov = np.minimum(z1[idx, None], pz1[None]) - np.maximum(z0[idx, None], pz0[None])
-            ov = sat_overlap(corners[idx], pc)
-            ok[idx] = ~np.any((zov > EPS_COLLIDE_M) & (ov > EPS_COLLIDE_M), 1)
+            hit = overlap_above(corners[idx], pc, EPS_COLLIDE_M, amin=mins[idx], amax=maxs[idx],
+                                pairs=zov > EPS_COLLIDE_M)
+            ok[idx] = ~np.any(hit, 1)
         return ok
 
     def _in_buf(self, x: np.ndarray, y: np.ndarray) -> np.ndarray:
