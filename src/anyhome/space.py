@@ -74,12 +74,17 @@ def rect_corners(xy: npt.ArrayLike, wd: npt.ArrayLike, yaw: npt.ArrayLike) -> np
     yaw_a = np.broadcast_to(np.asarray(yaw, dtype=float), (n,))
     wd_a = np.broadcast_to(np.asarray(wd, dtype=float), (n, 2))
     hw, hd = wd_a[:, 0] / 2.0, wd_a[:, 1] / 2.0
-    lx = np.stack([-hw, hw, hw, -hw], 1)
-    ly = np.stack([-hd, -hd, hd, hd], 1)
+    lx = hw[:, None] * _SIGN_X  # (n, 4): -hw, hw, hw, -hw (a sign flip is exact)
+    ly = hd[:, None] * _SIGN_Y
     c, s = np.cos(yaw_a)[:, None], np.sin(yaw_a)[:, None]
-    x = lx * c - ly * s + xy_a[:, 0, None]
-    y = lx * s + ly * c + xy_a[:, 1, None]
-    return np.stack([x, y], -1)
+    out = np.empty((n, 4, 2))
+    out[..., 0] = lx * c - ly * s + xy_a[:, 0, None]
+    out[..., 1] = lx * s + ly * c + xy_a[:, 1, None]
+    return out
+
+
+_SIGN_X = np.array([-1.0, 1.0, 1.0, -1.0])
+_SIGN_Y = np.array([-1.0, -1.0, 1.0, 1.0])
 
 
 def _axes(c: np.ndarray) -> np.ndarray:
