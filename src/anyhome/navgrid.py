@@ -56,6 +56,21 @@ class Patch:
 
 
 @dataclass(frozen=True, eq=False)
+class NavState:
+    """A copy of a :class:`NavGrid`'s walkways and their labels (:meth:`NavGrid.state`)."""
+
+    walk: np.ndarray
+    walk_a: np.ndarray | None
+    obstacles: list[Obstacle]
+    labels: np.ndarray | None
+    door_labels: np.ndarray
+    labels_a: np.ndarray | None
+    door_a: np.ndarray
+    door_a_stale: bool
+    known: set[Obstacle]
+
+
+@dataclass(frozen=True, eq=False)
 class Obstacle:
     """What one placed object does to the walkways (:attr:`anyhome.space.Placed.nav`)."""
 
@@ -106,6 +121,8 @@ class NavGrid:
         self._door_idx = [np.flatnonzero(m) for m in self.door_near]
         self._room_idx = np.flatnonzero(self.room_mask)
         self._known: set[Obstacle] = set()
+        self._cells: dict[Obstacle, np.ndarray] = {}
+        """Flat indices of each obstacle's reach cells (:meth:`_reach_cells`)."""
         """Obstacles seen reached since the components were last labelled."""
         self.obstacles: list[Obstacle] = []
         """The placed objects' obstacles, in order."""
@@ -248,6 +265,22 @@ class NavGrid:
                 if self.walk_a is not None and sa is not None:
                     self.walk_a[sa.window] &= ~sa.mask
 
+    def state(self) -> NavState:
+        """What :meth:`load` needs to come back to the walkways as they are now."""
+        return NavState(
+            self.walk.copy(), None if self.walk_a is None else self.walk_a.copy(), list(self.obstacles),
+            self._labels, self._door_labels, self._labels_a, self._door_a, self._door_a_stale, set(self._known),
+        )
+
+    def load(self, s: NavState) -> None:
+        """Come back to the walkways of :meth:`state` (the labels with them: none to relabel)."""
+        self.walk = s.walk.copy()
+        self.walk_a = None if s.walk_a is None else s.walk_a.copy()
+        self.obstacles = list(s.obstacles)
+        self._labels, self._door_labels = s.labels, s.door_labels
+        self._labels_a, self._door_a, self._door_a_stale = s.labels_a, s.door_a, s.door_a_stale
+        self._known = set(s.known)
+
     # ------------------------------------------------------------ checks
     def ok(self) -> bool:
         """Whether the doors share a walkable component with the room and every object that
@@ -264,15 +297,35 @@ class NavGrid:
             return None
         labels, door = self._reach_labels(door)
         waived = set(self.waived)
+        todo = [o for o in self.obstacles if o.reach is not None and o not in waived and o not in self._known]
+        if not todo:
+            return []
+        cells = [self._reach_cells(o) for o in todo]
+        n = np.array([len(c) for c in cells])
+        reached = np.zeros(len(todo), dtype=bool)
+        some = np.flatnonzero(n)  # an obstacle with no reach cells is not reached
+        if some.size:
+            lab = labels.ravel()[np.concatenate([cells[i] for i in some])]
+            hit = lab == door[0] if len(door) == 1 else np.isin(lab, door)
+            starts = np.concatenate(([0], np.cumsum(n[some])[:-1]))
+            reached[some] = np.logical_or.reduceat(hit, starts)
         out = []
-        for o in self.obstacles:
-            if o.reach is None or o in waived or o in self._known:
-                continue
-            if self._reached(labels, o.reach, door):
+        for o, r in zip(todo, reached, strict=True):
+            if r:
                 self._known.add(o)
             else:
                 out.append(o)
         return out
+
+    def _reach_cells(self, o: Obstacle) -> np.ndarray:
+        """Flat raster indices of the cells ``o`` is reached from (cached per obstacle)."""
+        got = self._cells.get(o)
+        if got is None:
+            assert o.reach is not None
+            rows, cols = np.nonzero(o.reach.mask)
+            got = (rows + o.reach.i0) * self.walk.shape[1] + cols + o.reach.j0
+            self._cells[o] = got
+        return got
 
     def _reach_labels(self, door: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Components of the agent's walkable cells and those holding the door component."""
@@ -289,12 +342,6 @@ class NavGrid:
             on = cells[np.isin(self._labels.ravel()[cells], door)]
             self._door_a = np.unique(self._labels_a.ravel()[on])
         return self._labels_a, self._door_a
-
-    def _reached(self, labels: np.ndarray, reach: Patch, door: np.ndarray) -> bool:
-        lab = labels[reach.window][reach.mask]
-        if len(door) == 1:
-            return bool(np.any(lab == door[0]))
-        return bool(np.isin(lab, door).any())
 
     def _door_component(self) -> np.ndarray | None:
         """Labels of the walkable components that touch every door and some room cells

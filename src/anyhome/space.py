@@ -9,7 +9,7 @@ margins everywhere), so a pose accepted here stays valid after house.json rounds
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, cast
 
 import numpy as np
 import numpy.typing as npt
@@ -74,12 +74,17 @@ def rect_corners(xy: npt.ArrayLike, wd: npt.ArrayLike, yaw: npt.ArrayLike) -> np
     yaw_a = np.broadcast_to(np.asarray(yaw, dtype=float), (n,))
     wd_a = np.broadcast_to(np.asarray(wd, dtype=float), (n, 2))
     hw, hd = wd_a[:, 0] / 2.0, wd_a[:, 1] / 2.0
-    lx = np.stack([-hw, hw, hw, -hw], 1)
-    ly = np.stack([-hd, -hd, hd, hd], 1)
+    lx = hw[:, None] * _SIGN_X  # (n, 4): -hw, hw, hw, -hw (a sign flip is exact)
+    ly = hd[:, None] * _SIGN_Y
     c, s = np.cos(yaw_a)[:, None], np.sin(yaw_a)[:, None]
-    x = lx * c - ly * s + xy_a[:, 0, None]
-    y = lx * s + ly * c + xy_a[:, 1, None]
-    return np.stack([x, y], -1)
+    out = np.empty((n, 4, 2))
+    out[..., 0] = lx * c - ly * s + xy_a[:, 0, None]
+    out[..., 1] = lx * s + ly * c + xy_a[:, 1, None]
+    return out
+
+
+_SIGN_X = np.array([-1.0, 1.0, 1.0, -1.0])
+_SIGN_Y = np.array([-1.0, -1.0, 1.0, 1.0])
 
 
 def _axes(c: np.ndarray) -> np.ndarray:
@@ -113,6 +118,63 @@ def sat_overlap(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     if need.any():
         i, j = np.nonzero(need)
         out[i, j] = _sat_pairs(a[i], b[j])
+    return out
+
+
+_BOX_EDGE_M = 1e-9
+"""Points this close to an axis-aligned rectangle's outline are left to shapely."""
+
+
+def _convex(v: np.ndarray) -> bool:
+    """Whether the CCW polygon of vertices ``v`` (n, 2) turns left (or goes straight) at every vertex."""
+    e = np.roll(v, -1, 0) - v
+    f = np.roll(e, -1, 0)
+    return bool(np.all(e[:, 0] * f[:, 1] - e[:, 1] * f[:, 0] >= 0.0))
+
+
+def _axis_box(ring: np.ndarray) -> tuple[float, float, float, float] | None:
+    """(x0, y0, x1, y1) of a closed ring (5, 2) that is an axis-aligned rectangle, else None."""
+    if len(ring) != 5:
+        return None
+    x0, y0 = ring.min(0)
+    x1, y1 = ring.max(0)
+    corners = {(float(x), float(y)) for x, y in ring[:4]}
+    if corners != {(x0, y0), (x1, y0), (x1, y1), (x0, y1)}:
+        return None
+    return float(x0), float(y0), float(x1), float(y1)
+
+
+_SAT_SLACK_M = 1e-9
+"""Rounding allowed for in :func:`overlap_above` (m)."""
+
+
+def overlap_above(a: np.ndarray, b: np.ndarray, thr: float, inclusive: bool = False,
+                  amin: np.ndarray | None = None, amax: np.ndarray | None = None,
+                  pairs: np.ndarray | None = None) -> np.ndarray:
+    """``sat_overlap(a, b) > thr`` (``inclusive``: ``>=``), (n, m) bool, separating axes
+    tested only for pairs whose bounding boxes overlap by ``thr`` or more (the overlap
+    along a rectangle's own axes is at most that along x or y); ``pairs`` (n, m) bool:
+    only these pairs can be True; ``amin``, ``amax``: ``a``'s bounds when known."""
+    n, m = len(a), len(b)
+    if n == 0 or m == 0:
+        return np.zeros((n, m), dtype=bool)
+    amin = _cmin(a) if amin is None else amin
+    amax = _cmax(a) if amax is None else amax
+    bmin, bmax = _cmin(b), _cmax(b)
+    ox = np.minimum(amax[:, 0, None], bmax[None, :, 0]) - np.maximum(amin[:, 0, None], bmin[None, :, 0])
+    oy = np.minimum(amax[:, 1, None], bmax[None, :, 1]) - np.maximum(amin[:, 1, None], bmin[None, :, 1])
+    bb = np.minimum(ox, oy)
+    out = bb >= thr if inclusive else bb > thr
+    maybe = bb >= thr - _SAT_SLACK_M
+    if pairs is not None:
+        out &= pairs
+        maybe &= pairs
+    al_a, al_b = _aligned(a), _aligned(b)
+    need = maybe & ~(al_a[:, None] & al_b[None]) & (bb > -0.05)
+    if need.any():
+        i, j = np.nonzero(need)
+        ov = _sat_pairs(a[i], b[j])
+        out[i, j] = ov >= thr if inclusive else ov > thr
     return out
 
 
@@ -201,6 +263,13 @@ class RoomSpace:
         """The room as :func:`anyhome.geometry.inside` tests a footprint against it (prepared)."""
         shapely.prepare(self.outline)
         self.vertices = np.asarray(self.poly.exterior.coords)[:-1]
+        self.convex = _convex(self.vertices)
+        """A convex room: no room vertex can lie inside a footprint whose corners are in ``buf``."""
+        self.buf_box = _axis_box(np.asarray(self.buf.exterior.coords)) if not self.buf.interiors else None
+        """``buf``'s (x0, y0, x1, y1) when it is an axis-aligned rectangle, else None."""
+        self.outline_box = _axis_box(np.asarray(self.outline.exterior.coords)) if not self.outline.interiors else None
+        """``outline``'s (x0, y0, x1, y1) when it is an axis-aligned rectangle, else None."""
+        self._cache: tuple[list[Placed], dict[object, object]] = ([], {})
         self.bmin = self.vertices.min(0)
         self.bmax = self.vertices.max(0)
         self.height = float(self.room.height)
@@ -226,6 +295,7 @@ class RoomSpace:
 
             zones += stair_zones(self.floorplan).get(self.room.id, [])
         self.door_zones = np.asarray(zones).reshape(-1, 4, 2)
+        self.zone_lo, self.zone_hi = self.door_zones.min(1), self.door_zones.max(1)
         self.zone_polys = [Polygon(z) for z in zones]
         wzones = []
         for w in self.floorplan.windows:
@@ -250,25 +320,37 @@ class RoomSpace:
     def objects(self) -> list[HouseObject]:
         return [p.obj for p in self.placed]
 
+    def _memo(self) -> dict[object, object]:
+        """Arrays derived from ``placed``, kept while the list holds the same objects."""
+        held, memo = self._cache
+        if len(held) != len(self.placed) or any(a is not b for a, b in zip(held, self.placed, strict=True)):
+            self._cache = (list(self.placed), {})
+        return self._cache[1]
+
     def near(self, lo: np.ndarray, hi: np.ndarray) -> list[Placed]:
         """Placed objects whose footprint's bounding box meets the box ``lo``-``hi`` (2,)."""
         if not self.placed:
             return []
-        c = np.stack([p.corners for p in self.placed])
-        keep = np.all(_cmin(c) <= hi, 1) & np.all(_cmax(c) >= lo, 1)
+        memo = self._memo()
+        if "bounds" not in memo:
+            c = np.stack([p.corners for p in self.placed])
+            memo["bounds"] = (_cmin(c), _cmax(c))
+        cmin, cmax = cast(tuple[np.ndarray, np.ndarray], memo["bounds"])
+        keep = np.all(cmin <= hi, 1) & np.all(cmax >= lo, 1)
         return [self.placed[i] for i in np.flatnonzero(keep)]
 
     def _arrays(self, layer: bool = False) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Corners, bottoms and tops of the placed objects (``layer``: of the layers only,
         else of all but the layers)."""
-        placed = [p for p in self.placed if p.layer == layer]
-        if not placed:
-            return np.zeros((0, 4, 2)), np.zeros(0), np.zeros(0)
-        return (
-            np.stack([p.corners for p in placed]),
-            np.array([p.z0 for p in placed]),
-            np.array([p.z1 for p in placed]),
-        )
+        memo = self._memo()
+        if ("arrays", layer) not in memo:
+            placed = [p for p in self.placed if p.layer == layer]
+            memo["arrays", layer] = (np.zeros((0, 4, 2)), np.zeros(0), np.zeros(0)) if not placed else (
+                np.stack([p.corners for p in placed]),
+                np.array([p.z0 for p in placed]),
+                np.array([p.z1 for p in placed]),
+            )
+        return memo["arrays", layer]  # type: ignore[return-value]
 
     # ------------------------------------------------------------ validity
     def valid(
@@ -291,31 +373,63 @@ class RoomSpace:
         idx = np.nonzero(ok)[0]
         if idx.size:
             c = corners[idx]
-            pin = shapely.contains_xy(self.buf, c[..., 0].ravel(), c[..., 1].ravel()).reshape(-1, 4)
+            pin = self._in_buf(c[..., 0].ravel(), c[..., 1].ravel()).reshape(-1, 4)
             pin = pin[:, 0] & pin[:, 1] & pin[:, 2] & pin[:, 3]
-            sub = np.nonzero(pin)[0]
-            inner = np.zeros(len(idx), dtype=bool)
-            if sub.size:
-                inner[sub] = ~self._vertex_inside(c[sub])
+            if self.convex:
+                inner = pin
+            else:
+                sub = np.nonzero(pin)[0]
+                inner = np.zeros(len(idx), dtype=bool)
+                if sub.size:
+                    inner[sub] = ~self._vertex_inside(c[sub])
             ok[idx] = inner
         idx = np.nonzero(ok)[0]
         if idx.size and doors and len(self.door_zones):
-            ov = sat_overlap(corners[idx], self.door_zones)
-            ok[idx] = np.all(ov < -DOOR_MARGIN_M, 1)
-        idx = np.nonzero(ok)[0]
+            near_door = overlap_above(corners[idx], self.door_zones, -DOOR_MARGIN_M, inclusive=True,
+                                      amin=mins[idx], amax=maxs[idx])
+            ok[idx] = ~np.any(near_door, 1)
         idx = np.nonzero(ok)[0]
         if idx.size and floor and not layer and self.keep_clear:
             tall = z1[idx] > VIEW_CLEAR_M
             if tall.any():
-                ov = sat_overlap(corners[idx], np.stack(self.keep_clear))
-                ok[idx] = ~(tall & np.any(ov > EPS_COLLIDE_M, 1))
+                seen = overlap_above(corners[idx], np.stack(self.keep_clear), EPS_COLLIDE_M,
+                                     amin=mins[idx], amax=maxs[idx])
+                ok[idx] = ~(tall & np.any(seen, 1))
         idx = np.nonzero(ok)[0]
         pc, pz0, pz1 = self._arrays(layer)
         if idx.size and len(pc):
             zov = np.minimum(z1[idx, None], pz1[None]) - np.maximum(z0[idx, None], pz0[None])
-            ov = sat_overlap(corners[idx], pc)
-            ok[idx] = ~np.any((zov > EPS_COLLIDE_M) & (ov > EPS_COLLIDE_M), 1)
+            hit = overlap_above(corners[idx], pc, EPS_COLLIDE_M, amin=mins[idx], amax=maxs[idx],
+                                pairs=zov > EPS_COLLIDE_M)
+            ok[idx] = ~np.any(hit, 1)
         return ok
+
+    def _in_buf(self, x: np.ndarray, y: np.ndarray) -> np.ndarray:
+        """``shapely.contains_xy(self.buf, x, y)``; for an axis-aligned rectangle by comparing
+        coordinates, shapely asked only about points within a hair of its outline."""
+        if self.buf_box is None:
+            return shapely.contains_xy(self.buf, x, y)
+        x0, y0, x1, y1 = self.buf_box
+        out = (x > x0) & (x < x1) & (y > y0) & (y < y1)
+        e = _BOX_EDGE_M
+        edge = (x > x0 - e) & (x < x1 + e) & (y > y0 - e) & (y < y1 + e) & ~(
+            (x > x0 + e) & (x < x1 - e) & (y > y0 + e) & (y < y1 - e))
+        if edge.any():
+            out[edge] = shapely.contains_xy(self.buf, x[edge], y[edge])
+        return out
+
+    def in_outline_box(self, lo: np.ndarray, hi: np.ndarray) -> bool | None:
+        """Whether ``outline`` contains a footprint of bounding box ``lo``-``hi`` (2,), settled by
+        coordinates for an axis-aligned rectangular room; None: ask shapely."""
+        if self.outline_box is None:
+            return None
+        x0, y0, x1, y1 = self.outline_box
+        e = _BOX_EDGE_M
+        if lo[0] > x0 + e and lo[1] > y0 + e and hi[0] < x1 - e and hi[1] < y1 - e:
+            return True
+        if lo[0] < x0 - e or lo[1] < y0 - e or hi[0] > x1 + e or hi[1] > y1 + e:
+            return False
+        return None
 
     def _vertex_inside(self, c: np.ndarray) -> np.ndarray:
         centre = c.mean(1)

@@ -245,5 +245,5 @@ def _around_one(st: RoomState, m: ItemSpec, slots: list, label: str | None, anch
     size = m.size_m
     c = seat_candidates(slots)
     order = scoring.rank(st, c, size, "floor", st.options.member_noise, spacing=False)
-    choices = scoring.verified(st, c, order, size, "floor", None, k=st.options.member_nav_retries)
+    choices = scoring.verified_lazily(st, c, order, size, "floor", None, k=st.options.member_nav_retries)
     return st.commit_if_walkable(m, size, choices, "floor", "place_around", label, anchor_id)

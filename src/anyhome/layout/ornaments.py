@@ -79,7 +79,7 @@ def _beside_window(st: RoomState, item: ItemSpec) -> HouseObject | None:
     n = len(pts)
     c = Cands(np.asarray(pts), np.asarray(yaws), np.full(n, z), np.linspace(1.0, 0.9, n))
     order = scoring.rank(st, c, size, "wall", st.options.member_noise, spacing=False)
-    choices = scoring.verified(st, c, order, size, "wall", None, k=st.options.member_nav_retries)
+    choices = scoring.verified_lazily(st, c, order, size, "wall", None, k=st.options.member_nav_retries)
     panel = item.model_copy(update={"size_m": size})
     return st.commit_if_walkable(panel, size, choices, "wall", item.rule, None, None)
 

@@ -61,7 +61,7 @@ def place_single(st: RoomState, m: ItemSpec, params: dict[str, Any], ref: HouseO
     c, kind = candidates(st, m, m.rule, size, ref, prev_same, prev_wall, params=params, copy=copy, run=run)
     order = scoring.rank(st, c, size, kind, st.options.member_noise, spacing=False)
     k = st.options.member_nav_retries
-    choices = scoring.verified(st, c, order, size, kind, None, k=k)
+    choices = scoring.verified_lazily(st, c, order, size, kind, None, k=k)
     support = "wall" if kind == "wall" else "floor"
 
     def more() -> list[Choice]:

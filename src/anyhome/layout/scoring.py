@@ -4,18 +4,22 @@ verify the best with the contract's exact geometry; the room a whole group needs
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
 
 import numpy as np
 import shapely
+from shapely.geometry import Polygon
 
-from anyhome.geometry import boxes_collide, footprint_polygon, inside
+from anyhome.geometry import boxes_collide, footprint_corners, footprint_polygon, inside
 from anyhome.house import HouseObject
 from anyhome.layout.rules import REGISTRY, Cands
 from anyhome.layout.rules.base import Extent
 from anyhome.layout.state import Choice, RoomState
 from anyhome.plan.spec import GroupSpec
-from anyhome.space import rect_corners
+from anyhome.space import rect_corners, sat_overlap
+
+_APART_M = 1e-6
+"""Footprints separated by more than this need no exact collision test (m)."""
 
 
 def rank(st: RoomState, c: Cands, size: Sequence[float], kind: str, noise: float, spacing: bool,
@@ -45,6 +49,13 @@ def rank(st: RoomState, c: Cands, size: Sequence[float], kind: str, noise: float
 def verified(st: RoomState, c: Cands, order: np.ndarray, size: Sequence[float], kind: str,
              supporter: HouseObject | None, k: int = 1, min_sep_m: float = 0.0) -> list[Choice]:
     """Up to ``k`` candidates from ``order`` that pass the exact geometry checks."""
+    return list(verified_lazily(st, c, order, size, kind, supporter, k, min_sep_m))
+
+
+def verified_lazily(st: RoomState, c: Cands, order: np.ndarray, size: Sequence[float], kind: str,
+                    supporter: HouseObject | None, k: int = 1, min_sep_m: float = 0.0) -> Iterator[Choice]:
+    """:func:`verified`'s choices, each checked when asked for (the same choices as long as
+    the room is the same whenever one is asked for)."""
     out: list[Choice] = []
     for i in order[: st.options.verify_factor * k]:
         ch = Choice(c.xy[i].copy(), float(c.yaw[i]), float(c.z[i]))
@@ -55,30 +66,48 @@ def verified(st: RoomState, c: Cands, order: np.ndarray, size: Sequence[float], 
             continue
         if exact_ok(st, ch, size, kind, supporter):
             out.append(ch)
+            yield ch
             if len(out) >= k:
-                break
-    return out
+                return
 
 
 def exact_ok(st: RoomState, ch: Choice, size: Sequence[float], kind: str, supporter: HouseObject | None) -> bool:
-    """The contract's own checks (anyhome.geometry), as the evaluator runs them."""
+    """The contract's own checks (anyhome.geometry), as the evaluator runs them (shapely asked
+    only where coordinates do not settle them: a rectangular room, boxes apart)."""
     pos = (ch.xy[0], ch.xy[1], ch.z)
-    fp = footprint_polygon(pos, size, ch.yaw)
-    if not st.space.outline.contains(fp):
+    sp = st.space
+    corners = footprint_corners(pos, size, ch.yaw)
+    lo, hi = corners.min(0), corners.max(0)
+    fp: Polygon | None = None
+    inside_box = sp.in_outline_box(lo, hi)
+    if inside_box is None:
+        fp = Polygon(corners)
+        if not sp.outline.contains(fp):
+            return False
+    elif not inside_box:
         return False
     if supporter is not None:
+        fp = Polygon(corners) if fp is None else fp
         sfp = footprint_polygon(supporter.position, supporter.size, supporter.yaw)
         if not inside(sfp, fp):
             return False
     if kind != "top":
-        for zone in st.space.zone_polys:
+        for zone, zlo, zhi in zip(sp.zone_polys, sp.zone_lo, sp.zone_hi, strict=True):
+            if np.any(zlo > hi) or np.any(zhi < lo):
+                continue  # bounding boxes apart: no intersection
+            fp = Polygon(corners) if fp is None else fp
             if fp.intersects(zone) and fp.intersection(zone).area > 1e-6:
                 return False
-    lo, hi = np.min(fp.exterior.coords, 0), np.max(fp.exterior.coords, 0)
-    for p in st.space.near(lo, hi):
-        o = p.obj
-        if boxes_collide(pos, size, ch.yaw, o.position, o.size, o.yaw):
-            return False
+    near = sp.near(lo, hi)
+    if near:
+        # footprints a clear gap apart cannot collide (their shrunk polygons are further apart)
+        gap = sat_overlap(corners[None], np.stack([p.corners for p in near]))[0]
+        for p, g in zip(near, gap, strict=True):
+            o = p.obj
+            if g < -_APART_M:
+                continue
+            if boxes_collide(pos, size, ch.yaw, o.position, o.size, o.yaw):
+                return False
     return True
 
 

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import re
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -12,7 +12,7 @@ from shapely.geometry import Polygon
 from anyhome.house import Dropped, Floorplan, HouseObject, Room
 from anyhome.layout.options import LayoutOptions
 from anyhome.layout.rules import wrap
-from anyhome.navgrid import NavGrid
+from anyhome.navgrid import NavGrid, NavState
 from anyhome.plan.spec import ItemSpec, RoomSpec
 from anyhome.space import Placed, RoomSpace, Wall, nav_blocks, rect_corners, walked_up_to
 
@@ -40,6 +40,9 @@ class Snapshot:
     n_dropped: int
     n_keep_clear: int = 0
     n_waived: int = 0
+    placed: list[Placed] | None = None
+    """The placed objects then, and the walkways with them: restored without rebuilding."""
+    nav: NavState | None = None
 
 
 @dataclass
@@ -73,7 +76,7 @@ class RoomState:
     # ------------------------------------------------------------ bookkeeping
     def snapshot(self) -> Snapshot:
         return Snapshot(len(self.space.placed), dict(self.counters), len(self.dropped), len(self.space.keep_clear),
-                        len(self.nav.waived))
+                        len(self.nav.waived), list(self.space.placed), self.nav.state())
 
     def restore(self, snap: Snapshot) -> None:
         del self.space.placed[snap.n_placed:]
@@ -81,7 +84,12 @@ class RoomState:
         del self.dropped[snap.n_dropped:]
         self.counters = dict(snap.counters)
         del self.nav.waived[snap.n_waived:]
-        self.nav.set_blocked(self.space.placed)
+        then = snap.placed
+        if snap.nav is not None and then is not None and len(then) == len(self.space.placed) and all(
+                a is b for a, b in zip(then, self.space.placed, strict=True)):
+            self.nav.load(snap.nav)  # the same objects: the walkways as they were
+        else:
+            self.nav.set_blocked(self.space.placed)
 
     def drop(self, name: str, reason: str, copies: int = 1) -> None:
         self.dropped.extend(self.dropped_entry(name, reason) for _ in range(copies))
@@ -142,18 +150,19 @@ class RoomState:
             self.nav.waived.extend(self.nav.unreached() or [])
         return obj, cost
 
-    def commit_if_walkable(self, item: ItemSpec, size: Sequence[float], choices: list[Choice], support: str,
+    def commit_if_walkable(self, item: ItemSpec, size: Sequence[float], choices: Iterable[Choice], support: str,
                            rule: str, group: str | None, anchor: str | None,
                            more: Callable[[], list[Choice]] | None = None) -> HouseObject | None:
         """The first of ``choices`` that keeps every walkway open and every floor object
         reachable, itself included, committed; when none does, the same among ``more()``
         (a longer list that starts with ``choices``); else the one that keeps the walkways
         open and leaves the fewest earlier objects, then itself, out of reach; None if none
-        keeps the walkways open."""
+        keeps the walkways open. ``choices`` may be checked lazily
+        (:func:`~anyhome.layout.scoring.verified_lazily`): each is taken with the room as it was."""
         best: tuple[tuple[int, int], Choice] | None = None
         tried = 0
-        for batch in (choices, more):
-            todo = batch if isinstance(batch, list) else (batch()[tried:] if batch is not None else [])
+        for stage in range(2):
+            todo: Iterable[Choice] = choices if stage == 0 else (more()[tried:] if more is not None else [])
             for ch in todo:
                 tried += 1
                 snap = self.snapshot()
