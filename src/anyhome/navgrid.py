@@ -26,7 +26,13 @@ import shapely
 from scipy import ndimage
 from shapely.geometry import LineString
 
-from anyhome.geometry import AGENT_RADIUS_M, NAV_CELL_M, WALL_INSET_CELLS, opening_zone
+from anyhome.geometry import (
+    AGENT_RADIUS_M,
+    NAV_CELL_M,
+    WALL_INSET_CELLS,
+    footprint_polygon,
+    opening_zone,
+)
 from anyhome.house import Floorplan
 from anyhome.space import Placed, RoomSpace, room_polygon
 
@@ -117,6 +123,12 @@ class NavGrid:
                     inner = others[rid].buffer(-inset, join_style="mitre")
                     free |= self._raster(opening_zone(d.segment).intersection(inner))
             self.door_near.append(self._raster(LineString(d.segment).buffer(near)))
+        if floorplan.levels:  # a flight standing in the room is walked round, as the evaluator does
+            from anyhome.floorplan.levels import stairs_objects
+
+            for o in stairs_objects(floorplan):
+                if o.room == space.room.id:
+                    free &= ~self._raster(footprint_polygon(o.position, o.size, o.yaw))
         self.base_free = free
         self._door_idx = [np.flatnonzero(m) for m in self.door_near]
         self._room_idx = np.flatnonzero(self.room_mask)

@@ -72,8 +72,10 @@ def test_birdseye_shows_the_house(rendered, house) -> None:
     img = read_png(out / "birdseye.png").astype(float)
     inside = _footprint_mask(house, meta["images"]["birdseye"])
     assert 0.1 < inside.mean() < 0.95  # the house fills a good part of the frame
-    mean_in, mean_out = img[inside].mean(axis=0), img[~inside].mean(axis=0)
-    assert np.linalg.norm(mean_in - mean_out) > 15.0
+    # most of the footprint is drawn in other colours than the ground around it (a mean
+    # colour comparison failed for a house whose walls and floors average to the ground's)
+    ground = np.median(img[~inside], axis=0)
+    assert (np.linalg.norm(img[inside] - ground, axis=1) > 15.0).mean() > 0.5
     # the footprint region holds many colours (floors, furniture), the ground few
     assert len(np.unique(img[inside].astype(np.uint8), axis=0)) > 3 * len(
         np.unique(img[~inside].astype(np.uint8), axis=0)) or img[inside].std() > img[~inside].std()

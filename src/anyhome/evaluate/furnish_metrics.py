@@ -56,9 +56,8 @@ from anyhome import geometry
 from anyhome.assets.sets import set_key
 from anyhome.evaluate.kitchen_metrics import kitchen_figures
 from anyhome.evaluate.polygons import is_usable, room_polygon
-from anyhome.evaluate.relations import house_relations, met_by_kind
+from anyhome.evaluate.relations import house_relations, met_by_kind, planned_rooms
 from anyhome.house import House, HouseObject, is_habitable
-from anyhome.plan.spec import KEY_PRIORITY
 from anyhome.tags import is_floor_layer
 
 WALL_GAP_M = 0.15
@@ -177,25 +176,21 @@ def _finite(o: HouseObject) -> bool:
     return all(math.isfinite(v) for v in vals) and all(v > 0 for v in o.size)
 
 
-def _planned(plan: dict[str, Any], host: dict[str, str]) -> tuple[dict[str, dict[str, int]], int]:
-    """(room id -> key item name -> copies, planned floor-layer copies) from a plan dict."""
+def _planned(plan: Any, host: dict[str, str]) -> tuple[dict[str, dict[str, int]], int]:
+    """(room id -> key item name -> copies, planned floor-layer copies) from a plan dict
+    (what the models refuse in it left out: :func:`~anyhome.evaluate.relations.planned_rooms`)."""
     key: dict[str, dict[str, int]] = {}
     layers = 0
-    for rs in plan.get("rooms", []):
-        rid = host.get(rs.get("id", ""), rs.get("id", ""))
-        for g in rs.get("groups", []):
-            rep = int(g.get("repeat", 1))
-            items = [g.get("anchor") or {}, *(g.get("members") or [])]
-            for i, it in enumerate(items):
-                n = rep * int(it.get("count", 1))
-                if "floor_layer" in (it.get("tags") or []):
+    for rid, (groups, ornaments) in planned_rooms(plan, host).items():
+        for g in groups:
+            for i, it in enumerate([g.anchor, *g.members]):
+                n = g.repeat * it.count
+                if is_floor_layer(it.tags):
                     layers += n
-                if i == 0 and (g.get("required") or int(g.get("priority", 9)) <= KEY_PRIORITY):
+                if i == 0 and g.key:
                     names = key.setdefault(rid, {})
-                    names[it.get("name", "")] = names.get(it.get("name", ""), 0) + n
-        for it in rs.get("ornaments", []):
-            if "floor_layer" in (it.get("tags") or []):
-                layers += int(it.get("count", 1))
+                    names[it.name] = names.get(it.name, 0) + n
+        layers += sum(o.count for o in ornaments if is_floor_layer(o.tags))
     return key, layers
 
 

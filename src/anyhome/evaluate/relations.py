@@ -29,6 +29,7 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 import shapely
@@ -416,23 +417,42 @@ def met_by_kind(relations: Sequence[Relation]) -> dict[str, tuple[int, int]]:
     return out
 
 
+def planned_rooms(plan: Any, host: dict[str, str]) -> dict[str, tuple[list[GroupSpec], list[ItemSpec]]]:
+    """Room id -> (groups, ornaments) of a plan dict as house.json records it, each planned
+    room under the id of the room holding it (``host``: planned id -> open-plan room id);
+    anything the current models refuse (a hand-edited or damaged plan) is left out."""
+    out: dict[str, tuple[list[GroupSpec], list[ItemSpec]]] = {}
+    rooms = plan.get("rooms") if isinstance(plan, dict) else None
+    for rs in rooms if isinstance(rooms, list) else []:
+        rid = rs.get("id") if isinstance(rs, dict) else None
+        if not isinstance(rid, str):
+            continue
+        groups, ornaments = out.setdefault(host.get(rid, rid), ([], []))
+        groups += [g for g in (_valid(GroupSpec, d) for d in _list(rs.get("groups"))) if isinstance(g, GroupSpec)]
+        ornaments += [o for o in (_valid(ItemSpec, d) for d in _list(rs.get("ornaments"))) if isinstance(o, ItemSpec)]
+    return out
+
+
+def _list(v: Any) -> list[Any]:
+    return v if isinstance(v, list) else []
+
+
+def _valid(model: type[GroupSpec] | type[ItemSpec], data: Any) -> GroupSpec | ItemSpec | None:
+    try:
+        return model.model_validate(data)
+    except ValidationError:
+        return None
+
+
 def house_relations(house: House) -> list[Relation]:
     """Every relation the plan recorded in ``house`` (``house.plan``) states, checked room
     by room (an open-plan room with the groups of every planned room it holds); a group
     the plan records in a form the current rules refuse is left out."""
-    plan = house.plan or {}
     host = {h: r.id for r in house.rooms for h in r.merged}
-    groups: dict[str, list[GroupSpec]] = {}
-    for rs in plan.get("rooms", []) if isinstance(plan, dict) else []:
-        rid = host.get(rs.get("id", ""), rs.get("id", ""))
-        for g in rs.get("groups", []):
-            try:
-                groups.setdefault(rid, []).append(GroupSpec.model_validate(g))
-            except ValidationError:
-                continue
+    planned = planned_rooms(house.plan, host)
     out: list[Relation] = []
     for r in house.rooms:
-        if r.id in groups:
+        if r.id in planned and planned[r.id][0]:
             objs = [o for o in house.objects if o.room == r.id]
-            out += room_relations(groups[r.id], objs, r.polygon)
+            out += room_relations(planned[r.id][0], objs, r.polygon)
     return out
