@@ -45,7 +45,7 @@ def place_group_copy(st: RoomState, g: GroupSpec, copy: int, prev: HouseObject |
     if kind == "floor":
         c = scoring.run_room_bonus(st, g, c, rule, prev is None)
     run_on = prev is not None and REGISTRY[rule].continues  # the copy continues a run: no jump
-    hangs = any(m.rule == "place_on_wall" and m.target in (None, item.name) for m in g.members)
+    hangs = bool(anchored(g, "place_on_wall"))
     order = scoring.rank(st, c, size, kind, o.member_noise if run_on else o.noise, spacing=not run_on,
                          avoid_windows=hangs)
     choices = scoring.verified(st, c, order, size, kind, None, k=tries, min_sep_m=o.anchor_min_sep_m)
@@ -106,10 +106,9 @@ def compromises(st: RoomState, g: GroupSpec, label: str, anchor: HouseObject) ->
     the last relaxation of ``place_beside`` (against a wall near it); a wall item not
     centred behind an anchor that stands against a wall (a window in the way); a piece
     of a run along the walls that jumped (:func:`~.rules.place_next_wall.jumps`)."""
-    names = {m.name for m in g.members if m.rule == "place_front" and m.params.get("to_wall")
-             and m.target in (None, g.anchor.name)}
-    beside = {m.name for m in g.members if m.rule == "place_beside" and m.target in (None, g.anchor.name)}
-    over = {m.name for m in g.members if m.rule == "place_on_wall" and m.target in (None, g.anchor.name)}
+    names = {m.name for m in g.members if m.name in anchored(g, "place_front") and m.params.get("to_wall")}
+    beside = anchored(g, "place_beside")
+    over = anchored(g, "place_on_wall")
     runs = REGISTRY[anchor.rule].runs_along_wall and any(m.rule == "place_next_wall" for m in g.members)
     if not names and not beside and not over and not runs:
         return 0
@@ -119,6 +118,11 @@ def compromises(st: RoomState, g: GroupSpec, label: str, anchor: HouseObject) ->
             + sum(1 for o in mine if o.name in beside and not beside_rule.stands_beside(o, anchor))
             + sum(1 for o in mine if o.name in over and not on_wall_rule.centred_behind(o, anchor))
             + (next_wall_rule.jumps([anchor, *(o for o in mine if o.rule == "place_next_wall")]) if runs else 0))
+
+
+def anchored(g: GroupSpec, rule: str) -> set[str]:
+    """Names of the members of ``g`` placed by ``rule`` relative to its anchor."""
+    return {m.name for m in g.members if m.rule == rule and m.target in (None, g.anchor.name)}
 
 
 def drop_group(st: RoomState, g: GroupSpec, reason: str) -> None:

@@ -17,6 +17,7 @@ import shapely
 from anyhome.house import HouseObject
 from anyhome.layout import arrangements, groups, scoring
 from anyhome.layout.kitchen_plan import RunShape, Slot, plan_run, run_shapes, shape_order
+from anyhome.layout.rules import REGISTRY
 from anyhome.layout.rules.base import front_dir, on_wall
 from anyhome.layout.state import Choice, RoomState
 from anyhome.plan.spec import GroupSpec, ItemSpec
@@ -82,7 +83,7 @@ def place_kitchen(st: RoomState, g: GroupSpec) -> None:
     cabinets: list[ItemSpec] = []
     for m in g.members:
         role = ROLES.get(m.category)
-        floor = m.rule not in ("place_top", "place_on_wall") and m.target in (None, g.anchor.name)
+        floor = REGISTRY[m.rule].kind == "floor" and m.target in (None, g.anchor.name)
         if role and floor and role not in roles:
             roles[role] = m
         elif m.category == "counter" and floor:

@@ -294,10 +294,9 @@ def apply_mention(kb: KnowledgeBase, m: Mention, groups: list[Group], ornaments:
     # a one-word name ("table") may stand for any table; "bunk bed" only for bunk beds
     g, item = _find(groups, category, head, loose=" " not in (m.key or m.name))
     named_group = _named_template(kb, m)
-    if g is not None and named_group is not None and g["name"] != named_group:
-        word = m.name.split()[-1]
-        if word not in _words(item["name"]) if item is not None else True:
-            g = None  # "an island": the template named so, not the kitchen run's counter
+    if (g is not None and item is not None and named_group not in (None, g["name"])
+            and m.name.split()[-1] not in _words(item["name"])):
+        g = None  # "an island": the template named so, not the kitchen run's counter
     if g is None:
         d = next((u for u in unused if _matches(u_anchor(kb, u), category, head)), None)
         if d is None and named_group is not None:

@@ -20,6 +20,7 @@ import numpy as np
 
 from anyhome.errors import PlanError
 from anyhome.house import Floorplan, is_habitable
+from anyhome.layout.rules import REGISTRY
 from anyhome.plan import furnish as fu
 from anyhome.plan.appearance import Look, choose_look, item_material, room_materials
 from anyhome.plan.heights import RoomHeight, room_heights
@@ -468,7 +469,7 @@ def _fits_tallest(height: RoomHeight, groups: list[GroupSpec], open_air: bool) -
     if open_air:
         return height
     tallest = max((it.size_m[2] for g in groups for it in [g.anchor, *g.members]
-                   if it.rule not in ("place_top", "place_on_wall")), default=0.0)
+                   if REGISTRY[it.rule].kind == "floor"), default=0.0)
     need = min(MAX_PLANNED_HEIGHT_M, math.ceil((tallest + HEADROOM_M) * 20) / 20)  # up to 5 cm
     return RoomHeight(need, height.ceiling) if need > height.height_m else height
 
