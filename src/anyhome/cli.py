@@ -173,8 +173,8 @@ def _print_summary(house, files, timings: dict[str, float], total: float) -> Non
     if house.dropped:
         print(f"Dropped {len(house.dropped)} item(s) that did not fit:")
         for d in sorted(house.dropped, key=lambda d: not d.key)[:10]:  # asked-for items first
-            key = "Warning: asked for, " if d.key else ""
-            print(f"  {key}{_shown(d.room)}: {_shown(d.name)} ({_shown(d.reason)})")
+            key = "  [a key item: asked for, or what the room is for]" if d.key else ""
+            print(f"  {_shown(d.room)}: {_shown(d.name)} ({_shown(d.reason)}){key}")
         if len(house.dropped) > 10:
             print(f"  ... and {len(house.dropped) - 10} more (see house.json 'dropped')")
     for w in house.warnings:

@@ -100,6 +100,21 @@ def test_key_group_is_kept_by_making_room():
     assert all(not d.key for d in res.dropped)
 
 
+@pytest.mark.parametrize("seed", range(3))
+def test_members_of_other_key_groups_give_way_to_a_key_anchor(seed):
+    """A cloakroom too small for its bench, the bench's coat rack and the boot shelf keeps
+    the shelf (what the room is for) and leaves the coat rack out, saying why."""
+    fp = single_room(rect(0, 0, 1.7, 1.4), door=((0.1, 0.0), (1.0, 0.0)))
+    rack = item("coat rack", "shelf", (0.8, 0.3, 1.8), "place_beside", params={"side": "left"}, tags=["storage"])
+    bench = group("bench", item("bench", "bench", (1.1, 0.4, 0.45), "place_wall", tags=["seat"]), [rack], priority=0)
+    shelf = group("shelf", item("boot shelf", "shelf", (1.0, 0.35, 1.2), "place_wall", tags=["storage"]), priority=0)
+    res = layout_house(house_spec({"r1": [bench, shelf]}), fp, np.random.default_rng(seed))
+    assert check_valid(fp, res.objects) == []
+    assert sorted(o.name for o in res.objects) == ["bench", "boot shelf"]
+    assert [(d.name, d.key) for d in res.dropped] == [("coat rack", False)]
+    assert "make room" in res.dropped[0].reason
+
+
 def test_key_item_that_cannot_fit_is_marked():
     fp = single_room(rect(0, 0, 2.0, 2.0), door=((0.2, 0.0), (1.1, 0.0)))
     bed = group("bed", item("bed", "bed", (1.8, 2.1, 0.5), "place_wall", tags=["bed"]), priority=0)

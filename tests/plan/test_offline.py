@@ -195,3 +195,28 @@ def test_a_modifier_does_not_remap_a_known_room():
     room = next(r for r in spec.rooms if r.name == "eucalyptus steam room")
     assert not any(r.name == "steam room" for r in spec.rooms)
     assert any("sauna" in it.name or "bench" in it.name for g in room.groups for it in [g.anchor, *g.members])
+
+
+def test_a_programs_room_word_is_read_as_the_building_reads_it():
+    """"Three practice rooms" in a music conservatory are music rooms (the program's
+    practice rooms), not yoga rooms, and no cap on gyms is reported."""
+    h = plan("A music conservatory with a recital hall and three practice rooms, each with an upright piano.")
+    practice = [r for r in h.rooms if r.name.startswith("practice room")]
+    assert len(practice) == 3
+    assert {r.type for r in practice} == {"studio"}
+    assert all(any(g.anchor.name == "upright piano" for g in r.groups) for r in practice)
+    assert not any("gym" in w for w in h.warnings)
+
+
+def test_a_nook_is_small_whatever_it_reads_as():
+    """"A meditation nook" is furnished as a meditation room but drawn at a nook's size."""
+    from anyhome.plan.knowledge import knowledge_base
+    from anyhome.plan.parse import parse
+    from anyhome.plan.program import plan_rooms
+
+    kb = knowledge_base()
+    parsed = parse("A one-bedroom apartment with a meditation nook.", kb)
+    slots, _ = plan_rooms(kb, parsed, "apartment", np.random.default_rng(0), [])
+    nook = next(s for s in slots if s.name == "meditation nook")
+    assert nook.furnish == "meditation_room"
+    assert nook.area_range == tuple(kb.raw("rooms")["small_heads"]["nook"])

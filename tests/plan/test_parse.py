@@ -158,3 +158,22 @@ def test_household_members_are_added_up():
 def test_the_building_phrase_keeps_one_plain_modifier():
     assert parse("A sushi restaurant with a counter.").building_phrase == "sushi restaurant"
     assert parse("a two-bedroom apartment").building_phrase == "apartment"
+
+
+def test_holding_puts_objects_in_the_room():
+    """"A recital hall holding a grand piano and 30 audience chairs": the chairs are the
+    hall's, not a classroom's."""
+    p = parse("A music conservatory with a recital hall holding a grand piano and 30 audience chairs in rows.")
+    hall = next(i for i, m in enumerate(p.rooms) if m.key == "recital hall")
+    chairs = next(m for m in p.objects if m.name == "audience chair")
+    assert (chairs.count, chairs.room) == (30, hall)
+
+
+@pytest.mark.parametrize("text", ["A fire station with an apparatus bay for two engines.",
+                                  "A fire station with an apparatus bay for two fire engines and a kitchen."])
+def test_what_a_room_is_for_is_not_a_room(text):
+    """"A bay for two engines": the engines are what the bay holds, not two rooms."""
+    p = parse(text)
+    assert [m.key for m in p.rooms][:1] == ["apparatus bay"] and all("engine" not in m.name for m in p.rooms)
+    engines = [m for m in p.objects if "engine" in m.name]
+    assert [(m.key, m.count) for m in engines] == [("fire engine", 2)]

@@ -89,8 +89,10 @@ def furnish_room(st: RoomState) -> None:
 
     When a key group's anchor (:attr:`GroupSpec.key`) is dropped, the room is furnished again
     making room for it: key groups first, the others after; then with each key anchor
-    dropped so far (in any of these furnishings) smaller (:data:`SHRINK_SCALES`). The furnishing that drops the fewest key
-    anchors, then the fewest items, is kept; a key anchor is dropped only when none fits."""
+    dropped so far (in any of these furnishings) smaller (:data:`SHRINK_SCALES`); last, with
+    the other key groups' members left out (they go before a key anchor does). The
+    furnishing that drops the fewest key anchors, then the fewest items, is kept; a key
+    anchor is dropped only when none fits."""
     _make_room(st)
     keys = {g.anchor.name for g in st.spec.groups if g.key}
     st.dropped[:] = [d.model_copy(update={"key": True}) if d.name in keys else d for d in st.dropped]
@@ -116,6 +118,13 @@ def _make_room(st: RoomState) -> None:
             best = now
         if now[0] == 0:
             return
+    # last: the members of the other key groups give way (a coat rack for the boot shelf)
+    st.restore(start)
+    keep = {i for i in keys_first if st.spec.groups[i].key and i not in missing}
+    _furnish(st, keys_first, {i: SHRINK_SCALES[-1] for i in missing}, bare=keep)
+    now = _outcome(st, len(_key_dropped(st)))
+    if now[:2] < best[:2]:
+        best = now
     st.restore(start)
     _, _, st.space.placed[:], st.dropped[:], st.space.keep_clear[:], st.counters, st.nav.waived[:] = best
     st.nav.set_blocked(st.space.placed)
@@ -133,11 +142,17 @@ def _key_dropped(st: RoomState) -> list[int]:
     return [i for i, g in enumerate(st.spec.groups) if g.key and g.anchor.name in gone]
 
 
-def _furnish(st: RoomState, order: list[int], scales: dict[int, float]) -> None:
+def _furnish(st: RoomState, order: list[int], scales: dict[int, float], bare: frozenset[int] | set[int] = frozenset()) -> None:
+    """The groups in ``order``; ``scales``: a footprint scale for some anchors; ``bare``:
+    groups placed without their members, which are dropped to make room."""
     rugs = []
     zones = []
     for i in order:
         g = st.spec.groups[i]
+        if i in bare and g.members:
+            for m in g.members:
+                st.drop(m.name, "left out to make room for what the room is for", copies=g.repeat * m.count)
+            g = g.model_copy(update={"members": []})
         if scales.get(i, 1.0) != 1.0:
             w, d, h = g.anchor.size_m
             s = scales[i]

@@ -249,6 +249,11 @@ class RoomsFile(_Model):
     types: dict[str, RoomType]
     names: dict[str, RoomName]
     open_air: OpenAirWords | None = None
+    small_heads: dict[str, AreaRange] = Field(
+        default_factory=dict,
+        description="a room name's last word that makes it a small room, and its area range "
+                    "(a 'meditation nook' read as a meditation room is a nook's size)",
+    )
 
     @model_validator(mode="after")
     def _open_air_types(self) -> RoomsFile:

@@ -138,11 +138,13 @@ def first_noun_phrase(text: str, tokens: list[tuple[str, int, int]]) -> tuple[st
     return " ".join(w for w, _, _ in words), words[0][1], words[-1][2]
 
 
-def classify(phrase: str, kb: KnowledgeBase | None = None) -> tuple[str, Match | None]:
+def classify(phrase: str, kb: KnowledgeBase | None = None, room_ok: bool = True) -> tuple[str, Match | None]:
     """Whether an unknown list phrase names a room or an object, and its concept.
 
     A phrase is a room when its room match clears the threshold and beats its object
     match by ``ROOM_MARGIN`` ("a home theater", "a sauna"); otherwise an object.
+    ``room_ok=False``: the context says it is what a room holds ("a bay for two
+    engines"), so an object whatever it matches.
     """
     mo = _best(nearest("objects", phrase, with_score=True, kb=kb), None)
     mr = _best(nearest("rooms", phrase, with_score=True, kb=kb), None)
@@ -152,7 +154,7 @@ def classify(phrase: str, kb: KnowledgeBase | None = None) -> tuple[str, Match |
         ho = nearest("objects", head, with_score=True, kb=kb)
         mr = _best(mr, hr)
         mo = _best(mo, ho)
-    if mr is not None and mr.score >= max(threshold("rooms", kb=kb), LIST_ROOM_MIN) and (mo is None or mr.score > mo.score + ROOM_MARGIN):
+    if room_ok and mr is not None and mr.score >= max(threshold("rooms", kb=kb), LIST_ROOM_MIN) and (mo is None or mr.score > mo.score + ROOM_MARGIN):
         return "room", mr
     return "object", mo if mo is not None and mo.score >= threshold("objects", kb=kb) else None
 

@@ -69,7 +69,7 @@ EACH_OPENER = re.compile(r"^\s*(?:,\s*)?(?:each|every one|all)(?: of them)?\s*(?
 
 CONTEXT_OPENERS = re.compile(
     r"^\s*(?:,\s*)?(?:(?:each|every one|all)(?: of them)?\s*(?:,\s*)?)?(?:with|without|full of|filled with|lined with|packed with|featuring|containing|"
-    r"that has|which has|having|where|equipped with|furnished with)\b"
+    r"that has|which has|having|where|equipped with|furnished with|holding|housing|that holds|which holds|that houses|which houses)\b"
 )
 """Text right after a room mention that makes the following objects belong to it."""
 
@@ -931,7 +931,7 @@ def _open_vocabulary(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[
             continue
         head, plural = _singular(words[-1])
         name = " ".join([*words[:-1], head])
-        kind, mo = ov.classify(name, kb)
+        kind, mo = ov.classify(name, kb, room_ok=not _HELD_FOR.search(text[:s]))
         if kind == "room" and mo is not None:
             m = Mention("room", "", name, s, e, plural=plural, concept=mo.key, open_vocab=True)
             _look_back(m, text, tokens, spans, keep_words=False, kb=kb)
@@ -951,6 +951,10 @@ def _open_vocabulary(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[
     mentions.sort(key=lambda m: m.start)
     return mentions
 
+
+_HELD_FOR = re.compile(r"\bfor (?:up to )?(?:\d+|a|an|one|two|three|four|five|six|seven|eight|nine|ten|twelve)(?: \w+)?\s*$")
+"""Text before a phrase that makes it what a room holds, not a room: "an apparatus bay
+for two (fire) engines", "a garage for three cars"."""
 
 NOT_NOUNS = frozenset("full empty upstairs downstairs outside inside below above nearby too only alone together overlooking".split())
 """Words after a room word that are not a noun ("a studio full of easels", "a loft upstairs")."""

@@ -94,8 +94,12 @@ def _slot_from_mention(kb: KnowledgeBase, m: Mention, idx: int) -> Slot:
         info = {}
     else:
         t = info["type"] if info["type"] in ROOM_TYPES else "other"
-    area = info.get("area") or _type_info(kb, t)["area"]
     name = m.name if m.words or m.concept or not info.get("name") else info["name"]
+    own = (kb.raw("rooms")["names"].get(m.key) or {}).get("area") if m.key else None
+    small = (kb.raw("rooms").get("small_heads") or {}).get((m.name or "").split()[-1] if m.name else "")
+    if small is not None and own is None:  # "a meditation nook": a nook, read as a meditation room
+        info = {**info, "area": small}
+    area = info.get("area") or _type_info(kb, t)["area"]
     s = Slot(name, t, info.get("furnish", t), tuple(area), mention=idx, generic_name=False, size=m.size)
     s.area_from = "name" if info.get("area") else "type"
     if m.area_m2 is not None:  # "a 12 m2 bedroom": that area, whatever the norms and words say
@@ -151,7 +155,7 @@ def plan_rooms(kb: KnowledgeBase, parsed: Parsed, program: str | None, rng: np.r
         warnings.append(
             f"the text only rules out rooms ({', '.join(m.name for m in parsed.rooms)}); planned a {prog.get('building', 'home')} without them"
         )
-    asked = _asked_per_type(kb, parsed, fixed)
+    asked = _asked_per_type(kb, parsed, fixed, slots)
     total = _fill_total(kb, parsed, slots, prog, fixed, asked)
     _drop_negated(kb, parsed, slots)
     _cap(kb, slots, warnings, fixed, asked, total)
@@ -248,26 +252,37 @@ def _claim_mentions(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], fixed:
         n = min(n, MAX_COUNT)
         first: Slot | None = None  # more rooms than the program has copy the first one's furnishing
         for _ in range(n):
+            # "three practice rooms" in a music school: the program's practice rooms, as
+            # the building reads them (music rooms), not the word's own reading (a gym)
+            by_key = [s for s in slots if s.mention is None and s.key and s.key == _room_word(m.key)]
             same_name = [s for s in slots if s.mention is None and s.name in (proto.name, m.key)]
             # rooms of the catch-all type "other" are too unlike to stand in for each other
             same_type = [s for s in slots if s.mention is None and s.type == proto.type != "other"]
             same_set = [s for s in slots if s.mention is None and s.furnish == proto.furnish != "other"]
-            target = next(iter(same_name or same_set or same_type), None)
+            target = next(iter(by_key or same_name or same_set or same_type), None)
             if target is None:
                 like = first or proto
-                target = Slot(proto.name, like.type, like.furnish, like.area_range)
+                target = Slot(proto.name, like.type, like.furnish, like.area_range, key=like.key)
                 slots.append(target)
+            in_context = bool(target.key) and target.key == _room_word(m.key)
             target.mention = i
             target.size = proto.size
             target.optional = False
             target.name = proto.name
             target.generic_name = generic
-            if not generic or target.type != proto.type:
+            if not in_context and (not generic or target.type != proto.type):
+                # the word's own reading, unless the program gave it its building's
                 target.furnish, target.type = proto.furnish, proto.type
                 target.area_range, target.area_from = proto.area_range, proto.area_from
             elif proto.area_from == "stated":  # "a 30 m2 living room"
                 target.area_range, target.area_from = proto.area_range, proto.area_from
             first = first or target
+
+
+def _room_word(key: str | None) -> str:
+    """The word a room name is built on: "practice room(s)" -> "practice"."""
+    words = (key or "").split()
+    return " ".join(words[:-1]) if len(words) > 1 and words[-1] in ("room", "rooms") else (key or "")
 
 
 COUNTED_KEEPS = frozenset({"bedroom", "bathroom", "hallway", "entry", "other"})
@@ -328,14 +343,15 @@ def _apply_people(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], fixed: d
         slots.append(_slot_from_entry(kb, {"type": "bathroom", "name": "bathroom"}))
 
 
-def _asked_per_type(kb: KnowledgeBase, parsed: Parsed, fixed: dict[str, int]) -> dict[str, int]:
-    """Rooms of each type the text asked for, as written (before any cap)."""
+def _asked_per_type(kb: KnowledgeBase, parsed: Parsed, fixed: dict[str, int], slots: list[Slot]) -> dict[str, int]:
+    """Rooms of each type the text asked for, as written (before any cap), of the type
+    the room that claimed the words has (the program may read them in context)."""
     asked: dict[str, int] = {}
     for i, m in enumerate(parsed.rooms):
         if m.negated:
             continue
         if m.asked is not None and m.asked > 0:  # repeated mentions of one room are one room
-            t = _slot_from_mention(kb, m, i).type
+            t = next((s.type for s in slots if s.mention == i), None) or _slot_from_mention(kb, m, i).type
             asked[t] = max(asked.get(t, 0), m.asked)
     for t, n in fixed.items():
         asked[t] = max(asked.get(t, 0), n)
