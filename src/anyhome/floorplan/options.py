@@ -93,6 +93,10 @@ class FloorplanOptions:
     """Narrowest side of a small service room (bathroom, closet...)."""
     corridor_width_m: float = _opt(1.2, 0.5, 20.0)
     """Narrowest hallway."""
+    hub_min_side_m: float = _opt(2.2, 0.5, 20.0)
+    """Narrowest side of a non-hallway room with hub_min_doors doors or more (wall left for a bench)."""
+    hub_min_doors: int = _opt(4, 2, 100)
+    """Doors (the way out included) from which a room is held to hub_min_side_m."""
     min_side_leeway_cells: float = _opt(0.2, 0.0, 1.0)
     """Cells a room's span may fall short of its minimum side (grid rounding leeway)."""
     shared_wall_min_m: float = _opt(1.3, 0.5, 10.0)

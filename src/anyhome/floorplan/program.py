@@ -118,6 +118,8 @@ class Program:
         else:
             floor = opts.min_side_habitable_m if self.habitable(k) else opts.min_side_service_m
         norm = self.min_width_m[k] if self.min_width_m else 0.0
+        if self.types[k] not in CORRIDOR_TYPES and sum(k in link for link in self.links) >= opts.hub_min_doors:
+            floor = max(floor, opts.hub_min_side_m)
         return max(floor, norm)
 
     def max_aspect(self, k: int) -> float:
