@@ -12,6 +12,7 @@ from anyhome.layout import arrangements, placement, scoring
 from anyhome.layout.rules import REGISTRY, front_dir
 from anyhome.layout.rules import place_around as around_rule
 from anyhome.layout.rules import place_beside as beside_rule
+from anyhome.layout.rules import place_front as front_rule
 from anyhome.layout.rules import place_next_wall as next_wall_rule
 from anyhome.layout.rules import place_on_wall as on_wall_rule
 from anyhome.layout.rules.place_around import (
@@ -87,7 +88,7 @@ def try_choices(st: RoomState, g: GroupSpec, label: str, choices: list[Choice], 
         if best is None or (len(drops), unreached, bent) < best[:3]:
             best = (len(drops), unreached, bent, k)
         st.restore(snap)
-        if k == len(pool) - 1 and more is not None and best[1]:
+        if k == len(pool) - 1 and more is not None and (best[1] or best[2]):
             pool += more()[len(pool):]
             more = None
     if best is None:
@@ -102,22 +103,44 @@ def try_choices(st: RoomState, g: GroupSpec, label: str, choices: list[Choice], 
 
 def compromises(st: RoomState, g: GroupSpec, label: str, anchor: HouseObject) -> int:
     """Members of this copy placed by a fallback: a ``to_wall`` item (a TV stand) not on
-    the wall straight ahead of the anchor, facing it; an item beside the anchor placed by
+    the wall straight ahead of the anchor, facing it; copies in front of the anchor off
+    its axis (:data:`~.rules.place_front.CENTRED_TOL_M`); an item beside the anchor placed by
     the last relaxation of ``place_beside`` (against a wall near it); a wall item not
     centred behind an anchor that stands against a wall (a window in the way); a piece
     of a run along the walls that jumped (:func:`~.rules.place_next_wall.jumps`)."""
     names = {m.name for m in g.members if m.name in anchored(g, "place_front") and m.params.get("to_wall")}
+    front = anchored(g, "place_front")
     beside = anchored(g, "place_beside")
     over = anchored(g, "place_on_wall")
     runs = REGISTRY[anchor.rule].runs_along_wall and any(m.rule == "place_next_wall" for m in g.members)
-    if not names and not beside and not over and not runs:
+    if not front and not beside and not over and not runs:
         return 0
     back = front_dir(anchor.yaw)
     mine = [o for o in st.space.objects if o.group == label]
+    centred = [[o for o in mine if o.name == n] for n in front]
     return (sum(1 for o in mine if o.name in names and float(front_dir(o.yaw) @ back) > -0.99)
-            + sum(1 for o in mine if o.name in beside and not beside_rule.stands_beside(o, anchor))
+            + sum(1 for objs in centred if objs and front_rule.off_centre_m(objs, anchor) > front_rule.CENTRED_TOL_M)
+            + beside_compromises(g, [o for o in mine if o.name in beside], anchor)
             + sum(1 for o in mine if o.name in over and not on_wall_rule.centred_behind(o, anchor))
             + (next_wall_rule.jumps([anchor, *(o for o in mine if o.rule == "place_next_wall")]) if runs else 0))
+
+
+def beside_compromises(g: GroupSpec, objs: list[HouseObject], anchor: HouseObject) -> int:
+    """Copies of ``g``'s members beside ``anchor`` (``objs``) that are not where asked: placed
+    by the last relaxation of ``place_beside``, on the other side than the one asked for,
+    or, for two copies on ``both`` sides, not a symmetric pair
+    (:func:`~.rules.place_beside.pair_matches`: one counted)."""
+    bent = 0
+    for m in g.members:
+        if m.rule != "place_beside" or m.target not in (None, g.anchor.name):
+            continue
+        mine = [o for o in objs if o.name == m.name]
+        side = beside_rule.Params.model_validate(m.params).side
+        bent += sum(1 for o in mine if not beside_rule.stands_beside(o, anchor)
+                    or (side != "both" and beside_rule.side_of(o, anchor) != side))
+        if side == "both" and len(mine) == 2 and all(beside_rule.stands_beside(o, anchor) for o in mine):
+            bent += int(not beside_rule.pair_matches(mine[0], mine[1], anchor))
+    return bent
 
 
 def anchored(g: GroupSpec, rule: str) -> set[str]:

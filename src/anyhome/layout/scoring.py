@@ -152,7 +152,45 @@ def group_room_bonus(st: RoomState, g: GroupSpec, c: Cands) -> Cands:
     xy = c.xy + np.stack([cx * cos - cy * sin, cx * sin + cy * cos], 1)
     corners = rect_corners(xy, (x1 - x0, y1 - y0), c.yaw)
     ok = st.space.valid(corners, 0.0, min(o.group_room_height_m, g.anchor.size_m[2]), floor=True)
-    return Cands(c.xy, c.yaw, c.z, c.pref + o.group_room_bonus * ok)
+    return Cands(c.xy, c.yaw, c.z, c.pref + o.group_room_bonus * ok + o.beside_lane_bonus * beside_lanes_free(st, g, c))
+
+
+def beside_lanes_free(st: RoomState, g: GroupSpec, c: Cands) -> np.ndarray:
+    """Mask of anchor poses ``c`` with a free lane along each side of the anchor that a
+    member stands beside (``place_beside``): :attr:`~.options.LayoutOptions.beside_lane_m`
+    wide (or the member's width, if wider), from the anchor's back to
+    :attr:`~.options.LayoutOptions.beside_lane_front_m` beyond its front, so that a
+    nightstand or side table there is still walked up to once the anchor stands; all
+    True when no member stands beside it."""
+    o = st.options
+    w, d = g.anchor.size_m[0], g.anchor.size_m[1]
+    ok = np.ones(len(c), dtype=bool)
+    sides: dict[float, float] = {}
+    for m in g.members:
+        if m.rule != "place_beside" or m.target not in (None, g.anchor.name):
+            continue
+        side = str(REGISTRY[m.rule].parse(m.params).side)  # type: ignore[attr-defined]
+        width = max(o.beside_lane_m, m.size_m[0] + beside_gap_m())
+        for sgn in {"left": (-1.0,), "right": (1.0,)}.get(side, (-1.0, 1.0)):
+            sides[sgn] = max(sides.get(sgn, 0.0), width)
+    if not sides or not len(c):
+        return ok
+    cos, sin = np.cos(c.yaw), np.sin(c.yaw)
+    right = np.stack([cos, sin], 1)
+    front = np.stack([-sin, cos], 1)
+    depth = d + o.beside_lane_front_m
+    for sgn, width in sides.items():
+        xy = c.xy + right * (sgn * (w / 2 + width / 2)) + front * (o.beside_lane_front_m / 2)
+        corners = rect_corners(xy, (width, depth), c.yaw)
+        ok &= st.space.valid(corners, 0.0, min(o.group_room_height_m, g.anchor.size_m[2]), floor=True)
+    return ok
+
+
+def beside_gap_m() -> float:
+    """The gap ``place_beside`` prefers between an object and the one it stands beside."""
+    from anyhome.layout.rules.place_beside import BESIDE_GAPS_M
+
+    return BESIDE_GAPS_M[0]
 
 
 def run_length(g: GroupSpec, rule: str, first: bool) -> tuple[float, float]:
