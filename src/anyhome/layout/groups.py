@@ -9,7 +9,7 @@ import numpy as np
 
 from anyhome.house import Dropped, HouseObject
 from anyhome.layout import arrangements, placement, scoring
-from anyhome.layout.rules import REGISTRY, front_dir
+from anyhome.layout.rules import REGISTRY, Cands, front_dir
 from anyhome.layout.rules import place_around as around_rule
 from anyhome.layout.rules import place_beside as beside_rule
 from anyhome.layout.rules import place_front as front_rule
@@ -55,18 +55,21 @@ def place_group_copy(st: RoomState, g: GroupSpec, copy: int, prev: HouseObject |
         return scoring.verified(st, c, order, size, kind, None, k=tries + o.anchor_reach_retries,
                                 min_sep_m=o.anchor_min_sep_m)
 
-    anchor = try_choices(st, g, label, choices, kind, rule, more)
+    anchor = try_choices(st, g, label, choices, kind, rule, more, nudge=kind == "floor")
     if anchor is not None and ref is not None and rule == "place_front" and item.params.get("to_wall"):
         st.space.keep_clear.append(sightline(ref, anchor))  # a TV of its own, across from the sofa
     return anchor
 
 
 def try_choices(st: RoomState, g: GroupSpec, label: str, choices: list[Choice], kind: str,
-                rule: str, more: Callable[[], list[Choice]] | None = None) -> HouseObject | None:
+                rule: str, more: Callable[[], list[Choice]] | None = None, nudge: bool = False) -> HouseObject | None:
     """The anchor at the first of ``choices`` where every member fits and every object stays
-    reachable, else where the fewest are dropped, then left out of reach (when some would be,
-    among ``more()`` too, a longer list starting with ``choices``); None (all dropped) when no
-    choice keeps the walkways open."""
+    reachable, else where the fewest are dropped, then left out of reach, then the fewest
+    members are placed by a fallback (:func:`compromises`); when some would be left out of
+    reach or placed by a fallback, among ``more()`` too (a longer list starting with
+    ``choices``) and, with ``nudge``, the best pose so far shifted sideways
+    (:func:`nudged`: a bed moved off a door so that both nightstands fit); None (all
+    dropped) when no choice keeps the walkways open."""
     item = g.anchor
     if not choices:
         drop_group(st, g, scoring.no_fit_reason(st, item.size_m))
@@ -88,9 +91,12 @@ def try_choices(st: RoomState, g: GroupSpec, label: str, choices: list[Choice], 
         if best is None or (len(drops), unreached, bent) < best[:3]:
             best = (len(drops), unreached, bent, k)
         st.restore(snap)
-        if k == len(pool) - 1 and more is not None and (best[1] or best[2]):
+        if k == len(pool) - 1 and more is not None and best[1]:
             pool += more()[len(pool):]
             more = None
+        if k == len(pool) - 1 and nudge and best[2]:
+            pool += nudged(st, g, pool[best[3]], kind)
+            nudge = False
     if best is None:
         drop_group(st, g, "would block a walkway or a door")
         return None
@@ -99,6 +105,32 @@ def try_choices(st: RoomState, g: GroupSpec, label: str, choices: list[Choice], 
     anchor = got[0]
     st.dropped.extend(place_members(st, g, label, anchor))
     return anchor
+
+
+NUDGES_M = tuple(s * 0.05 * k for k in range(1, 11) for s in (1, -1))
+"""Sideways shifts (m, along the anchor's width) of its best pose tried when members
+are placed by a fallback there: finer than the poses the anchor's rule offers apart."""
+NUDGE_TRIES = 4
+"""Most nudged poses tried."""
+
+
+def nudged(st: RoomState, g: GroupSpec, ch: Choice, kind: str) -> list[Choice]:
+    """``g``'s anchor pose ``ch``, where a spot beside the anchor is taken, shifted along
+    its width by :data:`NUDGES_M`: the poses that leave the spots beside it free
+    (:func:`~.scoring.beside_spots_free`) and pass the exact checks, the nearest first
+    (up to :data:`NUDGE_TRIES`); none when ``ch`` leaves them free already."""
+    size = g.anchor.size_m
+    here = scoring.beside_spots_free(st, g, Cands(ch.xy[None], np.array([ch.yaw]), np.array([ch.z]), np.zeros(1)))
+    if here is None or here[0]:  # nothing beside it, or its spots already free: shifting it frees none
+        return []
+    right = np.array([np.cos(ch.yaw), np.sin(ch.yaw)])
+    xy = ch.xy[None] + np.asarray(NUDGES_M)[:, None] * right[None]
+    c = Cands(xy, np.full(len(xy), ch.yaw), np.full(len(xy), ch.z), -np.abs(np.asarray(NUDGES_M)))
+    free = scoring.beside_spots_free(st, g, c)
+    assert free is not None
+    c = Cands(c.xy[free], c.yaw[free], c.z[free], c.pref[free])
+    order = scoring.rank(st, c, size, kind, 0.0, spacing=False)
+    return scoring.verified(st, c, order, size, kind, None, k=NUDGE_TRIES)
 
 
 def compromises(st: RoomState, g: GroupSpec, label: str, anchor: HouseObject) -> int:

@@ -141,18 +141,28 @@ def group_extent(g: GroupSpec, near_m: float | None = None) -> Extent:
 
 
 def group_room_bonus(st: RoomState, g: GroupSpec, c: Cands) -> Cands:
-    """Prefer anchor poses where the whole group's extent (members included) is free."""
+    """Prefer anchor poses where the whole group's extent (members included) is free
+    (:func:`group_room_free`), and with free lanes beside it (:func:`beside_lanes_free`)."""
+    o = st.options
+    ok = group_room_free(st, g, c)
+    if ok is None:
+        return c
+    return Cands(c.xy, c.yaw, c.z, c.pref + o.group_room_bonus * ok + o.beside_lane_bonus * beside_lanes_free(st, g, c))
+
+
+def group_room_free(st: RoomState, g: GroupSpec, c: Cands) -> np.ndarray | None:
+    """Mask of anchor poses ``c`` where the whole group's extent (members included) is
+    free; None when the members add nothing to the anchor's own footprint."""
     o = st.options
     x0, x1, y0, y1 = group_extent(g, near_m=o.near_m)
     w, d = g.anchor.size_m[0], g.anchor.size_m[1]
     if x1 - x0 <= w + 1e-6 and y1 - y0 <= d + 1e-6:
-        return c
+        return None
     cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
     cos, sin = np.cos(c.yaw), np.sin(c.yaw)
     xy = c.xy + np.stack([cx * cos - cy * sin, cx * sin + cy * cos], 1)
     corners = rect_corners(xy, (x1 - x0, y1 - y0), c.yaw)
-    ok = st.space.valid(corners, 0.0, min(o.group_room_height_m, g.anchor.size_m[2]), floor=True)
-    return Cands(c.xy, c.yaw, c.z, c.pref + o.group_room_bonus * ok + o.beside_lane_bonus * beside_lanes_free(st, g, c))
+    return st.space.valid(corners, 0.0, min(o.group_room_height_m, g.anchor.size_m[2]), floor=True)
 
 
 def beside_lanes_free(st: RoomState, g: GroupSpec, c: Cands) -> np.ndarray:
@@ -183,6 +193,33 @@ def beside_lanes_free(st: RoomState, g: GroupSpec, c: Cands) -> np.ndarray:
         xy = c.xy + right * (sgn * (w / 2 + width / 2)) + front * (o.beside_lane_front_m / 2)
         corners = rect_corners(xy, (width, depth), c.yaw)
         ok &= st.space.valid(corners, 0.0, min(o.group_room_height_m, g.anchor.size_m[2]), floor=True)
+    return ok
+
+
+def beside_spots_free(st: RoomState, g: GroupSpec, c: Cands) -> np.ndarray | None:
+    """Mask of anchor poses ``c`` where every spot a member beside the anchor is asked
+    for (``place_beside``, each side it may take, at the preferred gap) is free; None
+    when no member stands beside the anchor."""
+    o = st.options
+    sides: dict[float, tuple[float, float]] = {}
+    for m in g.members:
+        if m.rule != "place_beside" or m.target not in (None, g.anchor.name):
+            continue
+        side = str(REGISTRY[m.rule].parse(m.params).side)  # type: ignore[attr-defined]
+        for sgn in {"left": (-1.0,), "right": (1.0,)}.get(side, (-1.0, 1.0)):
+            w0, d0 = sides.get(sgn, (0.0, 0.0))
+            sides[sgn] = (max(w0, m.size_m[0]), max(d0, m.size_m[1]))
+    if not sides:
+        return None
+    w, d = g.anchor.size_m[0], g.anchor.size_m[1]
+    cos, sin = np.cos(c.yaw), np.sin(c.yaw)
+    right = np.stack([cos, sin], 1)
+    front = np.stack([-sin, cos], 1)
+    ok = np.ones(len(c), dtype=bool)
+    for sgn, (mw, md) in sides.items():
+        xy = c.xy + right * (sgn * (w / 2 + beside_gap_m() + mw / 2)) + front * ((md - d) / 2)
+        ok &= st.space.valid(rect_corners(xy, (mw, md), c.yaw), 0.0, min(o.group_room_height_m, g.anchor.size_m[2]),
+                             floor=True)
     return ok
 
 
