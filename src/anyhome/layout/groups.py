@@ -133,14 +133,22 @@ def nudged(st: RoomState, g: GroupSpec, ch: Choice, kind: str) -> list[Choice]:
     return scoring.verified(st, c, order, size, kind, None, k=NUDGE_TRIES)
 
 
+OFF_WALL_AHEAD_COST = 3
+"""Compromises counted for a ``to_wall`` item (a TV stand) not on the wall straight ahead
+of its anchor: the relations in front and centred broken, and the seat no longer faces it
+(worse than a TV stand off centre on the wall ahead, or a coffee table off centre)."""
+
+
 def compromises(st: RoomState, g: GroupSpec, label: str, anchor: HouseObject) -> int:
-    """Members of this copy placed by a fallback: a ``to_wall`` item (a TV stand) not on
-    the wall straight ahead of the anchor, facing it; copies in front of the anchor off
-    its axis (:data:`~.rules.place_front.CENTRED_TOL_M`); an item beside the anchor placed by
-    the last relaxation of ``place_beside`` (against a wall near it); a wall item not
-    centred behind an anchor that stands against a wall (a window in the way); a piece
-    of a run along the walls that jumped (:func:`~.rules.place_next_wall.jumps`)."""
-    names = {m.name for m in g.members if m.name in anchored(g, "place_front") and m.params.get("to_wall")}
+    """How far this copy's members stand from where their rules ask, counted as the
+    relations they break: a ``to_wall`` item (a TV stand) not on the wall straight ahead
+    of the anchor, facing it (:data:`OFF_WALL_AHEAD_COST`), else off the anchor's axis (1);
+    copies in front of the anchor off its axis (1, :data:`~.rules.place_front.CENTRED_TOL_M`);
+    members beside it where ``place_beside`` does not put them (:func:`beside_compromises`);
+    a wall item not centred behind an anchor that stands against a wall (a window in the
+    way); each piece of a run along the walls cut off from its start
+    (:func:`~.rules.place_next_wall.jumps`)."""
+    walls = {m.name for m in g.members if m.name in anchored(g, "place_front") and m.params.get("to_wall")}
     front = anchored(g, "place_front")
     beside = anchored(g, "place_beside")
     over = anchored(g, "place_on_wall")
@@ -149,19 +157,23 @@ def compromises(st: RoomState, g: GroupSpec, label: str, anchor: HouseObject) ->
         return 0
     back = front_dir(anchor.yaw)
     mine = [o for o in st.space.objects if o.group == label]
-    centred = [[o for o in mine if o.name == n] for n in front]
-    return (sum(1 for o in mine if o.name in names and float(front_dir(o.yaw) @ back) > -0.99)
-            + sum(1 for objs in centred if objs and front_rule.off_centre_m(objs, anchor) > front_rule.CENTRED_TOL_M)
-            + beside_compromises(g, [o for o in mine if o.name in beside], anchor)
+    bent = 0
+    for name in front:
+        objs = [o for o in mine if o.name == name]
+        if name in walls and any(float(front_dir(o.yaw) @ back) > -0.99 for o in objs):
+            bent += OFF_WALL_AHEAD_COST
+        elif objs and front_rule.off_centre_m(objs, anchor) > front_rule.CENTRED_TOL_M:
+            bent += 1
+    return (bent + beside_compromises(g, [o for o in mine if o.name in beside], anchor)
             + sum(1 for o in mine if o.name in over and not on_wall_rule.centred_behind(o, anchor))
             + (next_wall_rule.jumps([anchor, *(o for o in mine if o.rule == "place_next_wall")]) if runs else 0))
 
 
 def beside_compromises(g: GroupSpec, objs: list[HouseObject], anchor: HouseObject) -> int:
-    """Copies of ``g``'s members beside ``anchor`` (``objs``) that are not where asked: placed
-    by the last relaxation of ``place_beside``, on the other side than the one asked for,
-    or, for two copies on ``both`` sides, not a symmetric pair
-    (:func:`~.rules.place_beside.pair_matches`: one counted)."""
+    """Relations broken by the copies of ``g``'s members beside ``anchor`` (``objs``): one per
+    copy placed by the last relaxation of ``place_beside`` or on the other side than the
+    one asked for, and one for two copies on ``both`` sides that are not a symmetric pair
+    (:func:`~.rules.place_beside.pair_matches`)."""
     bent = 0
     for m in g.members:
         if m.rule != "place_beside" or m.target not in (None, g.anchor.name):
@@ -170,7 +182,7 @@ def beside_compromises(g: GroupSpec, objs: list[HouseObject], anchor: HouseObjec
         side = beside_rule.Params.model_validate(m.params).side
         bent += sum(1 for o in mine if not beside_rule.stands_beside(o, anchor)
                     or (side != "both" and beside_rule.side_of(o, anchor) != side))
-        if side == "both" and len(mine) == 2 and all(beside_rule.stands_beside(o, anchor) for o in mine):
+        if side == "both" and len(mine) == 2:
             bent += int(not beside_rule.pair_matches(mine[0], mine[1], anchor))
     return bent
 
