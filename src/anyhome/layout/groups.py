@@ -77,8 +77,10 @@ def try_choices(st: RoomState, g: GroupSpec, label: str, choices: list[Choice], 
     support = "wall" if kind == "wall" else "floor"
     snap = st.snapshot()
     best: tuple[int, int, int, int] | None = None  # (drops, objects out of reach, compromises, choice index)
+    best_rng: dict | None = None  # the random state its members were placed with: placed again the same
     pool = list(choices)
     for k, ch in enumerate(pool):  # grows (once) while being walked
+        rng_state = st.rng.bit_generator.state
         got = st.commit_checked(item, item.size_m, ch, support, rule, label, None, check=kind != "top")
         if got is None:
             continue
@@ -90,6 +92,7 @@ def try_choices(st: RoomState, g: GroupSpec, label: str, choices: list[Choice], 
             return anchor
         if best is None or (len(drops), unreached, bent) < best[:3]:
             best = (len(drops), unreached, bent, k)
+            best_rng = rng_state
         st.restore(snap)
         if k == len(pool) - 1 and more is not None and best[1]:
             pool += more()[len(pool):]
@@ -100,6 +103,8 @@ def try_choices(st: RoomState, g: GroupSpec, label: str, choices: list[Choice], 
     if best is None:
         drop_group(st, g, "would block a walkway or a door")
         return None
+    assert best_rng is not None
+    st.rng.bit_generator.state = best_rng  # its members where they stood when it was judged best
     got = st.commit_checked(item, item.size_m, pool[best[3]], support, rule, label, None, check=kind != "top")
     assert got is not None  # it passed in this very state
     anchor = got[0]
