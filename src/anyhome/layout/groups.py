@@ -41,14 +41,16 @@ def place_group_copy(st: RoomState, g: GroupSpec, copy: int, prev: HouseObject |
     c, kind, rule, ref = arrangements.anchor_candidates(st, g, prev)
     o = st.options
     tries = o.anchor_tries_required if g.required else o.anchor_tries
-    if kind == "floor" and g.members and len(c):
-        c = scoring.group_room_bonus(st, g, c)
-    if kind == "floor":
-        c = scoring.run_room_bonus(st, g, c, rule, prev is None)
+
+    def bonus(cands: Cands) -> Cands:  # room for the group and its run, asked of valid poses only
+        if g.members and len(cands):
+            cands = scoring.group_room_bonus(st, g, cands)
+        return scoring.run_room_bonus(st, g, cands, rule, prev is None)
+
     run_on = prev is not None and REGISTRY[rule].continues  # the copy continues a run: no jump
     hangs = bool(anchored(g, "place_on_wall"))
     order = scoring.rank(st, c, size, kind, o.member_noise if run_on else o.noise, spacing=not run_on,
-                         avoid_windows=hangs)
+                         avoid_windows=hangs, bonus=bonus if kind == "floor" else None)
     choices = scoring.verified(st, c, order, size, kind, None, k=tries, min_sep_m=o.anchor_min_sep_m)
 
     def more() -> list[Choice]:

@@ -4,7 +4,7 @@ verify the best with the contract's exact geometry; the room a whole group needs
 from __future__ import annotations
 
 import math
-from collections.abc import Iterator, Sequence
+from collections.abc import Callable, Iterator, Sequence
 
 import numpy as np
 import shapely
@@ -23,10 +23,11 @@ _APART_M = 1e-6
 
 
 def rank(st: RoomState, c: Cands, size: Sequence[float], kind: str, noise: float, spacing: bool,
-         layer: bool = False, avoid_windows: bool = False) -> np.ndarray:
+         layer: bool = False, avoid_windows: bool = False, bonus: Callable[[Cands], Cands] | None = None) -> np.ndarray:
     """Indices of the valid candidates, best first (``layer``: a rug, see RoomSpace.valid;
     ``avoid_windows``: keep off windows as tall objects do, for an anchor with something
-    to hang on the wall behind it, a dresser's mirror)."""
+    to hang on the wall behind it, a dresser's mirror; ``bonus``: the valid candidates
+    with their preferences raised, as :func:`group_room_bonus` does, asked only of those)."""
     if not len(c):
         return np.zeros(0, dtype=int)
     o = st.options
@@ -35,7 +36,8 @@ def rank(st: RoomState, c: Cands, size: Sequence[float], kind: str, noise: float
     idx = np.nonzero(mask)[0]
     if not idx.size:
         return idx
-    score = c.pref[idx] + noise * st.rng.random(idx.size)
+    pref = c.pref[idx] if bonus is None else bonus(Cands(c.xy[idx], c.yaw[idx], c.z[idx], c.pref[idx])).pref
+    score = pref + noise * st.rng.random(idx.size)
     if spacing and kind == "floor":
         weight, cap = (o.zone_spacing_weight, o.zone_spacing_cap_m) if st.spread else (o.spacing_weight, o.spacing_cap_m)
         score += weight * st.space.clearance(corners[idx], cap) / cap
@@ -60,7 +62,8 @@ def verified_lazily(st: RoomState, c: Cands, order: np.ndarray, size: Sequence[f
     for i in order[: st.options.verify_factor * k]:
         ch = Choice(c.xy[i].copy(), float(c.yaw[i]), float(c.z[i]))
         if min_sep_m and any(
-            np.linalg.norm(o.xy - ch.xy) < min_sep_m and abs(math.cos(o.yaw - ch.yaw) - 1) < 1e-6
+            math.hypot(float(o.xy[0] - ch.xy[0]), float(o.xy[1] - ch.xy[1])) < min_sep_m
+            and abs(math.cos(o.yaw - ch.yaw) - 1) < 1e-6
             for o in out
         ):
             continue
