@@ -3,7 +3,8 @@ relative to it; a few anchor poses are tried when members do not fit."""
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
+from typing import Any
 
 import numpy as np
 
@@ -79,7 +80,7 @@ def try_choices(st: RoomState, g: GroupSpec, label: str, choices: list[Choice], 
     support = "wall" if kind == "wall" else "floor"
     snap = st.snapshot()
     best: tuple[int, int, int, int] | None = None  # (drops, objects out of reach, compromises, choice index)
-    best_rng: dict | None = None  # the random state its members were placed with: placed again the same
+    best_rng: Mapping[str, Any] | None = None  # the random state its members were placed with: placed again the same
     pool = list(choices)
     for k, ch in enumerate(pool):  # grows (once) while being walked
         rng_state = st.rng.bit_generator.state
