@@ -378,3 +378,55 @@ def test_footprint_gaps_match_shapely():
         want = shapely.distance(shapely.polygons(rect_corners(xy, size[:2], yaw)),
                                 footprint_polygon(ref.position, ref.size, ref.yaw))
         assert np.allclose(footprint_gaps(xy, size, yaw, ref), want, atol=1e-9)
+
+
+def test_run_jumps_count_every_piece_cut_off_from_the_start():
+    from anyhome.layout.rules.place_next_wall import jumps
+
+    first = res_obj("a", (0.45, 0.175), (0.9, 0.35, 1.9), 0.0)
+    joined = res_obj("b", (1.35, 0.175), (0.9, 0.35, 1.9), 0.0)
+    far = res_obj("c", (4.45, 0.175), (0.9, 0.35, 1.9), 0.0)
+    next_to_far = res_obj("d", (5.35, 0.175), (0.9, 0.35, 1.9), 0.0)
+    assert jumps([first, joined]) == 0
+    # the run jumped once, but two pieces stand apart from its start (as the benchmark judges)
+    assert jumps([first, joined, far, next_to_far]) == 2
+
+
+def test_place_wall_poses_are_shared_and_read_only():
+    from anyhome.layout.rules.place_wall import place_wall
+    from anyhome.space import RoomSpace
+
+    fp = single_room(rect(0, 0, 4, 3))
+    space = RoomSpace(fp, fp.rooms[0])
+    a = place_wall(space, (0.9, 0.35, 1.9))
+    b = place_wall(space, (0.9, 0.35, 1.9))
+    assert a is not b and a.xy is b.xy  # one set of arrays, a new Cands per call
+    with pytest.raises(ValueError):
+        a.pref[0] = 5.0
+    a.pref = a.pref + 1.0  # a caller changing preferences makes its own array
+    assert np.array_equal(place_wall(space, (0.9, 0.35, 1.9)).pref, b.pref)
+    other = RoomSpace(single_room(rect(0, 0, 6, 3)), single_room(rect(0, 0, 6, 3)).rooms[0])
+    assert len(place_wall(other, (0.9, 0.35, 1.9))) > len(a)  # per room
+
+
+def test_place_beside_side_and_pair():
+    from anyhome.layout.rules.place_beside import pair_matches, side_of
+
+    bed = res_obj("bed", (2.0, 1.0), (1.6, 2.0, 0.6), 0.0)
+    left = res_obj("l", (2.0 - 0.8 - 0.03 - 0.225, 0.2), (0.45, 0.4, 0.55), 0.0)
+    right = res_obj("r", (2.0 + 0.8 + 0.03 + 0.225, 0.2), (0.45, 0.4, 0.55), 0.0)
+    right_far = res_obj("rf", (2.0 + 0.8 + 0.25 + 0.225, 0.2), (0.45, 0.4, 0.55), 0.0)
+    assert side_of(left, bed) == "left" and side_of(right, bed) == "right"
+    assert pair_matches(left, right, bed)
+    assert not pair_matches(left, right_far, bed)  # both beside, gaps 0.22 m apart
+    assert not pair_matches(right, right_far, bed)  # one side
+
+
+def test_place_front_off_centre():
+    from anyhome.layout.rules.place_front import off_centre_m
+
+    sofa = res_obj("sofa", (2.0, 0.45), (2.0, 0.9, 0.85), np.pi / 2)  # front toward -x
+    table = res_obj("t", (0.9, 2.3), (1.1, 0.6, 0.45), -np.pi / 2)
+    assert off_centre_m([table], sofa) == pytest.approx(1.85)
+    chairs = [res_obj("c0", (0.9, 0.0), (0.5, 0.5, 0.9), 0.0), res_obj("c1", (0.9, 0.9), (0.5, 0.5, 0.9), 0.0)]
+    assert off_centre_m(chairs, sofa) == pytest.approx(0.0)

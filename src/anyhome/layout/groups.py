@@ -3,15 +3,17 @@ relative to it; a few anchor poses are tried when members do not fit."""
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
+from typing import Any
 
 import numpy as np
 
 from anyhome.house import Dropped, HouseObject
 from anyhome.layout import arrangements, placement, scoring
-from anyhome.layout.rules import REGISTRY, front_dir
+from anyhome.layout.rules import REGISTRY, Cands, front_dir
 from anyhome.layout.rules import place_around as around_rule
 from anyhome.layout.rules import place_beside as beside_rule
+from anyhome.layout.rules import place_front as front_rule
 from anyhome.layout.rules import place_next_wall as next_wall_rule
 from anyhome.layout.rules import place_on_wall as on_wall_rule
 from anyhome.layout.rules.place_around import (
@@ -40,32 +42,37 @@ def place_group_copy(st: RoomState, g: GroupSpec, copy: int, prev: HouseObject |
     c, kind, rule, ref = arrangements.anchor_candidates(st, g, prev)
     o = st.options
     tries = o.anchor_tries_required if g.required else o.anchor_tries
-    if kind == "floor" and g.members and len(c):
-        c = scoring.group_room_bonus(st, g, c)
-    if kind == "floor":
-        c = scoring.run_room_bonus(st, g, c, rule, prev is None)
+
+    def bonus(cands: Cands) -> Cands:  # room for the group and its run, asked of valid poses only
+        if g.members and len(cands):
+            cands = scoring.group_room_bonus(st, g, cands)
+        return scoring.run_room_bonus(st, g, cands, rule, prev is None)
+
     run_on = prev is not None and REGISTRY[rule].continues  # the copy continues a run: no jump
     hangs = bool(anchored(g, "place_on_wall"))
     order = scoring.rank(st, c, size, kind, o.member_noise if run_on else o.noise, spacing=not run_on,
-                         avoid_windows=hangs)
+                         avoid_windows=hangs, bonus=bonus if kind == "floor" else None)
     choices = scoring.verified(st, c, order, size, kind, None, k=tries, min_sep_m=o.anchor_min_sep_m)
 
     def more() -> list[Choice]:
         return scoring.verified(st, c, order, size, kind, None, k=tries + o.anchor_reach_retries,
                                 min_sep_m=o.anchor_min_sep_m)
 
-    anchor = try_choices(st, g, label, choices, kind, rule, more)
+    anchor = try_choices(st, g, label, choices, kind, rule, more, nudge=kind == "floor")
     if anchor is not None and ref is not None and rule == "place_front" and item.params.get("to_wall"):
         st.space.keep_clear.append(sightline(ref, anchor))  # a TV of its own, across from the sofa
     return anchor
 
 
 def try_choices(st: RoomState, g: GroupSpec, label: str, choices: list[Choice], kind: str,
-                rule: str, more: Callable[[], list[Choice]] | None = None) -> HouseObject | None:
+                rule: str, more: Callable[[], list[Choice]] | None = None, nudge: bool = False) -> HouseObject | None:
     """The anchor at the first of ``choices`` where every member fits and every object stays
-    reachable, else where the fewest are dropped, then left out of reach (when some would be,
-    among ``more()`` too, a longer list starting with ``choices``); None (all dropped) when no
-    choice keeps the walkways open."""
+    reachable, else where the fewest are dropped, then left out of reach, then the fewest
+    members are placed by a fallback (:func:`compromises`); when some would be left out of
+    reach or placed by a fallback, among ``more()`` too (a longer list starting with
+    ``choices``) and, with ``nudge``, the best pose so far shifted sideways
+    (:func:`nudged`: a bed moved off a door so that both nightstands fit); None (all
+    dropped) when no choice keeps the walkways open."""
     item = g.anchor
     if not choices:
         drop_group(st, g, scoring.no_fit_reason(st, item.size_m))
@@ -73,8 +80,10 @@ def try_choices(st: RoomState, g: GroupSpec, label: str, choices: list[Choice], 
     support = "wall" if kind == "wall" else "floor"
     snap = st.snapshot()
     best: tuple[int, int, int, int] | None = None  # (drops, objects out of reach, compromises, choice index)
+    best_rng: Mapping[str, Any] | None = None  # the random state its members were placed with: placed again the same
     pool = list(choices)
     for k, ch in enumerate(pool):  # grows (once) while being walked
+        rng_state = st.rng.bit_generator.state
         got = st.commit_checked(item, item.size_m, ch, support, rule, label, None, check=kind != "top")
         if got is None:
             continue
@@ -86,13 +95,19 @@ def try_choices(st: RoomState, g: GroupSpec, label: str, choices: list[Choice], 
             return anchor
         if best is None or (len(drops), unreached, bent) < best[:3]:
             best = (len(drops), unreached, bent, k)
+            best_rng = rng_state
         st.restore(snap)
         if k == len(pool) - 1 and more is not None and best[1]:
             pool += more()[len(pool):]
             more = None
+        if k == len(pool) - 1 and nudge and best[2]:
+            pool += nudged(st, g, pool[best[3]], kind)
+            nudge = False
     if best is None:
         drop_group(st, g, "would block a walkway or a door")
         return None
+    assert best_rng is not None
+    st.rng.bit_generator.state = best_rng  # its members where they stood when it was judged best
     got = st.commit_checked(item, item.size_m, pool[best[3]], support, rule, label, None, check=kind != "top")
     assert got is not None  # it passed in this very state
     anchor = got[0]
@@ -100,24 +115,84 @@ def try_choices(st: RoomState, g: GroupSpec, label: str, choices: list[Choice], 
     return anchor
 
 
+NUDGES_M = tuple(s * 0.05 * k for k in range(1, 11) for s in (1, -1))
+"""Sideways shifts (m, along the anchor's width) of its best pose tried when members
+are placed by a fallback there: finer than the poses the anchor's rule offers apart."""
+NUDGE_TRIES = 4
+"""Most nudged poses tried."""
+
+
+def nudged(st: RoomState, g: GroupSpec, ch: Choice, kind: str) -> list[Choice]:
+    """``g``'s anchor pose ``ch``, where a spot beside the anchor is taken, shifted along
+    its width by :data:`NUDGES_M`: the poses that leave the spots beside it free
+    (:func:`~.scoring.beside_spots_free`) and pass the exact checks, the nearest first
+    (up to :data:`NUDGE_TRIES`); none when ``ch`` leaves them free already."""
+    size = g.anchor.size_m
+    here = scoring.beside_spots_free(st, g, Cands(ch.xy[None], np.array([ch.yaw]), np.array([ch.z]), np.zeros(1)))
+    if here is None or here[0]:  # nothing beside it, or its spots already free: shifting it frees none
+        return []
+    right = np.array([np.cos(ch.yaw), np.sin(ch.yaw)])
+    xy = ch.xy[None] + np.asarray(NUDGES_M)[:, None] * right[None]
+    c = Cands(xy, np.full(len(xy), ch.yaw), np.full(len(xy), ch.z), -np.abs(np.asarray(NUDGES_M)))
+    free = scoring.beside_spots_free(st, g, c)
+    assert free is not None
+    c = Cands(c.xy[free], c.yaw[free], c.z[free], c.pref[free])
+    order = scoring.rank(st, c, size, kind, 0.0, spacing=False)
+    return scoring.verified(st, c, order, size, kind, None, k=NUDGE_TRIES)
+
+
+OFF_WALL_AHEAD_COST = 3
+"""Compromises counted for a ``to_wall`` item (a TV stand) not on the wall straight ahead
+of its anchor: the relations in front and centred broken, and the seat no longer faces it
+(worse than a TV stand off centre on the wall ahead, or a coffee table off centre)."""
+
+
 def compromises(st: RoomState, g: GroupSpec, label: str, anchor: HouseObject) -> int:
-    """Members of this copy placed by a fallback: a ``to_wall`` item (a TV stand) not on
-    the wall straight ahead of the anchor, facing it; an item beside the anchor placed by
-    the last relaxation of ``place_beside`` (against a wall near it); a wall item not
-    centred behind an anchor that stands against a wall (a window in the way); a piece
-    of a run along the walls that jumped (:func:`~.rules.place_next_wall.jumps`)."""
-    names = {m.name for m in g.members if m.name in anchored(g, "place_front") and m.params.get("to_wall")}
+    """How far this copy's members stand from where their rules ask, counted as the
+    relations they break: a ``to_wall`` item (a TV stand) not on the wall straight ahead
+    of the anchor, facing it (:data:`OFF_WALL_AHEAD_COST`), else off the anchor's axis (1);
+    copies in front of the anchor off its axis (1, :data:`~.rules.place_front.CENTRED_TOL_M`);
+    members beside it where ``place_beside`` does not put them (:func:`beside_compromises`);
+    a wall item not centred behind an anchor that stands against a wall (a window in the
+    way); each piece of a run along the walls cut off from its start
+    (:func:`~.rules.place_next_wall.jumps`)."""
+    walls = {m.name for m in g.members if m.name in anchored(g, "place_front") and m.params.get("to_wall")}
+    front = anchored(g, "place_front")
     beside = anchored(g, "place_beside")
     over = anchored(g, "place_on_wall")
     runs = REGISTRY[anchor.rule].runs_along_wall and any(m.rule == "place_next_wall" for m in g.members)
-    if not names and not beside and not over and not runs:
+    if not front and not beside and not over and not runs:
         return 0
     back = front_dir(anchor.yaw)
     mine = [o for o in st.space.objects if o.group == label]
-    return (sum(1 for o in mine if o.name in names and float(front_dir(o.yaw) @ back) > -0.99)
-            + sum(1 for o in mine if o.name in beside and not beside_rule.stands_beside(o, anchor))
+    bent = 0
+    for name in front:
+        objs = [o for o in mine if o.name == name]
+        if name in walls and any(float(front_dir(o.yaw) @ back) > -0.99 for o in objs):
+            bent += OFF_WALL_AHEAD_COST
+        elif objs and front_rule.off_centre_m(objs, anchor) > front_rule.CENTRED_TOL_M:
+            bent += 1
+    return (bent + beside_compromises(g, [o for o in mine if o.name in beside], anchor)
             + sum(1 for o in mine if o.name in over and not on_wall_rule.centred_behind(o, anchor))
             + (next_wall_rule.jumps([anchor, *(o for o in mine if o.rule == "place_next_wall")]) if runs else 0))
+
+
+def beside_compromises(g: GroupSpec, objs: list[HouseObject], anchor: HouseObject) -> int:
+    """Relations broken by the copies of ``g``'s members beside ``anchor`` (``objs``): one per
+    copy placed by the last relaxation of ``place_beside`` or on the other side than the
+    one asked for, and one for two copies on ``both`` sides that are not a symmetric pair
+    (:func:`~.rules.place_beside.pair_matches`)."""
+    bent = 0
+    for m in g.members:
+        if m.rule != "place_beside" or m.target not in (None, g.anchor.name):
+            continue
+        mine = [o for o in objs if o.name == m.name]
+        side = beside_rule.Params.model_validate(m.params).side
+        bent += sum(1 for o in mine if not beside_rule.stands_beside(o, anchor)
+                    or (side != "both" and beside_rule.side_of(o, anchor) != side))
+        if side == "both" and len(mine) == 2:
+            bent += int(not beside_rule.pair_matches(mine[0], mine[1], anchor))
+    return bent
 
 
 def anchored(g: GroupSpec, rule: str) -> set[str]:

@@ -100,8 +100,8 @@ def place_kitchen(st: RoomState, g: GroupSpec) -> None:
     anchor, pieces = slots
     for role, m in roles.items():  # copies beyond the first of each appliance, and one left out of the run
         n = m.count - sum(1 for p in pieces if p.name == m.name)
-        if n > 0:
-            _place_rest(st, g, [m.model_copy(update={"count": n})], label, anchor, pieces[-1])
+        if n > 0:  # beside either end of the run (or any piece of it), not only its last piece
+            _place_rest(st, g, [m.model_copy(update={"count": n})], label, anchor, pieces[-1], run=list(pieces))
     for m in cabinets:
         if not _hang_cabinets(st, m, pieces, label, anchor.id):
             st.drop(m.name, "no free wall above the counters", m.count)
@@ -111,10 +111,10 @@ def place_kitchen(st: RoomState, g: GroupSpec) -> None:
 
 
 def _place_rest(st: RoomState, g: GroupSpec, items: list[ItemSpec], label: str, anchor: HouseObject,
-                last: HouseObject) -> None:
+                last: HouseObject, run: list[HouseObject] | None = None) -> None:
     for m in items:
         refs = st.match(m.target) if m.target not in (None, g.anchor.name) else [anchor]
-        _, drops = groups.place_item_copies(st, m, refs or [anchor], label, anchor.id, last)
+        _, drops = groups.place_item_copies(st, m, refs or [anchor], label, anchor.id, last, run)
         st.dropped.extend(drops)
 
 

@@ -35,6 +35,13 @@ class LayoutOptions:
     zone_bonus: float = 1.0
     """Score added to floor poses inside the arm of an open-plan room that belongs to the
     planned room whose group is being placed (:mod:`anyhome.layout.zones`)."""
+    beside_lane_bonus: float = 0.8
+    """Score added to anchor poses with a free lane along each side a member stands beside
+    (:func:`anyhome.layout.scoring.beside_lanes_free`)."""
+    beside_lane_m: float = 0.6
+    """Least width of that lane: an agent of 0.25 m radius walks up a lane this wide."""
+    beside_lane_front_m: float = 0.3
+    """The lane reaches this far beyond the anchor's front (where it opens to the room)."""
     group_room_height_m: float = 0.9
     """Height up to which the room around an anchor is checked for its group."""
     near_m: float = 1.0

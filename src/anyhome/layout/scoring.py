@@ -4,7 +4,7 @@ verify the best with the contract's exact geometry; the room a whole group needs
 from __future__ import annotations
 
 import math
-from collections.abc import Iterator, Sequence
+from collections.abc import Callable, Iterator, Sequence
 
 import numpy as np
 import shapely
@@ -23,10 +23,11 @@ _APART_M = 1e-6
 
 
 def rank(st: RoomState, c: Cands, size: Sequence[float], kind: str, noise: float, spacing: bool,
-         layer: bool = False, avoid_windows: bool = False) -> np.ndarray:
+         layer: bool = False, avoid_windows: bool = False, bonus: Callable[[Cands], Cands] | None = None) -> np.ndarray:
     """Indices of the valid candidates, best first (``layer``: a rug, see RoomSpace.valid;
     ``avoid_windows``: keep off windows as tall objects do, for an anchor with something
-    to hang on the wall behind it, a dresser's mirror)."""
+    to hang on the wall behind it, a dresser's mirror; ``bonus``: the valid candidates
+    with their preferences raised, as :func:`group_room_bonus` does, asked only of those)."""
     if not len(c):
         return np.zeros(0, dtype=int)
     o = st.options
@@ -35,7 +36,8 @@ def rank(st: RoomState, c: Cands, size: Sequence[float], kind: str, noise: float
     idx = np.nonzero(mask)[0]
     if not idx.size:
         return idx
-    score = c.pref[idx] + noise * st.rng.random(idx.size)
+    pref = c.pref[idx] if bonus is None else bonus(Cands(c.xy[idx], c.yaw[idx], c.z[idx], c.pref[idx])).pref
+    score = pref + noise * st.rng.random(idx.size)
     if spacing and kind == "floor":
         weight, cap = (o.zone_spacing_weight, o.zone_spacing_cap_m) if st.spread else (o.spacing_weight, o.spacing_cap_m)
         score += weight * st.space.clearance(corners[idx], cap) / cap
@@ -60,7 +62,8 @@ def verified_lazily(st: RoomState, c: Cands, order: np.ndarray, size: Sequence[f
     for i in order[: st.options.verify_factor * k]:
         ch = Choice(c.xy[i].copy(), float(c.yaw[i]), float(c.z[i]))
         if min_sep_m and any(
-            np.linalg.norm(o.xy - ch.xy) < min_sep_m and abs(math.cos(o.yaw - ch.yaw) - 1) < 1e-6
+            math.hypot(float(o.xy[0] - ch.xy[0]), float(o.xy[1] - ch.xy[1])) < min_sep_m
+            and abs(math.cos(o.yaw - ch.yaw) - 1) < 1e-6
             for o in out
         ):
             continue
@@ -141,18 +144,93 @@ def group_extent(g: GroupSpec, near_m: float | None = None) -> Extent:
 
 
 def group_room_bonus(st: RoomState, g: GroupSpec, c: Cands) -> Cands:
-    """Prefer anchor poses where the whole group's extent (members included) is free."""
+    """Prefer anchor poses where the whole group's extent (members included) is free
+    (:func:`group_room_free`), and with free lanes beside it (:func:`beside_lanes_free`)."""
+    o = st.options
+    ok = group_room_free(st, g, c)
+    if ok is None:
+        return c
+    return Cands(c.xy, c.yaw, c.z, c.pref + o.group_room_bonus * ok + o.beside_lane_bonus * beside_lanes_free(st, g, c))
+
+
+def group_room_free(st: RoomState, g: GroupSpec, c: Cands) -> np.ndarray | None:
+    """Mask of anchor poses ``c`` where the whole group's extent (members included) is
+    free; None when the members add nothing to the anchor's own footprint."""
     o = st.options
     x0, x1, y0, y1 = group_extent(g, near_m=o.near_m)
     w, d = g.anchor.size_m[0], g.anchor.size_m[1]
     if x1 - x0 <= w + 1e-6 and y1 - y0 <= d + 1e-6:
-        return c
+        return None
     cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
     cos, sin = np.cos(c.yaw), np.sin(c.yaw)
     xy = c.xy + np.stack([cx * cos - cy * sin, cx * sin + cy * cos], 1)
     corners = rect_corners(xy, (x1 - x0, y1 - y0), c.yaw)
-    ok = st.space.valid(corners, 0.0, min(o.group_room_height_m, g.anchor.size_m[2]), floor=True)
-    return Cands(c.xy, c.yaw, c.z, c.pref + o.group_room_bonus * ok)
+    return st.space.valid(corners, 0.0, min(o.group_room_height_m, g.anchor.size_m[2]), floor=True)
+
+
+def beside_lanes_free(st: RoomState, g: GroupSpec, c: Cands) -> np.ndarray:
+    """Mask of anchor poses ``c`` with a free lane along each side of the anchor that a
+    member stands beside (``place_beside``): :attr:`~.options.LayoutOptions.beside_lane_m`
+    wide (or the member's width, if wider), from the anchor's back to
+    :attr:`~.options.LayoutOptions.beside_lane_front_m` beyond its front, so that a
+    nightstand or side table there is still walked up to once the anchor stands; all
+    True when no member stands beside it."""
+    o = st.options
+    w, d = g.anchor.size_m[0], g.anchor.size_m[1]
+    ok = np.ones(len(c), dtype=bool)
+    sides: dict[float, float] = {}
+    for m in g.members:
+        if m.rule != "place_beside" or m.target not in (None, g.anchor.name):
+            continue
+        side = str(REGISTRY[m.rule].parse(m.params).side)  # type: ignore[attr-defined]
+        width = max(o.beside_lane_m, m.size_m[0] + beside_gap_m())
+        for sgn in {"left": (-1.0,), "right": (1.0,)}.get(side, (-1.0, 1.0)):
+            sides[sgn] = max(sides.get(sgn, 0.0), width)
+    if not sides or not len(c):
+        return ok
+    cos, sin = np.cos(c.yaw), np.sin(c.yaw)
+    right = np.stack([cos, sin], 1)
+    front = np.stack([-sin, cos], 1)
+    depth = d + o.beside_lane_front_m
+    for sgn, width in sides.items():
+        xy = c.xy + right * (sgn * (w / 2 + width / 2)) + front * (o.beside_lane_front_m / 2)
+        corners = rect_corners(xy, (width, depth), c.yaw)
+        ok &= st.space.valid(corners, 0.0, min(o.group_room_height_m, g.anchor.size_m[2]), floor=True)
+    return ok
+
+
+def beside_spots_free(st: RoomState, g: GroupSpec, c: Cands) -> np.ndarray | None:
+    """Mask of anchor poses ``c`` where every spot a member beside the anchor is asked
+    for (``place_beside``, each side it may take, at the preferred gap) is free; None
+    when no member stands beside the anchor."""
+    o = st.options
+    sides: dict[float, tuple[float, float]] = {}
+    for m in g.members:
+        if m.rule != "place_beside" or m.target not in (None, g.anchor.name):
+            continue
+        side = str(REGISTRY[m.rule].parse(m.params).side)  # type: ignore[attr-defined]
+        for sgn in {"left": (-1.0,), "right": (1.0,)}.get(side, (-1.0, 1.0)):
+            w0, d0 = sides.get(sgn, (0.0, 0.0))
+            sides[sgn] = (max(w0, m.size_m[0]), max(d0, m.size_m[1]))
+    if not sides:
+        return None
+    w, d = g.anchor.size_m[0], g.anchor.size_m[1]
+    cos, sin = np.cos(c.yaw), np.sin(c.yaw)
+    right = np.stack([cos, sin], 1)
+    front = np.stack([-sin, cos], 1)
+    ok = np.ones(len(c), dtype=bool)
+    for sgn, (mw, md) in sides.items():
+        xy = c.xy + right * (sgn * (w / 2 + beside_gap_m() + mw / 2)) + front * ((md - d) / 2)
+        ok &= st.space.valid(rect_corners(xy, (mw, md), c.yaw), 0.0, min(o.group_room_height_m, g.anchor.size_m[2]),
+                             floor=True)
+    return ok
+
+
+def beside_gap_m() -> float:
+    """The gap ``place_beside`` prefers between an object and the one it stands beside."""
+    from anyhome.layout.rules.place_beside import BESIDE_GAPS_M
+
+    return BESIDE_GAPS_M[0]
 
 
 def run_length(g: GroupSpec, rule: str, first: bool) -> tuple[float, float]:

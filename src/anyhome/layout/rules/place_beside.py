@@ -32,6 +32,8 @@ most this gap to the target..."""
 RELAXED_PREF = -1.0
 """...at this preference, less :data:`RELAXED_PER_M` per metre of gap."""
 RELAXED_PER_M = 0.3
+PAIR_TOL_M = 0.05
+"""Side gaps of a symmetric pair (two copies on ``both`` sides) differ by at most this."""
 
 
 class Params(RuleParams):
@@ -63,6 +65,25 @@ def stands_beside(obj: HouseObject, target: HouseObject) -> bool:
     side_gap = lat - (target.size[0] + obj.size[0]) / 2
     return (abs(float(np.cos(obj.yaw - target.yaw)) - 1.0) < 1e-6 and -0.01 <= side_gap <= BESIDE_GAPS_M[-1] + 0.01
             and abs(fwd - (obj.size[1] - target.size[1]) / 2) < 0.01)
+
+
+def side_of(obj: HouseObject, target: HouseObject) -> str:
+    """Which side of ``target`` the centre of ``obj`` lies on: ``left`` or ``right``."""
+    rel = np.asarray(obj.position[:2]) - np.asarray(target.position[:2])
+    return "right" if float(rel @ right_dir(target.yaw)) >= 0 else "left"
+
+
+def pair_matches(a: HouseObject, b: HouseObject, target: HouseObject) -> bool:
+    """Whether ``a`` and ``b`` stand beside ``target`` as a symmetric pair: one each side,
+    each where :func:`place_beside` puts it, their side gaps within :data:`PAIR_TOL_M`."""
+    if not (stands_beside(a, target) and stands_beside(b, target)) or side_of(a, target) == side_of(b, target):
+        return False
+    return abs(_side_gap(a, target) - _side_gap(b, target)) <= PAIR_TOL_M
+
+
+def _side_gap(obj: HouseObject, target: HouseObject) -> float:
+    rel = np.asarray(obj.position[:2]) - np.asarray(target.position[:2])
+    return abs(float(rel @ right_dir(target.yaw))) - (target.size[0] + obj.size[0]) / 2
 
 
 def near_on_walls(space: RoomSpace, target: HouseObject, size: Sequence[float]) -> Cands:

@@ -52,6 +52,11 @@ TO_WALL_SHIFTS_M = (0.0, 0.15, -0.15, 0.3, -0.3, 0.5, -0.5, 0.8, -0.8, 1.1, -1.1
 """Sideways shifts of the pose on the wall ahead."""
 
 
+CENTRED_TOL_M = 0.09
+"""Copies in front of a target whose centroid lies further than this off the target's
+axis are off centre (a compromise the group's anchor pose is tried again for)."""
+
+
 class Params(RuleParams):
     distance_m: float = Field(default=0.4, ge=0.0, le=20.0)
     """Gap between the target's front and the object, in metres."""
@@ -142,6 +147,12 @@ def copy_candidates(ctx: RuleContext) -> tuple[Cands, Kind]:
     assert isinstance(ctx.params, Params) and ctx.ref is not None
     lat = (ctx.copy - (ctx.count - 1) / 2) * (ctx.size[0] + COPY_GAP_M)
     return place_front(ctx.space, ctx.ref, ctx.size, ctx.params.distance_m, ctx.params.facing, lateral=lat), "floor"
+
+
+def off_centre_m(objs: Sequence[HouseObject], target: HouseObject) -> float:
+    """Sideways distance (m) of the centroid of ``objs`` from ``target``'s axis."""
+    c = np.mean([np.asarray(o.position[:2]) for o in objs], axis=0)
+    return abs(float((c - np.asarray(target.position[:2])) @ right_dir(target.yaw)))
 
 
 def extent(box: Extent, anchor_size: Sequence[float], size: Sequence[float], params: Any, count: int,

@@ -71,10 +71,19 @@ def place_next_wall(space: RoomSpace, size: Sequence[float], prev: HouseObject |
 
 
 def jumps(pieces: Sequence[HouseObject]) -> int:
-    """How many of ``pieces`` (a run, first piece first) stand more than
-    :data:`JOIN_GAP_M` from every piece before them: the run jumped there."""
+    """How many of ``pieces`` (a run, first piece first) are not joined to the first
+    through pieces each at most :data:`JOIN_GAP_M` from the next: the run jumped before
+    them (a piece after a jump counts too, as it stands apart from the run's start)."""
     polys = [footprint_polygon(p.position, p.size, p.yaw) for p in pieces]
-    return sum(1 for i in range(1, len(polys)) if min(polys[i].distance(q) for q in polys[:i]) > JOIN_GAP_M)
+    joined = {0}
+    frontier = [0]
+    while frontier:
+        a = frontier.pop()
+        for b in range(len(polys)):
+            if b not in joined and polys[a].distance(polys[b]) <= JOIN_GAP_M:
+                joined.add(b)
+                frontier.append(b)
+    return len(polys) - len(joined)
 
 
 def candidates(ctx: RuleContext) -> tuple[Cands, Kind]:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import weakref
 from collections.abc import Sequence
 from typing import Literal
 
@@ -36,7 +37,37 @@ class Params(RuleParams):
     ``target``, else its group's anchor); 0: no such wish."""
 
 
+_CACHE: dict[int, tuple[weakref.ref[RoomSpace], dict[tuple[float, float, str], Cands]]] = {}
+"""Wall poses by room (its id, while it lives) and (width, depth, which wall): they depend
+on the room's outline alone, and every member beside or in front of something asks for
+them again."""
+
+
+def _room_cache(space: RoomSpace) -> dict[tuple[float, float, str], Cands]:
+    key = id(space)
+    got = _CACHE.get(key)
+    if got is None or got[0]() is not space:
+        got = (weakref.ref(space, lambda _: _CACHE.pop(key, None)), {})
+        _CACHE[key] = got
+    return got[1]
+
+
 def place_wall(space: RoomSpace, size: Sequence[float], which: str = "any") -> Cands:
+    """Every pose with the back of a box ``size`` against a wall of ``space`` (``which``:
+    see :class:`Params`); read-only arrays, shared between calls (a caller changing a
+    preference makes a new array)."""
+    key = (float(size[0]), float(size[1]), which)
+    per_room = _room_cache(space)
+    got = per_room.get(key)
+    if got is None:
+        got = _place_wall(space, size, which)
+        for a in (got.xy, got.yaw, got.z, got.pref):
+            a.flags.writeable = False
+        per_room[key] = got
+    return Cands(got.xy, got.yaw, got.z, got.pref)
+
+
+def _place_wall(space: RoomSpace, size: Sequence[float], which: str) -> Cands:
     w, d = size[0], size[1]
     longest = max((wl.length for wl in space.walls), default=0.0)
     out = Cands.empty()
