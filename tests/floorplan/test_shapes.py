@@ -123,3 +123,21 @@ def test_hooks_refuse_what_they_cannot_honour_in_one_line(kwargs: dict, words: s
     with pytest.raises(FloorplanError) as e:
         solve_floorplan(family_home(), np.random.default_rng(0), **kwargs)
     assert words in str(e.value) and "\n" not in str(e.value)
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_a_room_with_four_doors_keeps_wall_between_them(seed: int) -> None:
+    """A kindergarten's cloakroom opens to the play room, the nap room, the kitchenette and
+    outside: it is at least hub_min_side_m wide (at 1.6 m its bench had no wall left)."""
+    from anyhome.floorplan.options import FloorplanOptions
+
+    spec = _spec(
+        [("cloakroom", "entry", 3.8), ("play", "playroom", 42.0), ("nap", "bedroom", 30.0),
+         ("kitchenette", "kitchen", 6.7), ("bath", "bathroom", 6.4)],
+        [("cloakroom", "play"), ("cloakroom", "nap"), ("cloakroom", "kitchenette"), ("play", "bath"),
+         ("cloakroom", "outside")],
+    )
+    fp = solve_floorplan(spec, np.random.default_rng(seed))
+    check_floorplan(spec, fp)
+    cloak = next(r for r in fp.rooms if r.id == "cloakroom")
+    assert _sides(cloak.polygon)[0] >= FloorplanOptions().hub_min_side_m - 0.06
