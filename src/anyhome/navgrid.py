@@ -13,8 +13,11 @@ house-wide one, so what passes here passes the house-wide check.
 Speed: a cell is walkable when no blocked cell lies within the agent radius of it. The
 empty room's walkable cells come from one distance transform; each obstacle then takes
 away its *shadow*, its cells dilated by the agent's disc on a window around it, which
-is exactly what a distance transform of the furnished room would take away. Components
-are labelled again only when an obstacle took walkable cells away since the last time.
+is exactly what a distance transform of the furnished room would take away. When an
+obstacle takes walkable cells away, the components are labelled on a small window round
+them only (:data:`LABEL_MARGIN_CELLS`): when the walkable cells bordering the lost ones
+are connected within it, every path that crossed the lost cells goes round them, so the
+components are the same less the lost cells; else the whole raster is labelled again.
 """
 
 from __future__ import annotations
@@ -47,6 +50,15 @@ REACH_M = AGENT_RADIUS_M + 2 * NAV_CELL_M - REACH_MARGIN_M
 """A floor object is reachable from a walkable cell whose centre lies this close to its
 footprint (the evaluator's ``agent_radius_m + 2 cells``, less :data:`REACH_MARGIN_M`)."""
 
+LABEL_MARGIN_CELLS = 4
+"""Cells round an obstacle's lost walkable cells within which they are labelled again
+first (the module docstring)."""
+
+
+_CROSS = ndimage.generate_binary_structure(2, 1)
+"""4-connectivity, ndimage.label's default in 2D."""
+
+
 @dataclass(frozen=True)
 class Patch:
     """Raster cells ``mask`` in the window whose first cell is at row ``i0``, column ``j0``."""
@@ -70,6 +82,7 @@ class NavState:
     obstacles: list[Obstacle]
     labels: np.ndarray | None
     door_labels: np.ndarray
+    door_stale: bool
     labels_a: np.ndarray | None
     door_a: np.ndarray
     door_a_stale: bool
@@ -150,9 +163,12 @@ class NavGrid:
         """Labels of ``walk_a``'s components holding the door component (with ``_labels_a``)."""
         self._door_a_stale = True
         self._labels: np.ndarray | None = None
-        """Walkable components of ``walk`` (None: to be labelled again)."""
+        """Walkable components of ``walk`` (None: to be labelled again); never written in
+        place (a :class:`NavState` may hold it)."""
         self._door_labels = np.zeros(0, dtype=np.int32)
         """Labels of the door component (with ``_labels``)."""
+        self._door_stale = True
+        """``_door_labels`` to be found again in ``_labels``."""
         self.radius: float | None = None
         for r in (WALKWAY_RADIUS_M, AGENT_RADIUS_M):
             self._use_radius(r)
@@ -253,15 +269,30 @@ class NavGrid:
     def add(self, obs: Obstacle) -> None:
         """Block ``obs`` (a committed object)."""
         self.obstacles.append(obs)
-        win = obs.shadow.window
-        lost = self.walk[win] & obs.shadow.mask
+        sh = obs.shadow
+        lost = self.walk[sh.window] & sh.mask
         if lost.any():
-            self.walk[win] &= ~obs.shadow.mask
-            self._labels = None
+            self.walk[sh.window] &= ~sh.mask
+            self._labels, split = _cut(self._labels, self.walk, Patch(sh.i0, sh.j0, lost))
+            self._door_stale = self._door_a_stale = True
+            if self.walk_a is None:
+                self._forget(sh, split)
         sa = obs.reach_shadow
-        if self.walk_a is not None and sa is not None and (self.walk_a[sa.window] & sa.mask).any():
-            self.walk_a[sa.window] &= ~sa.mask
-            self._labels_a = None
+        if self.walk_a is not None and sa is not None:
+            lost = self.walk_a[sa.window] & sa.mask
+            if lost.any():
+                self.walk_a[sa.window] &= ~sa.mask
+                self._labels_a, split = _cut(self._labels_a, self.walk_a, Patch(sa.i0, sa.j0, lost))
+                self._door_a_stale = True
+                self._forget(sa, split)
+
+    def _forget(self, p: Patch, split: bool) -> None:
+        """Objects reached from cells in ``p``'s window are no longer known to be reached
+        (``split``: a component split, none is)."""
+        if split:
+            self._known = set()
+        elif self._known:
+            self._known = {o for o in self._known if o.reach is None or not _meet(o.reach, p)}
 
     def set_blocked(self, placed: list[Placed]) -> None:
         """Start again from the empty room with the obstacles of ``placed``."""
@@ -281,7 +312,8 @@ class NavGrid:
         """What :meth:`load` needs to come back to the walkways as they are now."""
         return NavState(
             self.walk.copy(), None if self.walk_a is None else self.walk_a.copy(), list(self.obstacles),
-            self._labels, self._door_labels, self._labels_a, self._door_a, self._door_a_stale, set(self._known),
+            self._labels, self._door_labels, self._door_stale, self._labels_a, self._door_a, self._door_a_stale,
+            set(self._known),
         )
 
     def load(self, s: NavState) -> None:
@@ -289,7 +321,7 @@ class NavGrid:
         self.walk = s.walk.copy()
         self.walk_a = None if s.walk_a is None else s.walk_a.copy()
         self.obstacles = list(s.obstacles)
-        self._labels, self._door_labels = s.labels, s.door_labels
+        self._labels, self._door_labels, self._door_stale = s.labels, s.door_labels, s.door_stale
         self._labels_a, self._door_a, self._door_a_stale = s.labels_a, s.door_a, s.door_a_stale
         self._known = set(s.known)
 
@@ -345,25 +377,29 @@ class NavGrid:
         if self.walk_a is None:
             return self._labels, door
         if self._labels_a is None:
-            self._labels_a, _ = ndimage.label(self.walk_a)
+            self._labels_a, _ = ndimage.label(self.walk_a, structure=_CROSS)
             self._known = set()
             self._door_a_stale = True
         if self._door_a_stale:
             self._door_a_stale = False
             cells = np.concatenate(self._door_idx) if self._door_idx else self._room_idx
             on = cells[np.isin(self._labels.ravel()[cells], door)]
-            self._door_a = np.unique(self._labels_a.ravel()[on])
+            door_a = np.unique(self._labels_a.ravel()[on])
+            if not np.array_equal(door_a, self._door_a):
+                self._known = set()
+            self._door_a = door_a
         return self._labels_a, self._door_a
 
     def _door_component(self) -> np.ndarray | None:
         """Labels of the walkable components that touch every door and some room cells
         (None: none does)."""
         if self._labels is None:
-            labels, _ = ndimage.label(self.walk)
-            self._labels = labels
+            self._labels, _ = ndimage.label(self.walk, structure=_CROSS)
             self._known = set()
-            self._door_a_stale = True
-            flat = labels.ravel()
+            self._door_stale = self._door_a_stale = True
+        if self._door_stale:
+            self._door_stale = False
+            flat = self._labels.ravel()
             common: set[int] | None = None
             for idx in self._door_idx:
                 lab = set(np.unique(flat[idx]).tolist()) - {0}
@@ -371,6 +407,64 @@ class NavGrid:
             room = flat[self._room_idx]
             if common is None:
                 common = set(np.unique(room).tolist()) - {0}
-            keep = [lab for lab in sorted(common) if np.any(room == lab)]
-            self._door_labels = np.array(keep, dtype=np.int32)
+            keep = np.array([lab for lab in sorted(common) if np.any(room == lab)], dtype=np.int32)
+            if not np.array_equal(keep, self._door_labels):
+                self._known = set()
+                self._door_a_stale = True
+            self._door_labels = keep
         return self._door_labels if len(self._door_labels) else None
+
+
+def _meet(a: Patch, b: Patch) -> bool:
+    """Whether the windows of ``a`` and ``b`` share a cell."""
+    (ha, wa), (hb, wb) = a.mask.shape, b.mask.shape
+    return a.i0 < b.i0 + hb and b.i0 < a.i0 + ha and a.j0 < b.j0 + wb and b.j0 < a.j0 + wa
+
+
+def _cut(labels: np.ndarray | None, walk: np.ndarray, lost: Patch) -> tuple[np.ndarray | None, bool]:
+    """``labels``, the components of the walkable cells before the cells ``lost`` were taken
+    away from ``walk`` (already without them), updated on the window
+    :data:`LABEL_MARGIN_CELLS` round them, and whether a component split; None (to be
+    labelled again) when that window does not settle them.
+
+    The walkable cells bordering the lost ones (the *ring*) fall into components of the
+    window. One that keeps off the window's edge is a whole component (a pocket cut off):
+    it gets a label of its own. When the rest of the ring that was in one component lies
+    in one component of the window, every path that crossed the lost cells goes round them
+    there, so the other components are the same as before less the lost cells."""
+    if labels is None:
+        return None, True
+    m = LABEL_MARGIN_CELLS
+    h, w = lost.mask.shape
+    ny, nx = walk.shape
+    i0, j0 = max(0, lost.i0 - m), max(0, lost.j0 - m)
+    i1, j1 = min(ny, lost.i0 + h + m), min(nx, lost.j0 + w + m)
+    gone = np.zeros((i1 - i0, j1 - j0), dtype=bool)
+    gone[lost.i0 - i0:lost.i0 - i0 + h, lost.j0 - j0:lost.j0 - j0 + w] = lost.mask
+    near = gone.copy()  # the lost cells and their 4-neighbours (ndimage.label's connectivity)
+    near[1:] |= gone[:-1]
+    near[:-1] |= gone[1:]
+    near[:, 1:] |= gone[:, :-1]
+    near[:, :-1] |= gone[:, 1:]
+    sub = walk[i0:i1, j0:j1]
+    ring = near & sub
+    pockets: list[int] = []
+    lab = np.zeros(0, dtype=np.int32)
+    if ring.any():
+        lab, _ = ndimage.label(sub, structure=_CROSS)
+        got, first = np.unique(lab[ring], return_index=True)
+        if len(got) > 1:
+            edge = np.unique(np.concatenate((lab[0], lab[-1], lab[:, 0], lab[:, -1])))
+            shut = ~np.isin(got, edge)
+            pockets = got[shut].tolist()
+            was = labels[i0:i1, j0:j1][ring][first[~shut]]  # the component each open one was part of
+            if len(np.unique(was)) < len(was):
+                return None, True
+    out = labels.copy()
+    out[lost.window][lost.mask] = 0
+    if pockets:
+        top = int(out.max())
+        win = out[i0:i1, j0:j1]
+        for k, g in enumerate(pockets, 1):
+            win[lab == g] = top + k
+    return out, bool(pockets)
