@@ -145,6 +145,10 @@ class NavGrid:
         self.base_free = free
         self._door_idx = [np.flatnonzero(m) for m in self.door_near]
         self._room_idx = np.flatnonzero(self.room_mask)
+        self._door_cells = np.concatenate(self._door_idx) if self._door_idx else self._room_idx
+        """Cells near a door (of the room when it has none)."""
+        self._door_room_idx = np.flatnonzero(np.any(self.door_near, 0) & self.room_mask) if self.door_near else self._room_idx
+        """Room cells near a door: a component touching one touches the room."""
         self._known: set[Obstacle] = set()
         self._cells: dict[Obstacle, np.ndarray] = {}
         """Flat indices of each obstacle's reach cells (:meth:`_reach_cells`)."""
@@ -382,7 +386,7 @@ class NavGrid:
             self._door_a_stale = True
         if self._door_a_stale:
             self._door_a_stale = False
-            cells = np.concatenate(self._door_idx) if self._door_idx else self._room_idx
+            cells = self._door_cells
             on = cells[np.isin(self._labels.ravel()[cells], door)]
             door_a = np.unique(self._labels_a.ravel()[on])
             if not np.array_equal(door_a, self._door_a):
@@ -404,10 +408,11 @@ class NavGrid:
             for idx in self._door_idx:
                 lab = set(np.unique(flat[idx]).tolist()) - {0}
                 common = lab if common is None else common & lab
-            room = flat[self._room_idx]
             if common is None:
-                common = set(np.unique(room).tolist()) - {0}
-            keep = np.array([lab for lab in sorted(common) if np.any(room == lab)], dtype=np.int32)
+                common = set(np.unique(flat[self._room_idx]).tolist()) - {0}
+            near = flat[self._door_room_idx]
+            keep = np.array([lab for lab in sorted(common)
+                             if np.any(near == lab) or np.any(flat[self._room_idx] == lab)], dtype=np.int32)
             if not np.array_equal(keep, self._door_labels):
                 self._known = set()
                 self._door_a_stale = True
@@ -439,27 +444,10 @@ def _cut(labels: np.ndarray | None, walk: np.ndarray, lost: Patch) -> tuple[np.n
     ny, nx = walk.shape
     i0, j0 = max(0, lost.i0 - m), max(0, lost.j0 - m)
     i1, j1 = min(ny, lost.i0 + h + m), min(nx, lost.j0 + w + m)
-    gone = np.zeros((i1 - i0, j1 - j0), dtype=bool)
-    gone[lost.i0 - i0:lost.i0 - i0 + h, lost.j0 - j0:lost.j0 - j0 + w] = lost.mask
-    near = gone.copy()  # the lost cells and their 4-neighbours (ndimage.label's connectivity)
-    near[1:] |= gone[:-1]
-    near[:-1] |= gone[1:]
-    near[:, 1:] |= gone[:, :-1]
-    near[:, :-1] |= gone[:, 1:]
-    sub = walk[i0:i1, j0:j1]
-    ring = near & sub
-    pockets: list[int] = []
-    lab = np.zeros(0, dtype=np.int32)
-    if ring.any():
-        lab, _ = ndimage.label(sub, structure=_CROSS)
-        got, first = np.unique(lab[ring], return_index=True)
-        if len(got) > 1:
-            edge = np.unique(np.concatenate((lab[0], lab[-1], lab[:, 0], lab[:, -1])))
-            shut = ~np.isin(got, edge)
-            pockets = got[shut].tolist()
-            was = labels[i0:i1, j0:j1][ring][first[~shut]]  # the component each open one was part of
-            if len(np.unique(was)) < len(was):
-                return None, True
+    lab, n = ndimage.label(walk[i0:i1, j0:j1], structure=_CROSS)
+    pockets = _pockets(labels[i0:i1, j0:j1], lab, Patch(lost.i0 - i0, lost.j0 - j0, lost.mask)) if n > 1 else []
+    if pockets is None:
+        return None, True
     out = labels.copy()
     out[lost.window][lost.mask] = 0
     if pockets:
@@ -468,3 +456,26 @@ def _cut(labels: np.ndarray | None, walk: np.ndarray, lost: Patch) -> tuple[np.n
         for k, g in enumerate(pockets, 1):
             win[lab == g] = top + k
     return out, bool(pockets)
+
+
+def _pockets(was: np.ndarray, lab: np.ndarray, lost: Patch) -> list[int] | None:
+    """The components of a window (``lab``, its labels now; ``was``, its labels before
+    ``lost`` was taken away) bordering ``lost`` that keep off its edge; None when two that
+    reach its edge were one component before (:func:`_cut`)."""
+    gone = np.zeros(lab.shape, dtype=bool)
+    gone[lost.window] = lost.mask
+    near = gone.copy()  # the lost cells and their 4-neighbours (ndimage.label's connectivity)
+    near[1:] |= gone[:-1]
+    near[:-1] |= gone[1:]
+    near[:, 1:] |= gone[:, :-1]
+    near[:, :-1] |= gone[:, 1:]
+    ring = near & (lab > 0)
+    got, first = np.unique(lab[ring], return_index=True)
+    if len(got) < 2:
+        return []
+    edge = np.unique(np.concatenate((lab[0], lab[-1], lab[:, 0], lab[:, -1])))
+    shut = ~np.isin(got, edge)
+    before = was[ring][first[~shut]]  # the component each one reaching the edge was part of
+    if len(np.unique(before)) < len(before):
+        return None
+    return got[shut].tolist()
