@@ -22,6 +22,8 @@ components are the same less the lost cells; else the whole raster is labelled a
 
 from __future__ import annotations
 
+import math
+from bisect import bisect_left
 from dataclasses import dataclass
 
 import numpy as np
@@ -122,6 +124,8 @@ class NavGrid:
         self.xs = x0 + cell_m * np.arange(j0, j1)
         self.ys = y0 + cell_m * np.arange(i0, i1)
         self.gx, self.gy = np.meshgrid(self.xs, self.ys)
+        self._xs, self._ys = self.xs.tolist(), self.ys.tolist()
+        """The same as lists (bisect on them finds what np.searchsorted finds)."""
         half = cell_m / 2
         inset = WALL_INSET_CELLS * cell_m
         self.room_mask = self._raster(space.poly.buffer(-inset, join_style="mitre"))
@@ -220,19 +224,24 @@ class NavGrid:
     def _rect_patch(self, corners: np.ndarray, grow_m: float, rounded: bool) -> Patch:
         """Cells whose centre lies in a rotated rectangle, (4, 2) corners, grown by ``grow_m``
         (``rounded``: within ``grow_m`` of it; else in the rectangle grown square)."""
-        lo, hi = corners.min(0) - grow_m, corners.max(0) + grow_m
-        i0, i1 = (int(v) for v in np.searchsorted(self.ys, [lo[1], hi[1]]))
-        j0, j1 = (int(v) for v in np.searchsorted(self.xs, [lo[0], hi[0]]))
+        (ax, ay), (bx, by), (cx, cy), (dx, dy) = corners.tolist()
+        i0, i1 = bisect_left(self._ys, min(ay, by, cy, dy) - grow_m), bisect_left(self._ys, max(ay, by, cy, dy) + grow_m)
+        j0, j1 = bisect_left(self._xs, min(ax, bx, cx, dx) - grow_m), bisect_left(self._xs, max(ax, bx, cx, dx) + grow_m)
         if i0 >= i1 or j0 >= j1:
             return Patch(0, 0, np.zeros((0, 0), dtype=bool))
-        c = corners.mean(0)
+        mx, my = (ax + bx + cx + dx) / 4, (ay + by + cy + dy) / 4  # as corners.mean(0) sums them
         ex, ey = corners[1] - corners[0], corners[3] - corners[0]
-        hw, hd = np.linalg.norm(ex) / 2, np.linalg.norm(ey) / 2
-        ex, ey = ex / (2 * hw), ey / (2 * hd)
-        px = self.xs[None, j0:j1] - c[0]
-        py = self.ys[i0:i1, None] - c[1]
-        lx = np.abs(px * ex[0] + py * ex[1])
-        ly = np.abs(px * ey[0] + py * ey[1])
+        hw, hd = math.sqrt(ex.dot(ex)) / 2, math.sqrt(ey.dot(ey)) / 2  # as np.linalg.norm
+        (ex0, ex1), (ey0, ey1) = (ex / (2 * hw)).tolist(), (ey / (2 * hd)).tolist()
+        px = self.xs[j0:j1] - mx
+        py = self.ys[i0:i1] - my
+        if ex1 == 0.0 and ey0 == 0.0:  # square to the raster: a product of a row and a column
+            lx, ly = np.abs(px * ex0)[None], np.abs(py * ey1)[:, None]
+        elif ex0 == 0.0 and ey1 == 0.0:
+            lx, ly = np.abs(py * ex1)[:, None], np.abs(px * ey0)[None]
+        else:
+            lx = np.abs(px[None] * ex0 + py[:, None] * ex1)
+            ly = np.abs(px[None] * ey0 + py[:, None] * ey1)
         if rounded:
             mask = np.hypot(np.maximum(lx - hw, 0.0), np.maximum(ly - hd, 0.0)) <= grow_m
         else:
@@ -263,9 +272,10 @@ class NavGrid:
             dx = np.maximum(0, np.maximum(cells.j0 - cols, cols - (cells.j0 + w - 1))).astype(float)
             # as _disc_of measures: sqrt of the summed squares, times the cell
             return Patch(i0, j0, ~(np.sqrt(dy[:, None] ** 2 + dx[None, :] ** 2) * self.cell > radius))
-        pad = np.zeros((h + 2 * k, w + 2 * k), dtype=bool)
-        pad[k:k + h, k:k + w] = cells.mask
-        grown = ndimage.binary_dilation(pad, structure=disc)
+        free = np.ones((h + 2 * k, w + 2 * k), dtype=bool)
+        free[k:k + h, k:k + w] = ~cells.mask
+        # the cells within the disc of a blocked one: its dilation by the disc, as _disc_of measures
+        grown = ~(ndimage.distance_transform_edt(free) * self.cell > radius)
         a, b = i0 - (cells.i0 - k), j0 - (cells.j0 - k)
         return Patch(i0, j0, grown[a:a + i1 - i0, b:b + j1 - j0])
 

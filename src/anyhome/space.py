@@ -69,13 +69,19 @@ def rect_corners(xy: npt.ArrayLike, wd: npt.ArrayLike, yaw: npt.ArrayLike) -> np
     -------
     corners : (n, 4, 2) float, back-left, back-right, front-right, front-left
     """
-    xy_a = np.atleast_2d(np.asarray(xy, dtype=float))
+    xy_a = np.asarray(xy, dtype=float).reshape(-1, 2)
     n = len(xy_a)
-    yaw_a = np.broadcast_to(np.asarray(yaw, dtype=float), (n,))
-    wd_a = np.broadcast_to(np.asarray(wd, dtype=float), (n, 2))
-    hw, hd = wd_a[:, 0] / 2.0, wd_a[:, 1] / 2.0
-    lx = hw[:, None] * _SIGN_X  # (n, 4): -hw, hw, hw, -hw (a sign flip is exact)
-    ly = hd[:, None] * _SIGN_Y
+    yaw_a = np.asarray(yaw, dtype=float).reshape(-1)
+    if len(yaw_a) != n:
+        yaw_a = np.broadcast_to(yaw_a, (n,))
+    wd_a = np.asarray(wd, dtype=float)
+    if wd_a.ndim == 1:  # one size: the same arithmetic on scalars
+        lx = (wd_a[0] / 2.0) * _SIGN_X  # -hw, hw, hw, -hw (a sign flip is exact)
+        ly = (wd_a[1] / 2.0) * _SIGN_Y
+    else:
+        wd_a = np.broadcast_to(wd_a, (n, 2))
+        lx = (wd_a[:, 0] / 2.0)[:, None] * _SIGN_X
+        ly = (wd_a[:, 1] / 2.0)[:, None] * _SIGN_Y
     c, s = np.cos(yaw_a)[:, None], np.sin(yaw_a)[:, None]
     out = np.empty((n, 4, 2))
     out[..., 0] = lx * c - ly * s + xy_a[:, 0, None]
