@@ -184,6 +184,16 @@ def overlap_above(a: np.ndarray, b: np.ndarray, thr: float, inclusive: bool = Fa
     return out
 
 
+def _box_in(lo: np.ndarray, hi: np.ndarray, box: tuple[float, float, float, float], e: float
+            ) -> tuple[np.ndarray, np.ndarray]:
+    """Whether all corners of footprints of bounds ``lo``, ``hi`` (n, 2) lie in ``box`` (x0,
+    y0, x1, y1) shrunk by ``e``, and whether they lie in it grown by ``e`` (n,) each."""
+    x0, y0, x1, y1 = box
+    inner = (lo[:, 0] > x0 + e) & (hi[:, 0] < x1 - e) & (lo[:, 1] > y0 + e) & (hi[:, 1] < y1 - e)
+    outer = (lo[:, 0] > x0 - e) & (hi[:, 0] < x1 + e) & (lo[:, 1] > y0 - e) & (hi[:, 1] < y1 + e)
+    return inner, outer
+
+
 def _cmin(c: np.ndarray) -> np.ndarray:
     """(n, 4, 2) corners -> (n, 2) lower bounds (faster than ``min(1)`` on a short axis)."""
     return np.minimum(np.minimum(c[:, 0], c[:, 1]), np.minimum(c[:, 2], c[:, 3]))
@@ -377,6 +387,10 @@ class RoomSpace:
         limit = self.height if floor else self.height - CEILING_GAP_M
         ok &= z1 <= limit + 1e-9
         idx = np.nonzero(ok)[0]
+        if idx.size and self.buf_box is not None and self.convex:  # a rectangle: most settled by their bounds
+            inner, outer = _box_in(mins[idx], maxs[idx], self.buf_box, _BOX_EDGE_M)
+            ok[idx[~outer]] = False  # a corner outside: out
+            idx = idx[outer & ~inner]  # a corner a hair from the outline: as below
         if idx.size:
             c = corners[idx]
             pin = self._in_buf(c[..., 0].ravel(), c[..., 1].ravel()).reshape(-1, 4)
@@ -404,11 +418,35 @@ class RoomSpace:
         idx = np.nonzero(ok)[0]
         pc, pz0, pz1 = self._arrays(layer)
         if idx.size and len(pc):
-            zov = np.minimum(z1[idx, None], pz1[None]) - np.maximum(z0[idx, None], pz0[None])
-            hit = overlap_above(corners[idx], pc, EPS_COLLIDE_M, amin=mins[idx], amax=maxs[idx],
-                                pairs=zov > EPS_COLLIDE_M)
-            ok[idx] = ~np.any(hit, 1)
+            pmin, pmax, pal = self._bounds(layer)
+            # pairs whose bounds overlap in x and y (no other can overlap by EPS_COLLIDE_M), then
+            # as overlap_above(corners, pc, EPS_COLLIDE_M, pairs=boxes overlapping in z) on them
+            a0, a1 = mins[idx], maxs[idx]
+            i, j = np.nonzero((a0[:, 0, None] < pmax[None, :, 0]) & (a1[:, 0, None] > pmin[None, :, 0]))
+            keep = (a0[i, 1] < pmax[j, 1]) & (a1[i, 1] > pmin[j, 1])
+            i, j = i[keep], j[keep]
+            zov = np.minimum(z1[idx[i]], pz1[j]) - np.maximum(z0[idx[i]], pz0[j])
+            keep = zov > EPS_COLLIDE_M
+            i, j = i[keep], j[keep]
+            ox = np.minimum(a1[i, 0], pmax[j, 0]) - np.maximum(a0[i, 0], pmin[j, 0])
+            oy = np.minimum(a1[i, 1], pmax[j, 1]) - np.maximum(a0[i, 1], pmin[j, 1])
+            bb = np.minimum(ox, oy)
+            hit = bb > EPS_COLLIDE_M
+            need = (bb >= EPS_COLLIDE_M - _SAT_SLACK_M) & ~(_aligned(corners[idx[i]]) & pal[j]) & (bb > -0.05)
+            if need.any():
+                k = np.nonzero(need)[0]
+                hit[k] = _sat_pairs(corners[idx[i[k]]], pc[j[k]]) > EPS_COLLIDE_M
+            ok[idx[i[hit]]] = False
         return ok
+
+    def _bounds(self, layer: bool) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Lower and upper bounds (m, 2) of the footprints of :meth:`_arrays` and whether each
+        is square to the axes (m,)."""
+        memo = self._memo()
+        if ("bounds", layer) not in memo:
+            pc = self._arrays(layer)[0]
+            memo["bounds", layer] = (_cmin(pc), _cmax(pc), _aligned(pc))
+        return memo["bounds", layer]  # type: ignore[return-value]
 
     def _in_buf(self, x: np.ndarray, y: np.ndarray) -> np.ndarray:
         """``shapely.contains_xy(self.buf, x, y)``; for an axis-aligned rectangle by comparing
