@@ -8,6 +8,7 @@ margins everywhere), so a pose accepted here stays valid after house.json rounds
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, cast
 
@@ -194,6 +195,49 @@ def _box_in(lo: np.ndarray, hi: np.ndarray, box: tuple[float, float, float, floa
     return inner, outer
 
 
+_PAIR_MARGIN_M = 0.01
+"""Bounds further apart than this beyond a (negative) threshold are not compared (m)."""
+
+
+def _any_overlap(a: np.ndarray, amin: np.ndarray, amax: np.ndarray, idx: np.ndarray, b: np.ndarray,
+                 bmin: np.ndarray, bmax: np.ndarray, b_aligned: np.ndarray, thr: float, inclusive: bool = False,
+                 pairs: Callable[[np.ndarray, np.ndarray], np.ndarray] | None = None) -> np.ndarray:
+    """``np.any(overlap_above(a[idx], b, thr, inclusive, pairs=...), 1)``, (len(idx),) bool,
+    computed on the pairs whose bounds come closer than ``max(0, -thr)`` plus
+    :data:`_PAIR_MARGIN_M` only (no other overlaps by ``thr``).
+
+    Parameters
+    ----------
+    a : (n, 4, 2) float, amin, amax : (n, 2) float, its bounds; idx : (k,) int, the rows of ``a`` tested
+    b : (m, 4, 2) float, bmin, bmax : (m, 2) float, b_aligned : (m,) bool (:func:`_aligned`)
+    pairs : (rows of ``idx``, rows of ``b``) -> bool, the pairs that may overlap at all
+    """
+    g = max(0.0, -thr) + _PAIR_MARGIN_M
+    lo, hi = amin[idx], amax[idx]
+    i, j = np.nonzero((lo[:, 0, None] < bmax[None, :, 0] + g) & (hi[:, 0, None] > bmin[None, :, 0] - g))
+    keep = (lo[i, 1] < bmax[j, 1] + g) & (hi[i, 1] > bmin[j, 1] - g)
+    i, j = i[keep], j[keep]
+    if pairs is not None and len(i):
+        keep = pairs(i, j)
+        i, j = i[keep], j[keep]
+    out = np.zeros(len(idx), dtype=bool)
+    if not len(i):
+        return out
+    ox = np.minimum(hi[i, 0], bmax[j, 0]) - np.maximum(lo[i, 0], bmin[j, 0])
+    oy = np.minimum(hi[i, 1], bmax[j, 1]) - np.maximum(lo[i, 1], bmin[j, 1])
+    bb = np.minimum(ox, oy)
+    hit = bb >= thr if inclusive else bb > thr
+    k = np.nonzero((bb >= thr - _SAT_SLACK_M) & (bb > -0.05))[0]  # as overlap_above, the axes of these
+    if k.size:
+        ai = a[idx[i[k]]]
+        k, ai = k[~(_aligned(ai) & b_aligned[j[k]])], ai[~(_aligned(ai) & b_aligned[j[k]])]
+        if k.size:
+            ov = _sat_pairs(ai, b[j[k]])
+            hit[k] = ov >= thr if inclusive else ov > thr
+    out[i[hit]] = True
+    return out
+
+
 def _cmin(c: np.ndarray) -> np.ndarray:
     """(n, 4, 2) corners -> (n, 2) lower bounds (faster than ``min(1)`` on a short axis)."""
     return np.minimum(np.minimum(c[:, 0], c[:, 1]), np.minimum(c[:, 2], c[:, 3]))
@@ -312,6 +356,7 @@ class RoomSpace:
             zones += stair_zones(self.floorplan).get(self.room.id, [])
         self.door_zones = np.asarray(zones).reshape(-1, 4, 2)
         self.zone_lo, self.zone_hi = self.door_zones.min(1), self.door_zones.max(1)
+        self.zone_aligned = _aligned(self.door_zones)
         self.zone_polys = [Polygon(z) for z in zones]
         wzones = []
         for w in self.floorplan.windows:
@@ -405,38 +450,24 @@ class RoomSpace:
             ok[idx] = inner
         idx = np.nonzero(ok)[0]
         if idx.size and doors and len(self.door_zones):
-            near_door = overlap_above(corners[idx], self.door_zones, -DOOR_MARGIN_M, inclusive=True,
-                                      amin=mins[idx], amax=maxs[idx])
-            ok[idx] = ~np.any(near_door, 1)
-        idx = np.nonzero(ok)[0]
+            ok[idx[_any_overlap(corners, mins, maxs, idx, self.door_zones, self.zone_lo, self.zone_hi,
+                                self.zone_aligned, -DOOR_MARGIN_M, inclusive=True)]] = False
+            idx = np.nonzero(ok)[0]
         if idx.size and floor and not layer and self.keep_clear:
-            tall = z1[idx] > VIEW_CLEAR_M
-            if tall.any():
-                seen = overlap_above(corners[idx], np.stack(self.keep_clear), EPS_COLLIDE_M,
-                                     amin=mins[idx], amax=maxs[idx])
-                ok[idx] = ~(tall & np.any(seen, 1))
-        idx = np.nonzero(ok)[0]
+            tall = idx[z1[idx] > VIEW_CLEAR_M]
+            if tall.size:
+                kc = np.stack(self.keep_clear)
+                ok[tall[_any_overlap(corners, mins, maxs, tall, kc, _cmin(kc), _cmax(kc), _aligned(kc),
+                                     EPS_COLLIDE_M)]] = False
+                idx = np.nonzero(ok)[0]
         pc, pz0, pz1 = self._arrays(layer)
         if idx.size and len(pc):
             pmin, pmax, pal = self._bounds(layer)
-            # pairs whose bounds overlap in x and y (no other can overlap by EPS_COLLIDE_M), then
-            # as overlap_above(corners, pc, EPS_COLLIDE_M, pairs=boxes overlapping in z) on them
-            a0, a1 = mins[idx], maxs[idx]
-            i, j = np.nonzero((a0[:, 0, None] < pmax[None, :, 0]) & (a1[:, 0, None] > pmin[None, :, 0]))
-            keep = (a0[i, 1] < pmax[j, 1]) & (a1[i, 1] > pmin[j, 1])
-            i, j = i[keep], j[keep]
-            zov = np.minimum(z1[idx[i]], pz1[j]) - np.maximum(z0[idx[i]], pz0[j])
-            keep = zov > EPS_COLLIDE_M
-            i, j = i[keep], j[keep]
-            ox = np.minimum(a1[i, 0], pmax[j, 0]) - np.maximum(a0[i, 0], pmin[j, 0])
-            oy = np.minimum(a1[i, 1], pmax[j, 1]) - np.maximum(a0[i, 1], pmin[j, 1])
-            bb = np.minimum(ox, oy)
-            hit = bb > EPS_COLLIDE_M
-            need = (bb >= EPS_COLLIDE_M - _SAT_SLACK_M) & ~(_aligned(corners[idx[i]]) & pal[j]) & (bb > -0.05)
-            if need.any():
-                k = np.nonzero(need)[0]
-                hit[k] = _sat_pairs(corners[idx[i[k]]], pc[j[k]]) > EPS_COLLIDE_M
-            ok[idx[i[hit]]] = False
+
+            def in_z(i: np.ndarray, j: np.ndarray) -> np.ndarray:
+                return np.minimum(z1[idx[i]], pz1[j]) - np.maximum(z0[idx[i]], pz0[j]) > EPS_COLLIDE_M
+
+            ok[idx[_any_overlap(corners, mins, maxs, idx, pc, pmin, pmax, pal, EPS_COLLIDE_M, pairs=in_z)]] = False
         return ok
 
     def _bounds(self, layer: bool) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
