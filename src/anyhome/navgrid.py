@@ -52,6 +52,8 @@ REACH_M = AGENT_RADIUS_M + 2 * NAV_CELL_M - REACH_MARGIN_M
 """A floor object is reachable from a walkable cell whose centre lies this close to its
 footprint (the evaluator's ``agent_radius_m + 2 cells``, less :data:`REACH_MARGIN_M`)."""
 
+MADE_KEPT = 256
+"""Obstacles a grid keeps to hand out again for the same footprint."""
 LABEL_MARGIN_CELLS = 4
 """Cells round an obstacle's lost walkable cells within which they are labelled again
 first (the module docstring)."""
@@ -85,6 +87,7 @@ class NavState:
     labels: np.ndarray | None
     door_labels: np.ndarray
     door_stale: bool
+    door_by_near: bool
     labels_a: np.ndarray | None
     door_a: np.ndarray
     door_a_stale: bool
@@ -153,6 +156,14 @@ class NavGrid:
         """Cells near a door (of the room when it has none)."""
         self._door_room_idx = np.flatnonzero(np.any(self.door_near, 0) & self.room_mask) if self.door_near else self._room_idx
         """Room cells near a door: a component touching one touches the room."""
+        self._door_mask = np.zeros(self.room_mask.shape, dtype=bool)
+        self._door_mask.ravel()[self._door_cells] = True
+        """``_door_cells`` as a raster."""
+        self._door_by_near = False
+        """Every door label was found touching the room near a door (with ``_door_labels``): they
+        stay the same while no cell near a door is lost and no component splits."""
+        self._made: dict[tuple[bytes, bool], Obstacle] = {}
+        """Obstacles made (:meth:`obstacle`) by footprint, made again for a pose tried again."""
         self._known: set[Obstacle] = set()
         self._cells: dict[Obstacle, np.ndarray] = {}
         """Flat indices of each obstacle's reach cells (:meth:`_reach_cells`)."""
@@ -251,10 +262,18 @@ class NavGrid:
     def obstacle(self, corners: np.ndarray, reachable: bool) -> Obstacle:
         """What an object of footprint ``corners`` (4, 2) does to the walkways; ``reachable``:
         it must stay reachable (a floor object an agent walks up to)."""
+        key = (corners.tobytes(), reachable)
+        got = self._made.get(key)
+        if got is not None:
+            return got
         cells = self._rect_patch(corners, NAV_OBSTACLE_PAD_M, rounded=False)
         reach = self._rect_patch(corners, REACH_M, rounded=True) if reachable else None
         shadow_a = self._shadow(cells, self._disc_a, AGENT_RADIUS_M) if self._disc_a is not None else None
-        return Obstacle(cells, self._shadow(cells, self._disc, self.radius or AGENT_RADIUS_M), reach, shadow_a)
+        got = Obstacle(cells, self._shadow(cells, self._disc, self.radius or AGENT_RADIUS_M), reach, shadow_a)
+        if len(self._made) >= MADE_KEPT:
+            self._made.clear()
+        self._made[key] = got
+        return got
 
     def _shadow(self, cells: Patch, disc: np.ndarray, radius: float) -> Patch:
         """``cells`` dilated by ``disc`` (the cells within ``radius``), clipped to the raster;
@@ -288,7 +307,8 @@ class NavGrid:
         if lost.any():
             self.walk[sh.window] &= ~sh.mask
             self._labels, split = _cut(self._labels, self.walk, Patch(sh.i0, sh.j0, lost))
-            self._door_stale = self._door_a_stale = True
+            if split or not self._door_by_near or (self._door_mask[sh.window] & lost).any():
+                self._door_stale = self._door_a_stale = True
             if self.walk_a is None:
                 self._forget(sh, split)
         sa = obs.reach_shadow
@@ -297,7 +317,8 @@ class NavGrid:
             if lost.any():
                 self.walk_a[sa.window] &= ~sa.mask
                 self._labels_a, split = _cut(self._labels_a, self.walk_a, Patch(sa.i0, sa.j0, lost))
-                self._door_a_stale = True
+                if split or (self._door_mask[sa.window] & lost).any():
+                    self._door_a_stale = True
                 self._forget(sa, split)
 
     def _forget(self, p: Patch, split: bool) -> None:
@@ -326,8 +347,8 @@ class NavGrid:
         """What :meth:`load` needs to come back to the walkways as they are now."""
         return NavState(
             self.walk.copy(), None if self.walk_a is None else self.walk_a.copy(), list(self.obstacles),
-            self._labels, self._door_labels, self._door_stale, self._labels_a, self._door_a, self._door_a_stale,
-            set(self._known),
+            self._labels, self._door_labels, self._door_stale, self._door_by_near, self._labels_a, self._door_a,
+            self._door_a_stale, set(self._known),
         )
 
     def load(self, s: NavState) -> None:
@@ -336,6 +357,7 @@ class NavGrid:
         self.walk_a = None if s.walk_a is None else s.walk_a.copy()
         self.obstacles = list(s.obstacles)
         self._labels, self._door_labels, self._door_stale = s.labels, s.door_labels, s.door_stale
+        self._door_by_near = s.door_by_near
         self._labels_a, self._door_a, self._door_a_stale = s.labels_a, s.door_a, s.door_a_stale
         self._known = set(s.known)
 
@@ -421,8 +443,10 @@ class NavGrid:
             if common is None:
                 common = set(np.unique(flat[self._room_idx]).tolist()) - {0}
             near = flat[self._door_room_idx]
-            keep = np.array([lab for lab in sorted(common)
-                             if np.any(near == lab) or np.any(flat[self._room_idx] == lab)], dtype=np.int32)
+            by_near = [bool(np.any(near == lab)) for lab in sorted(common)]
+            self._door_by_near = all(by_near)
+            keep = np.array([lab for lab, b in zip(sorted(common), by_near, strict=True)
+                             if b or np.any(flat[self._room_idx] == lab)], dtype=np.int32)
             if not np.array_equal(keep, self._door_labels):
                 self._known = set()
                 self._door_a_stale = True
