@@ -36,6 +36,10 @@ WALL_OPENING_MARGIN_M = 0.05
 """Gap kept along a wall between a wall object and a door or window opening."""
 CEILING_GAP_M = 0.05
 """Gap kept between the top of a wall or on-top object and the ceiling."""
+NO_COLLISION_M = TOLERANCE_M - 1e-6
+"""Footprints overlapping by less than this (:func:`sat_overlap`) do not collide as
+:func:`anyhome.geometry.boxes_collide` tests them (each shrunk by half the tolerance,
+they are apart)."""
 
 
 @dataclass(frozen=True)

@@ -10,18 +10,16 @@ import numpy as np
 import shapely
 from shapely.geometry import Polygon
 
-from anyhome.geometry import TOLERANCE_M, boxes_collide, footprint_corners, footprint_polygon, inside
+from anyhome.geometry import boxes_collide, footprint_corners, footprint_polygon, inside
 from anyhome.house import HouseObject
 from anyhome.layout.rules import REGISTRY, Cands
 from anyhome.layout.rules.base import Extent
 from anyhome.layout.state import Choice, RoomState
 from anyhome.plan.spec import GroupSpec
-from anyhome.space import rect_corners, sat_overlap
+from anyhome.space import NO_COLLISION_M, rect_corners, sat_overlap
 
 _APART_M = 1e-6
-"""Footprints separated by more than this need no exact collision test (m); nor do footprints
-overlapping by less than the contract's tolerance less this (each shrunk by half the
-tolerance, as :func:`~anyhome.geometry.boxes_collide` tests them, they are apart)."""
+"""Footprints separated by more than this need no exact collision test (m)."""
 
 
 def rank(st: RoomState, c: Cands, size: Sequence[float], kind: str, noise: float, spacing: bool,
@@ -106,8 +104,8 @@ def exact_ok(st: RoomState, ch: Choice, size: Sequence[float], kind: str, suppor
         gap = sat_overlap(corners[None], np.stack([p.corners for p in near]))[0]
         for p, g in zip(near, gap, strict=True):
             o = p.obj
-            if g < TOLERANCE_M - _APART_M:
-                continue  # apart, or overlapping by less than the contract's tolerance: no collision
+            if g < max(-_APART_M, NO_COLLISION_M):
+                continue
             if boxes_collide(pos, size, ch.yaw, o.position, o.size, o.yaw):
                 return False
     return True
