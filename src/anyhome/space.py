@@ -199,16 +199,19 @@ def _box_in(lo: np.ndarray, hi: np.ndarray, box: tuple[float, float, float, floa
     return inner, outer
 
 
+_ZONE, _SIGHTLINE, _PLACED = 0, 1, 2
+"""Kinds of what a pose may not overlap (:meth:`RoomSpace._blockers`)."""
 _PAIR_MARGIN_M = 0.01
 """Bounds further apart than this beyond a (negative) threshold are not compared (m)."""
 
 
 def _any_overlap(a: np.ndarray, amin: np.ndarray, amax: np.ndarray, idx: np.ndarray, b: np.ndarray,
-                 bmin: np.ndarray, bmax: np.ndarray, b_aligned: np.ndarray, thr: float, inclusive: bool = False,
+                 bmin: np.ndarray, bmax: np.ndarray, b_aligned: np.ndarray, thr: np.ndarray, inclusive: np.ndarray,
                  pairs: Callable[[np.ndarray, np.ndarray], np.ndarray] | None = None) -> np.ndarray:
-    """``np.any(overlap_above(a[idx], b, thr, inclusive, pairs=...), 1)``, (len(idx),) bool,
-    computed on the pairs whose bounds come closer than ``max(0, -thr)`` plus
-    :data:`_PAIR_MARGIN_M` only (no other overlaps by ``thr``).
+    """Whether each pose ``a[idx]`` overlaps some ``b[j]`` by more than ``thr[j]`` (or as much,
+    ``inclusive[j]``) as :func:`overlap_above` tests it, (len(idx),) bool, computed on the pairs
+    whose bounds come closer than ``max(0, -thr)`` plus :data:`_PAIR_MARGIN_M` only (no other
+    overlaps by ``thr``).
 
     Parameters
     ----------
@@ -216,7 +219,7 @@ def _any_overlap(a: np.ndarray, amin: np.ndarray, amax: np.ndarray, idx: np.ndar
     b : (m, 4, 2) float, bmin, bmax : (m, 2) float, b_aligned : (m,) bool (:func:`_aligned`)
     pairs : (rows of ``idx``, rows of ``b``) -> bool, the pairs that may overlap at all
     """
-    g = max(0.0, -thr) + _PAIR_MARGIN_M
+    g = max(0.0, -float(thr.min())) + _PAIR_MARGIN_M
     lo, hi = amin[idx], amax[idx]
     i, j = np.nonzero((lo[:, 0, None] < bmax[None, :, 0] + g) & (hi[:, 0, None] > bmin[None, :, 0] - g))
     keep = (lo[i, 1] < bmax[j, 1] + g) & (hi[i, 1] > bmin[j, 1] - g)
@@ -230,14 +233,15 @@ def _any_overlap(a: np.ndarray, amin: np.ndarray, amax: np.ndarray, idx: np.ndar
     ox = np.minimum(hi[i, 0], bmax[j, 0]) - np.maximum(lo[i, 0], bmin[j, 0])
     oy = np.minimum(hi[i, 1], bmax[j, 1]) - np.maximum(lo[i, 1], bmin[j, 1])
     bb = np.minimum(ox, oy)
-    hit = bb >= thr if inclusive else bb > thr
-    k = np.nonzero((bb >= thr - _SAT_SLACK_M) & (bb > -0.05))[0]  # as overlap_above, the axes of these
+    t, inc = thr[j], inclusive[j]
+    hit = np.where(inc, bb >= t, bb > t)
+    k = np.nonzero((bb >= t - _SAT_SLACK_M) & (bb > -0.05))[0]  # as overlap_above, the axes of these
     if k.size:
         ai = a[idx[i[k]]]
         k, ai = k[~(_aligned(ai) & b_aligned[j[k]])], ai[~(_aligned(ai) & b_aligned[j[k]])]
         if k.size:
             ov = _sat_pairs(ai, b[j[k]])
-            hit[k] = ov >= thr if inclusive else ov > thr
+            hit[k] = np.where(inc[k], ov >= t[k], ov > t[k])
     out[i[hit]] = True
     return out
 
@@ -453,26 +457,54 @@ class RoomSpace:
                     inner[sub] = ~self._vertex_inside(c[sub])
             ok[idx] = inner
         idx = np.nonzero(ok)[0]
-        if idx.size and doors and len(self.door_zones):
-            ok[idx[_any_overlap(corners, mins, maxs, idx, self.door_zones, self.zone_lo, self.zone_hi,
-                                self.zone_aligned, -DOOR_MARGIN_M, inclusive=True)]] = False
-            idx = np.nonzero(ok)[0]
-        if idx.size and floor and not layer and self.keep_clear:
-            tall = idx[z1[idx] > VIEW_CLEAR_M]
-            if tall.size:
-                kc = np.stack(self.keep_clear)
-                ok[tall[_any_overlap(corners, mins, maxs, tall, kc, _cmin(kc), _cmax(kc), _aligned(kc),
-                                     EPS_COLLIDE_M)]] = False
-                idx = np.nonzero(ok)[0]
-        pc, pz0, pz1 = self._arrays(layer)
-        if idx.size and len(pc):
-            pmin, pmax, pal = self._bounds(layer)
+        if idx.size:
+            tall = z1 > VIEW_CLEAR_M
+            sightlines = bool(floor and not layer and tall[idx].any())
+            b, bmin, bmax, bal, thr, incl, kind, bz0, bz1 = self._blockers(layer, doors, sightlines)
 
-            def in_z(i: np.ndarray, j: np.ndarray) -> np.ndarray:
-                return np.minimum(z1[idx[i]], pz1[j]) - np.maximum(z0[idx[i]], pz0[j]) > EPS_COLLIDE_M
+            def may_meet(i: np.ndarray, j: np.ndarray) -> np.ndarray:
+                """Door zones meet any pose, sightlines tall ones, objects those overlapping them in z."""
+                ii, k = idx[i], kind[j]
+                return (k == _ZONE) | ((k == _SIGHTLINE) & tall[ii]) | (
+                    (k == _PLACED) & (np.minimum(z1[ii], bz1[j]) - np.maximum(z0[ii], bz0[j]) > EPS_COLLIDE_M))
 
-            ok[idx[_any_overlap(corners, mins, maxs, idx, pc, pmin, pmax, pal, EPS_COLLIDE_M, pairs=in_z)]] = False
+            if len(b):
+                ok[idx[_any_overlap(corners, mins, maxs, idx, b, bmin, bmax, bal, thr, incl, pairs=may_meet)]] = False
         return ok
+
+    def _blockers(self, layer: bool, doors: bool, sightlines: bool) -> tuple[np.ndarray, ...]:
+        """What a pose may not overlap, stacked: the door zones (``doors``), the sightlines
+        (``sightlines``) and the placed objects (``layer``: the layers, else all but them).
+
+        Returns
+        -------
+        corners (m, 4, 2), lower and upper bounds (m, 2), square to the axes (m,) bool, the
+        overlap (m,) m each may have, whether it may have that much (m,) bool, its kind (m,)
+        int (:data:`_ZONE`, :data:`_SIGHTLINE`, :data:`_PLACED`), bottoms and tops (m,)
+        """
+        memo = self._memo()
+        key = ("blockers", layer, doors)
+        if key not in memo:
+            pc, pz0, pz1 = self._arrays(layer)
+            pmin, pmax, pal = self._bounds(layer)
+            nz = len(self.door_zones) if doors else 0
+            nan = np.full(nz, np.nan)
+            memo[key] = (
+                np.concatenate([self.door_zones[:nz], pc]), np.concatenate([self.zone_lo[:nz], pmin]),
+                np.concatenate([self.zone_hi[:nz], pmax]), np.concatenate([self.zone_aligned[:nz], pal]),
+                np.concatenate([np.full(nz, -DOOR_MARGIN_M), np.full(len(pc), EPS_COLLIDE_M)]),
+                np.concatenate([np.ones(nz, dtype=bool), np.zeros(len(pc), dtype=bool)]),
+                np.concatenate([np.full(nz, _ZONE), np.full(len(pc), _PLACED)]),
+                np.concatenate([nan, pz0]), np.concatenate([nan, pz1]),
+            )
+        got: tuple[np.ndarray, ...] = memo[key]  # type: ignore[assignment]
+        if not sightlines or not self.keep_clear:
+            return got
+        kc = np.stack(self.keep_clear)
+        nan = np.full(len(kc), np.nan)
+        more = (kc, _cmin(kc), _cmax(kc), _aligned(kc), np.full(len(kc), EPS_COLLIDE_M), np.zeros(len(kc), dtype=bool),
+                np.full(len(kc), _SIGHTLINE), nan, nan)
+        return tuple(np.concatenate([a, m]) for a, m in zip(got, more, strict=True))
 
     def _bounds(self, layer: bool) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Lower and upper bounds (m, 2) of the footprints of :meth:`_arrays` and whether each
