@@ -191,11 +191,11 @@ def overlap_above(a: np.ndarray, b: np.ndarray, thr: float, inclusive: bool = Fa
 
 def _box_in(lo: np.ndarray, hi: np.ndarray, box: tuple[float, float, float, float], e: float
             ) -> tuple[np.ndarray, np.ndarray]:
-    """Whether all corners of footprints of bounds ``lo``, ``hi`` (n, 2) lie in ``box`` (x0,
+    """Whether all corners of footprints of bounds ``lo``, ``hi`` (2, n) lie in ``box`` (x0,
     y0, x1, y1) shrunk by ``e``, and whether they lie in it grown by ``e`` (n,) each."""
     x0, y0, x1, y1 = box
-    inner = (lo[:, 0] > x0 + e) & (hi[:, 0] < x1 - e) & (lo[:, 1] > y0 + e) & (hi[:, 1] < y1 - e)
-    outer = (lo[:, 0] > x0 - e) & (hi[:, 0] < x1 + e) & (lo[:, 1] > y0 - e) & (hi[:, 1] < y1 + e)
+    inner = (lo[0] > x0 + e) & (hi[0] < x1 - e) & (lo[1] > y0 + e) & (hi[1] < y1 - e)
+    outer = (lo[0] > x0 - e) & (hi[0] < x1 + e) & (lo[1] > y0 - e) & (hi[1] < y1 + e)
     return inner, outer
 
 
@@ -205,7 +205,7 @@ _PAIR_MARGIN_M = 0.01
 """Bounds further apart than this beyond a (negative) threshold are not compared (m)."""
 
 
-def _any_overlap(a: np.ndarray, amin: np.ndarray, amax: np.ndarray, idx: np.ndarray, b: np.ndarray,
+def _any_overlap(a: np.ndarray, alo: np.ndarray, ahi: np.ndarray, idx: np.ndarray, b: np.ndarray,
                  bmin: np.ndarray, bmax: np.ndarray, b_aligned: np.ndarray, thr: np.ndarray, inclusive: np.ndarray,
                  pairs: Callable[[np.ndarray, np.ndarray], np.ndarray] | None = None) -> np.ndarray:
     """Whether each pose ``a[idx]`` overlaps some ``b[j]`` by more than ``thr[j]`` (or as much,
@@ -215,23 +215,24 @@ def _any_overlap(a: np.ndarray, amin: np.ndarray, amax: np.ndarray, idx: np.ndar
 
     Parameters
     ----------
-    a : (n, 4, 2) float, amin, amax : (n, 2) float, its bounds; idx : (k,) int, the rows of ``a`` tested
+    a : (n, 4, 2) float, alo, ahi : (2, n) float, its bounds (:func:`_bounds_t`); idx : (k,) int, the
+        rows of ``a`` tested
     b : (m, 4, 2) float, bmin, bmax : (m, 2) float, b_aligned : (m,) bool (:func:`_aligned`)
     pairs : (rows of ``idx``, rows of ``b``) -> bool, the pairs that may overlap at all
     """
     g = max(0.0, -float(thr.min())) + _PAIR_MARGIN_M
-    lo, hi = amin[idx], amax[idx]
-    i, j = np.nonzero((lo[:, 0, None] < bmax[None, :, 0] + g) & (hi[:, 0, None] > bmin[None, :, 0] - g))
-    keep = (lo[i, 1] < bmax[j, 1] + g) & (hi[i, 1] > bmin[j, 1] - g)
-    i, j = i[keep], j[keep]
+    lox, loy, hix, hiy = alo[0, idx], alo[1, idx], ahi[0, idx], ahi[1, idx]
+    near = ((lox[None] < (bmax[:, 0] + g)[:, None]) & (hix[None] > (bmin[:, 0] - g)[:, None])
+            & (loy[None] < (bmax[:, 1] + g)[:, None]) & (hiy[None] > (bmin[:, 1] - g)[:, None]))
+    j, i = np.nonzero(near)  # (m, k): a row of poses per footprint, contiguous
     if pairs is not None and len(i):
         keep = pairs(i, j)
         i, j = i[keep], j[keep]
     out = np.zeros(len(idx), dtype=bool)
     if not len(i):
         return out
-    ox = np.minimum(hi[i, 0], bmax[j, 0]) - np.maximum(lo[i, 0], bmin[j, 0])
-    oy = np.minimum(hi[i, 1], bmax[j, 1]) - np.maximum(lo[i, 1], bmin[j, 1])
+    ox = np.minimum(hix[i], bmax[j, 0]) - np.maximum(lox[i], bmin[j, 0])
+    oy = np.minimum(hiy[i], bmax[j, 1]) - np.maximum(loy[i], bmin[j, 1])
     bb = np.minimum(ox, oy)
     t, inc = thr[j], inclusive[j]
     hit = np.where(inc, bb >= t, bb > t)
@@ -244,6 +245,13 @@ def _any_overlap(a: np.ndarray, amin: np.ndarray, amax: np.ndarray, idx: np.ndar
             hit[k] = np.where(inc[k], ov >= t[k], ov > t[k])
     out[i[hit]] = True
     return out
+
+
+def _bounds_t(c: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(n, 4, 2) corners -> lower and upper bounds, (2, n) each (x then y, contiguous: fast)."""
+    t = np.ascontiguousarray(c.transpose(2, 1, 0))
+    return (np.minimum(np.minimum(t[:, 0], t[:, 1]), np.minimum(t[:, 2], t[:, 3])),
+            np.maximum(np.maximum(t[:, 0], t[:, 1]), np.maximum(t[:, 2], t[:, 3])))
 
 
 def _cmin(c: np.ndarray) -> np.ndarray:
@@ -434,14 +442,14 @@ class RoomSpace:
             return ok
         z0 = np.broadcast_to(np.asarray(z0, dtype=float), (n,))
         z1 = np.broadcast_to(np.asarray(z1, dtype=float), (n,))
-        mins, maxs = _cmin(corners), _cmax(corners)
-        lo, hi = self.bmin - INSIDE_TOL_M, self.bmax + INSIDE_TOL_M
-        ok &= (mins[:, 0] >= lo[0]) & (mins[:, 1] >= lo[1]) & (maxs[:, 0] <= hi[0]) & (maxs[:, 1] <= hi[1])
+        lo, hi = _bounds_t(corners)
+        blo, bhi = self.bmin - INSIDE_TOL_M, self.bmax + INSIDE_TOL_M
+        ok &= (lo[0] >= blo[0]) & (lo[1] >= blo[1]) & (hi[0] <= bhi[0]) & (hi[1] <= bhi[1])
         limit = self.height if floor else self.height - CEILING_GAP_M
         ok &= z1 <= limit + 1e-9
         idx = np.nonzero(ok)[0]
         if idx.size and self.buf_box is not None and self.convex:  # a rectangle: most settled by their bounds
-            inner, outer = _box_in(mins[idx], maxs[idx], self.buf_box, _BOX_EDGE_M)
+            inner, outer = _box_in(lo[:, idx], hi[:, idx], self.buf_box, _BOX_EDGE_M)
             ok[idx[~outer]] = False  # a corner outside: out
             idx = idx[outer & ~inner]  # a corner a hair from the outline: as below
         if idx.size:
@@ -469,7 +477,7 @@ class RoomSpace:
                     (k == _PLACED) & (np.minimum(z1[ii], bz1[j]) - np.maximum(z0[ii], bz0[j]) > EPS_COLLIDE_M))
 
             if len(b):
-                ok[idx[_any_overlap(corners, mins, maxs, idx, b, bmin, bmax, bal, thr, incl, pairs=may_meet)]] = False
+                ok[idx[_any_overlap(corners, lo, hi, idx, b, bmin, bmax, bal, thr, incl, pairs=may_meet)]] = False
         return ok
 
     def _blockers(self, layer: bool, doors: bool, sightlines: bool) -> tuple[np.ndarray, ...]:
