@@ -397,6 +397,33 @@ class NavGrid:
                 out.append(o)
         return out
 
+    def surely_unreached(self, obs: Obstacle) -> bool:
+        """Whether ``obs``, once added, is sure to be among :meth:`unreached` (or the walkways
+        closed): none of its reach cells is walkable beside it and in the door component now.
+        Adding it only takes walkable cells away and splits components, so none would be then."""
+        if self.radius is None or obs.reach is None:
+            return False
+        door = self._door_component()
+        if door is None:
+            return False
+        labels, door = self._reach_labels(door)
+        cells = self._reach_cells(obs)
+        if self.walk_a is not None:
+            walk, sh = self.walk_a, obs.reach_shadow
+        else:
+            walk, sh = self.walk, obs.shadow
+        lab = labels.ravel()[cells] * walk.ravel()[cells]
+        on = lab == door[0] if len(door) == 1 else np.isin(lab, door)
+        if sh is not None and sh.mask.size and on.any():
+            rows, cols = np.divmod(cells[on], walk.shape[1])
+            h, w = sh.mask.shape
+            r, c = rows - sh.i0, cols - sh.j0
+            inside = (r >= 0) & (r < h) & (c >= 0) & (c < w)
+            shaded = np.zeros(len(r), dtype=bool)
+            shaded[inside] = sh.mask[r[inside], c[inside]]
+            return bool(np.all(shaded))
+        return not on.any()
+
     def _reach_cells(self, o: Obstacle) -> np.ndarray:
         """Flat raster indices of the cells ``o`` is reached from (cached per obstacle)."""
         got = self._cells.get(o)
