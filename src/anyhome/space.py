@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, cast
+from typing import TYPE_CHECKING
 
 import numpy as np
 import numpy.typing as npt
@@ -254,6 +254,20 @@ def _bounds_t(c: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
             np.maximum(np.maximum(t[:, 0], t[:, 1]), np.maximum(t[:, 2], t[:, 3])))
 
 
+def _bounds_of(objs: list[Placed]) -> tuple[np.ndarray, ...]:
+    """Lower and upper bounds (m, 2) of the objects' footprints."""
+    c = np.stack([p.corners for p in objs])
+    return _cmin(c), _cmax(c)
+
+
+def _blocker_rows(objs: list[Placed]) -> tuple[np.ndarray, ...]:
+    """Rows of placed objects as :meth:`RoomSpace._blockers` stacks them."""
+    c = np.stack([p.corners for p in objs])
+    m = len(objs)
+    return (c, _cmin(c), _cmax(c), _aligned(c), np.full(m, EPS_COLLIDE_M), np.zeros(m, dtype=bool),
+            np.full(m, _PLACED), np.array([p.z0 for p in objs]), np.array([p.z1 for p in objs]))
+
+
 def _cmin(c: np.ndarray) -> np.ndarray:
     """(n, 4, 2) corners -> (n, 2) lower bounds (faster than ``min(1)`` on a short axis)."""
     return np.minimum(np.minimum(c[:, 0], c[:, 1]), np.minimum(c[:, 2], c[:, 3]))
@@ -345,7 +359,8 @@ class RoomSpace:
         """``buf``'s (x0, y0, x1, y1) when it is an axis-aligned rectangle, else None."""
         self.outline_box = _axis_box(np.asarray(self.outline.exterior.coords)) if not self.outline.interiors else None
         """``outline``'s (x0, y0, x1, y1) when it is an axis-aligned rectangle, else None."""
-        self._cache: tuple[list[Placed], dict[object, object]] = ([], {})
+        self._tables: dict[object, tuple[list[Placed], tuple[np.ndarray, ...]]] = {}
+        """Arrays of rows derived from placed objects (:meth:`_rows`)."""
         self.bmin = self.vertices.min(0)
         self.bmax = self.vertices.max(0)
         self.height = float(self.room.height)
@@ -373,6 +388,10 @@ class RoomSpace:
         self.door_zones = np.asarray(zones).reshape(-1, 4, 2)
         self.zone_lo, self.zone_hi = self.door_zones.min(1), self.door_zones.max(1)
         self.zone_aligned = _aligned(self.door_zones)
+        nz, nan = len(self.door_zones), np.full(len(self.door_zones), np.nan)
+        self._zone_rows = (self.door_zones, self.zone_lo, self.zone_hi, self.zone_aligned, np.full(nz, -DOOR_MARGIN_M),
+                           np.ones(nz, dtype=bool), np.full(nz, _ZONE), nan, nan)
+        """The door zones as :meth:`_blockers` stacks them, first."""
         self.zone_polys = [Polygon(z) for z in zones]
         wzones = []
         for w in self.floorplan.windows:
@@ -397,37 +416,31 @@ class RoomSpace:
     def objects(self) -> list[HouseObject]:
         return [p.obj for p in self.placed]
 
-    def _memo(self) -> dict[object, object]:
-        """Arrays derived from ``placed``, kept while the list holds the same objects."""
-        held, memo = self._cache
-        if len(held) != len(self.placed) or any(a is not b for a, b in zip(held, self.placed, strict=True)):
-            self._cache = (list(self.placed), {})
-        return self._cache[1]
+    def _rows(self, key: object, objs: list[Placed], head: tuple[np.ndarray, ...],
+              make: Callable[[list[Placed]], tuple[np.ndarray, ...]]) -> tuple[np.ndarray, ...]:
+        """Arrays of rows ``head`` then ``make(objs)``, kept under ``key`` from call to call:
+        objects placed since are appended, those taken away cut off (the layout places and
+        takes back the last ones)."""
+        held, tab = self._tables.get(key, ([], head))
+        n, k = min(len(held), len(objs)), 0
+        while k < n and held[k] is objs[k]:
+            k += 1
+        if k == len(held) == len(objs):
+            return tab
+        top = len(head[0]) + k
+        tab = tuple(a[:top] for a in tab)
+        if k < len(objs):
+            tab = tuple(np.concatenate([a, r]) for a, r in zip(tab, make(objs[k:]), strict=True))
+        self._tables[key] = (list(objs), tab)
+        return tab
 
     def near(self, lo: np.ndarray, hi: np.ndarray) -> list[Placed]:
         """Placed objects whose footprint's bounding box meets the box ``lo``-``hi`` (2,)."""
         if not self.placed:
             return []
-        memo = self._memo()
-        if "bounds" not in memo:
-            c = np.stack([p.corners for p in self.placed])
-            memo["bounds"] = (_cmin(c), _cmax(c))
-        cmin, cmax = cast(tuple[np.ndarray, np.ndarray], memo["bounds"])
+        cmin, cmax = self._rows("near", self.placed, (np.zeros((0, 2)), np.zeros((0, 2))), _bounds_of)
         keep = np.all(cmin <= hi, 1) & np.all(cmax >= lo, 1)
         return [self.placed[i] for i in np.flatnonzero(keep)]
-
-    def _arrays(self, layer: bool = False) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """Corners, bottoms and tops of the placed objects (``layer``: of the layers only,
-        else of all but the layers)."""
-        memo = self._memo()
-        if ("arrays", layer) not in memo:
-            placed = [p for p in self.placed if p.layer == layer]
-            memo["arrays", layer] = (np.zeros((0, 4, 2)), np.zeros(0), np.zeros(0)) if not placed else (
-                np.stack([p.corners for p in placed]),
-                np.array([p.z0 for p in placed]),
-                np.array([p.z1 for p in placed]),
-            )
-        return memo["arrays", layer]  # type: ignore[return-value]
 
     # ------------------------------------------------------------ validity
     def valid(
@@ -490,22 +503,9 @@ class RoomSpace:
         overlap (m,) m each may have, whether it may have that much (m,) bool, its kind (m,)
         int (:data:`_ZONE`, :data:`_SIGHTLINE`, :data:`_PLACED`), bottoms and tops (m,)
         """
-        memo = self._memo()
-        key = ("blockers", layer, doors)
-        if key not in memo:
-            pc, pz0, pz1 = self._arrays(layer)
-            pmin, pmax, pal = self._bounds(layer)
-            nz = len(self.door_zones) if doors else 0
-            nan = np.full(nz, np.nan)
-            memo[key] = (
-                np.concatenate([self.door_zones[:nz], pc]), np.concatenate([self.zone_lo[:nz], pmin]),
-                np.concatenate([self.zone_hi[:nz], pmax]), np.concatenate([self.zone_aligned[:nz], pal]),
-                np.concatenate([np.full(nz, -DOOR_MARGIN_M), np.full(len(pc), EPS_COLLIDE_M)]),
-                np.concatenate([np.ones(nz, dtype=bool), np.zeros(len(pc), dtype=bool)]),
-                np.concatenate([np.full(nz, _ZONE), np.full(len(pc), _PLACED)]),
-                np.concatenate([nan, pz0]), np.concatenate([nan, pz1]),
-            )
-        got: tuple[np.ndarray, ...] = memo[key]  # type: ignore[assignment]
+        got = self._rows(layer, [p for p in self.placed if p.layer == layer], self._zone_rows, _blocker_rows)
+        if not doors:
+            got = tuple(a[len(self.door_zones):] for a in got)
         if not sightlines or not self.keep_clear:
             return got
         kc = np.stack(self.keep_clear)
@@ -513,15 +513,6 @@ class RoomSpace:
         more = (kc, _cmin(kc), _cmax(kc), _aligned(kc), np.full(len(kc), EPS_COLLIDE_M), np.zeros(len(kc), dtype=bool),
                 np.full(len(kc), _SIGHTLINE), nan, nan)
         return tuple(np.concatenate([a, m]) for a, m in zip(got, more, strict=True))
-
-    def _bounds(self, layer: bool) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """Lower and upper bounds (m, 2) of the footprints of :meth:`_arrays` and whether each
-        is square to the axes (m,)."""
-        memo = self._memo()
-        if ("bounds", layer) not in memo:
-            pc = self._arrays(layer)[0]
-            memo["bounds", layer] = (_cmin(pc), _cmax(pc), _aligned(pc))
-        return memo["bounds", layer]  # type: ignore[return-value]
 
     def _in_buf(self, x: np.ndarray, y: np.ndarray) -> np.ndarray:
         """``shapely.contains_xy(self.buf, x, y)``; for an axis-aligned rectangle by comparing
