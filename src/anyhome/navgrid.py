@@ -150,6 +150,10 @@ class NavGrid:
                 if o.room == space.room.id:
                     free &= ~self._raster(footprint_polygon(o.position, o.size, o.yaw))
         self.base_free = free
+        rows, cols = np.flatnonzero(free.any(1)), np.flatnonzero(free.any(0))
+        self._live = (slice(int(rows[0]), int(rows[-1]) + 1), slice(int(cols[0]), int(cols[-1]) + 1)) if len(
+            rows) else (slice(0, 0), slice(0, 0))
+        """The window holding every cell that may be walkable (labelled alone)."""
         self._door_idx = [np.flatnonzero(m) for m in self.door_near]
         self._room_idx = np.flatnonzero(self.room_mask)
         self._door_cells = np.concatenate(self._door_idx) if self._door_idx else self._room_idx
@@ -440,7 +444,7 @@ class NavGrid:
         if self.walk_a is None:
             return self._labels, door
         if self._labels_a is None:
-            self._labels_a, _ = ndimage.label(self.walk_a, structure=_CROSS)
+            self._labels_a = self._label(self.walk_a)
             self._known = set()
             self._door_a_stale = True
         if self._door_a_stale:
@@ -453,11 +457,17 @@ class NavGrid:
             self._door_a = door_a
         return self._labels_a, self._door_a
 
+    def _label(self, walk: np.ndarray) -> np.ndarray:
+        """Components of ``walk`` (ndimage.label's), labelled on the window of ``base_free``."""
+        out = np.zeros(walk.shape, dtype=np.int32)
+        out[self._live], _ = ndimage.label(walk[self._live], structure=_CROSS)
+        return out
+
     def _door_component(self) -> np.ndarray | None:
         """Labels of the walkable components that touch every door and some room cells
         (None: none does)."""
         if self._labels is None:
-            self._labels, _ = ndimage.label(self.walk, structure=_CROSS)
+            self._labels = self._label(self.walk)
             self._known = set()
             self._door_stale = self._door_a_stale = True
         if self._door_stale:
