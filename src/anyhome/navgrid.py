@@ -166,6 +166,8 @@ class NavGrid:
         self._door_by_near = False
         """Every door label was found touching the room near a door (with ``_door_labels``): they
         stay the same while no cell near a door is lost and no component splits."""
+        self._blocks: dict[tuple[int, int, int, float], np.ndarray] = {}
+        """Shadows of a full block of cells by its size, the disc and radius (:meth:`_shadow`)."""
         self._made: dict[tuple[bytes, bool], Obstacle] = {}
         """Obstacles made (:meth:`obstacle`) by footprint, made again for a pose tried again."""
         self._known: set[Obstacle] = set()
@@ -290,11 +292,17 @@ class NavGrid:
         i0, j0 = max(0, cells.i0 - k), max(0, cells.j0 - k)
         i1, j1 = min(ny, cells.i0 + h + k), min(nx, cells.j0 + w + k)
         if cells.mask.all():
-            rows, cols = np.arange(i0, i1), np.arange(j0, j1)
-            dy = np.maximum(0, np.maximum(cells.i0 - rows, rows - (cells.i0 + h - 1))).astype(float)
-            dx = np.maximum(0, np.maximum(cells.j0 - cols, cols - (cells.j0 + w - 1))).astype(float)
-            # as _disc_of measures: sqrt of the summed squares, times the cell
-            return Patch(i0, j0, ~(np.sqrt(dy[:, None] ** 2 + dx[None, :] ** 2) * self.cell > radius))
+            block = self._blocks.get((h, w, k, radius))
+            if block is None:
+                d = np.arange(-k, max(h, w) + k, dtype=float)  # rows (columns) from the block's first
+                dy = np.maximum(0.0, np.maximum(-d[:h + 2 * k], d[:h + 2 * k] - (h - 1)))
+                dx = np.maximum(0.0, np.maximum(-d[:w + 2 * k], d[:w + 2 * k] - (w - 1)))
+                # as _disc_of measures: sqrt of the summed squares, times the cell
+                block = ~(np.sqrt(dy[:, None] ** 2 + dx[None, :] ** 2) * self.cell > radius)
+                block.flags.writeable = False  # handed out in views
+                self._blocks[(h, w, k, radius)] = block
+            a, b = i0 - (cells.i0 - k), j0 - (cells.j0 - k)
+            return Patch(i0, j0, block[a:a + i1 - i0, b:b + j1 - j0])
         free = np.ones((h + 2 * k, w + 2 * k), dtype=bool)
         free[k:k + h, k:k + w] = ~cells.mask
         # the cells within the disc of a blocked one: its dilation by the disc, as _disc_of measures
