@@ -388,10 +388,21 @@ class NavGrid:
         if door is None:
             return None
         labels, door = self._reach_labels(door)
-        waived = set(self.waived)
-        todo = [o for o in self.obstacles if o.reach is not None and o not in waived and o not in self._known]
+        known = self._known
+        todo = [o for o in self.obstacles if o.reach is not None and o not in known]
+        if todo and self.waived:
+            waived = set(self.waived)
+            todo = [o for o in todo if o not in waived]
         if not todo:
             return []
+        if len(todo) == 1:  # most often the object placed last alone
+            o = todo[0]
+            cells = self._reach_cells(o)
+            lab = labels.ravel()[cells]
+            if len(cells) and bool(np.any(lab == door[0]) if len(door) == 1 else np.any(np.isin(lab, door))):
+                known.add(o)
+                return []
+            return [o]
         cells = [self._reach_cells(o) for o in todo]
         n = np.array([len(c) for c in cells])
         reached = np.zeros(len(todo), dtype=bool)
