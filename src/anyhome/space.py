@@ -239,7 +239,8 @@ def _any_overlap(a: np.ndarray, alo: np.ndarray, ahi: np.ndarray, idx: np.ndarra
     k = np.nonzero((bb >= t - _SAT_SLACK_M) & (bb > -0.05))[0]  # as overlap_above, the axes of these
     if k.size:
         ai = a[idx[i[k]]]
-        k, ai = k[~(_aligned(ai) & b_aligned[j[k]])], ai[~(_aligned(ai) & b_aligned[j[k]])]
+        rot = ~(_aligned(ai) & b_aligned[j[k]])
+        k, ai = k[rot], ai[rot]
         if k.size:
             ov = _sat_pairs(ai, b[j[k]])
             hit[k] = np.where(inc[k], ov >= t[k], ov > t[k])
