@@ -88,10 +88,13 @@ def rect_corners(xy: npt.ArrayLike, wd: npt.ArrayLike, yaw: npt.ArrayLike) -> np
         lx = (wd_a[:, 0] / 2.0)[:, None] * _SIGN_X
         ly = (wd_a[:, 1] / 2.0)[:, None] * _SIGN_Y
     c, s = np.cos(yaw_a)[:, None], np.sin(yaw_a)[:, None]
-    out = np.empty((n, 4, 2))
-    out[..., 0] = lx * c - ly * s + xy_a[:, 0, None]
-    out[..., 1] = lx * s + ly * c + xy_a[:, 1, None]
-    return out
+    x = lx * c  # lx * c - ly * s + x0, in place
+    x -= ly * s
+    x += xy_a[:, 0, None]
+    y = lx * s
+    y += ly * c
+    y += xy_a[:, 1, None]
+    return np.stack((x, y), -1)
 
 
 _SIGN_X = np.array([-1.0, 1.0, 1.0, -1.0])
