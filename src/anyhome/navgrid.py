@@ -397,9 +397,8 @@ class NavGrid:
             return []
         if len(todo) == 1:  # most often the object placed last alone
             o = todo[0]
-            cells = self._reach_cells(o)
-            lab = labels.ravel()[cells]
-            if len(cells) and bool(np.any(lab == door[0]) if len(door) == 1 else np.any(np.isin(lab, door))):
+            lab = labels.ravel()[self._reach_cells(o)]
+            if len(lab) and bool(np.any(lab == door[0]) if len(door) == 1 else np.any(np.isin(lab, door))):
                 known.add(o)
                 return []
             return [o]

@@ -559,12 +559,30 @@ class RoomSpace:
 
     def clearance(self, corners: np.ndarray, cap_m: float = 1.0) -> np.ndarray:
         """Approximate free distance from each footprint to floor objects and door zones."""
-        out = np.full(len(corners), cap_m)
+        n = len(corners)
+        out = np.full(n, cap_m)
         floor = [p.corners for p in self.placed if p.floor and not p.layer]
-        others = floor + list(self.door_zones)
-        if others and len(corners):
-            ov = sat_overlap(corners, np.stack(others))
-            out = np.minimum(out, np.maximum(0.0, -ov.max(1)))
+        if not n or not (floor or len(self.door_zones)):
+            return out
+        b = np.concatenate([np.reshape(floor, (-1, 4, 2)), self.door_zones])
+        # as min(cap, max(0, -sat_overlap(corners, b).max(1))), on the pairs whose bounds come
+        # within the cap only: the others are further apart than it
+        lo, hi = _bounds_t(corners)
+        bmin, bmax = _cmin(b), _cmax(b)
+        g = cap_m + _PAIR_MARGIN_M
+        j, i = np.nonzero((lo[0][None] < (bmax[:, 0] + g)[:, None]) & (hi[0][None] > (bmin[:, 0] - g)[:, None])
+                          & (lo[1][None] < (bmax[:, 1] + g)[:, None]) & (hi[1][None] > (bmin[:, 1] - g)[:, None]))
+        if not len(i):
+            return out
+        ov = np.minimum(np.minimum(hi[0, i], bmax[j, 0]) - np.maximum(lo[0, i], bmin[j, 0]),
+                        np.minimum(hi[1, i], bmax[j, 1]) - np.maximum(lo[1, i], bmin[j, 1]))
+        k = np.nonzero(~(_aligned(corners[i]) & _aligned(b)[j]) & (ov > -0.05))[0]
+        if k.size:
+            ov[k] = _sat_pairs(corners[i[k]], b[j[k]])
+        most = np.full(n, -np.inf)
+        np.maximum.at(most, i, ov)
+        got = most > -np.inf
+        out[got] = np.minimum(cap_m, np.maximum(0.0, -most[got]))
         return out
 
     def window_penalty(self, corners: np.ndarray) -> np.ndarray:
