@@ -19,6 +19,7 @@ from anyhome.space import (
     RoomSpace,
     overlap_above,
     rect_corners,
+    sat_overlap,
 )
 from tests.layout.helpers import l_shape, rect, single_room
 
@@ -62,7 +63,7 @@ def _poses(rng, n, w, h, size):
 
 @pytest.mark.parametrize("outline", [rect(0, 0, 5, 4), l_shape(6, 5, 2.5, 2)])
 @pytest.mark.parametrize("seed", range(3))
-def test_valid_equals_the_plain_reference_as_objects_come_and_go(outline, seed):
+def test_valid_and_clearance_equal_the_plain_reference_as_objects_come_and_go(outline, seed):
     rng = np.random.default_rng(seed)
     fp = single_room(outline)
     sp = RoomSpace(fp, fp.rooms[0])
@@ -75,6 +76,10 @@ def test_valid_equals_the_plain_reference_as_objects_come_and_go(outline, seed):
                                     (True, True, True)):
             got = sp.valid(corners, z0, z1, floor, doors=doors, layer=layer)
             assert np.array_equal(got, _reference_valid(sp, corners, z0, z1, floor, doors, layer))
+        others = [p.corners for p in sp.placed if p.floor and not p.layer] + list(sp.door_zones)
+        for cap in (0.5, 1.0):
+            want = np.minimum(cap, np.maximum(0.0, -sat_overlap(corners, np.stack(others)).max(1)))
+            assert np.array_equal(sp.clearance(corners, cap), want)
         free = np.flatnonzero(sp.valid(corners, z0, z1, True))
         if free.size and rng.random() < 0.7:
             sp.placed.append(_placed(corners[free[0]], z0, z1, layer=bool(rng.random() < 0.2)))
