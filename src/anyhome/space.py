@@ -8,6 +8,7 @@ margins everywhere), so a pose accepted here stays valid after house.json rounds
 
 from __future__ import annotations
 
+import operator
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
@@ -426,11 +427,11 @@ class RoomSpace:
         objects placed since are appended, those taken away cut off (the layout places and
         takes back the last ones)."""
         held, tab = self._tables.get(key, ([], head))
+        if len(held) == len(objs) and all(map(operator.is_, held, objs)):
+            return tab
         n, k = min(len(held), len(objs)), 0
         while k < n and held[k] is objs[k]:
             k += 1
-        if k == len(held) == len(objs):
-            return tab
         top = len(head[0]) + k
         tab = tuple(a[:top] for a in tab)
         if k < len(objs):
@@ -443,7 +444,7 @@ class RoomSpace:
         if not self.placed:
             return []
         cmin, cmax = self._rows("near", self.placed, (np.zeros((0, 2)), np.zeros((0, 2))), _bounds_of)
-        keep = np.all(cmin <= hi, 1) & np.all(cmax >= lo, 1)
+        keep = (cmin[:, 0] <= hi[0]) & (cmin[:, 1] <= hi[1]) & (cmax[:, 0] >= lo[0]) & (cmax[:, 1] >= lo[1])
         return [self.placed[i] for i in np.flatnonzero(keep)]
 
     # ------------------------------------------------------------ validity
