@@ -95,7 +95,10 @@ def rect_corners(xy: npt.ArrayLike, wd: npt.ArrayLike, yaw: npt.ArrayLike) -> np
     y = lx * s
     y += ly * c
     y += xy_a[:, 1, None]
-    return np.stack((x, y), -1)
+    out = np.empty((n, 4, 2))
+    out[..., 0] = x
+    out[..., 1] = y
+    return out
 
 
 _SIGN_X = np.array([-1.0, 1.0, 1.0, -1.0])
