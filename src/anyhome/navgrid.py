@@ -387,7 +387,7 @@ class NavGrid:
         door = self._door_component()
         if door is None:
             return None
-        labels, door = self._reach_labels(door)
+        labels, walk, door = self._reach_labels(door)
         known = self._known
         todo = [o for o in self.obstacles if o.reach is not None and o not in known]
         if todo and self.waived:
@@ -397,7 +397,7 @@ class NavGrid:
             return []
         if len(todo) == 1:  # most often the object placed last alone
             o = todo[0]
-            lab = labels.ravel()[self._reach_cells(o)]
+            lab = _at(labels, walk, self._reach_cells(o))
             if len(lab) and bool(np.any(lab == door[0]) if len(door) == 1 else np.any(np.isin(lab, door))):
                 known.add(o)
                 return []
@@ -407,7 +407,7 @@ class NavGrid:
         reached = np.zeros(len(todo), dtype=bool)
         some = np.flatnonzero(n)  # an obstacle with no reach cells is not reached
         if some.size:
-            lab = labels.ravel()[np.concatenate([cells[i] for i in some])]
+            lab = _at(labels, walk, np.concatenate([cells[i] for i in some]))
             hit = lab == door[0] if len(door) == 1 else np.isin(lab, door)
             starts = np.concatenate(([0], np.cumsum(n[some])[:-1]))
             reached[some] = np.logical_or.reduceat(hit, starts)
@@ -428,13 +428,10 @@ class NavGrid:
         door = self._door_component()
         if door is None:
             return False
-        labels, door = self._reach_labels(door)
+        labels, walk, door = self._reach_labels(door)
         cells = self._reach_cells(obs)
-        if self.walk_a is not None:
-            walk, sh = self.walk_a, obs.reach_shadow
-        else:
-            walk, sh = self.walk, obs.shadow
-        lab = labels.ravel()[cells] * walk.ravel()[cells]
+        sh = obs.reach_shadow if self.walk_a is not None else obs.shadow
+        lab = _at(labels, walk, cells)
         on = lab == door[0] if len(door) == 1 else np.isin(lab, door)
         if sh is not None and sh.mask.size and on.any():
             rows, cols = np.divmod(cells[on], walk.shape[1])
@@ -456,11 +453,12 @@ class NavGrid:
             self._cells[o] = got
         return got
 
-    def _reach_labels(self, door: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """Components of the agent's walkable cells and those holding the door component."""
+    def _reach_labels(self, door: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Components of the agent's walkable cells (labels, the cells) and those holding the
+        door component."""
         assert self._labels is not None
         if self.walk_a is None:
-            return self._labels, door
+            return self._labels, self.walk, door
         if self._labels_a is None:
             self._labels_a = self._label(self.walk_a)
             self._known = set()
@@ -468,12 +466,12 @@ class NavGrid:
         if self._door_a_stale:
             self._door_a_stale = False
             cells = self._door_cells
-            on = cells[np.isin(self._labels.ravel()[cells], door)]
-            door_a = np.unique(self._labels_a.ravel()[on])
+            on = cells[np.isin(_at(self._labels, self.walk, cells), door)]
+            door_a = np.unique(_at(self._labels_a, self.walk_a, on))
             if not np.array_equal(door_a, self._door_a):
                 self._known = set()
             self._door_a = door_a
-        return self._labels_a, self._door_a
+        return self._labels_a, self.walk_a, self._door_a
 
     def _label(self, walk: np.ndarray) -> np.ndarray:
         """Components of ``walk`` (ndimage.label's), labelled on the window of ``base_free``."""
@@ -490,23 +488,29 @@ class NavGrid:
             self._door_stale = self._door_a_stale = True
         if self._door_stale:
             self._door_stale = False
-            flat = self._labels.ravel()
+            labels, walk = self._labels, self.walk
             common: set[int] | None = None
             for idx in self._door_idx:
-                lab = set(np.unique(flat[idx]).tolist()) - {0}
+                lab = set(np.unique(_at(labels, walk, idx)).tolist()) - {0}
                 common = lab if common is None else common & lab
             if common is None:
-                common = set(np.unique(flat[self._room_idx]).tolist()) - {0}
-            near = flat[self._door_room_idx]
+                common = set(np.unique(_at(labels, walk, self._room_idx)).tolist()) - {0}
+            near = _at(labels, walk, self._door_room_idx)
             by_near = [bool(np.any(near == lab)) for lab in sorted(common)]
             self._door_by_near = all(by_near)
             keep = np.array([lab for lab, b in zip(sorted(common), by_near, strict=True)
-                             if b or np.any(flat[self._room_idx] == lab)], dtype=np.int32)
+                             if b or np.any(_at(labels, walk, self._room_idx) == lab)], dtype=np.int32)
             if not np.array_equal(keep, self._door_labels):
                 self._known = set()
                 self._door_a_stale = True
             self._door_labels = keep
         return self._door_labels if len(self._door_labels) else None
+
+
+def _at(labels: np.ndarray, walk: np.ndarray, idx: np.ndarray) -> np.ndarray:
+    """Labels of the flat cells ``idx``, 0 where ``walk`` holds none (labels are kept for
+    cells no longer walkable rather than cleared: see :func:`_cut`)."""
+    return labels.ravel()[idx] * walk.ravel()[idx]
 
 
 def _meet(a: Patch, b: Patch) -> bool:
@@ -517,7 +521,8 @@ def _meet(a: Patch, b: Patch) -> bool:
 
 def _cut(labels: np.ndarray | None, walk: np.ndarray, lost: Patch) -> tuple[np.ndarray | None, bool]:
     """``labels``, the components of the walkable cells before the cells ``lost`` were taken
-    away from ``walk`` (already without them), updated on the window
+    away from ``walk`` (already without them; labels are read where ``walk`` holds cells
+    only, :func:`_at`), updated on the window
     :data:`LABEL_MARGIN_CELLS` round them, and whether a component split; None (to be
     labelled again) when that window does not settle them.
 
@@ -537,14 +542,14 @@ def _cut(labels: np.ndarray | None, walk: np.ndarray, lost: Patch) -> tuple[np.n
     pockets = _pockets(labels[i0:i1, j0:j1], lab, Patch(lost.i0 - i0, lost.j0 - j0, lost.mask)) if n > 1 else []
     if pockets is None:
         return None, True
+    if not pockets:
+        return labels, False  # the same components less the lost cells, which walk no longer holds
     out = labels.copy()
-    out[lost.window][lost.mask] = 0
-    if pockets:
-        top = int(out.max())
-        win = out[i0:i1, j0:j1]
-        for k, g in enumerate(pockets, 1):
-            win[lab == g] = top + k
-    return out, bool(pockets)
+    top = int(out.max())
+    win = out[i0:i1, j0:j1]
+    for k, g in enumerate(pockets, 1):
+        win[lab == g] = top + k
+    return out, True
 
 
 def _pockets(was: np.ndarray, lab: np.ndarray, lost: Patch) -> list[int] | None:
