@@ -209,7 +209,9 @@ def _box_in(lo: np.ndarray, hi: np.ndarray, box: tuple[float, float, float, floa
 _ZONE, _SIGHTLINE, _PLACED = 0, 1, 2
 """Kinds of what a pose may not overlap (:meth:`RoomSpace._blockers`)."""
 _PAIR_MARGIN_M = 0.01
-"""Bounds further apart than this beyond a (negative) threshold are not compared (m)."""
+"""Bounds further apart than the cap plus this are not compared in :meth:`RoomSpace.clearance` (m)."""
+_PAIR_SLACK_M = 1e-6
+"""Rounding allowed for when pairs are found by their bounds (:func:`_any_overlap`, m)."""
 
 
 def _any_overlap(a: np.ndarray, alo: np.ndarray, ahi: np.ndarray, idx: np.ndarray, b: np.ndarray,
@@ -217,8 +219,8 @@ def _any_overlap(a: np.ndarray, alo: np.ndarray, ahi: np.ndarray, idx: np.ndarra
                  pairs: Callable[[np.ndarray, np.ndarray], np.ndarray] | None = None) -> np.ndarray:
     """Whether each pose ``a[idx]`` overlaps some ``b[j]`` by more than ``thr[j]`` (or as much,
     ``inclusive[j]``) as :func:`overlap_above` tests it, (len(idx),) bool, computed on the pairs
-    whose bounds come closer than ``max(0, -thr)`` plus :data:`_PAIR_MARGIN_M` only (no other
-    overlaps by ``thr``).
+    whose bounds overlap by ``thr`` less :data:`_PAIR_SLACK_M` or more along x and y only (no
+    other overlaps by ``thr``).
 
     Parameters
     ----------
@@ -227,7 +229,7 @@ def _any_overlap(a: np.ndarray, alo: np.ndarray, ahi: np.ndarray, idx: np.ndarra
     b : (m, 4, 2) float, bmin, bmax : (m, 2) float, b_aligned : (m,) bool (:func:`_aligned`)
     pairs : (rows of ``idx``, rows of ``b``) -> bool, the pairs that may overlap at all
     """
-    g = max(0.0, -float(thr.min())) + _PAIR_MARGIN_M
+    g = _PAIR_SLACK_M - thr  # a pair overlapping by thr along x (y) has its bounds this close
     lox, loy, hix, hiy = alo[0, idx], alo[1, idx], ahi[0, idx], ahi[1, idx]
     near = ((lox[None] < (bmax[:, 0] + g)[:, None]) & (hix[None] > (bmin[:, 0] - g)[:, None])
             & (loy[None] < (bmax[:, 1] + g)[:, None]) & (hiy[None] > (bmin[:, 1] - g)[:, None]))
