@@ -13,12 +13,17 @@ house-wide one, so what passes here passes the house-wide check.
 Speed: a cell is walkable when no blocked cell lies within the agent radius of it. The
 empty room's walkable cells come from one distance transform; each obstacle then takes
 away its *shadow*, its cells dilated by the agent's disc on a window around it, which
-is exactly what a distance transform of the furnished room would take away. Components
-are labelled again only when an obstacle took walkable cells away since the last time.
+is exactly what a distance transform of the furnished room would take away. When an
+obstacle takes walkable cells away, the components are labelled on a small window round
+them only (:data:`LABEL_MARGIN_CELLS`): when the walkable cells bordering the lost ones
+are connected within it, every path that crossed the lost cells goes round them, so the
+components are the same less the lost cells; else the whole raster is labelled again.
 """
 
 from __future__ import annotations
 
+import math
+from bisect import bisect_left
 from dataclasses import dataclass
 
 import numpy as np
@@ -47,6 +52,17 @@ REACH_M = AGENT_RADIUS_M + 2 * NAV_CELL_M - REACH_MARGIN_M
 """A floor object is reachable from a walkable cell whose centre lies this close to its
 footprint (the evaluator's ``agent_radius_m + 2 cells``, less :data:`REACH_MARGIN_M`)."""
 
+MADE_KEPT = 256
+"""Obstacles a grid keeps to hand out again for the same footprint."""
+LABEL_MARGIN_CELLS = 4
+"""Cells round an obstacle's lost walkable cells within which they are labelled again
+first (the module docstring)."""
+
+
+_CROSS = ndimage.generate_binary_structure(2, 1)
+"""4-connectivity, ndimage.label's default in 2D."""
+
+
 @dataclass(frozen=True)
 class Patch:
     """Raster cells ``mask`` in the window whose first cell is at row ``i0``, column ``j0``."""
@@ -70,6 +86,8 @@ class NavState:
     obstacles: list[Obstacle]
     labels: np.ndarray | None
     door_labels: np.ndarray
+    door_stale: bool
+    door_by_near: bool
     labels_a: np.ndarray | None
     door_a: np.ndarray
     door_a_stale: bool
@@ -109,6 +127,8 @@ class NavGrid:
         self.xs = x0 + cell_m * np.arange(j0, j1)
         self.ys = y0 + cell_m * np.arange(i0, i1)
         self.gx, self.gy = np.meshgrid(self.xs, self.ys)
+        self._xs, self._ys = self.xs.tolist(), self.ys.tolist()
+        """The same as lists (bisect on them finds what np.searchsorted finds)."""
         half = cell_m / 2
         inset = WALL_INSET_CELLS * cell_m
         self.room_mask = self._raster(space.poly.buffer(-inset, join_style="mitre"))
@@ -130,8 +150,26 @@ class NavGrid:
                 if o.room == space.room.id:
                     free &= ~self._raster(footprint_polygon(o.position, o.size, o.yaw))
         self.base_free = free
+        rows, cols = np.flatnonzero(free.any(1)), np.flatnonzero(free.any(0))
+        self._live = (slice(int(rows[0]), int(rows[-1]) + 1), slice(int(cols[0]), int(cols[-1]) + 1)) if len(
+            rows) else (slice(0, 0), slice(0, 0))
+        """The window holding every cell that may be walkable (labelled alone)."""
         self._door_idx = [np.flatnonzero(m) for m in self.door_near]
         self._room_idx = np.flatnonzero(self.room_mask)
+        self._door_cells = np.concatenate(self._door_idx) if self._door_idx else self._room_idx
+        """Cells near a door (of the room when it has none)."""
+        self._door_room_idx = np.flatnonzero(np.any(self.door_near, 0) & self.room_mask) if self.door_near else self._room_idx
+        """Room cells near a door: a component touching one touches the room."""
+        self._door_mask = np.zeros(self.room_mask.shape, dtype=bool)
+        self._door_mask.ravel()[self._door_cells] = True
+        """``_door_cells`` as a raster."""
+        self._door_by_near = False
+        """Every door label was found touching the room near a door (with ``_door_labels``): they
+        stay the same while no cell near a door is lost and no component splits."""
+        self._blocks: dict[tuple[int, int, int, float], np.ndarray] = {}
+        """Shadows of a full block of cells by its size, the disc and radius (:meth:`_shadow`)."""
+        self._made: dict[tuple[bytes, bool], Obstacle] = {}
+        """Obstacles made (:meth:`obstacle`) by footprint, made again for a pose tried again."""
         self._known: set[Obstacle] = set()
         self._cells: dict[Obstacle, np.ndarray] = {}
         """Flat indices of each obstacle's reach cells (:meth:`_reach_cells`)."""
@@ -150,9 +188,12 @@ class NavGrid:
         """Labels of ``walk_a``'s components holding the door component (with ``_labels_a``)."""
         self._door_a_stale = True
         self._labels: np.ndarray | None = None
-        """Walkable components of ``walk`` (None: to be labelled again)."""
+        """Walkable components of ``walk`` (None: to be labelled again); never written in
+        place (a :class:`NavState` may hold it)."""
         self._door_labels = np.zeros(0, dtype=np.int32)
         """Labels of the door component (with ``_labels``)."""
+        self._door_stale = True
+        """``_door_labels`` to be found again in ``_labels``."""
         self.radius: float | None = None
         for r in (WALKWAY_RADIUS_M, AGENT_RADIUS_M):
             self._use_radius(r)
@@ -200,19 +241,24 @@ class NavGrid:
     def _rect_patch(self, corners: np.ndarray, grow_m: float, rounded: bool) -> Patch:
         """Cells whose centre lies in a rotated rectangle, (4, 2) corners, grown by ``grow_m``
         (``rounded``: within ``grow_m`` of it; else in the rectangle grown square)."""
-        lo, hi = corners.min(0) - grow_m, corners.max(0) + grow_m
-        i0, i1 = (int(v) for v in np.searchsorted(self.ys, [lo[1], hi[1]]))
-        j0, j1 = (int(v) for v in np.searchsorted(self.xs, [lo[0], hi[0]]))
+        (ax, ay), (bx, by), (cx, cy), (dx, dy) = corners.tolist()
+        i0, i1 = bisect_left(self._ys, min(ay, by, cy, dy) - grow_m), bisect_left(self._ys, max(ay, by, cy, dy) + grow_m)
+        j0, j1 = bisect_left(self._xs, min(ax, bx, cx, dx) - grow_m), bisect_left(self._xs, max(ax, bx, cx, dx) + grow_m)
         if i0 >= i1 or j0 >= j1:
             return Patch(0, 0, np.zeros((0, 0), dtype=bool))
-        c = corners.mean(0)
+        mx, my = (ax + bx + cx + dx) / 4, (ay + by + cy + dy) / 4  # as corners.mean(0) sums them
         ex, ey = corners[1] - corners[0], corners[3] - corners[0]
-        hw, hd = np.linalg.norm(ex) / 2, np.linalg.norm(ey) / 2
-        ex, ey = ex / (2 * hw), ey / (2 * hd)
-        px = self.xs[None, j0:j1] - c[0]
-        py = self.ys[i0:i1, None] - c[1]
-        lx = np.abs(px * ex[0] + py * ex[1])
-        ly = np.abs(px * ey[0] + py * ey[1])
+        hw, hd = math.sqrt(ex.dot(ex)) / 2, math.sqrt(ey.dot(ey)) / 2  # as np.linalg.norm
+        (ex0, ex1), (ey0, ey1) = (ex / (2 * hw)).tolist(), (ey / (2 * hd)).tolist()
+        px = self.xs[j0:j1] - mx
+        py = self.ys[i0:i1] - my
+        if ex1 == 0.0 and ey0 == 0.0:  # square to the raster: a product of a row and a column
+            lx, ly = np.abs(px * ex0)[None], np.abs(py * ey1)[:, None]
+        elif ex0 == 0.0 and ey1 == 0.0:
+            lx, ly = np.abs(py * ex1)[:, None], np.abs(px * ey0)[None]
+        else:
+            lx = np.abs(px[None] * ex0 + py[:, None] * ex1)
+            ly = np.abs(px[None] * ey0 + py[:, None] * ey1)
         if rounded:
             mask = np.hypot(np.maximum(lx - hw, 0.0), np.maximum(ly - hd, 0.0)) <= grow_m
         else:
@@ -222,10 +268,18 @@ class NavGrid:
     def obstacle(self, corners: np.ndarray, reachable: bool) -> Obstacle:
         """What an object of footprint ``corners`` (4, 2) does to the walkways; ``reachable``:
         it must stay reachable (a floor object an agent walks up to)."""
+        key = (corners.tobytes(), reachable)
+        got = self._made.get(key)
+        if got is not None:
+            return got
         cells = self._rect_patch(corners, NAV_OBSTACLE_PAD_M, rounded=False)
         reach = self._rect_patch(corners, REACH_M, rounded=True) if reachable else None
         shadow_a = self._shadow(cells, self._disc_a, AGENT_RADIUS_M) if self._disc_a is not None else None
-        return Obstacle(cells, self._shadow(cells, self._disc, self.radius or AGENT_RADIUS_M), reach, shadow_a)
+        got = Obstacle(cells, self._shadow(cells, self._disc, self.radius or AGENT_RADIUS_M), reach, shadow_a)
+        if len(self._made) >= MADE_KEPT:
+            self._made.clear()
+        self._made[key] = got
+        return got
 
     def _shadow(self, cells: Patch, disc: np.ndarray, radius: float) -> Patch:
         """``cells`` dilated by ``disc`` (the cells within ``radius``), clipped to the raster;
@@ -238,14 +292,21 @@ class NavGrid:
         i0, j0 = max(0, cells.i0 - k), max(0, cells.j0 - k)
         i1, j1 = min(ny, cells.i0 + h + k), min(nx, cells.j0 + w + k)
         if cells.mask.all():
-            rows, cols = np.arange(i0, i1), np.arange(j0, j1)
-            dy = np.maximum(0, np.maximum(cells.i0 - rows, rows - (cells.i0 + h - 1))).astype(float)
-            dx = np.maximum(0, np.maximum(cells.j0 - cols, cols - (cells.j0 + w - 1))).astype(float)
-            # as _disc_of measures: sqrt of the summed squares, times the cell
-            return Patch(i0, j0, ~(np.sqrt(dy[:, None] ** 2 + dx[None, :] ** 2) * self.cell > radius))
-        pad = np.zeros((h + 2 * k, w + 2 * k), dtype=bool)
-        pad[k:k + h, k:k + w] = cells.mask
-        grown = ndimage.binary_dilation(pad, structure=disc)
+            block = self._blocks.get((h, w, k, radius))
+            if block is None:
+                d = np.arange(-k, max(h, w) + k, dtype=float)  # rows (columns) from the block's first
+                dy = np.maximum(0.0, np.maximum(-d[:h + 2 * k], d[:h + 2 * k] - (h - 1)))
+                dx = np.maximum(0.0, np.maximum(-d[:w + 2 * k], d[:w + 2 * k] - (w - 1)))
+                # as _disc_of measures: sqrt of the summed squares, times the cell
+                block = ~(np.sqrt(dy[:, None] ** 2 + dx[None, :] ** 2) * self.cell > radius)
+                block.flags.writeable = False  # handed out in views
+                self._blocks[(h, w, k, radius)] = block
+            a, b = i0 - (cells.i0 - k), j0 - (cells.j0 - k)
+            return Patch(i0, j0, block[a:a + i1 - i0, b:b + j1 - j0])
+        free = np.ones((h + 2 * k, w + 2 * k), dtype=bool)
+        free[k:k + h, k:k + w] = ~cells.mask
+        # the cells within the disc of a blocked one: its dilation by the disc, as _disc_of measures
+        grown = ~(ndimage.distance_transform_edt(free) * self.cell > radius)
         a, b = i0 - (cells.i0 - k), j0 - (cells.j0 - k)
         return Patch(i0, j0, grown[a:a + i1 - i0, b:b + j1 - j0])
 
@@ -253,15 +314,32 @@ class NavGrid:
     def add(self, obs: Obstacle) -> None:
         """Block ``obs`` (a committed object)."""
         self.obstacles.append(obs)
-        win = obs.shadow.window
-        lost = self.walk[win] & obs.shadow.mask
+        sh = obs.shadow
+        lost = self.walk[sh.window] & sh.mask
         if lost.any():
-            self.walk[win] &= ~obs.shadow.mask
-            self._labels = None
+            self.walk[sh.window] &= ~sh.mask
+            self._labels, split = _cut(self._labels, self.walk, Patch(sh.i0, sh.j0, lost))
+            if split or not self._door_by_near or (self._door_mask[sh.window] & lost).any():
+                self._door_stale = self._door_a_stale = True
+            if self.walk_a is None:
+                self._forget(sh, split)
         sa = obs.reach_shadow
-        if self.walk_a is not None and sa is not None and (self.walk_a[sa.window] & sa.mask).any():
-            self.walk_a[sa.window] &= ~sa.mask
-            self._labels_a = None
+        if self.walk_a is not None and sa is not None:
+            lost = self.walk_a[sa.window] & sa.mask
+            if lost.any():
+                self.walk_a[sa.window] &= ~sa.mask
+                self._labels_a, split = _cut(self._labels_a, self.walk_a, Patch(sa.i0, sa.j0, lost))
+                if split or (self._door_mask[sa.window] & lost).any():
+                    self._door_a_stale = True
+                self._forget(sa, split)
+
+    def _forget(self, p: Patch, split: bool) -> None:
+        """Objects reached from cells in ``p``'s window are no longer known to be reached
+        (``split``: a component split, none is)."""
+        if split:
+            self._known = set()
+        elif self._known:
+            self._known = {o for o in self._known if o.reach is None or not _meet(o.reach, p)}
 
     def set_blocked(self, placed: list[Placed]) -> None:
         """Start again from the empty room with the obstacles of ``placed``."""
@@ -281,7 +359,8 @@ class NavGrid:
         """What :meth:`load` needs to come back to the walkways as they are now."""
         return NavState(
             self.walk.copy(), None if self.walk_a is None else self.walk_a.copy(), list(self.obstacles),
-            self._labels, self._door_labels, self._labels_a, self._door_a, self._door_a_stale, set(self._known),
+            self._labels, self._door_labels, self._door_stale, self._door_by_near, self._labels_a, self._door_a,
+            self._door_a_stale, set(self._known),
         )
 
     def load(self, s: NavState) -> None:
@@ -289,7 +368,8 @@ class NavGrid:
         self.walk = s.walk.copy()
         self.walk_a = None if s.walk_a is None else s.walk_a.copy()
         self.obstacles = list(s.obstacles)
-        self._labels, self._door_labels = s.labels, s.door_labels
+        self._labels, self._door_labels, self._door_stale = s.labels, s.door_labels, s.door_stale
+        self._door_by_near = s.door_by_near
         self._labels_a, self._door_a, self._door_a_stale = s.labels_a, s.door_a, s.door_a_stale
         self._known = set(s.known)
 
@@ -307,17 +387,27 @@ class NavGrid:
         door = self._door_component()
         if door is None:
             return None
-        labels, door = self._reach_labels(door)
-        waived = set(self.waived)
-        todo = [o for o in self.obstacles if o.reach is not None and o not in waived and o not in self._known]
+        labels, walk, door = self._reach_labels(door)
+        known = self._known
+        todo = [o for o in self.obstacles if o.reach is not None and o not in known]
+        if todo and self.waived:
+            waived = set(self.waived)
+            todo = [o for o in todo if o not in waived]
         if not todo:
             return []
+        if len(todo) == 1:  # most often the object placed last alone
+            o = todo[0]
+            lab = _at(labels, walk, self._reach_cells(o))
+            if len(lab) and bool(np.any(lab == door[0]) if len(door) == 1 else np.any(np.isin(lab, door))):
+                known.add(o)
+                return []
+            return [o]
         cells = [self._reach_cells(o) for o in todo]
         n = np.array([len(c) for c in cells])
         reached = np.zeros(len(todo), dtype=bool)
         some = np.flatnonzero(n)  # an obstacle with no reach cells is not reached
         if some.size:
-            lab = labels.ravel()[np.concatenate([cells[i] for i in some])]
+            lab = _at(labels, walk, np.concatenate([cells[i] for i in some]))
             hit = lab == door[0] if len(door) == 1 else np.isin(lab, door)
             starts = np.concatenate(([0], np.cumsum(n[some])[:-1]))
             reached[some] = np.logical_or.reduceat(hit, starts)
@@ -329,6 +419,30 @@ class NavGrid:
                 out.append(o)
         return out
 
+    def surely_unreached(self, obs: Obstacle) -> bool:
+        """Whether ``obs``, once added, is sure to be among :meth:`unreached` (or the walkways
+        closed): none of its reach cells is walkable beside it and in the door component now.
+        Adding it only takes walkable cells away and splits components, so none would be then."""
+        if self.radius is None or obs.reach is None:
+            return False
+        door = self._door_component()
+        if door is None:
+            return False
+        labels, walk, door = self._reach_labels(door)
+        cells = self._reach_cells(obs)
+        sh = obs.reach_shadow if self.walk_a is not None else obs.shadow
+        lab = _at(labels, walk, cells)
+        on = lab == door[0] if len(door) == 1 else np.isin(lab, door)
+        if sh is not None and sh.mask.size and on.any():
+            rows, cols = np.divmod(cells[on], walk.shape[1])
+            h, w = sh.mask.shape
+            r, c = rows - sh.i0, cols - sh.j0
+            inside = (r >= 0) & (r < h) & (c >= 0) & (c < w)
+            shaded = np.zeros(len(r), dtype=bool)
+            shaded[inside] = sh.mask[r[inside], c[inside]]
+            return bool(np.all(shaded))
+        return not on.any()
+
     def _reach_cells(self, o: Obstacle) -> np.ndarray:
         """Flat raster indices of the cells ``o`` is reached from (cached per obstacle)."""
         got = self._cells.get(o)
@@ -339,38 +453,123 @@ class NavGrid:
             self._cells[o] = got
         return got
 
-    def _reach_labels(self, door: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """Components of the agent's walkable cells and those holding the door component."""
+    def _reach_labels(self, door: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Components of the agent's walkable cells (labels, the cells) and those holding the
+        door component."""
         assert self._labels is not None
         if self.walk_a is None:
-            return self._labels, door
+            return self._labels, self.walk, door
         if self._labels_a is None:
-            self._labels_a, _ = ndimage.label(self.walk_a)
+            self._labels_a = self._label(self.walk_a)
             self._known = set()
             self._door_a_stale = True
         if self._door_a_stale:
             self._door_a_stale = False
-            cells = np.concatenate(self._door_idx) if self._door_idx else self._room_idx
-            on = cells[np.isin(self._labels.ravel()[cells], door)]
-            self._door_a = np.unique(self._labels_a.ravel()[on])
-        return self._labels_a, self._door_a
+            cells = self._door_cells
+            on = cells[np.isin(_at(self._labels, self.walk, cells), door)]
+            door_a = np.unique(_at(self._labels_a, self.walk_a, on))
+            if not np.array_equal(door_a, self._door_a):
+                self._known = set()
+            self._door_a = door_a
+        return self._labels_a, self.walk_a, self._door_a
+
+    def _label(self, walk: np.ndarray) -> np.ndarray:
+        """Components of ``walk`` (ndimage.label's), labelled on the window of ``base_free``."""
+        out = np.zeros(walk.shape, dtype=np.int32)
+        out[self._live], _ = ndimage.label(walk[self._live], structure=_CROSS)
+        return out
 
     def _door_component(self) -> np.ndarray | None:
         """Labels of the walkable components that touch every door and some room cells
         (None: none does)."""
         if self._labels is None:
-            labels, _ = ndimage.label(self.walk)
-            self._labels = labels
+            self._labels = self._label(self.walk)
             self._known = set()
-            self._door_a_stale = True
-            flat = labels.ravel()
+            self._door_stale = self._door_a_stale = True
+        if self._door_stale:
+            self._door_stale = False
+            labels, walk = self._labels, self.walk
             common: set[int] | None = None
             for idx in self._door_idx:
-                lab = set(np.unique(flat[idx]).tolist()) - {0}
+                lab = set(np.unique(_at(labels, walk, idx)).tolist()) - {0}
                 common = lab if common is None else common & lab
-            room = flat[self._room_idx]
             if common is None:
-                common = set(np.unique(room).tolist()) - {0}
-            keep = [lab for lab in sorted(common) if np.any(room == lab)]
-            self._door_labels = np.array(keep, dtype=np.int32)
+                common = set(np.unique(_at(labels, walk, self._room_idx)).tolist()) - {0}
+            near = _at(labels, walk, self._door_room_idx)
+            by_near = [bool(np.any(near == lab)) for lab in sorted(common)]
+            self._door_by_near = all(by_near)
+            keep = np.array([lab for lab, b in zip(sorted(common), by_near, strict=True)
+                             if b or np.any(_at(labels, walk, self._room_idx) == lab)], dtype=np.int32)
+            if not np.array_equal(keep, self._door_labels):
+                self._known = set()
+                self._door_a_stale = True
+            self._door_labels = keep
         return self._door_labels if len(self._door_labels) else None
+
+
+def _at(labels: np.ndarray, walk: np.ndarray, idx: np.ndarray) -> np.ndarray:
+    """Labels of the flat cells ``idx``, 0 where ``walk`` holds none (labels are kept for
+    cells no longer walkable rather than cleared: see :func:`_cut`)."""
+    return labels.ravel()[idx] * walk.ravel()[idx]
+
+
+def _meet(a: Patch, b: Patch) -> bool:
+    """Whether the windows of ``a`` and ``b`` share a cell."""
+    (ha, wa), (hb, wb) = a.mask.shape, b.mask.shape
+    return a.i0 < b.i0 + hb and b.i0 < a.i0 + ha and a.j0 < b.j0 + wb and b.j0 < a.j0 + wa
+
+
+def _cut(labels: np.ndarray | None, walk: np.ndarray, lost: Patch) -> tuple[np.ndarray | None, bool]:
+    """``labels``, the components of the walkable cells before the cells ``lost`` were taken
+    away from ``walk`` (already without them; labels are read where ``walk`` holds cells
+    only, :func:`_at`), updated on the window
+    :data:`LABEL_MARGIN_CELLS` round them, and whether a component split; None (to be
+    labelled again) when that window does not settle them.
+
+    The walkable cells bordering the lost ones (the *ring*) fall into components of the
+    window. One that keeps off the window's edge is a whole component (a pocket cut off):
+    it gets a label of its own. When the rest of the ring that was in one component lies
+    in one component of the window, every path that crossed the lost cells goes round them
+    there, so the other components are the same as before less the lost cells."""
+    if labels is None:
+        return None, True
+    m = LABEL_MARGIN_CELLS
+    h, w = lost.mask.shape
+    ny, nx = walk.shape
+    i0, j0 = max(0, lost.i0 - m), max(0, lost.j0 - m)
+    i1, j1 = min(ny, lost.i0 + h + m), min(nx, lost.j0 + w + m)
+    lab, n = ndimage.label(walk[i0:i1, j0:j1], structure=_CROSS)
+    pockets = _pockets(labels[i0:i1, j0:j1], lab, Patch(lost.i0 - i0, lost.j0 - j0, lost.mask)) if n > 1 else []
+    if pockets is None:
+        return None, True
+    if not pockets:
+        return labels, False  # the same components less the lost cells, which walk no longer holds
+    out = labels.copy()
+    top = int(out.max())
+    win = out[i0:i1, j0:j1]
+    for k, g in enumerate(pockets, 1):
+        win[lab == g] = top + k
+    return out, True
+
+
+def _pockets(was: np.ndarray, lab: np.ndarray, lost: Patch) -> list[int] | None:
+    """The components of a window (``lab``, its labels now; ``was``, its labels before
+    ``lost`` was taken away) bordering ``lost`` that keep off its edge; None when two that
+    reach its edge were one component before (:func:`_cut`)."""
+    gone = np.zeros(lab.shape, dtype=bool)
+    gone[lost.window] = lost.mask
+    near = gone.copy()  # the lost cells and their 4-neighbours (ndimage.label's connectivity)
+    near[1:] |= gone[:-1]
+    near[:-1] |= gone[1:]
+    near[:, 1:] |= gone[:, :-1]
+    near[:, :-1] |= gone[:, 1:]
+    ring = near & (lab > 0)
+    got, first = np.unique(lab[ring], return_index=True)
+    if len(got) < 2:
+        return []
+    edge = np.unique(np.concatenate((lab[0], lab[-1], lab[:, 0], lab[:, -1])))
+    shut = ~np.isin(got, edge)
+    before = was[ring][first[~shut]]  # the component each one reaching the edge was part of
+    if len(np.unique(before)) < len(before):
+        return None
+    return got[shut].tolist()

@@ -8,8 +8,10 @@ margins everywhere), so a pose accepted here stays valid after house.json rounds
 
 from __future__ import annotations
 
+import operator
+from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, cast
+from typing import TYPE_CHECKING
 
 import numpy as np
 import numpy.typing as npt
@@ -35,6 +37,10 @@ WALL_OPENING_MARGIN_M = 0.05
 """Gap kept along a wall between a wall object and a door or window opening."""
 CEILING_GAP_M = 0.05
 """Gap kept between the top of a wall or on-top object and the ceiling."""
+NO_COLLISION_M = TOLERANCE_M - 1e-6
+"""Footprints overlapping by less than this (:func:`sat_overlap`) do not collide as
+:func:`anyhome.geometry.boxes_collide` tests them (each shrunk by half the tolerance,
+they are apart)."""
 
 
 @dataclass(frozen=True)
@@ -69,17 +75,29 @@ def rect_corners(xy: npt.ArrayLike, wd: npt.ArrayLike, yaw: npt.ArrayLike) -> np
     -------
     corners : (n, 4, 2) float, back-left, back-right, front-right, front-left
     """
-    xy_a = np.atleast_2d(np.asarray(xy, dtype=float))
+    xy_a = np.asarray(xy, dtype=float).reshape(-1, 2)
     n = len(xy_a)
-    yaw_a = np.broadcast_to(np.asarray(yaw, dtype=float), (n,))
-    wd_a = np.broadcast_to(np.asarray(wd, dtype=float), (n, 2))
-    hw, hd = wd_a[:, 0] / 2.0, wd_a[:, 1] / 2.0
-    lx = hw[:, None] * _SIGN_X  # (n, 4): -hw, hw, hw, -hw (a sign flip is exact)
-    ly = hd[:, None] * _SIGN_Y
+    yaw_a = np.asarray(yaw, dtype=float).reshape(-1)
+    if len(yaw_a) != n:
+        yaw_a = np.broadcast_to(yaw_a, (n,))
+    wd_a = np.asarray(wd, dtype=float)
+    if wd_a.ndim == 1:  # one size: the same arithmetic on scalars
+        lx = (wd_a[0] / 2.0) * _SIGN_X  # -hw, hw, hw, -hw (a sign flip is exact)
+        ly = (wd_a[1] / 2.0) * _SIGN_Y
+    else:
+        wd_a = np.broadcast_to(wd_a, (n, 2))
+        lx = (wd_a[:, 0] / 2.0)[:, None] * _SIGN_X
+        ly = (wd_a[:, 1] / 2.0)[:, None] * _SIGN_Y
     c, s = np.cos(yaw_a)[:, None], np.sin(yaw_a)[:, None]
+    x = lx * c  # lx * c - ly * s + x0, in place
+    x -= ly * s
+    x += xy_a[:, 0, None]
+    y = lx * s
+    y += ly * c
+    y += xy_a[:, 1, None]
     out = np.empty((n, 4, 2))
-    out[..., 0] = lx * c - ly * s + xy_a[:, 0, None]
-    out[..., 1] = lx * s + ly * c + xy_a[:, 1, None]
+    out[..., 0] = x
+    out[..., 1] = y
     return out
 
 
@@ -178,6 +196,88 @@ def overlap_above(a: np.ndarray, b: np.ndarray, thr: float, inclusive: bool = Fa
     return out
 
 
+def _box_in(lo: np.ndarray, hi: np.ndarray, box: tuple[float, float, float, float], e: float
+            ) -> tuple[np.ndarray, np.ndarray]:
+    """Whether all corners of footprints of bounds ``lo``, ``hi`` (2, n) lie in ``box`` (x0,
+    y0, x1, y1) shrunk by ``e``, and whether they lie in it grown by ``e`` (n,) each."""
+    x0, y0, x1, y1 = box
+    inner = (lo[0] > x0 + e) & (hi[0] < x1 - e) & (lo[1] > y0 + e) & (hi[1] < y1 - e)
+    outer = (lo[0] > x0 - e) & (hi[0] < x1 + e) & (lo[1] > y0 - e) & (hi[1] < y1 + e)
+    return inner, outer
+
+
+_ZONE, _SIGHTLINE, _PLACED = 0, 1, 2
+"""Kinds of what a pose may not overlap (:meth:`RoomSpace._blockers`)."""
+_PAIR_MARGIN_M = 0.01
+"""Bounds further apart than the cap plus this are not compared in :meth:`RoomSpace.clearance` (m)."""
+_PAIR_SLACK_M = 1e-6
+"""Rounding allowed for when pairs are found by their bounds (:func:`_any_overlap`, m)."""
+
+
+def _any_overlap(a: np.ndarray, alo: np.ndarray, ahi: np.ndarray, idx: np.ndarray, b: np.ndarray,
+                 bmin: np.ndarray, bmax: np.ndarray, b_aligned: np.ndarray, thr: np.ndarray, inclusive: np.ndarray,
+                 pairs: Callable[[np.ndarray, np.ndarray], np.ndarray] | None = None) -> np.ndarray:
+    """Whether each pose ``a[idx]`` overlaps some ``b[j]`` by more than ``thr[j]`` (or as much,
+    ``inclusive[j]``) as :func:`overlap_above` tests it, (len(idx),) bool, computed on the pairs
+    whose bounds overlap by ``thr`` less :data:`_PAIR_SLACK_M` or more along x and y only (no
+    other overlaps by ``thr``).
+
+    Parameters
+    ----------
+    a : (n, 4, 2) float, alo, ahi : (2, n) float, its bounds (:func:`_bounds_t`); idx : (k,) int, the
+        rows of ``a`` tested
+    b : (m, 4, 2) float, bmin, bmax : (m, 2) float, b_aligned : (m,) bool (:func:`_aligned`)
+    pairs : (rows of ``idx``, rows of ``b``) -> bool, the pairs that may overlap at all
+    """
+    g = _PAIR_SLACK_M - thr  # a pair overlapping by thr along x (y) has its bounds this close
+    lox, loy, hix, hiy = alo[0, idx], alo[1, idx], ahi[0, idx], ahi[1, idx]
+    near = ((lox[None] < (bmax[:, 0] + g)[:, None]) & (hix[None] > (bmin[:, 0] - g)[:, None])
+            & (loy[None] < (bmax[:, 1] + g)[:, None]) & (hiy[None] > (bmin[:, 1] - g)[:, None]))
+    j, i = np.nonzero(near)  # (m, k): a row of poses per footprint, contiguous
+    if pairs is not None and len(i):
+        keep = pairs(i, j)
+        i, j = i[keep], j[keep]
+    out = np.zeros(len(idx), dtype=bool)
+    if not len(i):
+        return out
+    ox = np.minimum(hix[i], bmax[j, 0]) - np.maximum(lox[i], bmin[j, 0])
+    oy = np.minimum(hiy[i], bmax[j, 1]) - np.maximum(loy[i], bmin[j, 1])
+    bb = np.minimum(ox, oy)
+    t, inc = thr[j], inclusive[j]
+    hit = np.where(inc, bb >= t, bb > t)
+    k = np.nonzero((bb >= t - _SAT_SLACK_M) & (bb > -0.05))[0]  # as overlap_above, the axes of these
+    if k.size:
+        ai = a[idx[i[k]]]
+        rot = ~(_aligned(ai) & b_aligned[j[k]])
+        k, ai = k[rot], ai[rot]
+        if k.size:
+            ov = _sat_pairs(ai, b[j[k]])
+            hit[k] = np.where(inc[k], ov >= t[k], ov > t[k])
+    out[i[hit]] = True
+    return out
+
+
+def _bounds_t(c: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(n, 4, 2) corners -> lower and upper bounds, (2, n) each (x then y, contiguous: fast)."""
+    t = np.ascontiguousarray(c.transpose(2, 1, 0))
+    return (np.minimum(np.minimum(t[:, 0], t[:, 1]), np.minimum(t[:, 2], t[:, 3])),
+            np.maximum(np.maximum(t[:, 0], t[:, 1]), np.maximum(t[:, 2], t[:, 3])))
+
+
+def _bounds_of(objs: list[Placed]) -> tuple[np.ndarray, ...]:
+    """Lower and upper bounds (m, 2) of the objects' footprints."""
+    c = np.stack([p.corners for p in objs])
+    return _cmin(c), _cmax(c)
+
+
+def _blocker_rows(objs: list[Placed]) -> tuple[np.ndarray, ...]:
+    """Rows of placed objects as :meth:`RoomSpace._blockers` stacks them."""
+    c = np.stack([p.corners for p in objs])
+    m = len(objs)
+    return (c, _cmin(c), _cmax(c), _aligned(c), np.full(m, EPS_COLLIDE_M), np.zeros(m, dtype=bool),
+            np.full(m, _PLACED), np.array([p.z0 for p in objs]), np.array([p.z1 for p in objs]))
+
+
 def _cmin(c: np.ndarray) -> np.ndarray:
     """(n, 4, 2) corners -> (n, 2) lower bounds (faster than ``min(1)`` on a short axis)."""
     return np.minimum(np.minimum(c[:, 0], c[:, 1]), np.minimum(c[:, 2], c[:, 3]))
@@ -269,7 +369,8 @@ class RoomSpace:
         """``buf``'s (x0, y0, x1, y1) when it is an axis-aligned rectangle, else None."""
         self.outline_box = _axis_box(np.asarray(self.outline.exterior.coords)) if not self.outline.interiors else None
         """``outline``'s (x0, y0, x1, y1) when it is an axis-aligned rectangle, else None."""
-        self._cache: tuple[list[Placed], dict[object, object]] = ([], {})
+        self._tables: dict[object, tuple[list[Placed], tuple[np.ndarray, ...]]] = {}
+        """Arrays of rows derived from placed objects (:meth:`_rows`)."""
         self.bmin = self.vertices.min(0)
         self.bmax = self.vertices.max(0)
         self.height = float(self.room.height)
@@ -296,6 +397,11 @@ class RoomSpace:
             zones += stair_zones(self.floorplan).get(self.room.id, [])
         self.door_zones = np.asarray(zones).reshape(-1, 4, 2)
         self.zone_lo, self.zone_hi = self.door_zones.min(1), self.door_zones.max(1)
+        self.zone_aligned = _aligned(self.door_zones)
+        nz, nan = len(self.door_zones), np.full(len(self.door_zones), np.nan)
+        self._zone_rows = (self.door_zones, self.zone_lo, self.zone_hi, self.zone_aligned, np.full(nz, -DOOR_MARGIN_M),
+                           np.ones(nz, dtype=bool), np.full(nz, _ZONE), nan, nan)
+        """The door zones as :meth:`_blockers` stacks them, first."""
         self.zone_polys = [Polygon(z) for z in zones]
         wzones = []
         for w in self.floorplan.windows:
@@ -320,37 +426,31 @@ class RoomSpace:
     def objects(self) -> list[HouseObject]:
         return [p.obj for p in self.placed]
 
-    def _memo(self) -> dict[object, object]:
-        """Arrays derived from ``placed``, kept while the list holds the same objects."""
-        held, memo = self._cache
-        if len(held) != len(self.placed) or any(a is not b for a, b in zip(held, self.placed, strict=True)):
-            self._cache = (list(self.placed), {})
-        return self._cache[1]
+    def _rows(self, key: object, objs: list[Placed], head: tuple[np.ndarray, ...],
+              make: Callable[[list[Placed]], tuple[np.ndarray, ...]]) -> tuple[np.ndarray, ...]:
+        """Arrays of rows ``head`` then ``make(objs)``, kept under ``key`` from call to call:
+        objects placed since are appended, those taken away cut off (the layout places and
+        takes back the last ones)."""
+        held, tab = self._tables.get(key, ([], head))
+        if len(held) == len(objs) and all(map(operator.is_, held, objs)):
+            return tab
+        n, k = min(len(held), len(objs)), 0
+        while k < n and held[k] is objs[k]:
+            k += 1
+        top = len(head[0]) + k
+        tab = tuple(a[:top] for a in tab)
+        if k < len(objs):
+            tab = tuple(np.concatenate([a, r]) for a, r in zip(tab, make(objs[k:]), strict=True))
+        self._tables[key] = (list(objs), tab)
+        return tab
 
     def near(self, lo: np.ndarray, hi: np.ndarray) -> list[Placed]:
         """Placed objects whose footprint's bounding box meets the box ``lo``-``hi`` (2,)."""
         if not self.placed:
             return []
-        memo = self._memo()
-        if "bounds" not in memo:
-            c = np.stack([p.corners for p in self.placed])
-            memo["bounds"] = (_cmin(c), _cmax(c))
-        cmin, cmax = cast(tuple[np.ndarray, np.ndarray], memo["bounds"])
-        keep = np.all(cmin <= hi, 1) & np.all(cmax >= lo, 1)
+        cmin, cmax = self._rows("near", self.placed, (np.zeros((0, 2)), np.zeros((0, 2))), _bounds_of)
+        keep = (cmin[:, 0] <= hi[0]) & (cmin[:, 1] <= hi[1]) & (cmax[:, 0] >= lo[0]) & (cmax[:, 1] >= lo[1])
         return [self.placed[i] for i in np.flatnonzero(keep)]
-
-    def _arrays(self, layer: bool = False) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """Corners, bottoms and tops of the placed objects (``layer``: of the layers only,
-        else of all but the layers)."""
-        memo = self._memo()
-        if ("arrays", layer) not in memo:
-            placed = [p for p in self.placed if p.layer == layer]
-            memo["arrays", layer] = (np.zeros((0, 4, 2)), np.zeros(0), np.zeros(0)) if not placed else (
-                np.stack([p.corners for p in placed]),
-                np.array([p.z0 for p in placed]),
-                np.array([p.z1 for p in placed]),
-            )
-        return memo["arrays", layer]  # type: ignore[return-value]
 
     # ------------------------------------------------------------ validity
     def valid(
@@ -365,12 +465,16 @@ class RoomSpace:
             return ok
         z0 = np.broadcast_to(np.asarray(z0, dtype=float), (n,))
         z1 = np.broadcast_to(np.asarray(z1, dtype=float), (n,))
-        mins, maxs = _cmin(corners), _cmax(corners)
-        lo, hi = self.bmin - INSIDE_TOL_M, self.bmax + INSIDE_TOL_M
-        ok &= (mins[:, 0] >= lo[0]) & (mins[:, 1] >= lo[1]) & (maxs[:, 0] <= hi[0]) & (maxs[:, 1] <= hi[1])
+        lo, hi = _bounds_t(corners)
+        blo, bhi = self.bmin - INSIDE_TOL_M, self.bmax + INSIDE_TOL_M
+        ok &= (lo[0] >= blo[0]) & (lo[1] >= blo[1]) & (hi[0] <= bhi[0]) & (hi[1] <= bhi[1])
         limit = self.height if floor else self.height - CEILING_GAP_M
         ok &= z1 <= limit + 1e-9
         idx = np.nonzero(ok)[0]
+        if idx.size and self.buf_box is not None and self.convex:  # a rectangle: most settled by their bounds
+            inner, outer = _box_in(lo[:, idx], hi[:, idx], self.buf_box, _BOX_EDGE_M)
+            ok[idx[~outer]] = False  # a corner outside: out
+            idx = idx[outer & ~inner]  # a corner a hair from the outline: as below
         if idx.size:
             c = corners[idx]
             pin = self._in_buf(c[..., 0].ravel(), c[..., 1].ravel()).reshape(-1, 4)
@@ -384,25 +488,41 @@ class RoomSpace:
                     inner[sub] = ~self._vertex_inside(c[sub])
             ok[idx] = inner
         idx = np.nonzero(ok)[0]
-        if idx.size and doors and len(self.door_zones):
-            near_door = overlap_above(corners[idx], self.door_zones, -DOOR_MARGIN_M, inclusive=True,
-                                      amin=mins[idx], amax=maxs[idx])
-            ok[idx] = ~np.any(near_door, 1)
-        idx = np.nonzero(ok)[0]
-        if idx.size and floor and not layer and self.keep_clear:
-            tall = z1[idx] > VIEW_CLEAR_M
-            if tall.any():
-                seen = overlap_above(corners[idx], np.stack(self.keep_clear), EPS_COLLIDE_M,
-                                     amin=mins[idx], amax=maxs[idx])
-                ok[idx] = ~(tall & np.any(seen, 1))
-        idx = np.nonzero(ok)[0]
-        pc, pz0, pz1 = self._arrays(layer)
-        if idx.size and len(pc):
-            zov = np.minimum(z1[idx, None], pz1[None]) - np.maximum(z0[idx, None], pz0[None])
-            hit = overlap_above(corners[idx], pc, EPS_COLLIDE_M, amin=mins[idx], amax=maxs[idx],
-                                pairs=zov > EPS_COLLIDE_M)
-            ok[idx] = ~np.any(hit, 1)
+        if idx.size:
+            tall = z1 > VIEW_CLEAR_M
+            sightlines = bool(floor and not layer and tall[idx].any())
+            b, bmin, bmax, bal, thr, incl, kind, bz0, bz1 = self._blockers(layer, doors, sightlines)
+
+            def may_meet(i: np.ndarray, j: np.ndarray) -> np.ndarray:
+                """Door zones meet any pose, sightlines tall ones, objects those overlapping them in z."""
+                ii, k = idx[i], kind[j]
+                return (k == _ZONE) | ((k == _SIGHTLINE) & tall[ii]) | (
+                    (k == _PLACED) & (np.minimum(z1[ii], bz1[j]) - np.maximum(z0[ii], bz0[j]) > EPS_COLLIDE_M))
+
+            if len(b):
+                ok[idx[_any_overlap(corners, lo, hi, idx, b, bmin, bmax, bal, thr, incl, pairs=may_meet)]] = False
         return ok
+
+    def _blockers(self, layer: bool, doors: bool, sightlines: bool) -> tuple[np.ndarray, ...]:
+        """What a pose may not overlap, stacked: the door zones (``doors``), the sightlines
+        (``sightlines``) and the placed objects (``layer``: the layers, else all but them).
+
+        Returns
+        -------
+        corners (m, 4, 2), lower and upper bounds (m, 2), square to the axes (m,) bool, the
+        overlap (m,) m each may have, whether it may have that much (m,) bool, its kind (m,)
+        int (:data:`_ZONE`, :data:`_SIGHTLINE`, :data:`_PLACED`), bottoms and tops (m,)
+        """
+        got = self._rows(layer, [p for p in self.placed if p.layer == layer], self._zone_rows, _blocker_rows)
+        if not doors:
+            got = tuple(a[len(self.door_zones):] for a in got)
+        if not sightlines or not self.keep_clear:
+            return got
+        kc = np.stack(self.keep_clear)
+        nan = np.full(len(kc), np.nan)
+        more = (kc, _cmin(kc), _cmax(kc), _aligned(kc), np.full(len(kc), EPS_COLLIDE_M), np.zeros(len(kc), dtype=bool),
+                np.full(len(kc), _SIGHTLINE), nan, nan)
+        return tuple(np.concatenate([a, m]) for a, m in zip(got, more, strict=True))
 
     def _in_buf(self, x: np.ndarray, y: np.ndarray) -> np.ndarray:
         """``shapely.contains_xy(self.buf, x, y)``; for an axis-aligned rectangle by comparing
@@ -445,12 +565,30 @@ class RoomSpace:
 
     def clearance(self, corners: np.ndarray, cap_m: float = 1.0) -> np.ndarray:
         """Approximate free distance from each footprint to floor objects and door zones."""
-        out = np.full(len(corners), cap_m)
+        n = len(corners)
+        out = np.full(n, cap_m)
         floor = [p.corners for p in self.placed if p.floor and not p.layer]
-        others = floor + list(self.door_zones)
-        if others and len(corners):
-            ov = sat_overlap(corners, np.stack(others))
-            out = np.minimum(out, np.maximum(0.0, -ov.max(1)))
+        if not n or not (floor or len(self.door_zones)):
+            return out
+        b = np.concatenate([np.reshape(floor, (-1, 4, 2)), self.door_zones])
+        # as min(cap, max(0, -sat_overlap(corners, b).max(1))), on the pairs whose bounds come
+        # within the cap only: the others are further apart than it
+        lo, hi = _bounds_t(corners)
+        bmin, bmax = _cmin(b), _cmax(b)
+        g = cap_m + _PAIR_MARGIN_M
+        j, i = np.nonzero((lo[0][None] < (bmax[:, 0] + g)[:, None]) & (hi[0][None] > (bmin[:, 0] - g)[:, None])
+                          & (lo[1][None] < (bmax[:, 1] + g)[:, None]) & (hi[1][None] > (bmin[:, 1] - g)[:, None]))
+        if not len(i):
+            return out
+        ov = np.minimum(np.minimum(hi[0, i], bmax[j, 0]) - np.maximum(lo[0, i], bmin[j, 0]),
+                        np.minimum(hi[1, i], bmax[j, 1]) - np.maximum(lo[1, i], bmin[j, 1]))
+        k = np.nonzero(~(_aligned(corners[i]) & _aligned(b)[j]) & (ov > -0.05))[0]
+        if k.size:
+            ov[k] = _sat_pairs(corners[i[k]], b[j[k]])
+        most = np.full(n, -np.inf)
+        np.maximum.at(most, i, ov)
+        got = most > -np.inf
+        out[got] = np.minimum(cap_m, np.maximum(0.0, -most[got]))
         return out
 
     def window_penalty(self, corners: np.ndarray) -> np.ndarray:

@@ -16,10 +16,7 @@ from anyhome.layout.rules import REGISTRY, Cands
 from anyhome.layout.rules.base import Extent
 from anyhome.layout.state import Choice, RoomState
 from anyhome.plan.spec import GroupSpec
-from anyhome.space import rect_corners, sat_overlap
-
-_APART_M = 1e-6
-"""Footprints separated by more than this need no exact collision test (m)."""
+from anyhome.space import NO_COLLISION_M, rect_corners, sat_overlap
 
 
 def rank(st: RoomState, c: Cands, size: Sequence[float], kind: str, noise: float, spacing: bool,
@@ -107,7 +104,7 @@ def exact_ok(st: RoomState, ch: Choice, size: Sequence[float], kind: str, suppor
         gap = sat_overlap(corners[None], np.stack([p.corners for p in near]))[0]
         for p, g in zip(near, gap, strict=True):
             o = p.obj
-            if g < -_APART_M:
+            if g < NO_COLLISION_M:  # apart, or overlapping too little to collide
                 continue
             if boxes_collide(pos, size, ch.yaw, o.position, o.size, o.yaw):
                 return False

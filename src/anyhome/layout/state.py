@@ -9,6 +9,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from shapely.geometry import Polygon
 
+from anyhome.geometry import blocks_navigation
 from anyhome.house import Dropped, Floorplan, HouseObject, Room
 from anyhome.layout.options import LayoutOptions
 from anyhome.layout.rules import wrap
@@ -165,6 +166,8 @@ class RoomState:
             todo: Iterable[Choice] = choices if stage == 0 else (more()[tried:] if more is not None else [])
             for ch in todo:
                 tried += 1
+                if best is not None and best[0] <= (0, 1) and self._surely_unreached(item, size, ch, support):
+                    continue  # it would cost (k, 1) at best: no better than the best so far
                 snap = self.snapshot()
                 obj = self.commit(item, size, ch, support, rule, group, anchor)
                 cost = self.reach_cost() if nav_blocks(obj) else (0, 0)
@@ -179,6 +182,15 @@ class RoomState:
             return None
         got = self.commit_checked(item, size, best[1], support, rule, group, anchor)
         return None if got is None else got[0]
+
+    def _surely_unreached(self, item: ItemSpec, size: Sequence[float], ch: Choice, support: str) -> bool:
+        """Whether ``item`` committed at ``ch`` is sure to be out of reach itself, the room as
+        it is (:meth:`NavGrid.surely_unreached`)."""
+        if support != "floor" or item.category == "stairs" or not blocks_navigation(
+                item.category, float(size[2]), support, list(item.tags)):
+            return False  # not walked up to (:func:`~anyhome.space.walked_up_to`)
+        corners = rect_corners(ch.xy[None], size[:2], [wrap(ch.yaw)])[0]  # as commit makes them
+        return self.nav.surely_unreached(self.nav.obstacle(corners, reachable=True))
 
     def unreached_since(self, snap: Snapshot) -> int:
         """Objects left out of reach since ``snap``."""
