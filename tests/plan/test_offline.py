@@ -220,3 +220,16 @@ def test_a_nook_is_small_whatever_it_reads_as():
     nook = next(s for s in slots if s.name == "meditation nook")
     assert nook.furnish == "meditation_room"
     assert nook.area_range == tuple(kb.raw("rooms")["small_heads"]["nook"])
+
+
+def test_a_music_schools_practice_rooms_hold_an_instrument_stand_and_chair():
+    """A practice room is furnished for practice (the piano, a music stand with its chair,
+    a sheet-music shelf), not as a lounge."""
+    h = plan("A music school with three practice rooms.")
+    practice = [r for r in h.rooms if r.name.startswith("practice room")]
+    assert len(practice) == 3
+    for r in practice:
+        names = {g.anchor.name for g in r.groups}
+        assert {"music stand", "sheet music shelf"} <= names
+        assert any(g.anchor.category == "piano" for g in r.groups)
+        assert "sofa" not in names
