@@ -156,6 +156,8 @@ def summarise(name: str, rows: list[tuple[str, int, PlanMetrics, int]], fp_times
         "living": sum(p.n_living_rooms for p in plans),
         "living_narrow": sum(p.n_living_rooms_narrow for p in plans),
         "below_type_norm": sum(p.n_below_type_min_width for p in plans),
+        "oversized": sum(p.n_oversized for p in plans),
+        "planned": sum(p.n_planned for p in plans),
         "rooms": sum(p.n_rooms for p in plans),
         "open_air": sum(p.n_open_air for p in plans),
         "open_air_with_ceiling": sum(p.n_open_air_with_ceiling for p in plans),
@@ -237,6 +239,7 @@ def table(results: list[dict[str, Any]], seeds: list[int]) -> str:
     row("bedrooms narrower than 2.4 m", "0", lambda r: _frac(r["bedrooms_narrow"], r["bedrooms"]))
     row("living rooms narrower than 3.0 m", "0", lambda r: _frac(r["living_narrow"], r["living"]))
     row("rooms below their type's min_width_m", "", lambda r: _frac(r["below_type_norm"], r["rooms"]))
+    row("rooms drawn at > 2x their planned area", "", lambda r: _frac(r["oversized"], r["planned"]))
     row("open-air rooms with a ceiling", "0", lambda r: _frac(r["open_air_with_ceiling"], r["open_air"]))
     row('"tiny" homes <= 45 m2 (met/asked)', "all", lambda r: _frac(*r["verdicts"]["tiny_ok"]))
     row("stated areas within 15 % (met/asked)", "all", lambda r: _frac(*r["verdicts"]["stated_area_ok"]))

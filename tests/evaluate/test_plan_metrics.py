@@ -278,3 +278,24 @@ def test_l_rooms_are_counted(kb) -> None:
     assert any("L-shaped rooms: 1" in line for line in m.summary_lines())
     # the L's aspect: its 7.5 m long side over the 4 m disc of its wide arm
     assert m.rooms[0].aspect == pytest.approx(7.5 / 4, abs=0.01)
+
+
+def test_rooms_drawn_far_larger_than_planned_are_counted(kb) -> None:
+    """A 10 m2 practice room drawn at 57 m2 is oversized; a room merged with another
+    counts both planned areas; a room the plan does not hold is not judged."""
+    h = house_of([
+        Room(id="hall", name="recital hall", type="hall", polygon=box(0, 0, 10.5, 9.6)),
+        Room(id="practice", name="practice room", type="studio", polygon=box(0, 9.6, 10.5, 5.4)),
+        Room(id="living", name="living room", type="living_room", polygon=box(10.5, 0, 5, 6), merged=["kitchen"]),
+        Room(id="extra", name="store", type="storage", polygon=box(10.5, 6, 5, 4)),
+    ])
+    h.plan = {"rooms": [{"id": "hall", "area_m2": 100.0}, {"id": "practice", "area_m2": 10.0},
+                        {"id": "living", "area_m2": 16.0}, {"id": "kitchen", "area_m2": 12.0}]}
+    m = plan_metrics(h, kb)
+    by = {r.id: r for r in m.rooms}
+    assert by["practice"].oversized and not by["hall"].oversized
+    assert by["living"].planned_area_m2 == pytest.approx(28.0) and not by["living"].oversized
+    assert by["extra"].planned_area_m2 is None and not by["extra"].oversized
+    assert (m.n_oversized, m.n_planned) == (1, 3)
+    h.plan = {"rooms": "not a list"}
+    assert plan_metrics(h, kb).n_planned == 0

@@ -52,6 +52,9 @@ footprint shape, courtyards
     rectangle, L, T, U, step, courtyard or other; for each courtyard, the share of its
     perimeter on its level's outline (below ``footprint.INSIDE_MAX_SHARE``: inside the
     footprint, rooms on at least three sides).
+oversized
+    A room drawn at more than :data:`OVERSIZE_FACTOR` times the area its plan (house.json
+    ``plan``, with the rooms merged into it) asked for.
 L rooms
     Rooms whose outline has more than 4 corners (:func:`corner_count`): the open-plan
     L rooms of :mod:`anyhome.floorplan.merge`. Their aspect is defined as above (the
@@ -148,6 +151,11 @@ _AREA_RE = re.compile(
 
 
 # ---------------------------------------------------------------------- results
+OVERSIZE_FACTOR = 2.0
+"""A room drawn at more than this many times its planned area is oversized (the solver
+stretched it to fill its footprint: a 10 m2 practice room drawn at 57 m2)."""
+
+
 @dataclass(frozen=True)
 class RoomMetrics:
     """One room's shape against the norm for its type."""
@@ -164,6 +172,14 @@ class RoomMetrics:
     circulation: bool
     open_air: bool
     has_ceiling: bool
+    planned_area_m2: float | None = None
+    """The area the plan (house.json ``plan``) asked of the room and of the rooms merged
+    into it; None when the house holds no plan for it."""
+
+    @property
+    def oversized(self) -> bool:
+        """Drawn at more than :data:`OVERSIZE_FACTOR` times its planned area."""
+        return self.planned_area_m2 is not None and self.area_m2 > OVERSIZE_FACTOR * self.planned_area_m2
 
     @property
     def below_norm(self) -> bool:
@@ -211,6 +227,16 @@ class PlanMetrics:
     straight side are dropped): the open-plan L rooms (anyhome.floorplan.merge)."""
 
     @property
+    def n_planned(self) -> int:
+        """Rooms whose planned area the house holds."""
+        return sum(r.planned_area_m2 is not None for r in self.rooms)
+
+    @property
+    def n_oversized(self) -> int:
+        """Rooms drawn at more than :data:`OVERSIZE_FACTOR` times their planned area."""
+        return sum(r.oversized for r in self.rooms)
+
+    @property
     def n_courtyards_inside(self) -> int:
         return sum(s < footprint.INSIDE_MAX_SHARE for s in self.courtyard_shares)
 
@@ -222,7 +248,7 @@ class PlanMetrics:
         d = asdict(self)
         d["size_words"] = list(self.size_words)
         d["signature"] = [list(s) for s in self.signature]
-        d["rooms"] = [{**asdict(r), "below_norm": r.below_norm} for r in self.rooms]
+        d["rooms"] = [{**asdict(r), "below_norm": r.below_norm, "oversized": r.oversized} for r in self.rooms]
         d["courtyard_shares"] = list(self.courtyard_shares)
         return d
 
@@ -240,7 +266,8 @@ class PlanMetrics:
             f"  habitable rooms with aspect > 2: {self.n_habitable_aspect_over_2}/{self.n_habitable}; "
             f"bedrooms < {NARROW_BEDROOM_M} m: {self.n_bedrooms_narrow}/{self.n_bedrooms}; "
             f"living rooms < {NARROW_LIVING_M} m: {self.n_living_rooms_narrow}/{self.n_living_rooms}; "
-            f"rooms below their type's min width: {self.n_below_type_min_width}/{self.n_rooms}",
+            f"rooms below their type's min width: {self.n_below_type_min_width}/{self.n_rooms}; "
+            f"drawn at > {OVERSIZE_FACTOR:g}x their planned area: {self.n_oversized}/{self.n_planned}",
             f"  size words: {words}; stated area: {stated}; tiny {verdict(self.tiny_ok)}, "
             f"stated {verdict(self.stated_area_ok)}, mansion/grand {verdict(self.mansion_ok)}",
             f"  open-air rooms with a ceiling: {self.n_open_air_with_ceiling}/{self.n_open_air}; "
@@ -433,6 +460,26 @@ def _plausible(poly: Polygon) -> bool:
     return bool(np.isfinite(poly.area)) and max(abs(v) for v in poly.bounds) <= MAX_EXTENT_M
 
 
+def _planned_areas(house: House) -> dict[str, float]:
+    """Room id -> area_m2 of the plan house.json holds ({} when none, or unreadable)."""
+    out: dict[str, float] = {}
+    rooms = (house.plan or {}).get("rooms") if isinstance(house.plan, dict) else None
+    for r in rooms if isinstance(rooms, list) else []:
+        if isinstance(r, dict) and isinstance(r.get("id"), str):
+            a = r.get("area_m2")
+            if isinstance(a, (int, float)) and not isinstance(a, bool) and math.isfinite(a) and a > 0:
+                out[r["id"]] = float(a)
+    return out
+
+
+def _planned_area(room: Any, planned: dict[str, float]) -> float | None:
+    """The planned area of ``room`` and the rooms merged into it; None if any is unknown."""
+    ids = list(dict.fromkeys([room.id, *getattr(room, "merged", [])]))
+    if not all(i in planned for i in ids):
+        return None
+    return sum(planned[i] for i in ids)
+
+
 def plan_metrics(house: House, kb: KnowledgeBase) -> PlanMetrics:
     """The plan figures of ``house`` (see the module docstring)."""
     types = kb.rooms.types
@@ -441,6 +488,7 @@ def plan_metrics(house: House, kb: KnowledgeBase) -> PlanMetrics:
     rooms: list[RoomMetrics] = []
     signature: list[tuple[float, float]] = []
     longest = 0.0
+    planned = _planned_areas(house)
     for r in house.rooms:
         rt = types.get(r.type)
         poly = usable.get(r.id)
@@ -457,6 +505,7 @@ def plan_metrics(house: House, kb: KnowledgeBase) -> PlanMetrics:
             norm_min_width_m=rt.min_width_m if rt is not None else None,
             habitable=is_habitable(r.type), circulation=circ,
             open_air=_is_open_air(r, kb), has_ceiling=_has_ceiling(r),
+            planned_area_m2=_planned_area(r, planned),
         ))
         signature.append((round(short, SIGNATURE_DECIMALS), round(long, SIGNATURE_DECIMALS)))
     total = sum(m.area_m2 for m in rooms)
