@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
@@ -78,6 +79,11 @@ class Program:
         """A storey of a house of several (it holds a stairwell)."""
         return any(t in STACKED_TYPES for t in self.types)
 
+    @cached_property
+    def doors(self) -> np.ndarray:
+        """Per room: the doors its links give it, the way out included."""
+        return np.bincount([k for link in self.links for k in link if k != OUTSIDE], minlength=self.n)
+
     def habitable(self, k: int) -> bool:
         return is_habitable(self.types[k])
 
@@ -118,7 +124,7 @@ class Program:
         else:
             floor = opts.min_side_habitable_m if self.habitable(k) else opts.min_side_service_m
         norm = self.min_width_m[k] if self.min_width_m else 0.0
-        if self.types[k] not in CORRIDOR_TYPES and sum(k in link for link in self.links) >= opts.hub_min_doors:
+        if self.types[k] not in CORRIDOR_TYPES and self.doors[k] >= opts.hub_min_doors:
             floor = max(floor, opts.hub_min_side_m)
         return max(floor, norm)
 

@@ -204,8 +204,9 @@ def floorplan_errors(spec: HouseSpec) -> list[str]:
 
 def _precheck(prog: Program, opts: FloorplanOptions) -> None:
     """Reject programs whose rooms cannot have enough wall for their doors."""
-    degree = Counter(k for link in prog.links for k in link if k != OUTSIDE)
-    for k, deg in degree.items():
+    for k, deg in enumerate(prog.doors.tolist()):
+        if not deg:
+            continue
         area = prog.areas_m2[k] * (1 + opts.area_tolerance_frac)
         perimeter = 2 * (np.sqrt(opts.max_room_aspect_ratio * area) + np.sqrt(area / opts.max_room_aspect_ratio))
         if prog.types[k] not in CORRIDOR_TYPES and deg * opts.precheck_wall_per_door_m + opts.precheck_wall_spare_m > perimeter:

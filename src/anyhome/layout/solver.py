@@ -107,10 +107,13 @@ def _make_room(st: RoomState) -> None:
     if not missing:
         return
     best = _outcome(st, len(missing))
-    keys_first = sorted(order, key=lambda i: not st.spec.groups[i].key)
-    for scale in (1.0, *SHRINK_SCALES):
+    keys_first = sorted(order, key=lambda i: not groups[i].key)
+    # last: the smallest, with the members of the other key groups giving way (a coat
+    # rack for the boot shelf)
+    for scale, bare in [*((s, False) for s in (1.0, *SHRINK_SCALES)), (SHRINK_SCALES[-1], True)]:
         st.restore(start)
-        _furnish(st, keys_first, {i: scale for i in missing})
+        keep = {i for i in keys_first if groups[i].key and i not in missing} if bare else set()
+        _furnish(st, keys_first, {i: scale for i in missing}, bare=keep)
         dropped_now = _key_dropped(st)
         missing += [i for i in dropped_now if i not in missing]  # shrink these too next time
         now = _outcome(st, len(dropped_now))
@@ -118,13 +121,6 @@ def _make_room(st: RoomState) -> None:
             best = now
         if now[0] == 0:
             return
-    # last: the members of the other key groups give way (a coat rack for the boot shelf)
-    st.restore(start)
-    keep = {i for i in keys_first if st.spec.groups[i].key and i not in missing}
-    _furnish(st, keys_first, {i: SHRINK_SCALES[-1] for i in missing}, bare=keep)
-    now = _outcome(st, len(_key_dropped(st)))
-    if now[:2] < best[:2]:
-        best = now
     st.restore(start)
     _, _, st.space.placed[:], st.dropped[:], st.space.keep_clear[:], st.counters, st.nav.waived[:] = best
     st.nav.set_blocked(st.space.placed)
@@ -142,14 +138,14 @@ def _key_dropped(st: RoomState) -> list[int]:
     return [i for i, g in enumerate(st.spec.groups) if g.key and g.anchor.name in gone]
 
 
-def _furnish(st: RoomState, order: list[int], scales: dict[int, float], bare: frozenset[int] | set[int] = frozenset()) -> None:
+def _furnish(st: RoomState, order: list[int], scales: dict[int, float], bare: set[int] | None = None) -> None:
     """The groups in ``order``; ``scales``: a footprint scale for some anchors; ``bare``:
     groups placed without their members, which are dropped to make room."""
     rugs = []
     zones = []
     for i in order:
         g = st.spec.groups[i]
-        if i in bare and g.members:
+        if bare and i in bare and g.members:
             for m in g.members:
                 st.drop(m.name, "left out to make room for what the room is for", copies=g.repeat * m.count)
             g = g.model_copy(update={"members": []})

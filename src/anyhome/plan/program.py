@@ -95,10 +95,9 @@ def _slot_from_mention(kb: KnowledgeBase, m: Mention, idx: int) -> Slot:
     else:
         t = info["type"] if info["type"] in ROOM_TYPES else "other"
     name = m.name if m.words or m.concept or not info.get("name") else info["name"]
-    own = (kb.raw("rooms")["names"].get(m.key) or {}).get("area") if m.key else None
-    small = (kb.raw("rooms").get("small_heads") or {}).get((m.name or "").split()[-1] if m.name else "")
-    if small is not None and own is None:  # "a meditation nook": a nook, read as a meditation room
-        info = {**info, "area": small}
+    small = (kb.raw("rooms").get("small_heads") or {}).get(m.name.split()[-1] if m.name else "")
+    if small is not None and "area" not in (kb.raw("rooms")["names"].get(m.key) or {}):
+        info = {**info, "area": small}  # "a meditation nook": a nook, read as a meditation room
     area = info.get("area") or _type_info(kb, t)["area"]
     s = Slot(name, t, info.get("furnish", t), tuple(area), mention=idx, generic_name=False, size=m.size)
     s.area_from = "name" if info.get("area") else "type"
@@ -251,10 +250,11 @@ def _claim_mentions(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], fixed:
         n = max(1, m.count or 1) if (generic or m.count) else (2 if m.plural else 1)  # "tatami rooms"
         n = min(n, MAX_COUNT)
         first: Slot | None = None  # more rooms than the program has copy the first one's furnishing
+        # "three practice rooms" in a music school: the program's practice rooms, as the
+        # building reads them, not the word's own reading (a yoga room)
+        word = _room_word(m.key)
         for _ in range(n):
-            # "three practice rooms" in a music school: the program's practice rooms, as
-            # the building reads them (music rooms), not the word's own reading (a gym)
-            by_key = [s for s in slots if s.mention is None and s.key and s.key == _room_word(m.key)]
+            by_key = [s for s in slots if s.mention is None and s.key and s.key == word]
             same_name = [s for s in slots if s.mention is None and s.name in (proto.name, m.key)]
             # rooms of the catch-all type "other" are too unlike to stand in for each other
             same_type = [s for s in slots if s.mention is None and s.type == proto.type != "other"]
@@ -264,7 +264,7 @@ def _claim_mentions(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], fixed:
                 like = first or proto
                 target = Slot(proto.name, like.type, like.furnish, like.area_range, key=like.key)
                 slots.append(target)
-            in_context = bool(target.key) and target.key == _room_word(m.key)
+            in_context = bool(target.key) and target.key == word
             target.mention = i
             target.size = proto.size
             target.optional = False
