@@ -131,3 +131,12 @@ def test_stacked_geometry_beyond_the_work_bound_is_refused():
     n = int(g.MAX_NAV_WORK_CELLS / (4 / g.NAV_CELL_M + 1) ** 2) + 10
     res = g.navigability(rooms, doors, [Polygon([(0, 0), (4, 0), (4, 4), (0, 4)])] * n)
     assert not res.checked and "overlapping geometry" in res.skipped
+
+
+def test_floor_coverage_counts_overlaps_once_and_only_inside_the_room():
+    from shapely.geometry import box
+
+    room = box(0, 0, 4, 5)
+    feet = [box(0, 0, 2, 2), box(1, 1, 3, 3), box(3.5, 4.5, 5, 6)]  # overlapping; one half outside
+    assert abs(g.floor_coverage(feet, room) - (4 + 4 - 1 + 0.25) / 20) < 1e-9
+    assert g.floor_coverage([], room) == 0.0

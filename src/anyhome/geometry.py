@@ -67,6 +67,14 @@ def footprint_polygon(position: Sequence[float], size: Sequence[float], yaw: flo
     return Polygon(footprint_corners(position, size, yaw))
 
 
+def floor_coverage(feet: Sequence[Polygon], room: Polygon) -> float:
+    """Fraction of ``room``'s floor under the footprints ``feet`` (overlaps counted once):
+    the furnishing metric's floor coverage, and what the layout's zones aim at."""
+    if not feet or room.area <= 0:
+        return 0.0
+    return float(shapely.union_all(list(feet)).intersection(room).area / room.area)
+
+
 def back_edge(position: Sequence[float], size: Sequence[float], yaw: float) -> np.ndarray:
     """(2, 2) endpoints of the footprint's back edge (local -y side)."""
     return footprint_corners(position, size, yaw)[:2]

@@ -163,8 +163,7 @@ def furnish_metrics(house: House) -> FurnishMetrics:
         if poly is not None and is_habitable(r.type) and poly.area > 0:
             fps = [geometry.footprint_polygon(o.position, o.size, o.yaw) for o in by_room.get(r.id, [])
                    if o.support == "floor" and not is_floor_layer(o.tags)]
-            covered = shapely.union_all(fps).intersection(poly).area if fps else 0.0
-            m.coverage[r.id] = round(covered / poly.area, 4)
+            m.coverage[r.id] = round(geometry.floor_coverage(fps, poly), 4)
     if len(placeable) == len(objects) and len(polys) == len(house.rooms):  # every pose measurable
         m.relations = {k: list(v) for k, v in met_by_kind(house_relations(house)).items()}
     return m

@@ -17,9 +17,9 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-import shapely
 from shapely.geometry import Polygon
 
+from anyhome.geometry import floor_coverage
 from anyhome.layout.arrangements import place_free
 from anyhome.layout.kitchens import is_island
 from anyhome.layout.state import RoomState
@@ -40,11 +40,7 @@ ZONE_ROUNDS = 3
 
 def coverage(st: RoomState) -> float:
     """Fraction of the room's floor under its floor objects (rugs and other layers left out)."""
-    feet = [Polygon(p.corners) for p in st.space.placed if p.floor and not p.layer]
-    if not feet or st.space.area <= 0:
-        return 0.0
-    covered = shapely.union_all(feet).intersection(st.space.poly).area
-    return float(covered / st.space.area)
+    return floor_coverage([Polygon(p.corners) for p in st.space.placed if p.floor and not p.layer], st.space.poly)
 
 
 def place_zones(st: RoomState, zones: list[GroupSpec], place: Callable[[RoomState, GroupSpec], None]) -> None:

@@ -32,7 +32,6 @@ MAX_TABLE_M = 8.0
 ORNAMENT_RULES = ("place_top", "place_on_wall")
 """Rules an ornament may use."""
 
-
 ZONE_PRIORITY = 7
 """Priority of a zone group: placed after every group of its room's own set."""
 
