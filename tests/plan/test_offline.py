@@ -233,3 +233,13 @@ def test_a_music_schools_practice_rooms_hold_an_instrument_stand_and_chair():
         assert {"music stand", "sheet music shelf"} <= names
         assert any(g.anchor.category == "piano" for g in r.groups)
         assert "sofa" not in names
+
+
+def test_a_second_item_of_one_category_keeps_the_first_ones_count():
+    """"24 student desks ... and a teacher's desk at the front": the teacher's desk is its
+    own group (it had set the student desks back to one), and "the front" is no object."""
+    h = plan("A classroom with 24 student desks in rows facing a whiteboard and a teacher's desk at the front.", seed=11)
+    groups = {g.anchor.name: g for r in h.rooms for g in r.groups}
+    assert groups["student desk"].repeat == 24 and groups["student desk"].arrangement == "rows"
+    assert groups["teacher's desk"].repeat == 1
+    assert "front" not in groups

@@ -234,9 +234,12 @@ def _matches(item: Item, category: str, head: str) -> int:
     return 0
 
 
-def _find(groups: list[Group], category: str, head: str, loose: bool = True) -> tuple[Group | None, Item | None]:
+def _find(groups: list[Group], category: str, head: str, loose: bool = True,
+          names: tuple[str, ...] = ()) -> tuple[Group | None, Item | None]:
     """The best-matching item: same category before same head noun (only if ``loose``),
-    anchors before members, and among equals the one planned in the most copies."""
+    anchors before members, and among equals the one named as the mention is (``names``:
+    "a teacher's desk" is the teacher's desk, not the 24 student desks), then the one
+    planned in the most copies."""
     for level in (2, 1) if loose else (2,):
         for members in (False, True):
             cands = [
@@ -245,7 +248,7 @@ def _find(groups: list[Group], category: str, head: str, loose: bool = True) -> 
                 if _matches(it, category, head) == level
             ]  # fmt: skip
             if cands:
-                return max(cands, key=lambda c: c[0]["repeat"] * c[1]["count"])
+                return max(cands, key=lambda c: (c[1]["name"] in names, c[0]["repeat"] * c[1]["count"]))
     return None, None
 
 
@@ -291,7 +294,7 @@ def apply_mention(kb: KnowledgeBase, m: Mention, groups: list[Group], ornaments:
         _apply_ornament(kb, m, proto, category, head, n, groups, ornaments, unused, area_m2, rng)
         return
     # a one-word name ("table") may stand for any table; "bunk bed" only for bunk beds
-    g, item = _find(groups, category, head, loose=" " not in (m.key or m.name))
+    g, item = _find(groups, category, head, loose=" " not in (m.key or m.name), names=(m.name, m.key or m.name))
     named_group = _named_template(kb, m)
     if (g is not None and item is not None and named_group not in (None, g["name"])
             and m.name.split()[-1] not in _words(item["name"])):
