@@ -212,6 +212,12 @@ def blocks_navigation(
     return not is_floor_layer(tags)
 
 
+def walked_up_to(category: str, height_m: float, support: str, tags: Sequence[str] | None = None) -> bool:
+    """Whether an agent must be able to walk up to an object: a blocking floor object,
+    stairs excepted (what the navigation check counts as furniture)."""
+    return support == "floor" and category != "stairs" and blocks_navigation(category, height_m, support, tags)
+
+
 def navigability(
     rooms: Iterable[tuple[str, Sequence[Sequence[float]]]],
     doors: Iterable[tuple[str, Sequence[str], Sequence[Sequence[float]]]],
@@ -336,8 +342,10 @@ def _raster_window(geom, gx: np.ndarray, gy: np.ndarray, xs: np.ndarray, ys: np.
     return where, shapely.contains_xy(geom, gx[:, j0:j1], gy[i0:i1, :])
 
 
-def _raster(geom, gx: np.ndarray, gy: np.ndarray, xs: np.ndarray, ys: np.ndarray) -> np.ndarray:
-    """Boolean mask of raster cells whose centre lies inside ``geom`` (bbox-windowed)."""
+def raster_mask(geom, xs: np.ndarray, ys: np.ndarray) -> np.ndarray:
+    """Boolean ``(len(ys), len(xs))`` mask of the raster cells (centres ``xs`` by ``ys``)
+    whose centre lies inside ``geom``; only its bounding-box window is tested."""
+    gx, gy = xs[None, :], ys[:, None]
     mask = np.zeros((len(ys), len(xs)), dtype=bool)
     win = _raster_window(geom, gx, gy, xs, ys)
     if win is not None:

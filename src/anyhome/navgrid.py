@@ -37,6 +37,7 @@ from anyhome.geometry import (
     WALL_INSET_CELLS,
     footprint_polygon,
     opening_zone,
+    raster_mask,
 )
 from anyhome.house import Floorplan
 from anyhome.space import Placed, RoomSpace, room_polygon
@@ -126,7 +127,6 @@ class NavGrid:
         i1 = int(np.ceil((by1 - y0) / cell_m)) + 1
         self.xs = x0 + cell_m * np.arange(j0, j1)
         self.ys = y0 + cell_m * np.arange(i0, i1)
-        self.gx, self.gy = np.meshgrid(self.xs, self.ys)
         self._xs, self._ys = self.xs.tolist(), self.ys.tolist()
         """The same as lists (bisect on them finds what np.searchsorted finds)."""
         half = cell_m / 2
@@ -227,16 +227,7 @@ class NavGrid:
         return ndimage.distance_transform_edt(self.base_free) * self.cell > radius
 
     def _raster(self, geom) -> np.ndarray:
-        mask = np.zeros(self.gx.shape, dtype=bool)
-        if geom.is_empty:
-            return mask
-        x0, y0, x1, y1 = geom.bounds
-        i0, i1 = np.searchsorted(self.ys, [y0, y1])
-        j0, j1 = np.searchsorted(self.xs, [x0, x1])
-        if i0 >= i1 or j0 >= j1:
-            return mask
-        mask[i0:i1, j0:j1] = shapely.contains_xy(geom, self.gx[i0:i1, j0:j1], self.gy[i0:i1, j0:j1])
-        return mask
+        return raster_mask(geom, self.xs, self.ys)
 
     def _rect_patch(self, corners: np.ndarray, grow_m: float, rounded: bool) -> Patch:
         """Cells whose centre lies in a rotated rectangle, (4, 2) corners, grown by ``grow_m``

@@ -616,7 +616,3 @@ def nav_blocks(obj: HouseObject) -> bool:
     return blocks_navigation(obj.category, obj.size[2], obj.support, obj.tags)
 
 
-def walked_up_to(obj: HouseObject) -> bool:
-    """Whether an agent must be able to walk up to ``obj``: a blocking floor object, stairs
-    excepted (the objects :func:`anyhome.evaluate.navigation.furniture` counts)."""
-    return obj.support == "floor" and obj.category != "stairs" and nav_blocks(obj)

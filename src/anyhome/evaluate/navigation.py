@@ -49,9 +49,7 @@ def run_navigability(house: House, footprints: Sequence[Polygon] | None = None
 
 def furniture(house: House) -> list[int]:
     """Indices of the objects an agent walks up to: on the floor, blocking, not stairs."""
-    return [i for i, o in enumerate(house.objects)
-            if o.support == "floor" and o.category != "stairs"
-            and geometry.blocks_navigation(o.category, o.size[2], o.support, o.tags)]
+    return [i for i, o in enumerate(house.objects) if geometry.walked_up_to(o.category, o.size[2], o.support, o.tags)]
 
 
 def check_navigable(nav: geometry.NavResult) -> list[Violation]:

@@ -72,7 +72,7 @@ def waits_for_run(g: GroupSpec) -> bool:
 
 def is_island(st: RoomState, g: GroupSpec) -> bool:
     """A counter placed free-standing (``place_center``) in a room whose run stands."""
-    return g.anchor.category == "counter" and g.anchor.rule == "place_center" and bool(_run_pieces(st))
+    return waits_for_run(g) and bool(_run_pieces(st))
 
 
 def place_kitchen(st: RoomState, g: GroupSpec) -> None:

@@ -13,7 +13,6 @@ from anyhome.layout import scoring
 from anyhome.layout.rules import REGISTRY, Cands, Kind, RuleContext
 from anyhome.layout.rules.place_center import place_center
 from anyhome.layout.rules.place_top import fit_on_top, place_top
-from anyhome.layout.rules.place_wall import place_wall
 from anyhome.layout.state import Choice, RoomState
 from anyhome.plan.spec import ItemSpec
 from anyhome.tags import is_front_of_room, is_supporter
@@ -38,8 +37,7 @@ def candidates(st: RoomState, item: ItemSpec, rule_name: str, size: Sequence[flo
                       copy=copy or 0, count=item.count, rng=st.rng, run=run)
     kind: Kind
     if rule.needs_target and ref is None:  # relative rule with nothing to relate to
-        to_wall = bool(getattr(ctx.params, "to_wall", False))  # a TV stand with no sofa: on a wall
-        c, kind = (place_wall(st.space, size) if to_wall else place_center(st.space, size)), "floor"
+        c, kind = rule.untargeted(ctx) if rule.untargeted is not None else (place_center(st.space, size), "floor")
     elif copy is not None and rule.copy_candidates is not None:
         c, kind = rule.copy_candidates(ctx)
     else:

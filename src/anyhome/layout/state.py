@@ -9,13 +9,13 @@ from dataclasses import dataclass, field
 import numpy as np
 from shapely.geometry import Polygon
 
-from anyhome.geometry import blocks_navigation
+from anyhome.geometry import walked_up_to
 from anyhome.house import Dropped, Floorplan, HouseObject, Room
 from anyhome.layout.options import LayoutOptions
 from anyhome.layout.rules import wrap
 from anyhome.navgrid import NavGrid, NavState
 from anyhome.plan.spec import ItemSpec, RoomSpec
-from anyhome.space import Placed, RoomSpace, Wall, nav_blocks, rect_corners, walked_up_to
+from anyhome.space import Placed, RoomSpace, Wall, nav_blocks, rect_corners
 
 SLUG_MAX_CHARS = 40
 """Longest name part of an object id (ids are at most 128 characters, see anyhome.sanitize)."""
@@ -118,7 +118,7 @@ class RoomState:
             tags=list(item.tags),
         )
         corners = rect_corners(ch.xy[None], size[:2], [obj.yaw])[0]
-        obs = self.nav.obstacle(corners, reachable=walked_up_to(obj)) if nav_blocks(obj) else None
+        obs = self.nav.obstacle(corners, reachable=walked_up_to(obj.category, obj.size[2], obj.support, obj.tags)) if nav_blocks(obj) else None
         self.space.placed.append(Placed(obj, corners, ch.z, ch.z + size[2], support == "floor", obs, layer))
         if obs is not None:
             self.nav.add(obs)
@@ -186,9 +186,8 @@ class RoomState:
     def _surely_unreached(self, item: ItemSpec, size: Sequence[float], ch: Choice, support: str) -> bool:
         """Whether ``item`` committed at ``ch`` is sure to be out of reach itself, the room as
         it is (:meth:`NavGrid.surely_unreached`)."""
-        if support != "floor" or item.category == "stairs" or not blocks_navigation(
-                item.category, float(size[2]), support, list(item.tags)):
-            return False  # not walked up to (:func:`~anyhome.space.walked_up_to`)
+        if not walked_up_to(item.category, float(size[2]), support, list(item.tags)):
+            return False
         corners = rect_corners(ch.xy[None], size[:2], [wrap(ch.yaw)])[0]  # as commit makes them
         return self.nav.surely_unreached(self.nav.obstacle(corners, reachable=True))
 

@@ -128,7 +128,9 @@ class PlacementRule:
     copy_candidates : the generator for a member's or ornament's copy, when it differs
         (alternate sides, copies side by side); None: ``candidates``
     relative : placed relative to a target object (``ItemSpec.target``)
-    needs_target : without a target it falls back to the room centre
+    needs_target : without a target it falls back to ``untargeted``, else the room centre
+    untargeted : the generator used when a ``needs_target`` rule has no target (a TV
+        stand with no sofa: on a wall)
     against_wall : the object's back is on a wall (standing or hung)
     kind : standing on the floor, hung on a wall, or on a top
     placement : how a member's copies are placed (see :data:`Placement`)
@@ -154,6 +156,7 @@ class PlacementRule:
     extent: Callable[[Extent, Sequence[float], Sequence[float], Any, int, float | None], Extent] = _no_extent
     faces_anchor: Callable[[Any], bool] = lambda params: False
     continues: bool = False
+    untargeted: Candidates | None = None
 
     @property
     def runs_along_wall(self) -> bool:

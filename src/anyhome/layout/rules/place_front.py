@@ -21,6 +21,7 @@ from anyhome.layout.rules.base import (
     right_dir,
     wrap,
 )
+from anyhome.layout.rules.place_center import place_center
 from anyhome.layout.rules.place_wall import place_wall
 from anyhome.space import RoomSpace
 
@@ -166,6 +167,13 @@ def extent(box: Extent, anchor_size: Sequence[float], size: Sequence[float], par
     return min(x0, -half), max(x1, half), y0, y1
 
 
+def untargeted(ctx: RuleContext) -> tuple[Cands, Kind]:
+    """With nothing to stand in front of: on a wall when ``to_wall`` (a TV stand with no
+    sofa), else about the room centre."""
+    assert isinstance(ctx.params, Params)
+    return (place_wall(ctx.space, ctx.size) if ctx.params.to_wall else place_center(ctx.space, ctx.size)), "floor"
+
+
 RULE = PlacementRule("place_front", Params, candidates, __doc__ or "", relative=True, needs_target=True,
-                     copy_candidates=copy_candidates, extent=extent,
+                     copy_candidates=copy_candidates, extent=extent, untargeted=untargeted,
                      faces_anchor=lambda params: params.facing == "toward")
