@@ -75,6 +75,21 @@ def floor_coverage(feet: Sequence[Polygon], room: Polygon) -> float:
     return float(shapely.union_all(list(feet)).intersection(room).area / room.area)
 
 
+def joined_to_first(polys: Sequence[Polygon], gap_m: float) -> set[int]:
+    """Indices of ``polys`` joined to the first through a chain of neighbours each at most
+    ``gap_m`` apart (a run of pieces along the walls, the first piece first)."""
+    if not polys:
+        return set()
+    joined, frontier = {0}, [0]
+    while frontier:
+        a = frontier.pop()
+        for b in range(len(polys)):
+            if b not in joined and polys[a].distance(polys[b]) <= gap_m:
+                joined.add(b)
+                frontier.append(b)
+    return joined
+
+
 def back_edge(position: Sequence[float], size: Sequence[float], yaw: float) -> np.ndarray:
     """(2, 2) endpoints of the footprint's back edge (local -y side)."""
     return footprint_corners(position, size, yaw)[:2]

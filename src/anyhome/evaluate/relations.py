@@ -37,8 +37,10 @@ from pydantic import ValidationError
 from shapely.geometry import Polygon
 from shapely.ops import nearest_points
 
-from anyhome.geometry import footprint_corners, footprint_polygon
+from anyhome.geometry import footprint_corners, footprint_polygon, joined_to_first
 from anyhome.house import House, HouseObject
+from anyhome.layout.rules import REGISTRY
+from anyhome.layout.rules.place_front import MIN_TO_WALL_M
 from anyhome.plan.spec import GroupSpec, ItemSpec
 
 NEAR = "near"
@@ -87,7 +89,7 @@ FRONT_GAP_TOL_M = 0.3
 """Gap in front of a target may differ from ``distance_m`` by this much..."""
 FRONT_GAP_REL = 0.5
 """...or by this fraction of ``distance_m``, whichever is larger."""
-TO_WALL_MIN_M = 1.0
+TO_WALL_MIN_M = MIN_TO_WALL_M
 """Least gap in front of the target of a ``to_wall`` item (the rule's minimum)."""
 WALL_GAP_M = 0.05
 """A back edge whose middle is at most this far from the room outline is against a wall."""
@@ -287,14 +289,8 @@ def check_near_wall(o: HouseObject, t: HouseObject, outline: Polygon) -> Relatio
 
 def check_run(pieces: Sequence[HouseObject], first: HouseObject, outline: Polygon) -> list[Relation]:
     """:data:`RUN` for every piece of ``pieces`` but ``first``."""
-    joined = {first.id}
-    frontier = [first]
-    while frontier:
-        a = frontier.pop()
-        for b in pieces:
-            if b.id not in joined and gap(a, b) <= RUN_GAP_M:
-                joined.add(b.id)
-                frontier.append(b)
+    order = [first, *(p for p in pieces if p.id != first.id)]
+    joined = {order[k].id for k in joined_to_first([_poly(p) for p in order], RUN_GAP_M)}
     return [Relation(RUN, p.id, first.id, p.id in joined and against_wall(p, outline),
                      f"{'joined' if p.id in joined else 'apart'}, {'on' if against_wall(p, outline) else 'off'} a wall")
             for p in pieces if p.id != first.id]
@@ -314,9 +310,13 @@ def _nearest(o: HouseObject, cands: Sequence[HouseObject]) -> HouseObject:
     return min(cands, key=lambda t: gap(o, t))
 
 
+def _params(item: ItemSpec) -> Any:
+    """``item``'s parameters as its rule reads them, the rule's defaults filled in."""
+    return REGISTRY[item.rule].parse(item.params, lenient=True)
+
+
 def _far_m(item: ItemSpec) -> float:
-    v = item.params.get("far_m", 0.0)
-    return float(v) if isinstance(v, (int, float)) else 0.0
+    return float(getattr(_params(item), "far_m", 0.0))
 
 
 def item_relations(m: ItemSpec, objs: Sequence[HouseObject], targets: Sequence[HouseObject],
@@ -327,13 +327,12 @@ def item_relations(m: ItemSpec, objs: Sequence[HouseObject], targets: Sequence[H
     if not objs or not targets:
         return []
     out: list[Relation] = []
-    p = m.params
+    p = _params(m)
     near = {o.id: _nearest(o, targets) for o in objs}
     if m.rule == "place_front":
-        dist, to_wall = float(p.get("distance_m", 0.4)), bool(p.get("to_wall", False))
         for o in objs:
-            out.append(check_front(o, near[o.id], dist, to_wall, outline))
-            if p.get("facing", "toward") == "toward":
+            out.append(check_front(o, near[o.id], p.distance_m, p.to_wall, outline))
+            if p.facing == "toward":
                 out.append(check_facing(o, near[o.id]))
         by_target: dict[str, list[HouseObject]] = {}
         for o in objs:
@@ -341,7 +340,7 @@ def item_relations(m: ItemSpec, objs: Sequence[HouseObject], targets: Sequence[H
         tmap = {t.id: t for t in targets}
         out += [check_aligned_front(os_, tmap[tid]) for tid, os_ in by_target.items()]
     elif m.rule == "place_beside":
-        side = str(p.get("side", "both"))
+        side = p.side
         out += [check_beside(o, near[o.id], side) for o in objs]
         if side == "both":
             for t in targets:

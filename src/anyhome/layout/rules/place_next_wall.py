@@ -7,7 +7,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from anyhome.geometry import footprint_corners, footprint_polygon
+from anyhome.geometry import footprint_corners, footprint_polygon, joined_to_first
 from anyhome.house import HouseObject
 from anyhome.layout.rules.base import (
     Cands,
@@ -75,15 +75,7 @@ def jumps(pieces: Sequence[HouseObject]) -> int:
     through pieces each at most :data:`JOIN_GAP_M` from the next: the run jumped before
     them (a piece after a jump counts too, as it stands apart from the run's start)."""
     polys = [footprint_polygon(p.position, p.size, p.yaw) for p in pieces]
-    joined = {0}
-    frontier = [0]
-    while frontier:
-        a = frontier.pop()
-        for b in range(len(polys)):
-            if b not in joined and polys[a].distance(polys[b]) <= JOIN_GAP_M:
-                joined.add(b)
-                frontier.append(b)
-    return len(polys) - len(joined)
+    return len(polys) - len(joined_to_first(polys, JOIN_GAP_M))
 
 
 def candidates(ctx: RuleContext) -> tuple[Cands, Kind]:
