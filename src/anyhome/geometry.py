@@ -63,6 +63,16 @@ def footprint_corners(position: Sequence[float], size: Sequence[float], yaw: flo
     return local @ rot.T + np.asarray(position[:2], dtype=float)
 
 
+def front_dir(yaw: float) -> np.ndarray:
+    """Unit vector an object turned by ``yaw`` faces (its +y, the format's front)."""
+    return np.array([-np.sin(yaw), np.cos(yaw)])
+
+
+def right_dir(yaw: float) -> np.ndarray:
+    """Unit vector to the right of an object turned by ``yaw`` (its +x)."""
+    return np.array([np.cos(yaw), np.sin(yaw)])
+
+
 def footprint_polygon(position: Sequence[float], size: Sequence[float], yaw: float) -> Polygon:
     return Polygon(footprint_corners(position, size, yaw))
 

@@ -193,20 +193,17 @@ def _planned(plan: Any, host: dict[str, str]) -> tuple[dict[str, dict[str, int]]
     return key, layers
 
 
-def _front(yaw: float) -> np.ndarray:
-    return np.array([-math.sin(yaw), math.cos(yaw)])
-
 
 def _facing(a: HouseObject, b: HouseObject) -> bool:
     """Whether ``b`` lies within FACING_DEG of ``a``'s front."""
     v = np.asarray(b.position[:2]) - np.asarray(a.position[:2])
     n = float(np.linalg.norm(v))
-    return n > 1e-6 and float(_front(a.yaw) @ v) / n >= math.cos(math.radians(FACING_DEG))
+    return n > 1e-6 and float(geometry.front_dir(a.yaw) @ v) / n >= math.cos(math.radians(FACING_DEG))
 
 
 def _tv_stand(m: FurnishMetrics, o: HouseObject, poly: Polygon | None, others: list[HouseObject]) -> None:
     m.n_tv_stands += 1
-    back = np.asarray(o.position[:2]) - _front(o.yaw) * o.size[1] / 2
+    back = np.asarray(o.position[:2]) - geometry.front_dir(o.yaw) * o.size[1] / 2
     if poly is not None and poly.exterior.distance(shapely.Point(back)) <= WALL_GAP_M:
         m.n_tv_against_wall += 1
     seats = [s for s in others if s.support == "floor" and s.id != o.id

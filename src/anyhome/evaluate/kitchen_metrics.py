@@ -25,7 +25,6 @@ wall cabinets
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -76,12 +75,9 @@ def kitchen_figures(rooms: dict[str, Polygon], objects: dict[str, list[HouseObje
     return out
 
 
-def _front(yaw: float) -> np.ndarray:
-    return np.array([-math.sin(yaw), math.cos(yaw)])
-
 
 def _on_wall(o: HouseObject, poly: Polygon) -> bool:
-    back = np.asarray(o.position[:2]) - _front(o.yaw) * o.size[1] / 2
+    back = np.asarray(o.position[:2]) - geometry.front_dir(o.yaw) * o.size[1] / 2
     return bool(poly.exterior.distance(shapely.Point(back)) <= WALL_GAP_M)
 
 

@@ -37,7 +37,13 @@ from pydantic import ValidationError
 from shapely.geometry import Polygon
 from shapely.ops import nearest_points
 
-from anyhome.geometry import footprint_corners, footprint_polygon, joined_to_first
+from anyhome.geometry import (
+    footprint_corners,
+    footprint_polygon,
+    front_dir,
+    joined_to_first,
+    right_dir,
+)
 from anyhome.house import House, HouseObject
 from anyhome.layout.rules import REGISTRY
 from anyhome.layout.rules.place_front import MIN_TO_WALL_M
@@ -122,12 +128,6 @@ class Relation:
 
 
 # ------------------------------------------------------------------ geometry
-def _front(yaw: float) -> np.ndarray:
-    return np.array([-math.sin(yaw), math.cos(yaw)])
-
-
-def _right(yaw: float) -> np.ndarray:
-    return np.array([math.cos(yaw), math.sin(yaw)])
 
 
 def _poly(o: HouseObject) -> Polygon:
@@ -149,7 +149,7 @@ def gap(a: HouseObject, b: HouseObject) -> float:
 
 def against_wall(o: HouseObject, outline: Polygon) -> bool:
     """The middle of ``o``'s back edge lies within :data:`WALL_GAP_M` of ``outline``."""
-    back = _xy(o) - _front(o.yaw) * o.size[1] / 2
+    back = _xy(o) - front_dir(o.yaw) * o.size[1] / 2
     return float(outline.exterior.distance(shapely.Point(back))) <= WALL_GAP_M
 
 
@@ -164,23 +164,23 @@ def facing_angle_deg(o: HouseObject, target: HouseObject) -> float:
     n = float(np.linalg.norm(v))
     if n < 1e-9:
         return 0.0
-    cos = float(np.clip(_front(o.yaw) @ (v / n), -1.0, 1.0))
+    cos = float(np.clip(front_dir(o.yaw) @ (v / n), -1.0, 1.0))
     return math.degrees(math.acos(cos))
 
 
 def _local(o: HouseObject, t: HouseObject) -> tuple[np.ndarray, np.ndarray]:
     """``o``'s footprint corners in ``t``'s frame: (sideways, forward) coordinates."""
     rel = _corners(o) - _xy(t)[None]
-    return rel @ _right(t.yaw), rel @ _front(t.yaw)
+    return rel @ right_dir(t.yaw), rel @ front_dir(t.yaw)
 
 
 # ------------------------------------------------------------------ relations
-def check_front(o: HouseObject, t: HouseObject, distance_m: float, to_wall: bool,
+def checkfront_dir(o: HouseObject, t: HouseObject, distance_m: float, to_wall: bool,
                 outline: Polygon) -> Relation:
     """:data:`FRONT`."""
     xs, ys = _local(o, t)
     g = float(ys.min()) - t.size[1] / 2
-    lat = float((_xy(o) - _xy(t)) @ _right(t.yaw))
+    lat = float((_xy(o) - _xy(t)) @ right_dir(t.yaw))
     sideways_ok = abs(lat) <= t.size[0] / 2 + TOL_M
     if to_wall:
         ok = g >= TO_WALL_MIN_M - TOL_M and sideways_ok and against_wall(o, outline)
@@ -207,7 +207,7 @@ def _side_gap(o: HouseObject, t: HouseObject) -> tuple[float, float, float]:
 def check_beside(o: HouseObject, t: HouseObject, side: str) -> Relation:
     """:data:`BESIDE`."""
     s, g, back = _side_gap(o, t)
-    same = abs(math.degrees(math.acos(float(np.clip(_front(o.yaw) @ _front(t.yaw), -1, 1))))) <= FACING_DEG
+    same = abs(math.degrees(math.acos(float(np.clip(front_dir(o.yaw) @ front_dir(t.yaw), -1, 1))))) <= FACING_DEG
     side_ok = side == "both" or (side == "left") == (s < 0)
     ok = -TOL_M <= g <= BESIDE_GAP_M and abs(back) <= BACK_TOL_M and same and side_ok
     return Relation(BESIDE, o.id, t.id, ok, f"{'right' if s > 0 else 'left'}, gap {g:.2f} m, back {back:+.2f} m")
@@ -224,7 +224,7 @@ def check_symmetric(a: HouseObject, b: HouseObject, t: HouseObject) -> Relation:
 def check_around(o: HouseObject, t: HouseObject) -> Relation:
     """:data:`AROUND`."""
     rel = _xy(o) - _xy(t)
-    u, v = float(rel @ _right(t.yaw)), float(rel @ _front(t.yaw))
+    u, v = float(rel @ right_dir(t.yaw)), float(rel @ front_dir(t.yaw))
     at_side = abs(u) <= t.size[0] / 2 + TOL_M or abs(v) <= t.size[1] / 2 + TOL_M
     g = gap(o, t)
     a = facing_angle_deg(o, t)
@@ -232,19 +232,19 @@ def check_around(o: HouseObject, t: HouseObject) -> Relation:
     return Relation(AROUND, o.id, t.id, ok, f"gap {g:.2f} m, {'side' if at_side else 'corner'}, {a:.0f} deg")
 
 
-def check_aligned_front(objs: Sequence[HouseObject], t: HouseObject) -> Relation:
+def check_alignedfront_dir(objs: Sequence[HouseObject], t: HouseObject) -> Relation:
     """:data:`ALIGNED` for ``place_front`` copies (their centroid)."""
     c = np.mean([_xy(o) for o in objs], axis=0)
-    lat = float((c - _xy(t)) @ _right(t.yaw))
+    lat = float((c - _xy(t)) @ right_dir(t.yaw))
     return Relation(ALIGNED, objs[0].id, t.id, abs(lat) <= ALIGN_TOL_M, f"sideways {lat:+.2f} m")
 
 
 def check_aligned_wall(o: HouseObject, t: HouseObject) -> Relation:
     """:data:`ALIGNED` for a wall item over a target standing against a wall."""
-    tb = _xy(t) - _front(t.yaw) * t.size[1] / 2
-    ob = _xy(o) - _front(o.yaw) * o.size[1] / 2
-    same_wall = abs(float((ob - tb) @ _front(t.yaw))) <= WALL_GAP_M and float(_front(o.yaw) @ _front(t.yaw)) > 0.99
-    lat = float((ob - tb) @ _right(t.yaw))
+    tb = _xy(t) - front_dir(t.yaw) * t.size[1] / 2
+    ob = _xy(o) - front_dir(o.yaw) * o.size[1] / 2
+    same_wall = abs(float((ob - tb) @ front_dir(t.yaw))) <= WALL_GAP_M and float(front_dir(o.yaw) @ front_dir(t.yaw)) > 0.99
+    lat = float((ob - tb) @ right_dir(t.yaw))
     return Relation(ALIGNED, o.id, t.id, same_wall and abs(lat) <= ALIGN_TOL_M,
                     f"{'same' if same_wall else 'other'} wall, along {lat:+.2f} m")
 
@@ -331,14 +331,14 @@ def item_relations(m: ItemSpec, objs: Sequence[HouseObject], targets: Sequence[H
     near = {o.id: _nearest(o, targets) for o in objs}
     if m.rule == "place_front":
         for o in objs:
-            out.append(check_front(o, near[o.id], p.distance_m, p.to_wall, outline))
+            out.append(checkfront_dir(o, near[o.id], p.distance_m, p.to_wall, outline))
             if p.facing == "toward":
                 out.append(check_facing(o, near[o.id]))
         by_target: dict[str, list[HouseObject]] = {}
         for o in objs:
             by_target.setdefault(near[o.id].id, []).append(o)
         tmap = {t.id: t for t in targets}
-        out += [check_aligned_front(os_, tmap[tid]) for tid, os_ in by_target.items()]
+        out += [check_alignedfront_dir(os_, tmap[tid]) for tid, os_ in by_target.items()]
     elif m.rule == "place_beside":
         side = p.side
         out += [check_beside(o, near[o.id], side) for o in objs]

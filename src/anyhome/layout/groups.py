@@ -10,7 +10,7 @@ import numpy as np
 
 from anyhome.house import Dropped, HouseObject
 from anyhome.layout import arrangements, placement, scoring
-from anyhome.layout.rules import REGISTRY, Cands, front_dir
+from anyhome.layout.rules import REGISTRY, Cands, front_dir, right_dir
 from anyhome.layout.rules import place_around as around_rule
 from anyhome.layout.rules import place_beside as beside_rule
 from anyhome.layout.rules import place_front as front_rule
@@ -131,7 +131,7 @@ def nudged(st: RoomState, g: GroupSpec, ch: Choice, kind: str) -> list[Choice]:
     here = scoring.beside_spots_free(st, g, Cands(ch.xy[None], np.array([ch.yaw]), np.array([ch.z]), np.zeros(1)))
     if here is None or here[0]:  # nothing beside it, or its spots already free: shifting it frees none
         return []
-    right = np.array([np.cos(ch.yaw), np.sin(ch.yaw)])
+    right = right_dir(ch.yaw)
     xy = ch.xy[None] + np.asarray(NUDGES_M)[:, None] * right[None]
     c = Cands(xy, np.full(len(xy), ch.yaw), np.full(len(xy), ch.z), -np.abs(np.asarray(NUDGES_M)))
     free = scoring.beside_spots_free(st, g, c)

@@ -18,6 +18,8 @@ import shapely
 from pydantic import BaseModel, ConfigDict
 
 from anyhome.geometry import footprint_polygon, wrap_yaw
+from anyhome.geometry import front_dir as front_dir  # the rules import them from here
+from anyhome.geometry import right_dir as right_dir
 from anyhome.space import RoomSpace, Wall, rect_corners
 
 if TYPE_CHECKING:
@@ -176,14 +178,6 @@ class PlacementRule:
 
 
 # ------------------------------------------------------------------ geometry helpers
-def front_dir(yaw: float) -> np.ndarray:
-    return np.array([-np.sin(yaw), np.cos(yaw)])
-
-
-def right_dir(yaw: float) -> np.ndarray:
-    return np.array([np.cos(yaw), np.sin(yaw)])
-
-
 def yaw_facing(direction: np.ndarray) -> float:
     """Yaw whose front (+y local) points along ``direction``."""
     return float(np.arctan2(-direction[0], direction[1]))

@@ -17,6 +17,7 @@ from anyhome.layout.rules.base import (
     RuleParams,
     front_dir,
     on_wall,
+    right_dir,
     wall_positions,
 )
 from anyhome.space import RoomSpace
@@ -48,7 +49,7 @@ def centred_behind(obj: HouseObject, target: HouseObject) -> bool:
     rel = ob - tb
     if abs(float(np.cos(obj.yaw - target.yaw)) - 1.0) > 1e-6 or abs(float(rel @ front_dir(target.yaw))) > BEHIND_TARGET_M:
         return True
-    return abs(float(rel @ np.array([np.cos(target.yaw), np.sin(target.yaw)]))) <= CENTRED_TOL_M
+    return abs(float(rel @ right_dir(target.yaw))) <= CENTRED_TOL_M
 
 
 def wall_z(params: Params, size: Sequence[float], ref: HouseObject | None, height: float,
