@@ -171,9 +171,9 @@ class NavGrid:
         self._made: dict[tuple[bytes, bool], Obstacle] = {}
         """Obstacles made (:meth:`obstacle`) by footprint, made again for a pose tried again."""
         self._known: set[Obstacle] = set()
+        """Obstacles seen reached since the components were last labelled."""
         self._cells: dict[Obstacle, np.ndarray] = {}
         """Flat indices of each obstacle's reach cells (:meth:`_reach_cells`)."""
-        """Obstacles seen reached since the components were last labelled."""
         self.obstacles: list[Obstacle] = []
         """The placed objects' obstacles, in order."""
         self.waived: list[Obstacle] = []

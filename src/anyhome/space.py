@@ -167,17 +167,18 @@ _SAT_SLACK_M = 1e-9
 
 
 def overlap_above(a: np.ndarray, b: np.ndarray, thr: float, inclusive: bool = False,
-                  amin: np.ndarray | None = None, amax: np.ndarray | None = None,
                   pairs: np.ndarray | None = None) -> np.ndarray:
     """``sat_overlap(a, b) > thr`` (``inclusive``: ``>=``), (n, m) bool, separating axes
     tested only for pairs whose bounding boxes overlap by ``thr`` or more (the overlap
-    along a rectangle's own axes is at most that along x or y); ``pairs`` (n, m) bool:
-    only these pairs can be True; ``amin``, ``amax``: ``a``'s bounds when known."""
+    along a rectangle's own axes is at most that along x or y); pairs further apart are
+    False. For a negative ``thr`` (a margin) this can differ from ``sat_overlap``, whose
+    edge axes may understate the gap of two turned rectangles: the bounding-box gap is a
+    true lower bound of it. ``pairs`` (n, m) bool: only these pairs can be True;
+    ``amin``, ``amax``: ``a``'s bounds when known."""
     n, m = len(a), len(b)
     if n == 0 or m == 0:
         return np.zeros((n, m), dtype=bool)
-    amin = _cmin(a) if amin is None else amin
-    amax = _cmax(a) if amax is None else amax
+    amin, amax = _cmin(a), _cmax(a)
     bmin, bmax = _cmin(b), _cmax(b)
     ox = np.minimum(amax[:, 0, None], bmax[None, :, 0]) - np.maximum(amin[:, 0, None], bmin[None, :, 0])
     oy = np.minimum(amax[:, 1, None], bmax[None, :, 1]) - np.maximum(amin[:, 1, None], bmin[None, :, 1])

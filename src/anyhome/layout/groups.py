@@ -68,11 +68,11 @@ def try_choices(st: RoomState, g: GroupSpec, label: str, choices: list[Choice], 
                 rule: str, more: Callable[[], list[Choice]] | None = None, nudge: bool = False) -> HouseObject | None:
     """The anchor at the first of ``choices`` where every member fits and every object stays
     reachable, else where the fewest are dropped, then left out of reach, then the fewest
-    members are placed by a fallback (:func:`compromises`); when some would be left out of
-    reach or placed by a fallback, among ``more()`` too (a longer list starting with
-    ``choices``) and, with ``nudge``, the best pose so far shifted sideways
-    (:func:`nudged`: a bed moved off a door so that both nightstands fit); None (all
-    dropped) when no choice keeps the walkways open."""
+    members are placed by a fallback (:func:`compromises`); when the best so far leaves
+    some out of reach, among ``more()`` too (a longer list starting with ``choices``);
+    when it places some by a fallback and ``nudge`` is set, among the best pose shifted
+    sideways too (:func:`nudged`: a bed moved off a door so that both nightstands fit);
+    None (all dropped) when no choice keeps the walkways open."""
     item = g.anchor
     if not choices:
         drop_group(st, g, scoring.no_fit_reason(st, item.size_m))
@@ -156,8 +156,8 @@ def compromises(st: RoomState, g: GroupSpec, label: str, anchor: HouseObject) ->
     a wall item not centred behind an anchor that stands against a wall (a window in the
     way); each piece of a run along the walls cut off from its start
     (:func:`~.rules.place_next_wall.jumps`)."""
-    walls = {m.name for m in g.members if m.name in anchored(g, "place_front") and m.params.get("to_wall")}
     front = anchored(g, "place_front")
+    walls = {m.name for m in g.members if m.name in front and m.params.get("to_wall")}
     beside = anchored(g, "place_beside")
     over = anchored(g, "place_on_wall")
     runs = REGISTRY[anchor.rule].runs_along_wall and any(m.rule == "place_next_wall" for m in g.members)
@@ -211,8 +211,7 @@ def place_members(st: RoomState, g: GroupSpec, label: str, anchor: HouseObject) 
     placed: dict[str, list[HouseObject]] = {g.anchor.name: [anchor]}
     drops: list[Dropped] = []
     pending = list(g.members)
-    prev_wall = anchor if REGISTRY[anchor.rule].against_wall else None
-    run: list[HouseObject] = [anchor] if prev_wall is not None else []
+    run: list[HouseObject] = [anchor] if REGISTRY[anchor.rule].against_wall else []  # grown by the copies
     names = {m.name for m in g.members} | {g.anchor.name}
     while pending:
         ready = [m for m in pending if (m.target or g.anchor.name) in placed or (m.target or "") not in names]
@@ -226,11 +225,8 @@ def place_members(st: RoomState, g: GroupSpec, label: str, anchor: HouseObject) 
         refs = placed.get(tname)
         if refs is None:  # target names something outside the group
             refs = st.match(tname) or [anchor]
-        objs, d = place_item_copies(st, m, refs, label, anchor.id, prev_wall, run)
+        objs, d = place_item_copies(st, m, refs, label, anchor.id, run[-1] if run else None, run)
         placed.setdefault(m.name, []).extend(objs)
-        for o in objs:
-            if REGISTRY[o.rule].runs_along_wall:
-                prev_wall = o
         drops += d
     return drops
 

@@ -26,6 +26,7 @@ class LayoutOptions:
     """Weight of the free distance (capped at ``zone_spacing_cap_m``) around the anchor of a
     zone (:mod:`anyhome.layout.fill`): a reading corner away from the sofa, not beside it."""
     zone_spacing_cap_m: float = 2.0
+    """Free distance around a zone's anchor counted at most (m)."""
     window_penalty: float = 0.6
     """Score taken from tall floor objects standing in front of a window."""
     tall_m: float = 1.0

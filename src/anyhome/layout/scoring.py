@@ -14,8 +14,10 @@ from anyhome.geometry import boxes_collide, footprint_corners, footprint_polygon
 from anyhome.house import HouseObject
 from anyhome.layout.rules import REGISTRY, Cands
 from anyhome.layout.rules.base import Extent
+from anyhome.layout.rules.place_beside import BESIDE_GAPS_M
+from anyhome.layout.rules.place_beside import Params as BesideParams
 from anyhome.layout.state import Choice, RoomState
-from anyhome.plan.spec import GroupSpec
+from anyhome.plan.spec import GroupSpec, ItemSpec
 from anyhome.space import NO_COLLISION_M, rect_corners, sat_overlap
 
 
@@ -165,6 +167,31 @@ def group_room_free(st: RoomState, g: GroupSpec, c: Cands) -> np.ndarray | None:
     return st.space.valid(corners, 0.0, min(o.group_room_height_m, g.anchor.size_m[2]), floor=True)
 
 
+def _beside_members(g: GroupSpec) -> list[tuple[float, ItemSpec]]:
+    """(side sign: -1 left, +1 right; member) for every side a member placed beside the
+    anchor (``place_beside``) may take."""
+    out = []
+    for m in g.members:
+        if m.rule != "place_beside" or m.target not in (None, g.anchor.name):
+            continue
+        side = BesideParams.model_validate(m.params).side
+        out += [(sgn, m) for sgn in {"left": (-1.0,), "right": (1.0,)}.get(side, (-1.0, 1.0))]
+    return out
+
+
+def _free_boxes(st: RoomState, g: GroupSpec, c: Cands, boxes: dict[float, tuple[float, float, float, float]]) -> np.ndarray:
+    """Mask of anchor poses ``c`` where every box (side sign -> width, depth, offset to the
+    right of the anchor's side, offset to the front) is free up to the group's height."""
+    cos, sin = np.cos(c.yaw), np.sin(c.yaw)
+    right, front = np.stack([cos, sin], 1), np.stack([-sin, cos], 1)
+    top = min(st.options.group_room_height_m, g.anchor.size_m[2])
+    ok = np.ones(len(c), dtype=bool)
+    for sgn, (bw, bd, out_m, fwd_m) in boxes.items():
+        xy = c.xy + right * (sgn * (g.anchor.size_m[0] / 2 + out_m + bw / 2)) + front * fwd_m
+        ok &= st.space.valid(rect_corners(xy, (bw, bd), c.yaw), 0.0, top, floor=True)
+    return ok
+
+
 def beside_lanes_free(st: RoomState, g: GroupSpec, c: Cands) -> np.ndarray:
     """Mask of anchor poses ``c`` with a free lane along each side of the anchor that a
     member stands beside (``place_beside``): :attr:`~.options.LayoutOptions.beside_lane_m`
@@ -173,61 +200,27 @@ def beside_lanes_free(st: RoomState, g: GroupSpec, c: Cands) -> np.ndarray:
     nightstand or side table there is still walked up to once the anchor stands; all
     True when no member stands beside it."""
     o = st.options
-    w, d = g.anchor.size_m[0], g.anchor.size_m[1]
-    ok = np.ones(len(c), dtype=bool)
-    sides: dict[float, float] = {}
-    for m in g.members:
-        if m.rule != "place_beside" or m.target not in (None, g.anchor.name):
-            continue
-        side = str(REGISTRY[m.rule].parse(m.params).side)  # type: ignore[attr-defined]
-        width = max(o.beside_lane_m, m.size_m[0] + beside_gap_m())
-        for sgn in {"left": (-1.0,), "right": (1.0,)}.get(side, (-1.0, 1.0)):
-            sides[sgn] = max(sides.get(sgn, 0.0), width)
-    if not sides or not len(c):
-        return ok
-    cos, sin = np.cos(c.yaw), np.sin(c.yaw)
-    right = np.stack([cos, sin], 1)
-    front = np.stack([-sin, cos], 1)
-    depth = d + o.beside_lane_front_m
-    for sgn, width in sides.items():
-        xy = c.xy + right * (sgn * (w / 2 + width / 2)) + front * (o.beside_lane_front_m / 2)
-        corners = rect_corners(xy, (width, depth), c.yaw)
-        ok &= st.space.valid(corners, 0.0, min(o.group_room_height_m, g.anchor.size_m[2]), floor=True)
-    return ok
+    widths: dict[float, float] = {}
+    for sgn, m in _beside_members(g):
+        widths[sgn] = max(widths.get(sgn, 0.0), o.beside_lane_m, m.size_m[0] + BESIDE_GAPS_M[0])
+    if not widths or not len(c):
+        return np.ones(len(c), dtype=bool)
+    depth = g.anchor.size_m[1] + o.beside_lane_front_m
+    return _free_boxes(st, g, c, {sgn: (w, depth, 0.0, o.beside_lane_front_m / 2) for sgn, w in widths.items()})
 
 
 def beside_spots_free(st: RoomState, g: GroupSpec, c: Cands) -> np.ndarray | None:
     """Mask of anchor poses ``c`` where every spot a member beside the anchor is asked
     for (``place_beside``, each side it may take, at the preferred gap) is free; None
     when no member stands beside the anchor."""
-    o = st.options
-    sides: dict[float, tuple[float, float]] = {}
-    for m in g.members:
-        if m.rule != "place_beside" or m.target not in (None, g.anchor.name):
-            continue
-        side = str(REGISTRY[m.rule].parse(m.params).side)  # type: ignore[attr-defined]
-        for sgn in {"left": (-1.0,), "right": (1.0,)}.get(side, (-1.0, 1.0)):
-            w0, d0 = sides.get(sgn, (0.0, 0.0))
-            sides[sgn] = (max(w0, m.size_m[0]), max(d0, m.size_m[1]))
-    if not sides:
+    sizes: dict[float, tuple[float, float]] = {}
+    for sgn, m in _beside_members(g):
+        w0, d0 = sizes.get(sgn, (0.0, 0.0))
+        sizes[sgn] = (max(w0, m.size_m[0]), max(d0, m.size_m[1]))
+    if not sizes:
         return None
-    w, d = g.anchor.size_m[0], g.anchor.size_m[1]
-    cos, sin = np.cos(c.yaw), np.sin(c.yaw)
-    right = np.stack([cos, sin], 1)
-    front = np.stack([-sin, cos], 1)
-    ok = np.ones(len(c), dtype=bool)
-    for sgn, (mw, md) in sides.items():
-        xy = c.xy + right * (sgn * (w / 2 + beside_gap_m() + mw / 2)) + front * ((md - d) / 2)
-        ok &= st.space.valid(rect_corners(xy, (mw, md), c.yaw), 0.0, min(o.group_room_height_m, g.anchor.size_m[2]),
-                             floor=True)
-    return ok
-
-
-def beside_gap_m() -> float:
-    """The gap ``place_beside`` prefers between an object and the one it stands beside."""
-    from anyhome.layout.rules.place_beside import BESIDE_GAPS_M
-
-    return BESIDE_GAPS_M[0]
+    d = g.anchor.size_m[1]
+    return _free_boxes(st, g, c, {sgn: (mw, md, BESIDE_GAPS_M[0], (md - d) / 2) for sgn, (mw, md) in sizes.items()})
 
 
 def run_length(g: GroupSpec, rule: str, first: bool) -> tuple[float, float]:

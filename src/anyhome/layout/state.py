@@ -158,7 +158,9 @@ class RoomState:
         reachable, itself included, committed; when none does, the same among ``more()``
         (a longer list that starts with ``choices``); else the one that keeps the walkways
         open and leaves the fewest earlier objects, then itself, out of reach; None if none
-        keeps the walkways open. ``choices`` may be checked lazily
+        keeps the walkways open (``more()`` is asked only when some of ``choices`` keeps
+        them open: when every one closes a walkway, more poses are taken to close it too).
+        ``choices`` may be checked lazily
         (:func:`~anyhome.layout.scoring.verified_lazily`): each is taken with the room as it was."""
         best: tuple[tuple[int, int], Choice] | None = None
         tried = 0
