@@ -85,18 +85,19 @@ def try_choices(st: RoomState, g: GroupSpec, label: str, choices: list[Choice], 
     for k, ch in enumerate(pool):  # grows (once) while being walked
         rng_state = st.rng.bit_generator.state
         got = st.commit_checked(item, item.size_m, ch, support, rule, label, None, check=kind != "top")
-        if got is None:
+        if got is not None:  # else it closed a walkway (and was taken back)
+            anchor = got[0]
+            drops = place_members(st, g, label, anchor)
+            bent = compromises(st, g, label, anchor)
+            unreached = st.unreached_since(snap)
+            if not drops and not bent and not unreached:
+                return anchor
+            if best is None or (len(drops), unreached, bent) < best[:3]:
+                best = (len(drops), unreached, bent, k)
+                best_rng = rng_state
+            st.restore(snap)
+        if best is None:
             continue
-        anchor = got[0]
-        drops = place_members(st, g, label, anchor)
-        bent = compromises(st, g, label, anchor)
-        unreached = st.unreached_since(snap)
-        if not drops and not bent and not unreached:
-            return anchor
-        if best is None or (len(drops), unreached, bent) < best[:3]:
-            best = (len(drops), unreached, bent, k)
-            best_rng = rng_state
-        st.restore(snap)
         if k == len(pool) - 1 and more is not None and best[1]:
             pool += more()[len(pool):]
             more = None
