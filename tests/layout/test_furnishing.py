@@ -181,3 +181,22 @@ def test_a_dresser_with_a_mirror_keeps_off_the_windows():
         d, m = _one(res, "dresser"), _one(res, "dresser mirror")
         assert float(front(d.yaw) @ front(m.yaw)) > 0.99, seed  # on the wall behind the dresser
         assert np.linalg.norm(np.subtract(d.position[:2], m.position[:2])) < 0.6, seed
+
+
+def test_a_runner_narrows_to_lie_between_the_door_zones_of_a_narrow_hallway():
+    """A 1.3 m hallway with doors on both long walls and both ends: its door zones leave
+    only a strip under 0.6 m along one wall; the runner narrows to lie there."""
+    from anyhome.house import Door, Floorplan, Room
+
+    hall = Room(id="h", name="hallway", type="hallway", polygon=rect(0, 0, 3.6, 1.3))
+    segs = {"outside": ((3.6, 0.25), (3.6, 1.15)), "a": ((0.15, 0.0), (1.05, 0.0)),
+            "b": ((0.95, 1.3), (1.85, 1.3)), "c": ((2.15, 1.3), (3.05, 1.3)), "d": ((0.0, 0.25), (0.0, 1.15))}
+    others = {"a": rect(0, -3, 1.8, 0), "b": rect(0.5, 1.3, 2.0, 4), "c": rect(2.0, 1.3, 3.6, 4), "d": rect(-3, 0, 0, 1.3)}
+    rooms = [hall] + [Room(id=k, name=k, type="bedroom", polygon=p) for k, p in others.items()]
+    doors = [Door(id=f"d-{k}", rooms=("h", k), segment=s) for k, s in segs.items()]
+    fp = Floorplan(rooms=rooms, doors=doors, windows=[], connections=[("h", k) for k in segs])
+    runner = item("runner rug", "rug", (2.4, 0.8, 0.01), "place_center", tags=["floor_layer"])
+    res = layout_house(house_spec({"h": [group("runner", runner)]}), fp, np.random.default_rng(0))
+    rug = _one(res, "runner rug")
+    assert check_valid(fp, res.objects) == []
+    assert 0.44 <= min(rug.size[:2]) < 0.6 and max(rug.size[:2]) >= 1.0

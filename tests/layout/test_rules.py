@@ -430,3 +430,22 @@ def test_place_front_off_centre():
     assert off_centre_m([table], sofa) == pytest.approx(1.85)
     chairs = [res_obj("c0", (0.9, 0.0), (0.5, 0.5, 0.9), 0.0), res_obj("c1", (0.9, 0.9), (0.5, 0.5, 0.9), 0.0)]
     assert off_centre_m(chairs, sofa) == pytest.approx(0.0)
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_rows_keep_an_aisle_behind_the_teachers_chair(seed):
+    """The first row stands clear of everything at the front (a teacher's desk and the
+    chair behind it), not only of the wall: 24 desks facing a 10 m wall whose teacher's
+    chair once closed the only aisle between the two sides of the rows."""
+    teacher = item("teacher's desk", "desk", (1.52, 0.65, 0.74), "place_wall", tags=["work_surface", "front_of_room"])
+    tchair = item("teacher chair", "chair", (0.46, 0.5, 0.93), "place_front", params={"distance_m": 0.15, "facing": "toward"})
+    desk = item("student desk", "desk", (0.64, 0.53, 0.76), "place_center", tags=["work_surface"])
+    chair = item("student chair", "chair", (0.43, 0.45, 0.76), "place_front", params={"distance_m": 0.05, "facing": "toward"})
+    fp, res = run([group("teacher", teacher, [tchair]),
+                   group("desks", desk, [chair], arrangement="rows", repeat=24)],
+                  polygon=rect(0, 0, 10.15, 7.7), door=((10.15, 3.35), (10.15, 4.35)), seed=seed)
+    t = named(res, "teacher chair")[0]
+    tc = footprint_polygon(t.position, t.size, t.yaw)
+    students = [footprint_polygon(o.position, o.size, o.yaw) for o in res.objects if o.name.startswith("student")]
+    assert len(students) == 48
+    assert min(tc.distance(s) for s in students) >= 0.75

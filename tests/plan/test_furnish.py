@@ -131,3 +131,14 @@ def test_an_island_asked_for_is_the_island_not_the_kitchen_runs_counter():
     kitchen = [o for o in h.objects if o.room.startswith("kitchen") and o.support == "floor"]
     groups = [o.group for o in kitchen]
     assert max(i for i, g in enumerate(groups) if g.startswith("kitchen_run")) < groups.index("island-0")
+
+
+def test_a_runner_rug_is_planned_long_and_narrow():
+    """'a runner rug in the hallway' (and 'a hall runner') is a runner, not an area rug of
+    2.0 x 1.4 m that no 1.2 m hallway can hold."""
+    for text in ("a house with a runner rug in the hallway", "a house with a hall runner in the hallway"):
+        spec = get_planner("offline").plan(text, np.random.default_rng(0))
+        rugs = [g.anchor for r in spec.rooms if r.type == "hallway" for g in r.groups if g.anchor.category == "rug"]
+        assert rugs, text
+        w, d = rugs[0].size_m[:2]
+        assert max(w, d) >= 2 * min(w, d) and min(w, d) <= 0.9, (text, rugs[0].size_m)

@@ -69,6 +69,24 @@ def board_wall(st: RoomState) -> Wall | None:
     return None
 
 
+def front_zone_depth(st: RoomState, wall: Wall) -> float:
+    """How far from ``wall`` the floor objects standing in its front band reach (a
+    teacher's desk and the chair behind it); 0 when none. Objects starting deeper than
+    the band (``row_front_clearance_m`` plus a metre) are the rows' business, not the front's;
+    one along a side wall counts to the band's edge at most."""
+    o = st.options
+    band_m = o.row_front_clearance_m + 1.0
+    deepest = 0.0
+    for p in st.space.placed:
+        if not p.floor or p.layer:
+            continue
+        rel = p.corners - wall.a
+        us, vs = rel @ wall.u, rel @ wall.n
+        if float(vs.min()) < band_m and float(us.max()) > 0.0 and float(us.min()) < wall.length:
+            deepest = max(deepest, min(float(vs.max()), band_m))
+    return deepest
+
+
 @dataclass
 class RowsGrid:
     """Capacity and geometry of a rows arrangement facing ``wall``."""
@@ -117,7 +135,7 @@ def place_rows(st: RoomState, g: GroupSpec) -> None:
     if board is not None:
         depth = max((x.size[1] for x in st.space.objects if x.anchor is None and x.group is not None),
                     default=0.0)
-        front = o.row_front_clearance_m + min(depth, 1.0)
+        front = max(o.row_front_clearance_m + min(depth, 1.0), front_zone_depth(st, board) + o.row_front_aisle_m)
         plans = [rows_grid(st, g, board, front), rows_grid(st, g, board, o.row_side_clearance_m + depth)]
     else:  # face the longest wall, or the one across it when that fits more
         walls = sorted(st.space.walls, key=lambda w: -w.length)

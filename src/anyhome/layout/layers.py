@@ -44,6 +44,11 @@ MAX_SIDE_M = 4.5
 """Longest side of a laid rug."""
 TABLE_MARGIN_M = 0.15
 """A rug under a table reaches this far past its chairs."""
+RUNNER_ASPECT = 2.0
+"""A rug whose long side is at least this many times its short side is a runner."""
+RUNNER_MIN_SIDE_M = 0.45
+"""Narrowest a runner is laid (runners of 45-50 cm are sold) where the door zones of a narrow
+hallway leave no wider strip."""
 UNDER_ORDER = ("seating", "bed", "table")
 """Kinds of group a rug without a target goes under, first preferred."""
 
@@ -144,20 +149,38 @@ def place_layers(st: RoomState, groups: list[GroupSpec]) -> None:
 
 def _own_rule(st: RoomState, item: ItemSpec, label: str) -> bool:
     """A rug with nothing to lie under, by its own rule, still a layer: at its planned
-    size, else shorter (a runner between two doors)."""
-    w, d, h = item.size_m
-    for s in SHRINK_STEPS:
-        size = (w * s, d, h) if w >= d else (w, d * s, h)
-        if min(size[:2]) < MIN_SIDE_M and s < 1.0:
-            break
+    size, else shorter (a runner between two doors); a runner (long side at least
+    :data:`RUNNER_ASPECT` times the short one) may also narrow to :data:`RUNNER_MIN_SIDE_M`
+    and lie along a wall, where a narrow hallway's door zones leave a strip."""
+    for size, rule in _own_sizes(item):
         sized = item.model_copy(update={"size_m": size})
-        c, kind = placement.candidates(st, sized, item.rule, size, None, None, None)
+        c, kind = placement.candidates(st, sized, rule, size, None, None, None)
         order = scoring.rank(st, c, size, kind, st.options.noise, spacing=False, layer=True)
         choices = scoring.verified(st, c, order, size, kind, None, k=1)
         if choices:
-            st.commit(sized, size, choices[0], "floor", item.rule, label, None, layer=True)
+            st.commit(sized, size, choices[0], "floor", rule, label, None, layer=True)
             return True
     return False
+
+
+def _own_sizes(item: ItemSpec) -> Iterator[tuple[tuple[float, float, float], str]]:
+    """(size, rule) tried by :func:`_own_rule`, first preferred."""
+    w, d, h = item.size_m
+    long_m, short_m = max(w, d), min(w, d)
+    runner = long_m >= RUNNER_ASPECT * short_m
+    for s in SHRINK_STEPS:
+        if short_m < MIN_SIDE_M and s < 1.0:
+            break
+        yield ((w * s, d, h) if w >= d else (w, d * s, h)), item.rule
+    if not runner or short_m <= RUNNER_MIN_SIDE_M:
+        return
+    for s in SHRINK_STEPS:
+        length = long_m * s
+        if length < RUNNER_ASPECT * RUNNER_MIN_SIDE_M:
+            break
+        for width in (MIN_SIDE_M, RUNNER_MIN_SIDE_M):
+            if width < short_m:
+                yield (length, width, h), "place_wall"
 
 
 def _groups_for(st: RoomState, item: ItemSpec, taken: set[str]) -> list[tuple[str, list[HouseObject]]]:

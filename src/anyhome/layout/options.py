@@ -72,6 +72,9 @@ class LayoutOptions:
     """Aisle between the rows of a ``rows`` arrangement."""
     row_front_clearance_m: float = 1.0
     """Free band kept in front of the wall the rows face."""
+    row_front_aisle_m: float = 0.8
+    """Walkway kept between the first row and what stands in front of it (a teacher's desk
+    and chair), so the aisles behind can be reached from either side."""
     row_side_clearance_m: float = 0.3
     """Band kept along the other walls of a ``rows`` arrangement."""
     row_shifts_m: tuple[float, ...] = (0.0, 0.1, -0.1, 0.2, -0.2)
