@@ -339,6 +339,55 @@ def apply_mention(kb: KnowledgeBase, m: Mention, groups: list[Group], ornaments:
     _fit_table(g)
 
 
+def period_rules(kb: KnowledgeBase, styles: list[str]) -> tuple[dict[str, Any], set[str]]:
+    """The stand-ins and the names left out (styles.yaml ``period``) for the look led by
+    ``styles[0]``: those of every trait of its asset class."""
+    raw = kb.raw("styles")
+    style = raw["styles"].get(styles[0]) if styles else None
+    cls = raw["asset_classes"].get((style or {}).get("asset_class", "")) or {}
+    swap: dict[str, Any] = {}
+    drop: set[str] = set()
+    for trait in cls.get("traits", []):
+        rules = (raw.get("period") or {}).get(trait) or {}
+        swap.update(rules.get("swap", {}))
+        drop.update(rules.get("drop", []))
+    return swap, drop
+
+
+def apply_period(kb: KnowledgeBase, groups: list[Group], ornaments: list[Item], styles: list[str],
+                 asked: set[str]) -> None:
+    """A period look keeps period objects: a modern item the text did not ask for
+    (``asked``: the names and keys of the text's objects) takes its stand-in (an office
+    chair at a Victorian desk is a side chair) or is left out (a monitor, a TV)."""
+    swap, drop = period_rules(kb, styles)
+    if not swap and not drop:
+        return
+
+    def gone(it: Item) -> bool:
+        return it["name"] in drop and it["name"] not in asked
+
+    for g in groups:
+        for it in [g["anchor"], *g["members"]]:
+            new = swap.get(it["name"])
+            if new is None or it["name"] in asked:
+                continue
+            proto = _proto(kb, new["use"])
+            it["name"], it["category"] = new["name"], proto.get("category", it["category"])
+            w, d, h = proto.get("size", it["size_m"])
+            it["size_m"] = (float(w), float(d), float(h))
+            it["tags"] = list(proto.get("tags", it.get("tags", [])))
+        g["members"] = [m for m in g["members"] if not gone(m)]
+    groups[:] = [g for g in groups if g["required"] or not gone(g["anchor"])]
+    ornaments[:] = [o for o in ornaments if not gone(o)]
+
+
+def drop_unasked_beds(groups: list[Group]) -> None:
+    """"A bedroom with a bunk bed": the bed the text asks for replaces the one the room's
+    set planned, rather than standing beside it. Run after all the room's mentions."""
+    if any(g["required"] and "bed" in (g["anchor"].get("tags") or []) for g in groups):
+        groups[:] = [g for g in groups if g["required"] or "bed" not in g["anchor"].get("tags", [])]
+
+
 def remove_mention(kb: KnowledgeBase, m: Mention, groups: list[Group], ornaments: list[Item]) -> bool:
     """Take out of a room what the text rules out ("no tv", "without a rug"): groups
     whose anchor it names, members and ornaments it names. True if anything went."""

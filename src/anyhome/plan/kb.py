@@ -73,6 +73,8 @@ class Building(_Model):
     program: str
     styles: list[str] = Field(default_factory=list)
     kind: str | None = Field(default=None, description="building kind: a key of sizes.kinds (its room sizes)")
+    unless: list[Word] = Field(default_factory=list, description=(
+        "the words name no building when the text holds one of these ('a studio' with easels is an artist's workspace)"))
 
 
 class ProgramRoom(_Model):
@@ -227,12 +229,23 @@ class RoomType(_Model):
         return self
 
 
+class HomeSense(_Model):
+    """How a room word reads in a dwelling ("a salon" in a riad: a sitting room)."""
+
+    type: str
+    furnish: str | None = None
+    area: AreaRange | None = None
+
+    _r = field_validator("area")(classmethod(lambda cls, v: _ordered(v)))
+
+
 class RoomName(_Model):
     type: str
     generic: bool = False
     name: Word | None = None
     furnish: str | None = None
     area: AreaRange | None = None
+    at_home: HomeSense | None = Field(None, description="the word's reading in a dwelling (a program of sizes.homes)")
 
     _r = field_validator("area")(classmethod(lambda cls, v: _ordered(v)))
 
@@ -406,11 +419,26 @@ class AssetClass(_Model):
     fabrics: list[HexColour] = Field(min_length=1)
 
 
+class PeriodSwap(_Model):
+    """A modern object's stand-in in a period look: an objects.yaml prototype and the name it takes."""
+
+    use: str
+    name: Word
+
+
+class PeriodRules(_Model):
+    """What a look of one trait does not have, unless the text asks for it (styles.yaml ``period``)."""
+
+    swap: dict[str, PeriodSwap] = Field(default_factory=dict, description="item name -> its stand-in")
+    drop: list[Word] = Field(default_factory=list, description="item names left out")
+
+
 class StylesFile(_Model):
     styles: dict[str, Style] = Field(min_length=1)
     asset_classes: dict[str, AssetClass]
     defaults: dict[str, list[str]] = Field(description="program -> style keys drawn when the text names none")
     category_materials: dict[str, str]
+    period: dict[str, PeriodRules] = Field(default_factory=dict, description="asset-class trait -> what its looks leave out")
 
     @field_validator("category_materials")
     @classmethod
@@ -749,9 +777,13 @@ class KnowledgeBase:
                  f"{rt.min_area_m2} m2 is less than a square of its min_width_m ({rt.min_width_m ** 2:.2f} m2)")
             need(rt.area[0] >= rt.min_area_m2, "rooms", ("types", t, "area"), f"starts below min_area_m2 ({rt.min_area_m2} m2)")
         for n, rn in self.rooms.names.items():
-            need(rn.type in types, "rooms", ("names", n, "type"), lambda: known(rn.type, types, "room type"))
-            if rn.furnish is not None:
-                need(rn.furnish in sets, "rooms", ("names", n, "furnish"), lambda: known(str(rn.furnish), sets, "furnishing set"))
+            for where, sense in (((), rn), (("at_home",), rn.at_home)):
+                if sense is None:
+                    continue
+                need(sense.type in types, "rooms", ("names", n, *where, "type"), lambda: known(sense.type, types, "room type"))
+                if sense.furnish is not None:
+                    need(sense.furnish in sets, "rooms", ("names", n, *where, "furnish"),
+                         lambda: known(str(sense.furnish), sets, "furnishing set"))
         # objects.yaml
         for k, o in objects.items():
             if o.group is not None:

@@ -147,6 +147,9 @@ class OfflinePlanner:
         if sz.band is not None:
             _fit_furnished(kb, slots, rooms, sz, warnings)
         look = choose_look(kb, parsed, implied, building, rng)
+        asked = {w for m in parsed.objects if not m.negated for w in (m.name, m.key) if w}
+        for groups, ornaments in rooms:
+            fu.apply_period(kb, groups, ornaments, look.styles, asked)
         building = parsed.building_word or building
         heights = room_heights(kb, parsed, [s.type for s in slots], [s.mention for s in slots])
         specs = [_room_spec(kb, s, g, o, look, rng, h) for s, (g, o), h in zip(slots, rooms, heights)]
@@ -273,6 +276,8 @@ def _furnish(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], main_key: str
         for i in targets:
             groups, ornaments, unused = built[i]
             fu.apply_mention(kb, m, groups, ornaments, unused, slots[i].area, rng)
+    for groups, _, _ in built:
+        fu.drop_unasked_beds(groups)
     for m in parsed.objects:  # "a bedroom without a tv", "no rug": after what the text adds
         if not m.negated:
             continue

@@ -391,9 +391,11 @@ def _look_back(m: Mention, text: str, tokens: list[tuple[str, int, int]], taken:
 def _parse_building(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[int, int]]) -> tuple[int, int] | None:
     voc = vocabulary(kb)
     longer = [mt.span() for mt in voc.regex.finditer(text)]
+    buildings = kb.raw("programs")["buildings"]
     matches = [
         b for b in voc.building_regex.finditer(text)
         if not any(a <= b.start() and b.end() <= e and e - a > b.end() - b.start() for a, e in longer)
+        and not _ruled_out_building(buildings[voc.building_forms[b.group()]], text)
     ]  # fmt: skip  ("a box office": a room, not an office building)
     if not matches:
         return None
@@ -416,6 +418,12 @@ def _parse_building(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[i
     _size_words(kb, text, best.end(), p)  # "a tiny house": the size word is in the building's phrase
     p.building_phrase = _with_modifier(kb, text, best.start(), best.group(), taken)
     return best.start(), best.end()
+
+
+def _ruled_out_building(entry: dict, text: str) -> bool:
+    """Whether the text holds one of the building entry's ``unless`` words ("a studio"
+    with an easel is no studio apartment)."""
+    return any(re.search(rf"\b{re.escape(w.lower())}\b", text) for w in entry.get("unless", []))
 
 
 def _with_modifier(kb: KnowledgeBase, text: str, start: int, phrase: str, taken: list[tuple[int, int]]) -> str:
@@ -603,7 +611,9 @@ def _stated_area(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[int,
         value = float(NUMBER_WORDS[num] if num in NUMBER_WORDS else num) * (SQ_FT_M2 if "f" in mt.group(2) or mt.group(2) == "sf" else 1.0)
         room = max((len(f) for f in _prefixes(nxt) if f in voc.forms and voc.forms[f][0].kind == "room"), default=0)
         building = max((len(f) for f in _prefixes(nxt) if f in _building_words(kb)), default=0)
-        if room and room > building:  # "a 12 m2 bedroom"; "a 30 m2 studio flat" is the flat's
+        # "a 12 m2 bedroom"; "a 30 m2 studio flat" is the flat's; "a house with a 20 m2
+        # studio": a word of both kinds after another building word is a room
+        if room and (room > building or (room == building and voc.building_regex.search(text[: mt.start()]))):
             p.room_areas.append((mt.end(), value))
             continue
         if p.total_m2 is None and value > 0:
@@ -778,12 +788,28 @@ def _assign_rooms(text: str, mentions: list[Mention]) -> None:
             continue
         m.room = context
         m.each = each is not None and context == room_idx[id(each)]
+        if not m.each and context is not None:
+            _spread(m, [x for x in mentions if x.kind == "room"][context])
         nxt = next((x for x in mentions[i + 1 :] if x.kind == "room"), None)
         if nxt is not None:
             between = text[m.end : nxt.start]
             words_before = _strip_lookback(text, nxt)
             if IN_ROOM.match(between[: len(between) - words_before]):
                 m.room = room_idx[id(nxt)]
+
+
+def _spread(obj: Mention, room: Mention) -> None:
+    """"Three bedrooms with bunk beds": objects in the plural after a counted plural room
+    are shared out, one each (or the count split evenly: "two bathrooms with four
+    sinks"), not all put in the first room."""
+    rooms = room.count or 0
+    if rooms < 2 or obj.many:
+        return
+    if obj.count is None and obj.plural:
+        obj.each, obj.plural = True, False
+    elif obj.count is not None and obj.count >= rooms and obj.count % rooms == 0:
+        obj.each, obj.count = True, obj.count // rooms
+        obj.plural = obj.count > 1
 
 
 def _strip_lookback(text: str, m: Mention) -> int:

@@ -85,8 +85,13 @@ def _concept_info(kb: KnowledgeBase, furnish: str) -> dict:
     return {"type": furnish_type(furnish, kb), "furnish": furnish}
 
 
-def _slot_from_mention(kb: KnowledgeBase, m: Mention, idx: int) -> Slot:
+def _slot_from_mention(kb: KnowledgeBase, m: Mention, idx: int, home: bool = False) -> Slot:
+    """The room a mention names, read as a dwelling reads it when ``home`` (rooms.yaml
+    ``at_home``: "a salon" in a riad is a sitting room)."""
     info = kb.raw("rooms")["names"].get(m.key) if m.key else None
+    if info is not None and "at_home" in info:
+        sense = info["at_home"] if home else {}
+        info = {**{k: v for k, v in info.items() if k != "at_home"}, **sense}
     if m.concept:
         info = {**_concept_info(kb, m.concept), **({"name": info["name"]} if info and "name" in info else {})}
     if info is None:
@@ -144,7 +149,7 @@ def plan_rooms(kb: KnowledgeBase, parsed: Parsed, program: str | None, rng: np.r
                 s.optional = opt is not None
                 slots.append(s)
     fixed = _fixed_counts(kb, parsed)
-    _claim_mentions(kb, parsed, slots, fixed)
+    _claim_mentions(kb, parsed, slots, fixed, home=program in set(_sizes(kb).get("homes", [])))
     _drop_replaced(parsed, slots)
     totals = frozenset(t for t, n in (("bedroom", parsed.bedrooms), ("bathroom", parsed.bathrooms)) if n is not None)
     _apply_fixed(kb, slots, fixed, prog, totals)
@@ -240,12 +245,12 @@ def _fixed_counts(kb: KnowledgeBase, parsed: Parsed) -> dict[str, int]:
     return fixed
 
 
-def _claim_mentions(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], fixed: dict[str, int]) -> None:
+def _claim_mentions(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], fixed: dict[str, int], home: bool = False) -> None:
     names = kb.raw("rooms")["names"]
     for i, m in enumerate(parsed.rooms):
         if m.count == 0:
             continue
-        proto = _slot_from_mention(kb, m, i)
+        proto = _slot_from_mention(kb, m, i, home)
         generic = bool((names.get(m.key) or {}).get("generic"))
         n = max(1, m.count or 1) if (generic or m.count) else (2 if m.plural else 1)  # "tatami rooms"
         n = min(n, MAX_COUNT)

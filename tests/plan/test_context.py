@@ -1,0 +1,83 @@
+"""Words read in context: a word's sense follows the building and the sentence (issue 15)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from anyhome.plan import get_planner
+
+
+def _plan(text, seed=0):
+    return get_planner("offline").plan(text, np.random.default_rng(seed))
+
+
+def _names(room):
+    """Every object the room plans, one name per copy."""
+    return ([g.anchor.name for g in room.groups for _ in range(g.repeat)]
+            + [m.name for g in room.groups for m in g.members for _ in range(g.repeat * m.count)]
+            + [o.name for o in room.ornaments])
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_a_salon_in_a_riad_is_a_sitting_room_and_in_a_hair_salon_a_salon(seed):
+    riad = _plan("A Moroccan riad with a courtyard fountain and a salon with floor cushions.", seed)
+    salon = next(r for r in riad.rooms if "salon" in r.name)
+    assert salon.type == "living_room"
+    assert not any(n.startswith(("hair", "salon", "styling", "shampoo")) for r in riad.rooms for n in _names(r))
+    shop = _plan("A hair salon with three styling chairs.", seed)
+    assert any(r.type == "shop" for r in shop.rooms)
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_a_plain_studio_is_a_home_and_an_artists_studio_a_workspace(seed):
+    home = _plan("A boho studio with plants and a macrame wall hanging.", seed)
+    names = [n for r in home.rooms for n in _names(r)]
+    assert any("bed" in n for n in names) and not any("easel" in n for n in names)
+    work = _plan("An artist's studio with easels and a big window.", seed)
+    names = [n for r in work.rooms for n in _names(r)]
+    assert any("easel" in n for n in names) and not any(n.endswith(" bed") or n == "bed" for n in names)
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_a_hotel_suite_is_a_set_of_rooms_not_a_hotel(seed):
+    spec = _plan("An art deco hotel suite with a king bed and a marble bathroom.", seed)
+    types = [r.type for r in spec.rooms]
+    assert "reception" not in types and types.count("bedroom") == 1 and "bathroom" in types
+    assert len(spec.rooms) <= 4
+
+
+def test_an_area_before_a_room_word_that_is_also_a_building_word_is_the_rooms():
+    from anyhome.plan.parse import parse
+
+    assert parse("a house with a 20 m2 studio").total_m2 is None
+    assert parse("a 30 m2 studio").total_m2 == pytest.approx(30.0)
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_bunk_beds_after_three_bedrooms_go_one_in_each_and_replace_their_beds(seed):
+    spec = _plan("A house with three bedrooms with bunk beds, and a master bedroom with a queen bed.", seed)
+    bunks = {r.id: sum(n == "bunk bed" for n in _names(r)) for r in spec.rooms}
+    with_bunks = [r for r in spec.rooms if bunks[r.id]]
+    assert len(with_bunks) == 3 and all(bunks[r.id] == 1 for r in with_bunks)
+    for r in with_bunks:  # the bunk bed is the room's bed
+        assert [g.anchor.name for g in r.groups if "bed" in g.anchor.tags] == ["bunk bed"]
+    assert any("queen bed" in _names(r) for r in spec.rooms if not bunks[r.id])
+
+
+def test_two_rooms_with_four_things_get_two_each():
+    spec = _plan("A cabin with two bedrooms with four single beds.")
+    beds = [sum(n == "single bed" for n in _names(r)) for r in spec.rooms if r.type == "bedroom"]
+    assert sorted(beds)[-2:] == [2, 2]
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_a_period_house_has_no_office_chairs_or_monitors_unless_asked(seed):
+    for text in ("A Victorian study with a writing desk and a leather armchair.",
+                 "A one-bedroom haunted house with dark wood and antique furniture."):
+        names = [n for r in _plan(text, seed).rooms for n in _names(r)]
+        assert not any(n in ("office chair", "monitor", "tv", "tv stand", "printer") for n in names), (text, names)
+    asked = [n for r in _plan("A haunted study with a computer monitor on the desk.", seed).rooms for n in _names(r)]
+    assert "computer monitor" in asked
+    modern = [n for r in _plan("A modern office with four desks.", seed).rooms for n in _names(r)]
+    assert "office chair" in modern
