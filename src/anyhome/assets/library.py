@@ -511,9 +511,9 @@ def library_parts(record: Mapping[str, Any], size: Sequence[float]) -> list[trim
     the model's own visual; None (and a logged warning) when the file is missing,
     changed or unreadable: the caller builds the fallback."""
     try:
-        path = record_file(record)
-        parts = _checked_parts(str(path), str(record["sha256"]))
-        return fitted_parts(parts, str(record.get("up", "y")), str(record.get("front") or DEFAULT_FRONT[str(record.get("up", "y"))]), size)
+        parts = _checked_parts(str(record_file(record)), str(record["sha256"]))
+        up = str(record.get("up", "y"))
+        return fitted_parts(parts, up, str(record.get("front") or DEFAULT_FRONT[up]), size)
     except (AssetLibraryError, KeyError, OSError) as e:
         log.warning("asset %s: %s; using the procedural fallback", clean_text(str(record.get("path", "?"))), clean_text(str(e)))
         return None
