@@ -98,9 +98,10 @@ def cmd_generate(args: argparse.Namespace) -> int:
     use_knowledge(args.knowledge)
     kb = knowledge_base()  # a bad knowledge file (shipped or the user's) is one line, before any work
     planner = _planner(args, kb)
+    stages = _stages(args)
     t0 = time.perf_counter()
     progress = _StageProgress(not args.quiet)
-    house = generate(args.text, seed=args.seed, planner=planner, progress=progress, knowledge=kb)
+    house = generate(args.text, seed=args.seed, planner=planner, progress=progress, stages=stages, knowledge=kb)
     timings = dict(house.timings_s)
     extra = (lambda folder: _render(house, folder, args)) if args.render else None
     files = write_outputs(house, out, glb=not args.no_glb, svg=not args.no_svg, timings=timings,
@@ -119,6 +120,20 @@ def cmd_generate(args: argparse.Namespace) -> int:
         if args.planner == "llm":
             _print_llm(_llm_usage(planner, house))
     return 0
+
+
+def _stages(args: argparse.Namespace):
+    """The generation stages: the defaults, with the asset library of ``--assets``,
+    ``$ANYHOME_ASSETS`` or the config file's ``[assets] dir`` indexed here (a missing or
+    empty folder is one line, before any work); None without a library."""
+    from anyhome.assets.library import folder_in_force, open_library
+
+    folder = folder_in_force(args.assets, args.config)
+    if folder is None:
+        return None
+    from anyhome.stages import Stages, library_assets
+
+    return Stages(assets=library_assets(open_library(folder)))
 
 
 def _planner(args: argparse.Namespace, kb: KnowledgeBase):
@@ -242,6 +257,9 @@ def cmd_export(args: argparse.Namespace) -> int:
 def cmd_assets(args: argparse.Namespace) -> int:
     from anyhome.assets import FAMILIES
 
+    if args.library:
+        return _print_library(args.library, args.json)
+
     if args.json:
         print(json.dumps(list(FAMILIES)))
         return 0
@@ -256,6 +274,25 @@ def cmd_assets(args: argparse.Namespace) -> int:
     print(f"{len(FAMILIES)} procedural asset families:")
     for name in FAMILIES:
         print(f"  {name}")
+    return 0
+
+
+def _print_library(folder: str, as_json: bool) -> int:
+    """Index an asset library folder and list its models (``anyhome assets --library DIR``)."""
+    from anyhome.assets.library import open_library
+
+    lib = open_library(folder)
+    rows = [{"path": m.path, "name": m.meta.name, "category": m.meta.category, "tags": list(m.meta.tags),
+             "up": m.meta.up, "front": m.meta.front_axis(), "unit": m.unit,
+             "size_m": [round(x, 3) for x in m.extents_m]} for m in lib.models]
+    if as_json:
+        print(json.dumps(rows))
+        return 0
+    print(f"{len(rows)} models in {_shown(folder)} ({len(lib.loaded)} loaded, the rest from the index):")
+    for r in rows:
+        w, d, h = r["size_m"]
+        print(f"  {_shown(r['path']):<32} {_shown(r['name']):<24} {w:.2f} x {d:.2f} x {h:.2f} m  "
+              f"up {r['up']}, front {r['front']}, {r['unit']}")
     return 0
 
 
@@ -330,7 +367,7 @@ def build_parser() -> argparse.ArgumentParser:
     llm.add_argument("--llm-timeout", type=float, help="seconds per request before falling back (default 180)")
     llm.add_argument("--llm-concurrency", type=int, help="per-room requests in flight (default 2)")
     llm.add_argument("--no-cache", action="store_true", help="ask the model again instead of reusing cached replies")
-    llm.add_argument("--config", help="TOML config file with an [llm] table (default ~/.config/anyhome/config.toml)")
+    llm.add_argument("--config", help="TOML config file with an [llm] table and an [assets] dir (default ~/.config/anyhome/config.toml)")
     g.add_argument(
         "--embedder",
         help="text-embedding backend for unknown words: hybrid (default), static, minilm, lexical "
@@ -340,6 +377,11 @@ def build_parser() -> argparse.ArgumentParser:
         "--knowledge", action="append", metavar="DIR",
         help="a folder of knowledge files (objects.yaml, rooms.yaml...) that add to or override the "
         "shipped ones; repeatable, later ones win; after those of ANYHOME_KNOWLEDGE_PATH",
+    )
+    g.add_argument(
+        "--assets", metavar="DIR",
+        help="a folder of GLB/GLTF/OBJ/PLY models used for the objects they match by name "
+        "(see docs/asset_library.md; or set ANYHOME_ASSETS, or [assets] dir in the config file)",
     )
     g.add_argument("--no-glb", action="store_true", help="skip house.glb")
     g.add_argument("--no-svg", action="store_true", help="skip floorplan.svg")
@@ -370,9 +412,10 @@ def build_parser() -> argparse.ArgumentParser:
     _render_options(r)
     r.set_defaults(func=cmd_render)
 
-    a = sub.add_parser("assets", help="list the procedural asset families")
+    a = sub.add_parser("assets", help="list the procedural asset families (or an asset library's models)")
     a.add_argument("--json", action="store_true", help="print a JSON list of family names")
     a.add_argument("--details", action="store_true", help="size, triangles and categories per family")
+    a.add_argument("--library", metavar="DIR", help="index an asset library folder and list its models instead")
     a.set_defaults(func=cmd_assets)
     return p
 

@@ -43,3 +43,8 @@ class KnowledgeError(AnyHomeError):
     """A knowledge file (shipped or a user's overlay) is unreadable or holds a bad entry.
 
     The message is one line: ``FILE: KEY: what is wrong``."""
+
+
+class AssetLibraryError(AnyHomeError):
+    """An asset library folder (``--assets DIR``) is missing, empty, or holds bad metadata
+    or a model that cannot be loaded."""

@@ -684,15 +684,47 @@ def _knob_schema(family: str) -> dict[str, tuple[type, float, float]] | None:
     return schema
 
 
+_SHA256_RE = re.compile(r"[0-9a-f]{64}")
+
+
+def _check_library_asset(path: str, asset: dict[str, Any]) -> str | None:
+    """A library record (:mod:`anyhome.assets.library`) names its file (a string path
+    and library folder), the file's sha256, its up axis, front axis and unit; its
+    ``fallback``, if any, is a procedural record checked as one."""
+    from anyhome.assets.library import AXES, DEFAULT_FRONT, UNIT_SCALES_M
+
+    for key in ("library", "path", "name"):
+        if not isinstance(asset.get(key), str) or (key == "path" and not asset[key]):
+            return f"{path}.{key}: must be a string"
+    if not isinstance(asset.get("sha256"), str) or not _SHA256_RE.fullmatch(asset["sha256"]):
+        return f"{path}.sha256: must be 64 lowercase hex digits"
+    if asset.get("up") not in DEFAULT_FRONT:
+        return f"{path}.up: must be one of {', '.join(DEFAULT_FRONT)}"
+    front = asset.get("front", DEFAULT_FRONT[asset["up"]])
+    if front not in AXES or front[1] == asset["up"]:
+        return f"{path}.front: must be an axis across the up axis, like +z or -y"
+    if asset.get("unit") not in UNIT_SCALES_M:
+        return f"{path}.unit: must be one of {', '.join(UNIT_SCALES_M)}"
+    fallback = asset.get("fallback")
+    if fallback is None:
+        return None
+    if not isinstance(fallback, dict) or fallback.get("source") != "procedural":
+        return f"{path}.fallback: must be a procedural asset record"
+    return _check_asset(f"{path}.fallback", fallback)
+
+
 def _check_asset(path: str, asset: dict[str, Any]) -> str | None:
     """A procedural asset record must rebuild: the family's knobs, of their types, in
-    range. Records of another source or an unknown family are ignored by the mesh
+    range; a library record must name its file, hash and orientation
+    (:func:`_check_library_asset`). Records of another source or an unknown family are ignored by the mesh
     builder (it samples an asset from the object id), so only their numbers are checked."""
     if (bad := _non_finite(asset, path)) is not None:
         return f"{bad}: must be a finite number"
     for key in ("source", "family"):
         if key in asset and not isinstance(asset[key], str):
             return f"{path}.{key}: must be a string"
+    if asset.get("source") == "library":
+        return _check_library_asset(path, asset)
     family = asset.get("family")
     if asset.get("source") != "procedural" or not isinstance(family, str):
         return None

@@ -47,11 +47,13 @@ def restyle(house: House, style: str | Sequence[str], knowledge: KnowledgeBase |
     ``style`` is a style key of plan/knowledge/styles.yaml ("gothic"), a list of keys
     (the first leads), or free text the planner understands ("a dark gothic look",
     "craftsman"). Room materials, object materials and asset records are derived
-    again; the palette and the style fields follow. An unknown style raises
+    again (an object built from the user's asset library keeps its model; its procedural
+    fallback is drawn again); the palette and the style fields follow. An unknown style raises
     :class:`AnyHomeError`. ``knowledge``: the knowledge base the styles come from
     (None: the one in force).
     """
     from anyhome.assets import assign_asset
+    from anyhome.assets.library import SOURCE as LIBRARY_SOURCE
     from anyhome.assets.sets import matched_record, set_key
     from anyhome.pipeline import STAGES, _knowledge
     from anyhome.plan.appearance import item_material, look_for, room_materials
@@ -76,6 +78,10 @@ def restyle(house: House, style: str | Sequence[str], knowledge: KnowledgeBase |
             new.asset = assign_asset(new, asset_rng, keys, kb)
             if key is not None:
                 first[key] = new
+        mine = obj.asset or {}
+        if mine.get("source") == LIBRARY_SOURCE and new.asset is not None:
+            # the user's own model stays; only its procedural fallback takes the new style
+            new.asset = {**mine, "fallback": new.asset.get("fallback", new.asset)}
         objects.append(new)
     data = house.model_dump()
     data.update(style=look.describe, styles=keys, palette=look.palette,

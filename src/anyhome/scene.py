@@ -21,9 +21,11 @@ import shapely
 import trimesh
 from shapely.geometry import Polygon
 
-from anyhome.assets import FAMILIES, assign_asset, build_object_mesh, family_for
+from anyhome.assets import build_object_mesh, family_for
+from anyhome.assets.library import SOURCE as LIBRARY_SOURCE
+from anyhome.assets.library import library_parts
 from anyhome.assets.procedural._parts import slot_role
-from anyhome.assets.registry import SOURCE, object_rng
+from anyhome.assets.registry import procedural_record
 from anyhome.errors import ExportError
 from anyhome.export.architecture import architecture_meshes
 from anyhome.export.ceilings import ceiling_mesh, slab
@@ -201,6 +203,8 @@ class _SceneBuilder:
                 "family": (obj.asset or {}).get("family") or family_for(obj.category, obj.name)}
         self.scene.graph.update(frame_from=parent, frame_to=node,
                                 matrix=object_transform(obj.position, obj.yaw), metadata=dict(meta))
+        if self.library_object(obj, node):
+            return
         record = _asset_record(obj)
         mesh = build_object_mesh(obj)  # (loads the families, so their slot roles are known)
         body = slot_role(record["family"], 0, str(record["params"].get("primary", "")))
@@ -214,13 +218,35 @@ class _SceneBuilder:
                       "role": part.role, "body": part.body, "texture": part.spec.kind}, parent=node)
 
 
+    def library_object(self, obj: HouseObject, node: str) -> bool:
+        """Add the parts of an object built from a library model, each with the model's
+        own material or colours (``object:<id>:model``, ``-2``...); False when the object
+        has no library record or its file is missing or changed (then the procedural
+        fallback is built)."""
+        record = obj.asset or {}
+        if record.get("source") != LIBRARY_SOURCE:
+            return False
+        parts = library_parts(record, obj.size)
+        if parts is None:
+            return False
+        for k, part in enumerate(parts):
+            mat = getattr(part.visual, "material", None)
+            if mat is not None:  # a name of its own: never one of the scene's material keys
+                mat.name = f"library:{obj.id}:{k + 1}"
+            suffix = "" if k == 0 else f"-{k + 1}"
+            self.add(part, f"{node}:model{suffix}",
+                     {"object": obj.id, "room": obj.room, "category": obj.category, "role": "model",
+                      "body": True, "texture": "library", "asset": str(record.get("path", ""))}, parent=node)
+        return True
+
+
 def _asset_record(obj: HouseObject) -> dict:
-    """The asset record ``build_object_mesh`` builds the object from (sampled from the
-    object id when the object has no usable record)."""
+    """The procedural asset record ``build_object_mesh`` builds the object from: its own,
+    a library record's fallback, or one sampled from the object id when it has none."""
     record = obj.asset
-    if not record or record.get("source") != SOURCE or record.get("family") not in FAMILIES:
-        record = assign_asset(obj, object_rng(obj), "")
-    return record
+    if record and record.get("source") == LIBRARY_SOURCE:
+        record = record.get("fallback")
+    return procedural_record(obj, record)
 
 
 def scene_and_materials(house: House, texture_px: int | None = None, textures: bool = True

@@ -23,6 +23,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from anyhome.assets import assign_asset
+from anyhome.assets.library import Library, Match, best_matches, library_record
 from anyhome.assets.sets import matched_record, set_key
 from anyhome.errors import AnyHomeError
 from anyhome.floorplan.levels import solve_levels
@@ -68,6 +69,31 @@ def assign_assets(objects: list[HouseObject], rng: np.random.Generator, spec: Ho
         if key is not None:
             first[key] = obj.asset
     return objects
+
+
+def library_assets(library: Library) -> AssetsStage:
+    """An assets stage that uses the models of an asset library (``--assets DIR``,
+    :func:`anyhome.assets.library.open_library`) where an object's words match one
+    (:func:`anyhome.assets.library.best_matches`), and procedural assets elsewhere.
+
+    Every object first gets its procedural record from :func:`assign_assets` (the same
+    random draws as without a library); a matched object's library record keeps it as
+    its ``fallback``. The copies of a matched set take the first copy's model."""
+
+    def assets(objects: list[HouseObject], rng: np.random.Generator, spec: HouseSpec,
+               kb: KnowledgeBase) -> list[HouseObject]:
+        objects = assign_assets(objects, rng, spec, kb)
+        matches = best_matches(library, [(o.name, o.category, o.size) for o in objects])
+        chosen: dict[tuple[str, str, str], Match | None] = {}
+        for obj, match in zip(objects, matches):
+            key = set_key(obj)
+            if key is not None:
+                match = chosen.setdefault(key, match)
+            if match is not None and obj.asset is not None:
+                obj.asset = library_record(library, match, obj.asset)
+        return objects
+
+    return assets
 
 
 @dataclass(frozen=True)

@@ -18,6 +18,7 @@ import numpy as np
 import trimesh
 
 from anyhome.assets.colors import material_color
+from anyhome.assets.library import SOURCE as LIBRARY_SOURCE
 from anyhome.assets.procedural._parts import Params, Size
 from anyhome.assets.styles import Style, style_class
 from anyhome.house import HouseObject
@@ -217,6 +218,15 @@ def assign_asset(obj: HouseObject, rng: np.random.Generator, style: Style | Sequ
     return {"source": SOURCE, "family": name, "params": params.to_record()}
 
 
+def procedural_record(obj: HouseObject, record: dict[str, Any] | None,
+                      kb: KnowledgeBase | None = None) -> dict[str, Any]:
+    """``record`` if it is a usable procedural record, else one sampled from a generator
+    seeded by the object id (in ``kb``)."""
+    if not record or record.get("source") != SOURCE or record.get("family") not in _loaded():
+        return assign_asset(obj, object_rng(obj), "", kb)
+    return record
+
+
 def params_from_record(record: dict[str, Any]) -> Params:
     return Params.from_record(record["family"], record["params"])
 
@@ -224,13 +234,22 @@ def params_from_record(record: dict[str, Any]) -> Params:
 def build_object_mesh(obj: HouseObject, kb: KnowledgeBase | None = None) -> trimesh.Trimesh:
     """The object's mesh in its local frame (see module doc), rebuilt from ``obj.asset``.
 
+    A library record (``source`` ``library``, :mod:`anyhome.assets.library`) gives the
+    model file's geometry (its parts joined) fitted to the box; when its file is missing
+    or changed, its ``fallback`` procedural record is built (with a logged warning).
     Without a procedural record an asset is sampled from a generator seeded by the
     object id (its family and colours read in ``kb``; None: the knowledge base in force).
     The mesh is fitted to ``obj.size`` (so a resized object keeps its look).
     """
     record = obj.asset
-    if not record or record.get("source") != SOURCE or record.get("family") not in _loaded():
-        record = assign_asset(obj, object_rng(obj), "", kb)
+    if record and record.get("source") == LIBRARY_SOURCE:
+        from anyhome.assets.library import library_mesh
+
+        mesh = library_mesh(record, obj.size)
+        if mesh is not None:
+            return mesh
+        record = record.get("fallback")
+    record = procedural_record(obj, record, kb)
     params = params_from_record(record)
     size = (float(obj.size[0]), float(obj.size[1]), float(obj.size[2]))
     if size != params.size:
