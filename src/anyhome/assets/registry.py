@@ -79,6 +79,7 @@ class _Words:
     categories: dict[str, str]  # assets.yaml categories: category -> family
     words: dict[str, str]  # assets.yaml words: word -> family
     sizes: dict[str, tuple[float, float, float]]  # family -> typical box
+    stand_ins: frozenset[str]  # assets.yaml stand_ins: words no family draws as itself
 
 
 def _kb(kb: KnowledgeBase | None) -> KnowledgeBase:
@@ -114,7 +115,7 @@ def _tables(kb: Any) -> _Words:
         sizes.setdefault(o.category, tuple(o.size))
     for f, size in kb.assets.sizes.items():
         sizes.setdefault(f, tuple(size))
-    return _Words(protos, cats, dict(kb.assets.words), sizes)
+    return _Words(protos, cats, dict(kb.assets.words), sizes, frozenset(kb.assets.stand_ins))
 
 
 def synonyms(kb: KnowledgeBase | None = None) -> dict[str, str]:
@@ -191,6 +192,18 @@ def family_for(category: str, name: str = "", kb: KnowledgeBase | None = None) -
     return GENERIC
 
 
+def is_stand_in(category: str, name: str, family: str, kb: KnowledgeBase | None = None) -> bool:
+    """Whether the family an object is built as draws something else: the generic block,
+    or a name or category that assets.yaml ``stand_ins`` lists (the whole name, or its
+    last one to three words: "old sauna heater")."""
+    if family == GENERIC:
+        return True
+    listed = _tables(_kb(kb)).stand_ins
+    words = _norm(name).split("_")
+    tails = {"_".join(words[-n:]) for n in range(1, min(3, len(words)) + 1)}
+    return _norm(category) in listed or bool(tails & listed) or _norm(name) in listed
+
+
 def object_rng(obj: HouseObject) -> np.random.Generator:
     """A generator seeded from a stable hash of the object id."""
     return np.random.default_rng(zlib.crc32(obj.id.encode("utf-8")))
@@ -215,7 +228,10 @@ def assign_asset(obj: HouseObject, rng: np.random.Generator, style: Style | Sequ
     color = material_color(obj.material, kb) or material_color(obj.description, kb)
     if color:
         params = replace(params, primary=color)
-    return {"source": SOURCE, "family": name, "params": params.to_record()}
+    record: dict[str, Any] = {"source": SOURCE, "family": name, "params": params.to_record()}
+    if is_stand_in(obj.category, obj.name, name, kb):
+        record["approximate"] = True  # said in the summary and by anyhome eval, never silent
+    return record
 
 
 def procedural_record(obj: HouseObject, record: dict[str, Any] | None,

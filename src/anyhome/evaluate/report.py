@@ -156,7 +156,8 @@ class EvalReport:
         lines.append(
             f"connections realized {100 * float(m.get('connections_realized', 1.0)):.0f}%, "
             f"reachable floor {100 * float(m.get('nav_reachable_fraction', 1.0)):.0f}%, "
-            f"{float(m.get('objects_per_habitable_room', 0.0)):.1f} objects per habitable room"
+            f"{float(m.get('objects_per_habitable_room', 0.0)):.1f} objects per habitable room, "
+            f"{m.get('n_stand_in_objects', 0)} shown with a stand-in mesh"
         )
         for v in self.violations[:MAX_SUMMARY_VIOLATIONS]:
             lines.append(f"  {v}")

@@ -121,6 +121,7 @@ def _check_one(house: House) -> ValidityResult:
         "nav_cell_m": nav.cell_m,
         "complete": not index.notes and nav.checked,
         "objects_per_habitable_room": in_habitable / len(habitable) if habitable else 0.0,
+        "n_stand_in_objects": sum(bool((o.asset or {}).get("approximate")) for o in full.objects),
         "n_floor_objects": len(nav.targets_reached),
         "n_floor_objects_reached": sum(nav.targets_reached),
     }

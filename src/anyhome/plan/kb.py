@@ -576,6 +576,8 @@ class AssetsFile(_Model):
         default_factory=dict, description="object word no prototype names -> family")
     sizes: dict[Category, Size] = Field(
         default_factory=dict, description="typical box of a family no prototype covers")
+    stand_ins: list[Category] = Field(
+        default_factory=list, description="object words whose family draws something else: shown with a stand-in mesh")
 
 
 class SurfacesFile(RootModel[dict[Surface, list[Word]]]):
