@@ -400,6 +400,8 @@ class RoomSpace:
         """Arrays of rows derived from placed objects (:meth:`_rows`)."""
         self.bmin = self.vertices.min(0)
         self.bmax = self.vertices.max(0)
+        self._bounds = (self.bmin - INSIDE_TOL_M, self.bmax + INSIDE_TOL_M)
+        """What :meth:`valid` keeps footprints within (the bounding box grown by the tolerance)."""
         self.height = float(self.room.height)
         self.area = float(self.poly.area)
         c = self.poly.centroid
@@ -492,15 +494,16 @@ class RoomSpace:
             return ok
         z0, z1 = _per_pose(z0, n), _per_pose(z1, n)
         lo, hi = _bounds_t(corners)
-        blo, bhi = self.bmin - INSIDE_TOL_M, self.bmax + INSIDE_TOL_M
-        ok &= (lo[0] >= blo[0]) & (lo[1] >= blo[1]) & (hi[0] <= bhi[0]) & (hi[1] <= bhi[1])
+        (bx0, by0), (bx1, by1) = self._bounds
+        ok &= (lo[0] >= bx0) & (lo[1] >= by0) & (hi[0] <= bx1) & (hi[1] <= by1)
         limit = self.height if floor else self.height - CEILING_GAP_M
         ok &= z1 <= limit + 1e-9
-        idx = np.nonzero(ok)[0]
-        if idx.size and self.buf_box is not None and self.convex:  # a rectangle: most settled by their bounds
-            inner, outer = _box_in(lo[:, idx], hi[:, idx], self.buf_box, _BOX_EDGE_M)
-            ok[idx[~outer]] = False  # a corner outside: out
-            idx = idx[outer & ~inner]  # a corner a hair from the outline: as below
+        if self.buf_box is not None and self.convex:  # a rectangle: most settled by their bounds
+            inner, outer = _box_in(lo, hi, self.buf_box, _BOX_EDGE_M)
+            ok &= outer  # a corner outside: out
+            idx = np.nonzero(ok & ~inner)[0]  # a corner a hair from the outline: as below
+        else:
+            idx = np.nonzero(ok)[0]
         if idx.size:
             c = corners[idx]
             pin = self._in_buf(c[..., 0].ravel(), c[..., 1].ravel()).reshape(-1, 4)

@@ -177,3 +177,18 @@ def test_anchor_pose_judged_best_keeps_the_members_it_was_judged_with(monkeypatc
         assert judged == [members]
         checked += len(bed_trials) > 1 and kept != poses[-1]  # kept a pose tried before the last
     assert checked >= 3
+
+
+def test_later_anchor_poses_are_not_asked_for_when_the_first_keeps_the_group():
+    st = _state(rect(0, 0, 4.0, 3.5), ((3.0, 0.0), (3.9, 0.0)), [])
+    g = group("bed", BED, [NIGHTSTANDS])
+    asked = []
+
+    def poses():
+        for ch in (Choice(np.array([1.8, 2.5]), np.pi, 0.0), Choice(np.array([1.0, 1.75]), -np.pi / 2, 0.0)):
+            asked.append(ch)
+            yield ch
+
+    anchor = groups.try_choices(st, g, "bed-0", poses(), "floor", "place_wall")
+    assert anchor is not None and anchor.position[:2] == (1.8, 2.5)
+    assert len(asked) == 1 and [o.name for o in st.space.objects].count("nightstand") == 2
