@@ -169,3 +169,13 @@ def test_a_room_cut_in_two_on_the_window_round_the_obstacle_is_labelled_in_two()
     assert nav._labels is None or _partition(nav._labels, nav.walk) == _partition(
         ndimage.label(nav.walk)[0], nav.walk)
     assert nav.unreached() == [desk]
+
+
+def test_labels_looked_for_among_a_few_are_found_as_isin_finds_them():
+    from anyhome.navgrid import SMALL_SET, _in
+
+    rng = np.random.default_rng(0)
+    a = rng.integers(0, 30, 500).astype(np.int32)
+    for n in (0, 1, 2, SMALL_SET, SMALL_SET + 3):
+        b = np.unique(rng.integers(0, 30, n)).astype(np.int32)
+        assert np.array_equal(_in(a, b), np.isin(a, b))

@@ -113,3 +113,18 @@ def test_rect_corners_of_one_size_or_many_are_the_same_and_match_the_contract():
     assert np.array_equal(rect_corners(xy[3], (1.2, 0.7), [yaw[3]])[0], one[3])
     for k in range(50):
         assert np.allclose(one[k], footprint_corners((*xy[k], 0.0), (1.2, 0.7, 1.0), yaw[k]), atol=1e-12)
+
+
+def test_a_placed_objects_table_row_is_made_once_and_stacks_as_the_objects_do():
+    from anyhome.space import _aligned, _blocker_rows, _bounds_of
+
+    a = _placed(rect_corners([(1.0, 1.0)], (0.5, 0.8), [0.0])[0], 0.0, 1.0)
+    b = _placed(rect_corners([(3.0, 2.0)], (0.5, 0.8), [0.4])[0], 0.5, 1.5)
+    assert a.rows() is a.rows()
+    c = np.stack([a.corners, b.corners])
+    rows = _blocker_rows([a, b])
+    assert np.array_equal(rows[0], c) and np.array_equal(rows[1], c.min(1)) and np.array_equal(rows[2], c.max(1))
+    assert np.array_equal(rows[3], _aligned(c)) and rows[3].tolist() == [True, False]
+    assert rows[7].tolist() == [0.0, 0.5] and rows[8].tolist() == [1.0, 1.5]
+    assert all(np.array_equal(x, y) for x, y in zip(_bounds_of([a, b]), rows[1:3], strict=True))
+    assert all(np.array_equal(x, y[:1]) for x, y in zip(_blocker_rows([a]), rows, strict=True))

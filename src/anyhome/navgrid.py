@@ -389,7 +389,7 @@ class NavGrid:
         if len(todo) == 1:  # most often the object placed last alone
             o = todo[0]
             lab = _at(labels, walk, self._reach_cells(o))
-            if len(lab) and bool(np.any(lab == door[0]) if len(door) == 1 else np.any(np.isin(lab, door))):
+            if len(lab) and bool(np.any(_in(lab, door))):
                 known.add(o)
                 return []
             return [o]
@@ -399,7 +399,7 @@ class NavGrid:
         some = np.flatnonzero(n)  # an obstacle with no reach cells is not reached
         if some.size:
             lab = _at(labels, walk, np.concatenate([cells[i] for i in some]))
-            hit = lab == door[0] if len(door) == 1 else np.isin(lab, door)
+            hit = _in(lab, door)
             starts = np.concatenate(([0], np.cumsum(n[some])[:-1]))
             reached[some] = np.logical_or.reduceat(hit, starts)
         out = []
@@ -423,7 +423,7 @@ class NavGrid:
         cells = self._reach_cells(obs)
         sh = obs.reach_shadow if self.walk_a is not None else obs.shadow
         lab = _at(labels, walk, cells)
-        on = lab == door[0] if len(door) == 1 else np.isin(lab, door)
+        on = _in(lab, door)
         if sh is not None and sh.mask.size and on.any():
             rows, cols = np.divmod(cells[on], walk.shape[1])
             h, w = sh.mask.shape
@@ -457,7 +457,7 @@ class NavGrid:
         if self._door_a_stale:
             self._door_a_stale = False
             cells = self._door_cells
-            on = cells[np.isin(_at(self._labels, self.walk, cells), door)]
+            on = cells[_in(_at(self._labels, self.walk, cells), door)]
             door_a = np.unique(_at(self._labels_a, self.walk_a, on))
             if not np.array_equal(door_a, self._door_a):
                 self._known = set()
@@ -502,6 +502,22 @@ def _at(labels: np.ndarray, walk: np.ndarray, idx: np.ndarray) -> np.ndarray:
     """Labels of the flat cells ``idx``, 0 where ``walk`` holds none (labels are kept for
     cells no longer walkable rather than cleared: see :func:`_cut`)."""
     return labels.ravel()[idx] * walk.ravel()[idx]
+
+
+SMALL_SET = 8
+"""Up to this many labels are looked for by comparing with each (``np.isin`` costs more)."""
+
+
+def _in(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """``np.isin(a, b)`` for 1-D ``a`` and a few labels ``b``."""
+    if len(b) == 1:
+        return a == b[0]
+    if len(b) > SMALL_SET:
+        return np.isin(a, b)
+    out = np.zeros(a.shape, dtype=bool)
+    for v in b.tolist():
+        out |= a == v
+    return out
 
 
 def _meet(a: Patch, b: Patch) -> bool:
@@ -555,11 +571,14 @@ def _pockets(was: np.ndarray, lab: np.ndarray, lost: Patch) -> list[int] | None:
     near[:, 1:] |= gone[:, :-1]
     near[:, :-1] |= gone[:, 1:]
     ring = near & (lab > 0)
-    got, first = np.unique(lab[ring], return_index=True)
+    on = lab[ring]
+    if not on.size or on.min() == on.max():  # one component round them (most often): no pocket
+        return []
+    got, first = np.unique(on, return_index=True)
     if len(got) < 2:
         return []
     edge = np.unique(np.concatenate((lab[0], lab[-1], lab[:, 0], lab[:, -1])))
-    shut = ~np.isin(got, edge)
+    shut = ~_in(got, edge)
     before = was[ring][first[~shut]]  # the component each one reaching the edge was part of
     if len(np.unique(before)) < len(before):
         return None

@@ -258,6 +258,14 @@ def _any_overlap(a: np.ndarray, alo: np.ndarray, ahi: np.ndarray, idx: np.ndarra
     return out
 
 
+def _per_pose(z: np.ndarray | float, n: int) -> np.ndarray:
+    """``z`` (one value, or one per pose) as (n,) float (``np.full`` is cheaper than ``np.broadcast_to``)."""
+    a = np.asarray(z, dtype=float)
+    if a.ndim == 0:
+        return np.full(n, float(a))
+    return a if a.shape == (n,) else np.broadcast_to(a, (n,))
+
+
 def _bounds_t(c: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """(n, 4, 2) corners -> lower and upper bounds, (2, n) each (x then y, contiguous: fast)."""
     t = np.ascontiguousarray(c.transpose(2, 1, 0))
@@ -267,16 +275,26 @@ def _bounds_t(c: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 def _bounds_of(objs: list[Placed]) -> tuple[np.ndarray, ...]:
     """Lower and upper bounds (m, 2) of the objects' footprints."""
-    c = np.stack([p.corners for p in objs])
-    return _cmin(c), _cmax(c)
+    if len(objs) == 1:
+        return objs[0].rows()[1:3]
+    return tuple(np.concatenate(col) for col in zip(*(p.rows()[1:3] for p in objs), strict=True))
 
 
 def _blocker_rows(objs: list[Placed]) -> tuple[np.ndarray, ...]:
     """Rows of placed objects as :meth:`RoomSpace._blockers` stacks them."""
-    c = np.stack([p.corners for p in objs])
-    m = len(objs)
-    return (c, _cmin(c), _cmax(c), _aligned(c), np.full(m, EPS_COLLIDE_M), np.zeros(m, dtype=bool),
-            np.full(m, _PLACED), np.array([p.z0 for p in objs]), np.array([p.z1 for p in objs]))
+    if len(objs) == 1:  # most often: the object placed last
+        return objs[0].rows()
+    return tuple(np.concatenate(col) for col in zip(*(p.rows() for p in objs), strict=True))
+
+
+def _own_rows(p: Placed) -> tuple[np.ndarray, ...]:
+    """The row of one placed object as :meth:`RoomSpace._blockers` stacks it (read-only)."""
+    c = p.corners[None]
+    out = (c, _cmin(c), _cmax(c), _aligned(c), np.full(1, EPS_COLLIDE_M), np.zeros(1, dtype=bool),
+           np.full(1, _PLACED), np.array([p.z0]), np.array([p.z1]))
+    for a in out[1:]:
+        a.flags.writeable = False
+    return out
 
 
 def _cmin(c: np.ndarray) -> np.ndarray:
@@ -313,6 +331,14 @@ class Placed:
     """What it does to the room's walkways (:class:`anyhome.navgrid.NavGrid`); None when nothing."""
     layer: bool = False
     """A rug laid under furniture (:mod:`anyhome.layout.layers`): only other layers collide with it."""
+    _rows: tuple[np.ndarray, ...] | None = field(default=None, repr=False, compare=False)
+
+    def rows(self) -> tuple[np.ndarray, ...]:
+        """Its row of the tables :meth:`RoomSpace._blockers` and :meth:`RoomSpace.near` read
+        (:func:`_own_rows`), made once."""
+        if self._rows is None:
+            self._rows = _own_rows(self)
+        return self._rows
 
 
 def room_polygon(room: Room) -> Polygon:
@@ -374,6 +400,8 @@ class RoomSpace:
         """Arrays of rows derived from placed objects (:meth:`_rows`)."""
         self.bmin = self.vertices.min(0)
         self.bmax = self.vertices.max(0)
+        self._bounds = (self.bmin - INSIDE_TOL_M, self.bmax + INSIDE_TOL_M)
+        """What :meth:`valid` keeps footprints within (the bounding box grown by the tolerance)."""
         self.height = float(self.room.height)
         self.area = float(self.poly.area)
         c = self.poly.centroid
@@ -464,18 +492,18 @@ class RoomSpace:
         ok = np.ones(n, dtype=bool)
         if n == 0:
             return ok
-        z0 = np.broadcast_to(np.asarray(z0, dtype=float), (n,))
-        z1 = np.broadcast_to(np.asarray(z1, dtype=float), (n,))
+        z0, z1 = _per_pose(z0, n), _per_pose(z1, n)
         lo, hi = _bounds_t(corners)
-        blo, bhi = self.bmin - INSIDE_TOL_M, self.bmax + INSIDE_TOL_M
-        ok &= (lo[0] >= blo[0]) & (lo[1] >= blo[1]) & (hi[0] <= bhi[0]) & (hi[1] <= bhi[1])
+        (bx0, by0), (bx1, by1) = self._bounds
+        ok &= (lo[0] >= bx0) & (lo[1] >= by0) & (hi[0] <= bx1) & (hi[1] <= by1)
         limit = self.height if floor else self.height - CEILING_GAP_M
         ok &= z1 <= limit + 1e-9
-        idx = np.nonzero(ok)[0]
-        if idx.size and self.buf_box is not None and self.convex:  # a rectangle: most settled by their bounds
-            inner, outer = _box_in(lo[:, idx], hi[:, idx], self.buf_box, _BOX_EDGE_M)
-            ok[idx[~outer]] = False  # a corner outside: out
-            idx = idx[outer & ~inner]  # a corner a hair from the outline: as below
+        if self.buf_box is not None and self.convex:  # a rectangle: most settled by their bounds
+            inner, outer = _box_in(lo, hi, self.buf_box, _BOX_EDGE_M)
+            ok &= outer  # a corner outside: out
+            idx = np.nonzero(ok & ~inner)[0]  # a corner a hair from the outline: as below
+        else:
+            idx = np.nonzero(ok)[0]
         if idx.size:
             c = corners[idx]
             pin = self._in_buf(c[..., 0].ravel(), c[..., 1].ravel()).reshape(-1, 4)

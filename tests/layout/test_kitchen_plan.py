@@ -3,6 +3,7 @@ are tried in, and the fill of one run (appliances apart, counters in every gap).
 
 from __future__ import annotations
 
+import numpy as np
 import pytest
 
 from anyhome.house import Door, Floorplan, Room, Window
@@ -10,6 +11,7 @@ from anyhome.layout.kitchen_plan import (
     LANDING_M,
     MIN_COUNTER_M,
     _gaps_ok,
+    _stove_options,
     plan_run,
     run_shapes,
     shape_order,
@@ -70,3 +72,22 @@ def test_a_plan_fills_the_run_and_puts_the_sink_under_the_window():
         sink = next(s for s in slots if s.role == "sink")
         if on_window_wall:
             assert shape.legs[sink.leg].wall.index == 1 and 2.0 <= (sink.t0 + sink.t1) / 2 <= 3.2
+
+
+@pytest.mark.parametrize("landing", [LANDING_M, 0.0])
+def test_stove_positions_are_those_every_gap_rule_allows(landing):
+    # positions beside an appliance are ruled out before the gap rules are asked: the
+    # same positions as asking the rules of every one
+    sp = space(4.0, 3.0)
+    for shape in run_shapes(sp, 0.6, 0.7, 0.9, None):
+        for fixed in ([], [(0, "fridge", shape.legs[0].t0, shape.legs[0].t0 + 0.8)],
+                      [(0, "fridge", shape.legs[0].t0, shape.legs[0].t0 + 0.8),
+                       (len(shape.legs) - 1, "sink", shape.legs[-1].t1 - 1.7, shape.legs[-1].t1 - 0.9)]):
+            want = []
+            for i, leg in enumerate(shape.legs):
+                for t0 in np.arange(leg.lo, leg.hi - 0.7 + 1e-6, 0.1):
+                    p = (i, "stove", float(t0), float(t0) + 0.7)
+                    if _gaps_ok(leg, [x[1:] for x in (*fixed, p) if x[0] == i], landing):
+                        want.append(p)
+            got = [p for _, p in _stove_options(shape, WIDTHS, fixed, landing)]
+            assert got == want

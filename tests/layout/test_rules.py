@@ -449,3 +449,44 @@ def test_rows_keep_an_aisle_behind_the_teachers_chair(seed):
     students = [footprint_polygon(o.position, o.size, o.yaw) for o in res.objects if o.name.startswith("student")]
     assert len(students) == 48
     assert min(tc.distance(s) for s in students) >= 0.75
+
+def test_centre_grid_is_kept_per_room_read_only_and_the_same_as_made_afresh():
+    from anyhome.layout.rules.place_center import _place_center, place_center
+    from anyhome.space import RoomSpace
+
+    fp = single_room(l_shape(6, 5, 2.5, 2))
+    sp = RoomSpace(fp, fp.rooms[0])
+    for facing in ("any", "door", "wall"):
+        a, b = place_center(sp, (1.2, 0.6, 0.8), facing), place_center(sp, (1.2, 0.6, 0.8), facing)
+        assert a is not b and a.xy is b.xy  # a new wrapper round the arrays kept
+        assert not a.pref.flags.writeable
+        fresh = _place_center(sp, (1.2, 0.6, 0.8), facing)
+        for got, want in ((a.xy, fresh.xy), (a.yaw, fresh.yaw), (a.z, fresh.z), (a.pref, fresh.pref)):
+            assert np.array_equal(got, want)
+    assert place_center(sp, (0.6, 0.6, 0.8)).xy is not a.xy  # another size: its own
+
+
+def test_front_poses_are_every_distance_with_every_sideways_shift():
+    from anyhome.house import HouseObject
+    from anyhome.layout.rules import front_dir, right_dir
+    from anyhome.layout.rules.place_front import (
+        DISTANCE_FACTORS,
+        LATERAL_PER_M,
+        LATERAL_SHIFTS_M,
+        place_front,
+    )
+    from anyhome.space import RoomSpace
+
+    fp = single_room(rect(0, 0, 5, 4))
+    sp = RoomSpace(fp, fp.rooms[0])
+    sofa = HouseObject(id="r1-sofa-0", room="r1", name="sofa", category="sofa", position=(2.5, 0.45, 0.0),
+                       size=(2.0, 0.9, 0.85), yaw=0.3)
+    c = place_front(sp, sofa, (1.1, 0.6, 0.45), 0.4, lateral=0.2)
+    txy, f, r = np.asarray(sofa.position[:2]), front_dir(sofa.yaw), right_dir(sofa.yaw)
+    k = 0
+    for j, m in enumerate(DISTANCE_FACTORS):
+        for lo in LATERAL_SHIFTS_M:  # as one pose at a time makes them
+            want = txy + f * (sofa.size[1] / 2 + 0.4 * m + 0.6 / 2) + r * (0.2 + lo)
+            assert np.array_equal(c.xy[k], want) and c.pref[k] == (1.0 - 0.08 * j) - LATERAL_PER_M * abs(lo)
+            k += 1
+    assert len(c) >= k

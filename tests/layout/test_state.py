@@ -64,3 +64,39 @@ def test_restore_forgets_what_was_waived_after_the_snapshot():
     assert st.unreached_since(snap) == 1
     st.restore(snap)
     assert st.nav.waived == [] and st.nav.ok() and len(st.space.placed) == 1
+
+
+def test_a_pose_tried_and_given_up_takes_no_id_and_leaves_no_trace_on_the_walkways():
+    st = _state()
+    obj = st.commit_if_walkable(WARDROBE, WARDROBE.size_m, [WALLING, FREE], "floor", "place_wall", None, None)
+    assert obj is not None and obj.id == "r1-wardrobe-0"  # the walling pose was tried first, on the walkways alone
+    plain = _state()
+    plain.commit(WARDROBE, WARDROBE.size_m, FREE, "floor", "place_wall", None, None)
+    assert np.array_equal(st.nav.walk, plain.nav.walk) and st.nav.obstacles == [p.nav for p in st.space.placed]
+    assert st.nav.ok() and st.nav.waived == []
+
+
+def test_footprint_is_what_commit_places():
+    st = _state()
+    corners, obs = st.footprint(WARDROBE, WARDROBE.size_m, FREE, "floor")
+    obj = st.commit(WARDROBE, WARDROBE.size_m, FREE, "floor", "place_wall", None, None)
+    p = st.space.placed[-1]
+    assert p.obj is obj and np.array_equal(p.corners, corners) and p.nav is obs
+    rug = item("rug", "rug", (2.0, 1.4, 0.01), "place_center")
+    assert st.footprint(rug, rug.size_m, FREE, "floor")[1] is None  # walked over
+
+
+def test_resume_comes_back_to_the_room_of_an_outcome():
+    st = _state()
+    snap = st.snapshot()
+    st.commit_if_walkable(WARDROBE, WARDROBE.size_m, [WALLING], "floor", "place_wall", None, None)
+    st.rng.random(3)
+    kept = st.outcome()
+    objs, walk, waived, draw = st.space.objects, st.nav.walk.copy(), list(st.nav.waived), st.rng.random()
+    st.restore(snap)
+    st.commit(WARDROBE, WARDROBE.size_m, FREE, "floor", "place_wall", None, None)  # another trial
+    st.restore(snap)
+    st.resume(kept)
+    assert st.space.objects == objs and np.array_equal(st.nav.walk, walk) and st.nav.waived == waived
+    assert st.counters == {"cabinet": 1, "wardrobe": 1} and st.rng.random() == draw
+    assert st.unreached_since(snap) == 1

@@ -3,8 +3,7 @@ relative to it; a few anchor poses are tried when members do not fit."""
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping
-from typing import Any
+from collections.abc import Callable, Iterable
 
 import numpy as np
 
@@ -22,7 +21,7 @@ from anyhome.layout.rules.place_around import (
     around_slots,
     seat_candidates,
 )
-from anyhome.layout.state import Choice, RoomState
+from anyhome.layout.state import Choice, Outcome, RoomState
 from anyhome.plan.spec import GroupSpec, ItemSpec
 from anyhome.space import rect_corners
 
@@ -52,11 +51,11 @@ def place_group_copy(st: RoomState, g: GroupSpec, copy: int, prev: HouseObject |
     hangs = bool(anchored(g, "place_on_wall"))
     order = scoring.rank(st, c, size, kind, o.member_noise if run_on else o.noise, spacing=not run_on,
                          avoid_windows=hangs, bonus=bonus if kind == "floor" else None)
-    choices = scoring.verified(st, c, order, size, kind, None, k=tries, min_sep_m=o.anchor_min_sep_m)
+    poses = scoring.Verifier(st, c, order, size, kind, None, min_sep_m=o.anchor_min_sep_m)
+    choices = poses.upto(tries)  # checked as tried: the first pose most often keeps the group
 
     def more() -> list[Choice]:
-        return scoring.verified(st, c, order, size, kind, None, k=tries + o.anchor_reach_retries,
-                                min_sep_m=o.anchor_min_sep_m)
+        return poses.list(tries + o.anchor_reach_retries)
 
     anchor = try_choices(st, g, label, choices, kind, rule, more, nudge=kind == "floor")
     if anchor is not None and ref is not None and rule == "place_front" and item.params.get("to_wall"):
@@ -64,7 +63,7 @@ def place_group_copy(st: RoomState, g: GroupSpec, copy: int, prev: HouseObject |
     return anchor
 
 
-def try_choices(st: RoomState, g: GroupSpec, label: str, choices: list[Choice], kind: str,
+def try_choices(st: RoomState, g: GroupSpec, label: str, choices: Iterable[Choice], kind: str,
                 rule: str, more: Callable[[], list[Choice]] | None = None, nudge: bool = False) -> HouseObject | None:
     """The anchor at the first of ``choices`` where every member fits and every object stays
     reachable, else where the fewest are dropped, then left out of reach, then the fewest
@@ -72,18 +71,22 @@ def try_choices(st: RoomState, g: GroupSpec, label: str, choices: list[Choice], 
     some out of reach, among ``more()`` too (a longer list starting with ``choices``);
     when it places some by a fallback and ``nudge`` is set, among the best pose shifted
     sideways too (:func:`nudged`: a bed moved off a door so that both nightstands fit);
-    None (all dropped) when no choice keeps the walkways open."""
+    None (all dropped) when no choice keeps the walkways open. ``choices`` may be checked
+    lazily (:class:`~.scoring.Verifier`): each is taken with the room as it was."""
     item = g.anchor
-    if not choices:
+    todo = iter(choices)
+    first = next(todo, None)
+    if first is None:
         drop_group(st, g, scoring.no_fit_reason(st, item.size_m))
         return None
     support = "wall" if kind == "wall" else "floor"
     snap = st.snapshot()
     best: tuple[int, int, int, int] | None = None  # (drops, objects out of reach, compromises, choice index)
-    best_rng: Mapping[str, Any] | None = None  # the random state its members were placed with: placed again the same
-    pool = list(choices)
-    for k, ch in enumerate(pool):  # grows (once) while being walked
-        rng_state = st.rng.bit_generator.state
+    kept: tuple[Outcome, HouseObject, list[Dropped]] | None = None  # the room with the best, come back to at the end
+    pool = [first]
+    k = 0
+    while k < len(pool):  # grows while being walked
+        ch = pool[k]
         got = st.commit_checked(item, item.size_m, ch, support, rule, label, None, check=kind != "top")
         if got is not None:  # else it closed a walkway (and was taken back)
             anchor = got[0]
@@ -94,25 +97,24 @@ def try_choices(st: RoomState, g: GroupSpec, label: str, choices: list[Choice], 
                 return anchor
             if best is None or (len(drops), unreached, bent) < best[:3]:
                 best = (len(drops), unreached, bent, k)
-                best_rng = rng_state
+                kept = (st.outcome(), anchor, drops)
             st.restore(snap)
-        if best is None:
-            continue
-        if k == len(pool) - 1 and more is not None and best[1]:
+        if k == len(pool) - 1:  # the next choice, checked with the room as it was
+            pool += [ch for ch in [next(todo, None)] if ch is not None]
+        if best is not None and k == len(pool) - 1 and more is not None and best[1]:
             pool += more()[len(pool):]
             more = None
-        if k == len(pool) - 1 and nudge and best[2]:
+        if best is not None and k == len(pool) - 1 and nudge and best[2]:
             pool += nudged(st, g, pool[best[3]], kind)
             nudge = False
+        k += 1
     if best is None:
         drop_group(st, g, "would block a walkway or a door")
         return None
-    assert best_rng is not None
-    st.rng.bit_generator.state = best_rng  # its members where they stood when it was judged best
-    got = st.commit_checked(item, item.size_m, pool[best[3]], support, rule, label, None, check=kind != "top")
-    assert got is not None  # it passed in this very state
-    anchor = got[0]
-    st.dropped.extend(place_members(st, g, label, anchor))
+    assert kept is not None
+    outcome, anchor, drops = kept
+    st.resume(outcome)  # the anchor and its members where they stood when it was judged best
+    st.dropped.extend(drops)
     return anchor
 
 

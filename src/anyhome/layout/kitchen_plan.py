@@ -306,7 +306,12 @@ def _stove_options(shape: RunShape, widths: dict[str, float], fixed: list[Piece]
     w = widths["stove"]
     out: list[tuple[float, Piece | None]] = []
     for i, leg in enumerate(shape.legs):
-        for t0 in np.arange(leg.lo, leg.hi - w + 1e-6, 0.1):
+        t0s = np.arange(leg.lo, leg.hi - w + 1e-6, 0.1)
+        near = np.zeros(len(t0s), dtype=bool)
+        for x in fixed:  # an appliance closer than a landing on either side: _gaps_ok refuses it
+            if x[0] == i:
+                near |= (x[2] - (t0s + w) < landing_m - 1e-6) & (t0s - x[3] < landing_m - 1e-6)
+        for t0 in t0s[~near]:
             p: Piece = (i, "stove", float(t0), float(t0) + w)
             if not _gaps_ok(leg, [x[1:] for x in (*fixed, p) if x[0] == i], landing_m):
                 continue

@@ -59,11 +59,12 @@ def place_single(st: RoomState, m: ItemSpec, params: dict[str, Any], ref: HouseO
     c, kind = candidates(st, m, m.rule, size, ref, prev_same, prev_wall, params=params, copy=copy, run=run)
     order = scoring.rank(st, c, size, kind, st.options.member_noise, spacing=False)
     k = st.options.member_nav_retries
-    choices = scoring.verified_lazily(st, c, order, size, kind, None, k=k)
+    poses = scoring.Verifier(st, c, order, size, kind, None)
+    choices = poses.upto(k)
     support = "wall" if kind == "wall" else "floor"
 
-    def more() -> list[Choice]:
-        return scoring.verified(st, c, order, size, kind, None, k=k + st.options.reach_retries)
+    def more() -> list[Choice]:  # the first k again (not checked again), then more
+        return poses.list(k + st.options.reach_retries)
 
     return st.commit_if_walkable(m, size, choices, support, m.rule, label, anchor_id, more=more)
 

@@ -57,20 +57,54 @@ def verified_lazily(st: RoomState, c: Cands, order: np.ndarray, size: Sequence[f
                     supporter: HouseObject | None, k: int = 1, min_sep_m: float = 0.0) -> Iterator[Choice]:
     """:func:`verified`'s choices, each checked when asked for (the same choices as long as
     the room is the same whenever one is asked for)."""
-    out: list[Choice] = []
-    for i in order[: st.options.verify_factor * k]:
-        ch = Choice(c.xy[i].copy(), float(c.yaw[i]), float(c.z[i]))
-        if min_sep_m and any(
-            math.hypot(float(o.xy[0] - ch.xy[0]), float(o.xy[1] - ch.xy[1])) < min_sep_m
-            and abs(math.cos(o.yaw - ch.yaw) - 1) < 1e-6
-            for o in out
-        ):
-            continue
-        if exact_ok(st, ch, size, kind, supporter):
-            out.append(ch)
-            yield ch
-            if len(out) >= k:
+    return Verifier(st, c, order, size, kind, supporter, min_sep_m).upto(k)
+
+
+class Verifier:
+    """The candidates of ``order`` that pass the exact geometry checks, checked as they are
+    asked for and kept: asking for more (:meth:`upto` with a larger ``k``) goes on where
+    the last ask stopped rather than checking the first ones again. The choices are those
+    of :func:`verified` as long as the room is the same whenever one is checked."""
+
+    def __init__(self, st: RoomState, c: Cands, order: np.ndarray, size: Sequence[float], kind: str,
+                 supporter: HouseObject | None, min_sep_m: float = 0.0) -> None:
+        self.st, self.c, self.order, self.size, self.kind = st, c, order, size, kind
+        self.supporter, self.min_sep_m = supporter, min_sep_m
+        self.found: list[Choice] = []
+        """The choices found so far, in order."""
+        self._next = 0
+        """Position in ``order`` of the next candidate to check."""
+
+    def upto(self, k: int) -> Iterator[Choice]:
+        """The first ``k`` choices among the first ``verify_factor * k`` candidates of
+        ``order``, each found when asked for."""
+        end = min(len(self.order), self.st.options.verify_factor * k)
+        for i in range(k):
+            if i >= len(self.found) and not self._find(end):
                 return
+            yield self.found[i]
+
+    def list(self, k: int) -> list[Choice]:
+        """:meth:`upto` all at once."""
+        return list(self.upto(k))
+
+    def _find(self, end: int) -> bool:
+        """Check candidates up to position ``end`` of ``order`` until one passes."""
+        c, out, sep = self.c, self.found, self.min_sep_m
+        while self._next < end:
+            i = self.order[self._next]
+            self._next += 1
+            ch = Choice(c.xy[i].copy(), float(c.yaw[i]), float(c.z[i]))
+            if sep and any(
+                math.hypot(float(o.xy[0] - ch.xy[0]), float(o.xy[1] - ch.xy[1])) < sep
+                and abs(math.cos(o.yaw - ch.yaw) - 1) < 1e-6
+                for o in out
+            ):
+                continue
+            if exact_ok(self.st, ch, self.size, self.kind, self.supporter):
+                out.append(ch)
+                return True
+        return False
 
 
 def exact_ok(st: RoomState, ch: Choice, size: Sequence[float], kind: str, supporter: HouseObject | None) -> bool:
@@ -93,10 +127,10 @@ def exact_ok(st: RoomState, ch: Choice, size: Sequence[float], kind: str, suppor
         sfp = footprint_polygon(supporter.position, supporter.size, supporter.yaw)
         if not inside(sfp, fp):
             return False
-    if kind != "top":
-        for zone, zlo, zhi in zip(sp.zone_polys, sp.zone_lo, sp.zone_hi, strict=True):
-            if np.any(zlo > hi) or np.any(zhi < lo):
-                continue  # bounding boxes apart: no intersection
+    if kind != "top" and sp.zone_polys:
+        meet = ~((sp.zone_lo > hi).any(1) | (sp.zone_hi < lo).any(1))  # bounding boxes apart: no intersection
+        for z in np.flatnonzero(meet):
+            zone = sp.zone_polys[z]
             fp = Polygon(corners) if fp is None else fp
             if fp.intersects(zone) and fp.intersection(zone).area > 1e-6:
                 return False

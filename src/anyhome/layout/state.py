@@ -3,17 +3,18 @@
 from __future__ import annotations
 
 import re
-from collections.abc import Callable, Iterable, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 from shapely.geometry import Polygon
 
-from anyhome.geometry import walked_up_to
+from anyhome.geometry import blocks_navigation, walked_up_to
 from anyhome.house import Dropped, Floorplan, HouseObject, Room
 from anyhome.layout.options import LayoutOptions
 from anyhome.layout.rules import wrap
-from anyhome.navgrid import NavGrid, NavState
+from anyhome.navgrid import NavGrid, NavState, Obstacle
 from anyhome.plan.spec import ItemSpec, RoomSpec
 from anyhome.space import Placed, RoomSpace, Wall, nav_blocks, rect_corners
 
@@ -44,6 +45,20 @@ class Snapshot:
     placed: list[Placed] | None = None
     """The placed objects then, and the walkways with them: restored without rebuilding."""
     nav: NavState | None = None
+
+
+@dataclass
+class Outcome:
+    """Everything a furnishing step changed, kept to come back to it (:meth:`RoomState.outcome`)
+    rather than taking the step again."""
+
+    placed: list[Placed]
+    keep_clear: list[np.ndarray]
+    dropped: list[Dropped]
+    counters: dict[str, int]
+    waived: list[Obstacle]
+    nav: NavState
+    rng: Mapping[str, Any]
 
 
 @dataclass
@@ -92,6 +107,22 @@ class RoomState:
         else:
             self.nav.set_blocked(self.space.placed)
 
+    def outcome(self) -> Outcome:
+        """The room as it stands, the random state included: :meth:`resume` comes back to it."""
+        return Outcome(list(self.space.placed), list(self.space.keep_clear), list(self.dropped), dict(self.counters),
+                       list(self.nav.waived), self.nav.state(), self.rng.bit_generator.state)
+
+    def resume(self, o: Outcome) -> None:
+        """Come back to the room of :meth:`outcome` (after a :meth:`restore`): the same objects,
+        walkways and random state as when it was taken."""
+        self.space.placed[:] = o.placed
+        self.space.keep_clear[:] = o.keep_clear
+        self.dropped[:] = o.dropped
+        self.counters = dict(o.counters)
+        self.nav.waived[:] = o.waived
+        self.nav.load(o.nav)
+        self.rng.bit_generator.state = o.rng
+
     def drop(self, name: str, reason: str, copies: int = 1) -> None:
         self.dropped.extend(self.dropped_entry(name, reason) for _ in range(copies))
 
@@ -104,11 +135,23 @@ class RoomState:
         self.counters[slug] = k + 1
         return f"{self.room.id}-{slug}-{k}"
 
+    def footprint(self, item: ItemSpec, size: Sequence[float], ch: Choice, support: str
+                  ) -> tuple[np.ndarray, Obstacle | None]:
+        """Corners (4, 2) of ``item`` at ``ch``, as :meth:`commit` makes them, and what it would
+        do to the walkways (None: nothing)."""
+        corners = rect_corners(ch.xy[None], size[:2], [wrap(ch.yaw)])[0]
+        height, tags = float(size[2]), list(item.tags)
+        if not blocks_navigation(item.category, height, support, tags):
+            return corners, None
+        return corners, self.nav.obstacle(corners, reachable=walked_up_to(item.category, height, support, tags))
+
     def commit(self, item: ItemSpec, size: Sequence[float], ch: Choice, support: str, rule: str,
-               group: str | None, anchor: str | None, layer: bool = False) -> HouseObject:
+               group: str | None, anchor: str | None, layer: bool = False,
+               blocked: tuple[np.ndarray, Obstacle | None] | None = None) -> HouseObject:
         """Place ``item`` at ``ch``: it joins the room's objects and blocks walkways
         (``layer``: a rug under furniture, :mod:`anyhome.layout.layers`); a floor object an
-        agent walks up to must stay reachable from then on (:meth:`reach_cost`)."""
+        agent walks up to must stay reachable from then on (:meth:`reach_cost`).
+        ``blocked``: its :meth:`footprint`, already added to the walkways."""
         obj = HouseObject(
             id=self.new_id(item.name), room=self.room.id, name=item.name, category=item.category,
             description=item.description,
@@ -117,10 +160,13 @@ class RoomState:
             support=support, group=group, anchor=anchor, rule=rule, material=item.material,
             tags=list(item.tags),
         )
-        corners = rect_corners(ch.xy[None], size[:2], [obj.yaw])[0]
-        obs = self.nav.obstacle(corners, reachable=walked_up_to(obj.category, obj.size[2], obj.support, obj.tags)) if nav_blocks(obj) else None
+        if blocked is not None:
+            corners, obs = blocked
+        else:
+            corners = rect_corners(ch.xy[None], size[:2], [obj.yaw])[0]
+            obs = self.nav.obstacle(corners, reachable=walked_up_to(obj.category, obj.size[2], obj.support, obj.tags)) if nav_blocks(obj) else None
         self.space.placed.append(Placed(obj, corners, ch.z, ch.z + size[2], support == "floor", obs, layer))
-        if obs is not None:
+        if obs is not None and blocked is None:
             self.nav.add(obs)
         return obj
 
@@ -128,10 +174,13 @@ class RoomState:
         """What the object committed last costs: None when the doors no longer share a
         walkable component with the room, else (earlier objects it cuts off, 1 when it
         cannot be reached itself); (0, 0) when every object stays reachable."""
+        return self._cost(self.space.placed[-1].nav if self.space.placed else None)
+
+    def _cost(self, last: Obstacle | None) -> tuple[int, int] | None:
+        """:meth:`reach_cost` of the walkways as they are, ``last`` the obstacle added last."""
         cut = self.nav.unreached()
         if cut is None:
             return None
-        last = self.space.placed[-1].nav if self.space.placed else None
         itself = int(last in cut)
         return len(cut) - itself, itself
 
@@ -170,12 +219,15 @@ class RoomState:
                 tried += 1
                 if best is not None and best[0] <= (0, 1) and self._surely_unreached(item, size, ch, support):
                     continue  # it would cost (k, 1) at best: no better than the best so far
-                snap = self.snapshot()
-                obj = self.commit(item, size, ch, support, rule, group, anchor)
-                cost = self.reach_cost() if nav_blocks(obj) else (0, 0)
+                blocked = self.footprint(item, size, ch, support)
+                if blocked[1] is None:  # no walkway to close
+                    return self.commit(item, size, ch, support, rule, group, anchor, blocked=blocked)
+                walkways = self.nav.state()  # tried on the walkways alone, the object made only when kept
+                self.nav.add(blocked[1])
+                cost = self._cost(blocked[1])
                 if cost == (0, 0):
-                    return obj
-                self.restore(snap)
+                    return self.commit(item, size, ch, support, rule, group, anchor, blocked=blocked)
+                self.nav.load(walkways)
                 if cost is not None and (best is None or cost < best[0]):
                     best = (cost, ch)
             if best is None and tried:  # every pose closes a walkway: more of them would too

@@ -19,6 +19,7 @@ from anyhome.layout.rules.base import (
     prefer_far,
     yaw_facing,
 )
+from anyhome.layout.rules.place_wall import room_cache
 from anyhome.space import RoomSpace
 
 MAX_CENTER_CANDIDATES = 1200
@@ -36,6 +37,21 @@ class Params(RuleParams):
 
 
 def place_center(space: RoomSpace, size: Sequence[float], facing: str = "any") -> Cands:
+    """Poses on a grid over the room's bounding box (about :data:`MAX_CENTER_CANDIDATES`
+    positions), the nearer its centre the better; read-only arrays, shared between calls
+    (as :func:`~.place_wall.place_wall`'s: they depend on the room and the size alone)."""
+    key = (float(size[0]), float(size[1]), f"center-{facing}")
+    per_room = room_cache(space)
+    got = per_room.get(key)
+    if got is None:
+        got = _place_center(space, size, facing)
+        for a in (got.xy, got.yaw, got.z, got.pref):
+            a.flags.writeable = False
+        per_room[key] = got
+    return Cands(got.xy, got.yaw, got.z, got.pref)
+
+
+def _place_center(space: RoomSpace, size: Sequence[float], facing: str) -> Cands:
     w, d = size[0], size[1]
     lo, hi = space.bmin, space.bmax
     step = max(GRID_STEP_M, float(np.sqrt(space.area / MAX_CENTER_CANDIDATES)))

@@ -78,14 +78,13 @@ def place_front(space: RoomSpace, target: HouseObject, size: Sequence[float], di
     for k, m in enumerate(DISTANCE_FACTORS):
         dists.append(distance_m * m if distance_m > 0 else 0.1 * k)
         prefs.append(1.0 - 0.08 * k)
-    pts: list[np.ndarray] = []
-    yaws: list[float] = []
-    pref: list[float] = []
-    for dd, p in zip(dists, prefs):
-        for lo in LATERAL_SHIFTS_M:
-            pts.append(txy + f * (target.size[1] / 2 + dd + size[1] / 2) + r * (lateral + lo))
-            yaws.append(yaw)
-            pref.append(p - LATERAL_PER_M * abs(lo))
+    # every distance with every sideways shift, the shifts of one distance together
+    dd = np.repeat(np.asarray(dists), len(LATERAL_SHIFTS_M))
+    lo = np.tile(np.asarray(LATERAL_SHIFTS_M), len(dists))
+    grid = txy[None] + f[None] * (target.size[1] / 2 + dd + size[1] / 2)[:, None] + r[None] * (lateral + lo)[:, None]
+    pts: list[np.ndarray] = list(grid)
+    yaws: list[float] = [yaw] * len(grid)
+    pref: list[float] = (np.repeat(np.asarray(prefs), len(LATERAL_SHIFTS_M)) - LATERAL_PER_M * np.abs(lo)).tolist()
     # snap flush to a wall straight ahead (a TV stand in front of a sofa)
     for wall in space.walls:
         if float(f @ wall.n) > -0.999:

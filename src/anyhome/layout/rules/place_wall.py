@@ -40,10 +40,11 @@ class Params(RuleParams):
 _CACHE: dict[int, tuple[weakref.ref[RoomSpace], dict[tuple[float, float, str], Cands]]] = {}
 """Wall poses by room (its id, while it lives) and (width, depth, which wall): they depend
 on the room's outline alone, and every member beside or in front of something asks for
-them again."""
+them again (the centre grid of :mod:`.place_center` is kept here too)."""
 
 
-def _room_cache(space: RoomSpace) -> dict[tuple[float, float, str], Cands]:
+def room_cache(space: RoomSpace) -> dict[tuple[float, float, str], Cands]:
+    """The poses kept for ``space`` while it lives, by (width, depth, what they are)."""
     key = id(space)
     got = _CACHE.get(key)
     if got is None or got[0]() is not space:
@@ -57,7 +58,7 @@ def place_wall(space: RoomSpace, size: Sequence[float], which: str = "any") -> C
     see :class:`Params`); read-only arrays, shared between calls (a caller changing a
     preference makes a new array)."""
     key = (float(size[0]), float(size[1]), which)
-    per_room = _room_cache(space)
+    per_room = room_cache(space)
     got = per_room.get(key)
     if got is None:
         got = _place_wall(space, size, which)
