@@ -19,7 +19,7 @@ from anyhome.layout.rules.base import (
     prefer_far,
     yaw_facing,
 )
-from anyhome.layout.rules.place_wall import room_cache
+from anyhome.layout.rules.place_wall import cached_poses
 from anyhome.space import RoomSpace
 
 MAX_CENTER_CANDIDATES = 1200
@@ -40,15 +40,7 @@ def place_center(space: RoomSpace, size: Sequence[float], facing: str = "any") -
     """Poses on a grid over the room's bounding box (about :data:`MAX_CENTER_CANDIDATES`
     positions), the nearer its centre the better; read-only arrays, shared between calls
     (as :func:`~.place_wall.place_wall`'s: they depend on the room and the size alone)."""
-    key = (float(size[0]), float(size[1]), f"center-{facing}")
-    per_room = room_cache(space)
-    got = per_room.get(key)
-    if got is None:
-        got = _place_center(space, size, facing)
-        for a in (got.xy, got.yaw, got.z, got.pref):
-            a.flags.writeable = False
-        per_room[key] = got
-    return Cands(got.xy, got.yaw, got.z, got.pref)
+    return cached_poses(space, size, f"center-{facing}", lambda: _place_center(space, size, facing))
 
 
 def _place_center(space: RoomSpace, size: Sequence[float], facing: str) -> Cands:

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import weakref
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from typing import Literal
 
 import numpy as np
@@ -53,19 +53,25 @@ def room_cache(space: RoomSpace) -> dict[tuple[float, float, str], Cands]:
     return got[1]
 
 
-def place_wall(space: RoomSpace, size: Sequence[float], which: str = "any") -> Cands:
-    """Every pose with the back of a box ``size`` against a wall of ``space`` (``which``:
-    see :class:`Params`); read-only arrays, shared between calls (a caller changing a
+def cached_poses(space: RoomSpace, size: Sequence[float], what: str, build: Callable[[], Cands]) -> Cands:
+    """``build()``'s poses for a box ``size`` in ``space``, made once per room and kind
+    (``what``) and kept as read-only arrays shared between calls (a caller changing a
     preference makes a new array)."""
-    key = (float(size[0]), float(size[1]), which)
+    key = (float(size[0]), float(size[1]), what)
     per_room = room_cache(space)
     got = per_room.get(key)
     if got is None:
-        got = _place_wall(space, size, which)
+        got = build()
         for a in (got.xy, got.yaw, got.z, got.pref):
             a.flags.writeable = False
         per_room[key] = got
     return Cands(got.xy, got.yaw, got.z, got.pref)
+
+
+def place_wall(space: RoomSpace, size: Sequence[float], which: str = "any") -> Cands:
+    """Every pose with the back of a box ``size`` against a wall of ``space`` (``which``:
+    see :class:`Params`); read-only arrays, shared between calls (:func:`cached_poses`)."""
+    return cached_poses(space, size, which, lambda: _place_wall(space, size, which))
 
 
 def _place_wall(space: RoomSpace, size: Sequence[float], which: str) -> Cands:
