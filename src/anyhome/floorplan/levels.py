@@ -233,7 +233,7 @@ def _stacked(spec: HouseSpec, numbers: list[int], rng: np.random.Generator, opti
             except FloorplanError as e:
                 why, blocked, tried = str(e), False, tried + 1
                 continue
-            for layout in layouts[:opts.storey_candidates - tried]:
+            for layout in layouts[:1]:  # one search's best: separate searches differ more than one search's layouts
                 tried += 1
                 try:
                     hang, placed = _best_placed(spec, plans, layout, k, ref)
