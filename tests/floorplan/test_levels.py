@@ -255,8 +255,8 @@ def test_storey_is_placed_where_it_hangs_least():
                        ("a two-storey farmhouse with a big kitchen", 2)):  # fmt: skip
         spec = get_planner("offline", kb).plan(text, stage_rngs(seed)["plan"])
         rng = np.random.default_rng(seed)
-        ground = levels._solve_storey(spec, 0, rng, None)
-        upper = levels._solve_storey(spec, 1, rng, None)
+        ground = levels._solve_storey(spec, 0, rng, None)[0]
+        upper = levels._solve_storey(spec, 1, rng, None)[0]
         placed = levels._best_placed(spec, {0: ground}, upper, 1, 0)[1]
         gx, gy = levels._rect(ground.room(levels.stair_room(spec, 0)))[:2]
         ux, uy = levels._rect(upper.room(levels.stair_room(spec, 1)))[:2]
@@ -500,3 +500,59 @@ def test_the_stairs_place_is_recorded_and_a_file_without_it_finds_the_same_place
     bare = townhouse.model_copy(update={"levels": [lv.model_copy(update={"stairs_at": None}) for lv in townhouse.levels]})
     assert [(o.position, o.yaw) for o in stairs_objects(bare.floorplan)] == \
         [(o.position, o.yaw) for o in stairs_objects(townhouse.floorplan)]
+
+
+def test_best_placed_is_the_least_hanging_place_the_stair_fits():
+    """The placement searched in order of hang (the stair looked for in that order) is
+    the least hanging of all sixteen where the stair fits, as found by trying every one."""
+    import numpy as np
+
+    from anyhome.floorplan import levels
+    from anyhome.plan import get_planner
+    from anyhome.plan.knowledge import knowledge_base
+    from anyhome.stages import stage_rngs
+
+    kb = knowledge_base()
+    compared = 0
+    for text, seed in (("a three-storey townhouse", 1), ("a two-storey farmhouse with a big kitchen", 2)):
+        spec = get_planner("offline", kb).plan(text, stage_rngs(seed)["plan"])
+        rng = np.random.default_rng(seed)
+        ground = levels._solve_storey(spec, 0, rng, None)[0]
+        upper = levels._solve_storey(spec, 1, rng, None)
+        heights = levels.storey_heights_m(spec)
+        stair, ref = levels.stair_room(spec, 1), levels.stair_room(spec, 0)
+        rx, ry, rw, rh = levels._rect(ground.room(ref))
+        for layout in upper:
+            hangs = []
+            for fx, fy in levels.MIRRORS:
+                m = levels._mirrored(layout, stair, fx, fy)
+                x0, y0, w, h = levels._rect(m.room(stair))
+                for cx, cy in ((0, 0), (1, 0), (0, 1), (1, 1)):
+                    cand = levels._moved(m, rx + cx * rw - (x0 + cx * w), ry + cy * rh - (y0 + cy * h))
+                    if levels.stack_box([(0, ground), (1, cand)], heights) is not None:
+                        hangs.append(levels._outside_m2([r.polygon for r in cand.rooms], [r.polygon for r in ground.rooms]))
+            if not hangs:
+                continue
+            hang, placed = levels._best_placed(spec, {0: ground}, layout, 1, 0)
+            assert hang == pytest.approx(min(hangs), abs=1e-6)
+            assert levels.stack_box([(0, ground), (1, placed)], heights) is not None
+            compared += 1
+    assert compared >= 2
+
+
+def test_storey_layouts_all_hold_their_stair():
+    import numpy as np
+
+    from anyhome.floorplan import levels
+    from anyhome.plan import get_planner
+    from anyhome.plan.knowledge import knowledge_base
+    from anyhome.stages import stage_rngs
+
+    spec = get_planner("offline", knowledge_base()).plan("a three-storey townhouse", stage_rngs(0)["plan"])
+    heights = levels.storey_heights_m(spec)
+    for k in (0, 1, 2):
+        found = levels._solve_storey(spec, k, np.random.default_rng(k), None)
+        assert found
+        for plan in found:
+            assert levels.stack_box([(k, plan)], heights) is not None
+            assert k == 0 or not any("outside" in d.rooms for d in plan.doors)

@@ -158,3 +158,16 @@ def test_openings_fit_under_low_ceilings() -> None:
     assert all(w.sill + w.height <= 1.9 + 1e-9 for w in fp.windows)
     default = solve_floorplan(family_home(), np.random.default_rng(0))
     assert {d.height for d in default.doors} == {2.1}
+
+
+def test_candidates_start_with_the_floorplan_solve_floorplan_gives() -> None:
+    from anyhome.floorplan.options import FloorplanOptions
+    from anyhome.floorplan.solver import floorplan_candidates
+
+    opts = FloorplanOptions()
+    for spec in (family_home(), planner_like_program(np.random.default_rng(2), 5)):
+        found = floorplan_candidates(spec, np.random.default_rng(5), opts)
+        assert 1 <= len(found) <= opts.wanted_candidates
+        assert found[0].model_dump() == solve_floorplan(spec, np.random.default_rng(5), opts).model_dump()
+        for plan in found:
+            check_floorplan(spec, plan)

@@ -65,22 +65,32 @@ def anneal(tree: Cut | int, rect: Rect, rooms: TuneRooms, rng: np.random.Generat
     expr = to_postfix(tree)
     if len(expr) < 3:
         return tree
-    cost = _cost(expr, rect, rooms)
+    costs: dict[tuple[Token, ...], float] = {}  # the moves come back to the same expressions: two in three, measured
+
+    def cost_of(e: list[Token]) -> float:
+        key = tuple(e)
+        if key not in costs:
+            costs[key] = _cost(e, rect, rooms)
+        return costs[key]
+
+    cost = cost_of(expr)
     best, best_cost = list(expr), cost
     steps = opts.anneal_steps_per_room * (len(expr) + 1) // 2
+    patience = max(1, math.ceil(opts.anneal_patience_frac * steps))
+    found_at = 0  # the step that found the best tree so far
     for step in range(steps):
-        if best_cost < 1e-9:
+        if best_cost < 1e-9 or step - found_at > patience:
             break
         t0, t1 = opts.anneal_start_temperature, opts.anneal_end_temperature
         temp = t0 * (t1 / t0) ** (step / steps)
         cand = _move(expr, rng)
         if cand is None:
             continue
-        c = _cost(cand, rect, rooms)
+        c = cost_of(cand)
         if c <= cost or rng.random() < math.exp((cost - c) / temp):
             expr, cost = cand, c
             if c < best_cost:
-                best, best_cost = list(cand), c
+                best, best_cost, found_at = list(cand), c, step
     return from_postfix(best, rect, rooms.target_cells)
 
 

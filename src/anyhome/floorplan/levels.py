@@ -22,6 +22,13 @@ stair rises in or arrives in, with no landing of its own (:func:`stairs_opened`)
 layout keeps the flights and the floor at their feet clear (:func:`stair_zones`). Storeys that will not stack
 are tried again with roomier stairwells, then laid out on one storey.
 
+Work is reused between tries: every valid layout one solver search of a storey found
+(:func:`~anyhome.floorplan.solver.floorplan_candidates`, best score first) is checked for
+its stair before the storey is searched again, and they are the layouts an upper storey
+chooses among for the least overhang; the sixteen places of a storey on the one below
+are ranked by overhang (one union of its floor, moved) and the stair, the costly test,
+is looked for in that order only until it fits.
+
 The narrow interface (:func:`solve_levels`, :func:`stairs_objects`) is what the pipeline
 sees; a solver that takes a footprint and a fixed stairwell rectangle can replace the
 per-storey solve without changing it. Storeys are not solved inside the floor below: of a
@@ -50,7 +57,7 @@ from anyhome.floorplan.doors import DOOR_WIDTH_M, ENTRANCE_WIDTH_M
 from anyhome.floorplan.grid import SNAP_M
 from anyhome.floorplan.merge import merge_open_plan
 from anyhome.floorplan.options import FloorplanOptions
-from anyhome.floorplan.solver import OPENING_HEADROOM_M, solve_floorplan
+from anyhome.floorplan.solver import OPENING_HEADROOM_M, floorplan_candidates, solve_floorplan
 from anyhome.floorplan.stairs import (
     HALL_DOOR_M,
     HALL_DOORS,
@@ -210,28 +217,37 @@ def _levels_tried(spec: HouseSpec, numbers: list[int], rng: np.random.Generator,
 
 def _stacked(spec: HouseSpec, numbers: list[int], rng: np.random.Generator, options: FloorplanOptions | None) -> Floorplan:
     opts = options or FloorplanOptions()
-    plans: dict[int, Floorplan] = {0: _solve_storey(spec, 0, rng, options)}
+    plans: dict[int, Floorplan] = {0: _solve_storey(spec, 0, rng, options)[0]}
     outward = [n for n in numbers if n > 0] + sorted((n for n in numbers if n < 0), reverse=True)
     for k in outward:  # each storey on (or under) the one next to it toward the ground
         ref = k - 1 if k > 0 else k + 1
         best: tuple[float, Floorplan] | None = None
         why = ""
         blocked = True  # every try failed only for want of a place beside a through room
-        for _ in range(opts.storey_candidates):  # a few layouts of the storey; the one that sits best
+        tried = 0
+        while tried < opts.storey_candidates:  # a few layouts of the storey; the one that sits best
             try:
-                hang, placed = _best_placed(spec, plans, _solve_storey(spec, k, rng, options), k, ref)
+                layouts = _solve_storey(spec, k, rng, options)  # one search's layouts, all of them tried
             except _Unsolvable:
                 raise
-            except _ThroughBlocked as e:
-                why = str(e)
-                continue
             except FloorplanError as e:
-                why, blocked = str(e), False
+                why, blocked, tried = str(e), False, tried + 1
                 continue
-            if best is None or hang < best[0] - 1e-6:
-                best = (hang, placed)
-            if hang <= opts.overhang_ok_m2:
-                break
+            for layout in layouts[:1]:  # one search's best: separate searches differ more than one search's layouts
+                tried += 1
+                try:
+                    hang, placed = _best_placed(spec, plans, layout, k, ref)
+                except _ThroughBlocked as e:
+                    why = str(e)
+                    continue
+                except FloorplanError as e:
+                    why, blocked = str(e), False
+                    continue
+                if best is None or hang < best[0] - 1e-6:
+                    best = (hang, placed)
+                if hang <= opts.overhang_ok_m2:
+                    tried = opts.storey_candidates
+                    break
         if best is None:
             if blocked and through_rooms(spec):  # as before: through rooms as ordinary ones
                 token = _AS_ORDINARY.set(True)
@@ -451,27 +467,37 @@ def _best_placed(spec: HouseSpec, plans: dict[int, Floorplan], plan: Floorplan, 
     below = [r.polygon for r in plans[ref].rooms if r.id not in through]
     rising = [r.polygon for r in plans[ref].rooms if r.id in through]
     heights = storey_heights_m(spec)
-    best: tuple[float, Floorplan] | None = None
-    fits = False
+    from shapely import affinity
+
+    floor = _union([r.polygon for r in plan.rooms])  # the storey's floor, once: each place moves it
+    under = _union(below).buffer(1e-6)
+    through_floor = _union(rising) if rising else None
+    x0, y0, w, h = _rect(plan.room(stair))
+    places: list[tuple[float, bool, bool, bool, float, float]] = []  # (hang, over a room rising through, mirrors, shift)
     for fx, fy in MIRRORS:
-        mirrored = _mirrored(plan, stair, fx, fy)
-        x0, y0, w, h = _rect(mirrored.room(stair))
+        mirrored = affinity.scale(floor, -1.0 if fx else 1.0, -1.0 if fy else 1.0, origin=(x0 + w / 2, y0 + h / 2))
         for cx, cy in ((0, 0), (1, 0), (0, 1), (1, 1)):  # south-west, south-east, north-west, north-east
-            cand = _moved(mirrored, rx + cx * rw - (x0 + cx * w), ry + cy * rh - (y0 + cy * h))
-            if stack_box([*plans.items(), (k, cand)], heights) is None:
-                continue
-            fits = True
-            outlines = [r.polygon for r in cand.rooms]
-            if rising and _overlap_m2(outlines, rising) > THROUGH_OVERLAP_OK_M2:
-                continue
-            hang = _outside_m2(outlines, below)
-            if best is None or hang < best[0] - 1e-6:
-                best = (hang, cand)
-    if best is None and fits:
-        raise _ThroughBlocked(f"every place for level {k} lies over a room rising through it from level {ref}")
-    if best is None:
-        raise FloorplanError(f"no room for a flight of stairs between {ref_stair!r} and {stair!r}")
-    return best
+            dx, dy = rx + cx * rw - (x0 + cx * w), ry + cy * rh - (y0 + cy * h)  # the stairwell stays put when mirrored
+            moved = affinity.translate(mirrored, dx, dy)
+            over = through_floor is not None and float(moved.intersection(through_floor).area) > THROUGH_OVERLAP_OK_M2
+            places.append((float(moved.difference(under).area), over, fx, fy, dx, dy))
+    # the stair is looked for (the costly test) in order of hang, the first place it fits wins
+    for hang, over, fx, fy, dx, dy in sorted(places, key=lambda t: (t[1], round(t[0], 6))):
+        cand = _moved(_mirrored(plan, stair, fx, fy), dx, dy)
+        if stack_box([*plans.items(), (k, cand)], heights) is None:
+            continue
+        if over:
+            raise _ThroughBlocked(f"every place for level {k} lies over a room rising through it from level {ref}")
+        return hang, cand
+    raise FloorplanError(f"no room for a flight of stairs between {ref_stair!r} and {stair!r}")
+
+
+def _union(outlines: Iterable):
+    """The union of the polygons ``outlines`` (shapely)."""
+    from shapely.geometry import Polygon
+    from shapely.ops import unary_union
+
+    return unary_union([Polygon(p).buffer(0) for p in outlines])
 
 
 def _outside_m2(outlines: Iterable, below: Iterable) -> float:
@@ -481,15 +507,6 @@ def _outside_m2(outlines: Iterable, below: Iterable) -> float:
 
     floor = unary_union([Polygon(p).buffer(0) for p in outlines])
     return float(floor.difference(unary_union([Polygon(p).buffer(0) for p in below]).buffer(1e-6)).area)
-
-
-def _overlap_m2(outlines: Iterable, others: Iterable) -> float:
-    """Area of the union of ``outlines`` that lies inside the union of ``others``."""
-    from shapely.geometry import Polygon
-    from shapely.ops import unary_union
-
-    floor = unary_union([Polygon(p).buffer(0) for p in outlines])
-    return float(floor.intersection(unary_union([Polygon(p).buffer(0) for p in others])).area)
 
 
 def overhang_m2(rooms: Iterable) -> float:
@@ -542,7 +559,10 @@ def _one_storey(spec: HouseSpec, rng: np.random.Generator, options: FloorplanOpt
     return plan.model_copy(update={"warnings": [*plan.warnings, f"{ONE_STOREY_NOTE} ({why}); every room is on the ground floor"]})
 
 
-def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options: FloorplanOptions | None) -> Floorplan:
+def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options: FloorplanOptions | None) -> list[Floorplan]:
+    """Storey ``k`` of ``spec`` laid out on its own: the layouts of one solver search
+    whose stairwell holds the stair (:func:`_stair_fitted`), best score first; the
+    search is run again (at most ``level_attempts`` times) while none does."""
     stair = stair_room(spec, k)
     sub = _storey_spec(spec, k, options or FloorplanOptions())
     heights = storey_heights_m(spec)
@@ -553,8 +573,8 @@ def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options: Fl
     wide_m = short_m if narrow is not None and k in narrow else stair_hall_width_m(spec, k)
     for _ in range(attempts):
         try:
-            plan = solve_floorplan(sub, rng, options, min_length_m={stair: long_m}, min_side_m={stair: wide_m},
-                                   stair_m={stair: flight_length_m(heights, k)})
+            found = floorplan_candidates(sub, rng, options, min_length_m={stair: long_m}, min_side_m={stair: wide_m},
+                                         stair_m={stair: flight_length_m(heights, k)})
         except FloorplanError as e:  # its own bounded tries all failed: trying again rarely helps
             if wide_m <= short_m:
                 raise _Unsolvable(f"could not lay out level {k} ({e})") from None
@@ -562,17 +582,33 @@ def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options: Fl
             if narrow is not None:
                 narrow.add(k)
             continue
-        if k != 0:
-            plan = plan.model_copy(update={"doors": [d for d in plan.doors if "outside" not in d.rooms]})
-        x0, y0, w, h = _rect(plan.room(stair))
-        if w < h:
-            plan = _turned(plan)
-            x0, y0, w, h = _rect(plan.room(stair))
-        if w >= long_m - 1e-6 and h >= short_m - 1e-6:
-            for slid in [plan] + _doors_cleared(plan, stair, flight_length_m(heights, k)):
-                if stack_box([(k, slid)], heights) is not None:
-                    return slid
+        fits = [f for plan in found if (f := _stair_fitted(plan, stair, k, heights, long_m, short_m)) is not None]
+        if fits:
+            return fits
     raise FloorplanError(f"could not lay out level {k} in {attempts} attempts ({why})")
+
+
+def _stair_fitted(plan: Floorplan, stair: str, k: int, heights: dict[int, float], long_m: float,
+                  short_m: float) -> Floorplan | None:
+    """Storey ``k`` (``plan``, as the solver laid it out on its own) turned so its
+    stairwell ``stair`` runs east-west, its stand-in entrance dropped (above or below the
+    ground), with its stairwell's doors slid clear of the stair where needed
+    (:func:`_doors_cleared`); None where the stairwell is not a rectangle of at least
+    ``long_m`` x ``short_m`` or its stair has no place (:func:`stack_box`)."""
+    if k != 0:
+        plan = plan.model_copy(update={"doors": [d for d in plan.doors if "outside" not in d.rooms]})
+    x0, y0, w, h = _rect(plan.room(stair))
+    if w < h:
+        plan = _turned(plan)
+        x0, y0, w, h = _rect(plan.room(stair))
+    if w < long_m - 1e-6 or h < short_m - 1e-6:
+        return None
+    if stack_box([(k, plan)], heights) is not None:
+        return plan
+    for slid in _doors_cleared(plan, stair, flight_length_m(heights, k)):  # only where the doors as laid out are in the way
+        if stack_box([(k, slid)], heights) is not None:
+            return slid
+    return None
 
 
 def _doors_cleared(plan: Floorplan, stair: str, length_m: float) -> list[Floorplan]:

@@ -38,10 +38,14 @@ def seed_positions(
     pos = pos + rng.uniform(-opts.seed_jitter_cells, opts.seed_jitter_cells, size=pos.shape)
     border = _border_cells(grid)
     center = free.mean(axis=0)
+    inside = grid.owner == FREE
     for _ in range(opts.seed_force_iterations):
+        before = pos
         pos = pos + _repel(pos, radius, opts) + _attract(pos, radius, edges, opts)
         pos = pos + _to_edge(pos, radius, exterior, border, opts) + hub[:, None] * opts.seed_center_gain * (center - pos)
-        pos = _snap_inside(pos, free, grid.owner == FREE)
+        pos = _snap_inside(pos, free, inside)
+        if float(np.abs(pos - before).max()) <= opts.seed_settled_cells:  # settled: further steps barely move a seed
+            break
     return pos
 
 

@@ -103,6 +103,34 @@ def solve_floorplan(
         if no attempt within ``options.max_attempts`` satisfies the hard constraints,
         or ``footprint``/``fixed`` cannot be honoured.
     """
+    prog, layouts = _layouts(spec, rng, options, kb, footprint, fixed, min_length_m, min_side_m, stair_m)
+    return _to_floorplan(spec, prog, layouts[0])
+
+
+def floorplan_candidates(
+    spec: HouseSpec,
+    rng: np.random.Generator,
+    options: FloorplanOptions | None = None,
+    *,
+    kb: KnowledgeBase | None = None,
+    min_length_m: Mapping[str, float] | None = None,
+    min_side_m: Mapping[str, float] | None = None,
+    stair_m: Mapping[str, float] | None = None,
+) -> list[Floorplan]:
+    """Every valid layout one :func:`solve_floorplan` search found (up to
+    ``options.wanted_candidates``), best score first: the first is the floorplan
+    :func:`solve_floorplan` gives with the same generator. A caller with checks of its
+    own (a storey whose stair must fit and stack) tries the others before searching
+    again. Same parameters and errors as :func:`solve_floorplan`."""
+    prog, layouts = _layouts(spec, rng, options, kb, None, None, min_length_m, min_side_m, stair_m)
+    return [_to_floorplan(spec, prog, lay) for lay in layouts]
+
+
+def _layouts(spec: HouseSpec, rng: np.random.Generator, options: FloorplanOptions | None, kb: KnowledgeBase | None,
+             footprint: object | None, fixed: Mapping[str, tuple[float, float, float, float]] | None,
+             min_length_m: Mapping[str, float] | None, min_side_m: Mapping[str, float] | None,
+             stair_m: Mapping[str, float] | None) -> tuple[Program, list[Layout]]:
+    """The program of ``spec`` and its valid layouts, best score first (see :func:`solve_floorplan`)."""
     opts = options or FloorplanOptions()
     if kb is None:
         from anyhome.plan.knowledge import knowledge_base
@@ -120,11 +148,10 @@ def solve_floorplan(
     if footprint is not None or fixed:
         from anyhome.floorplan.fixed import solve_in_footprint
 
-        lay = solve_in_footprint(prog, rng, footprint, dict(fixed or {}))
-        return _to_floorplan(spec, prog, lay)
+        return prog, [solve_in_footprint(prog, rng, footprint, dict(fixed or {}))]
     ring = _court_ring(prog, rng, opts)
     if ring is not None:
-        return _to_floorplan(spec, prog, ring)
+        return prog, [ring]
     slicing_attempts = opts.slicing_attempts if prog.n <= opts.slicing_max_rooms else 0
 
     def attempt(i: int) -> Layout | str:
@@ -133,8 +160,7 @@ def solve_floorplan(
         return _long_enough(prog, _constructed_attempt(prog, spine_owner(prog, rng), rng, opts,
                                                        opts.spine_score_handicap))
 
-    best = best_attempt(attempt, prog.n, opts)
-    return _to_floorplan(spec, prog, best)
+    return prog, best_attempts(attempt, prog.n, opts)
 
 
 def _long_enough(prog: Program, lay: Layout | str) -> Layout | str:
@@ -172,6 +198,14 @@ def best_attempt(attempt: Callable[[int], Layout | str], n_rooms: int, opts: Flo
     """The best-scoring of the first ``opts.wanted_candidates`` valid layouts that
     ``attempt(i)`` (a layout, or why it failed) gives in ``opts.max_attempts`` tries; a
     FloorplanError naming the commonest failure when none is valid."""
+    return best_attempts(attempt, n_rooms, opts, where)[0]
+
+
+def best_attempts(attempt: Callable[[int], Layout | str], n_rooms: int, opts: FloorplanOptions,
+                  where: str = "") -> list[Layout]:
+    """The first ``opts.wanted_candidates`` valid layouts that ``attempt(i)`` gives in
+    ``opts.max_attempts`` tries, best score first (ties in the order found); a
+    FloorplanError naming the commonest failure when none is valid."""
     failures: Counter[str] = Counter()
     found: list[Layout] = []
     for i in range(opts.max_attempts):
@@ -189,7 +223,7 @@ def best_attempt(attempt: Callable[[int], Layout | str], n_rooms: int, opts: Flo
             f"(most often: {reason}, {count}x)"
         )
     log.debug("floorplan: %d attempts, failures %s", i + 1, dict(failures))
-    return min(found, key=lambda lay: lay.score)
+    return sorted(found, key=lambda lay: lay.score)
 
 
 def floorplan_errors(spec: HouseSpec) -> list[str]:
