@@ -24,8 +24,9 @@ are tried again with roomier stairwells, then laid out on one storey.
 
 Work is reused between tries: every valid layout one solver search of a storey found
 (:func:`~anyhome.floorplan.solver.floorplan_candidates`, best score first) is checked for
-its stair before the storey is searched again, and they are the layouts an upper storey
-chooses among for the least overhang; the sixteen places of a storey on the one below
+its stair before the storey is searched again; an upper storey chooses for the least
+overhang among the best layouts of separate searches (one search's layouts differ too
+little: with them the storey houses' hallways grew); the sixteen places of a storey on the one below
 are ranked by overhang (one union of its floor, moved) and the stair, the costly test,
 is looked for in that order only until it fits.
 
