@@ -150,10 +150,9 @@ class FloorplanOptions:
     # -------------------------------------------------- seeds (force layout)
     seed_force_iterations: int = _opt(60, 0, 10_000)
     """Relaxation steps of the force layout of the room seeds."""
+    # off by default: 0.01 changed one-storey plans, and with them the furnishing
     seed_settled_cells: float = _opt(0.0, 0.0, 10.0)
-    """The force layout stops early once no seed moves farther than this in a step (cells;
-    0: it runs every step). 0 by default: 0.01 changed one-storey plans, and with them the
-    furnishing (two key items dropped on the public prompts)."""
+    """The force layout stops once no seed moves farther than this in a step (cells; 0, the default: never early)."""
     seed_jitter_cells: float = _opt(0.4, 0.0, 0.5)
     """Largest random offset of a seed from its drawn cell centre."""
     seed_attract_gain: float = _opt(0.3, 0.0, 1.0)
@@ -206,9 +205,9 @@ class FloorplanOptions:
     """Final temperature of the annealing (geometric schedule from the start)."""
     # measured on storey programs: of the runs that never reach cost 0, half found their
     # best at the first step and nine in ten within the first fifth of the schedule
+    # off by default: 0.25 changed one-storey plans (two key items dropped on the public prompts)
     anneal_patience_frac: float = _opt(1.0, 0.0, 1.0)
-    """The annealing stops once this share of its schedule passed without a better tree (1:
-    never early, the default: 0.25 changed one-storey plans, and with them the furnishing)."""
+    """The annealing stops once this share of its schedule passed without a better tree (1, the default: never early)."""
 
     # ---------------------------------------------------------------- tuning
     tune_rounds: int = _opt(30, 0, 100_000)
