@@ -29,7 +29,7 @@ from typing import Any
 from anyhome.evaluate import evaluate_house
 from anyhome.evaluate.coverage import matches_any, object_text, room_text
 from anyhome.evaluate.expectations import load_prompt_records
-from anyhome.house import House
+from anyhome.house import House, stand_ins
 from anyhome.pipeline import generate
 
 HERE = Path(__file__).resolve().parent
@@ -72,7 +72,7 @@ def run_set(path: Path, seeds: list[int]) -> dict[str, Any]:
                 continue
             cov.append(evaluate_house(house, rec.get("expect")).coverage.score)
             objects += len(house.objects)
-            stand += sum(bool((o.asset or {}).get("approximate")) for o in house.objects)
+            stand += len(stand_ins(house.objects))
             hits = forbidden(house, rec.get("forbid") or {})
             if hits:
                 bad_houses += 1

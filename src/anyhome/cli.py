@@ -19,6 +19,7 @@ if TYPE_CHECKING:
 
 from anyhome import __version__
 from anyhome.errors import AnyHomeError
+from anyhome.house import stand_ins
 from anyhome.sanitize import clean_text, redact_url
 
 STAGE_LABELS = {
@@ -112,7 +113,7 @@ def cmd_generate(args: argparse.Namespace) -> int:
         print(json.dumps({
             "out": str(args.out), "files": [str(f) for f in files], "rooms": len(house.rooms),
             "objects": len(house.objects), "dropped": len(house.dropped),
-            "stand_ins": len(_stand_ins(house)),
+            "stand_ins": len(stand_ins(house.objects)),
             "warnings": house.warnings, "timings_s": timings, "total_s": total,
             **({"llm": _llm_usage(planner, house)} if args.planner == "llm" else {}),
         }))
@@ -179,11 +180,6 @@ def _print_llm(u: dict) -> None:
           + (f" ({', '.join(fell[:6])}{', ...' if len(fell) > 6 else ''})" if fell else ""))
 
 
-def _stand_ins(house) -> list:
-    """Objects whose asset record says the mesh only stands in for them (``approximate``)."""
-    return [o for o in house.objects if (o.asset or {}).get("approximate")]
-
-
 def _print_summary(house, files, timings: dict[str, float], total: float) -> None:
     per_room = Counter(o.room for o in house.objects)
     print(f"House: {len(house.rooms)} rooms, {len(house.doors)} doors, "
@@ -198,7 +194,7 @@ def _print_summary(house, files, timings: dict[str, float], total: float) -> Non
             print(f"  {_shown(d.room)}: {_shown(d.name)} ({_shown(d.reason)}){key}")
         if len(house.dropped) > 10:
             print(f"  ... and {len(house.dropped) - 10} more (see house.json 'dropped')")
-    if stand := _stand_ins(house):
+    if stand := stand_ins(house.objects):
         names = sorted(Counter(o.name for o in stand).items())
         shown = ", ".join(f"{_shown(n)}" + (f" x{k}" if k > 1 else "") for n, k in names[:8])
         print(f"{len(stand)} object(s) shown with a stand-in mesh (no family draws them yet): "

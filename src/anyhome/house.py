@@ -12,7 +12,7 @@ import math
 import os
 import re
 import tempfile
-from collections.abc import Iterator, Sequence
+from collections.abc import Iterable, Iterator, Sequence
 from functools import lru_cache
 from pathlib import Path
 from typing import Any, Final, Literal
@@ -355,6 +355,12 @@ class House(_Model):
         path = d / HOUSE_FILE
         atomic_write_text(path, self.to_json())
         return path
+
+
+def stand_ins(objects: Iterable[HouseObject]) -> list[HouseObject]:
+    """The objects whose asset record says their mesh only stands in for them
+    (``approximate``: no procedural family draws them as themselves yet)."""
+    return [o for o in objects if (o.asset or {}).get("approximate")]
 
 
 def load(path: str | os.PathLike[str]) -> House:

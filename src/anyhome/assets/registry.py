@@ -195,13 +195,13 @@ def family_for(category: str, name: str = "", kb: KnowledgeBase | None = None) -
 def is_stand_in(category: str, name: str, family: str, kb: KnowledgeBase | None = None) -> bool:
     """Whether the family an object is built as draws something else: the generic block,
     or a name or category that assets.yaml ``stand_ins`` lists (the whole name, or its
-    last one to three words: "old sauna heater")."""
+    last words: "old sauna heater")."""
     if family == GENERIC:
         return True
     listed = _tables(_kb(kb)).stand_ins
     words = _norm(name).split("_")
-    tails = {"_".join(words[-n:]) for n in range(1, min(3, len(words)) + 1)}
-    return _norm(category) in listed or bool(tails & listed) or _norm(name) in listed
+    tails = {"_".join(words[-n:]) for n in range(1, len(words) + 1)}
+    return _norm(category) in listed or bool(tails & listed)
 
 
 def object_rng(obj: HouseObject) -> np.random.Generator:

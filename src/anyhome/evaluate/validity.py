@@ -18,7 +18,7 @@ from dataclasses import dataclass
 
 from anyhome.evaluate import floorplan, navigation, objects, values
 from anyhome.evaluate.report import Violation
-from anyhome.house import House, is_habitable
+from anyhome.house import House, is_habitable, stand_ins
 
 RULES: tuple[int | str, ...] = (1, 2, 3, 4, 5, 6, "windows", "ids", "values", "heights",
                                 "limits")
@@ -121,7 +121,7 @@ def _check_one(house: House) -> ValidityResult:
         "nav_cell_m": nav.cell_m,
         "complete": not index.notes and nav.checked,
         "objects_per_habitable_room": in_habitable / len(habitable) if habitable else 0.0,
-        "n_stand_in_objects": sum(bool((o.asset or {}).get("approximate")) for o in full.objects),
+        "n_stand_in_objects": len(stand_ins(full.objects)),
         "n_floor_objects": len(nav.targets_reached),
         "n_floor_objects_reached": sum(nav.targets_reached),
     }

@@ -341,14 +341,14 @@ def apply_mention(kb: KnowledgeBase, m: Mention, groups: list[Group], ornaments:
 
 def period_rules(kb: KnowledgeBase, styles: list[str]) -> tuple[dict[str, Any], set[str]]:
     """The stand-ins and the names left out (styles.yaml ``period``) for the look led by
-    ``styles[0]``: those of every trait of its asset class."""
-    raw = kb.raw("styles")
-    style = raw["styles"].get(styles[0]) if styles else None
-    cls = raw["asset_classes"].get((style or {}).get("asset_class", "")) or {}
+    ``styles``: those of every trait of its asset class (the class the assets are drawn in)."""
+    from anyhome.assets.styles import style_class
+
+    period = kb.raw("styles").get("period") or {}
     swap: dict[str, Any] = {}
     drop: set[str] = set()
-    for trait in cls.get("traits", []):
-        rules = (raw.get("period") or {}).get(trait) or {}
+    for trait in sorted(style_class(styles, kb).traits):
+        rules = period.get(trait) or {}
         swap.update(rules.get("swap", {}))
         drop.update(rules.get("drop", []))
     return swap, drop
@@ -384,8 +384,11 @@ def apply_period(kb: KnowledgeBase, groups: list[Group], ornaments: list[Item], 
 def drop_unasked_beds(groups: list[Group]) -> None:
     """"A bedroom with a bunk bed": the bed the text asks for replaces the one the room's
     set planned, rather than standing beside it. Run after all the room's mentions."""
-    if any(g["required"] and "bed" in (g["anchor"].get("tags") or []) for g in groups):
-        groups[:] = [g for g in groups if g["required"] or "bed" not in g["anchor"].get("tags", [])]
+    def is_bed(g: Group) -> bool:
+        return "bed" in (g["anchor"].get("tags") or [])
+
+    if any(g["required"] and is_bed(g) for g in groups):
+        groups[:] = [g for g in groups if g["required"] or not is_bed(g)]
 
 
 def remove_mention(kb: KnowledgeBase, m: Mention, groups: list[Group], ornaments: list[Item]) -> bool:

@@ -770,7 +770,8 @@ def _assign_rooms(text: str, mentions: list[Mention]) -> None:
     """Attach each object mention to the room mention that governs it, if any."""
     context: int | None = None
     each: Mention | None = None
-    room_idx = {id(m): i for i, m in enumerate(x for x in mentions if x.kind == "room")}
+    rooms = [x for x in mentions if x.kind == "room"]
+    room_idx = {id(m): i for i, m in enumerate(rooms)}
     for i, m in enumerate(mentions):
         if m.kind == "room":
             if each is not None and m.count is None and "." not in text[each.end : m.start]:
@@ -789,7 +790,7 @@ def _assign_rooms(text: str, mentions: list[Mention]) -> None:
         m.room = context
         m.each = each is not None and context == room_idx[id(each)]
         if not m.each and context is not None:
-            _spread(m, [x for x in mentions if x.kind == "room"][context])
+            _spread(m, rooms[context])
         nxt = next((x for x in mentions[i + 1 :] if x.kind == "room"), None)
         if nxt is not None:
             between = text[m.end : nxt.start]
