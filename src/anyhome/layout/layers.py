@@ -169,9 +169,10 @@ def _own_sizes(item: ItemSpec) -> Iterator[tuple[tuple[float, float, float], str
     long_m, short_m = max(w, d), min(w, d)
     runner = long_m >= RUNNER_ASPECT * short_m
     for s in SHRINK_STEPS:
-        if short_m < MIN_SIDE_M and s < 1.0:
+        size = (w * s, d, h) if w >= d else (w, d * s, h)
+        if min(size[:2]) < MIN_SIDE_M and s < 1.0:
             break
-        yield ((w * s, d, h) if w >= d else (w, d * s, h)), item.rule
+        yield size, item.rule
     if not runner or short_m <= RUNNER_MIN_SIDE_M:
         return
     for s in SHRINK_STEPS:
