@@ -95,6 +95,12 @@ class Program(_Model):
     entrance: list[str] = Field(min_length=1)
     rooms: list[ProgramRoom] = Field(min_length=1)
     extra: dict[str, list[str]] = Field(default_factory=dict, description="room key -> extra group names")
+    holds: list[str] = Field(default_factory=list, description=(
+        "room types the main room takes in: one mention of each is read as a part of it, "
+        "not a room of its own (a studio apartment's kitchenette, its sleeping area)"))
+    one_room: bool = Field(default=False, description=(
+        "its rooms are all it has: it gains no rooms to reach a total, and a size word scales "
+        "its rooms ('a small studio') instead of setting a home's total"))
 
     @model_validator(mode="after")
     def _keys(self) -> Program:
@@ -439,6 +445,7 @@ class StylesFile(_Model):
     defaults: dict[str, list[str]] = Field(description="program -> style keys drawn when the text names none")
     category_materials: dict[str, str]
     period: dict[str, PeriodRules] = Field(default_factory=dict, description="asset-class trait -> what its looks leave out")
+    moods: list[Word] = Field(default_factory=list, description="style words that say a mood, not a look: their styles follow the others")
 
     @field_validator("category_materials")
     @classmethod
@@ -764,6 +771,8 @@ class KnowledgeBase:
                 need(r.type in types, "programs", ("programs", key, "rooms", j, "type"), lambda: known(r.type, types, "room type"))
                 if r.furnish is not None:
                     need(r.furnish in sets, "programs", ("programs", key, "rooms", j, "furnish"), lambda: known(str(r.furnish), sets, "furnishing set"))
+            for t in p.holds:
+                need(t in types, "programs", ("programs", key, "holds"), lambda: known(t, types, "room type"))
             for room, gs in p.extra.items():
                 for g in gs:
                     need(g in groups, "programs", ("programs", key, "extra", room), lambda: known(g, groups, "group"))

@@ -362,7 +362,7 @@ def _cuts(cut: dict[str, tuple[int, int]], most: int = 4) -> str:
 def _room_for(kb: KnowledgeBase, m: Mention, slots: list[Slot], main_key: str | None) -> int:
     if m.room is not None:
         for i, s in enumerate(slots):
-            if s.mention == m.room:
+            if s.mention == m.room or m.room in s.parts:
                 return i
     prefs = kb.raw("objects").get(m.key, {}).get("rooms", [])
     for pref in prefs:

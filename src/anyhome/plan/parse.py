@@ -115,9 +115,12 @@ _PEOPLE = re.compile(
 )
 _COUPLE = re.compile(r"\b(?:couple|newlyweds|two people)\b")
 _MEMBERS = re.compile(
-    r"\b(\w+) (parents|adults|grandparents|roommates|flatmates|friends|kids|children|toddlers|babies|"
-    r"boys|girls|teens|teenagers|sons|daughters)\b"
+    r"\b(?!an?\b)(\w+) (parents|adults|grandparents|roommates|flatmates|friends|kids|children|toddlers|babies|"
+    r"boys|girls|teens|teenagers|sons|daughters)\b(?!'|\s+(?:room|rooms|bedroom|bedrooms|bathroom|bathrooms|area|"
+    r"corner|zone|space|wing|bed|beds|table|tables|desk|desks|furniture|play)\b)"
 )
+"""Household members counted ("two kids", "three teenagers"); not a room or an object
+named for them ("a kids room", "two kids' desks")."""
 """Household members counted when no "family of N" is given ("two parents and three kids")."""
 _UNKNOWN_ROOM = re.compile(
     r"\b([^\W\d_]+(?:'s|s')?) (room|nook|corner|suite|lounge|den|booth|cave|shed|chamber|parlou?r|studio|"
@@ -845,12 +848,17 @@ def _apply_arrangements(text: str, mentions: list[Mention]) -> None:
 
 def _find_styles(kb: KnowledgeBase, text: str, p: Parsed) -> None:
     voc = vocabulary(kb)
+    moods = set(kb.raw("styles").get("moods") or [])
+    weak: list[str] = []  # styles named only by a mood word ("cozy") follow those named by a look
     for mt in voc.style_regex.finditer(text):
         key = voc.style_forms[mt.group()]
-        if key not in p.styles:
+        if mt.group() in moods:
+            weak.append(key)
+        elif key not in p.styles:
             p.styles.append(key)
         if mt.group() not in p.style_words:
             p.style_words.append(mt.group())
+    p.styles += [k for k in dict.fromkeys(weak) if k not in p.styles]
     for mt in voc.colour_regex.finditer(text):
         c = mt.group()
         if c not in ("dark", "light", "pale", "deep", "bright", "pastel") and c not in p.colours:

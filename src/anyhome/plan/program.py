@@ -62,6 +62,7 @@ class Slot:
     area_from: str = "type"  # where area_range came from: type | program | name | kind
     need: float = 0.0  # floor its furniture needs (set when a total is fitted)
     open_air: bool = False  # open to the sky whatever its type (its name says so)
+    parts: list[int] = field(default_factory=list)  # Parsed.rooms it takes in (a studio's kitchenette)
 
 
 def _type_info(kb: KnowledgeBase, room_type: str) -> dict:
@@ -149,7 +150,7 @@ def plan_rooms(kb: KnowledgeBase, parsed: Parsed, program: str | None, rng: np.r
                 s.optional = opt is not None
                 slots.append(s)
     fixed = _fixed_counts(kb, parsed)
-    _claim_mentions(kb, parsed, slots, fixed, home=program in set(_sizes(kb).get("homes", [])))
+    _claim_mentions(kb, parsed, slots, fixed, home=program in set(_sizes(kb).get("homes", [])), prog=prog)
     _drop_replaced(parsed, slots)
     totals = frozenset(t for t, n in (("bedroom", parsed.bedrooms), ("bathroom", parsed.bathrooms)) if n is not None)
     _apply_fixed(kb, slots, fixed, prog, totals)
@@ -245,12 +246,23 @@ def _fixed_counts(kb: KnowledgeBase, parsed: Parsed) -> dict[str, int]:
     return fixed
 
 
-def _claim_mentions(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], fixed: dict[str, int], home: bool = False) -> None:
+def _claim_mentions(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], fixed: dict[str, int], home: bool = False,
+                    prog: dict | None = None) -> None:
     names = kb.raw("rooms")["names"]
+    main = next((s for s in slots if prog and s.key == prog.get("main")), None)
+    held, taken = set((prog or {}).get("holds", [])), set[str]()
     for i, m in enumerate(parsed.rooms):
         if m.count == 0:
             continue
         proto = _slot_from_mention(kb, m, i, home)
+        if main is not None and _taken_in(m, proto, held, taken):
+            main.parts.append(i)
+            taken.add(proto.type)
+            if fixed.get(proto.type):  # "a kitchen" counted one kitchen: it is the studio's
+                fixed[proto.type] -= 1
+                if not fixed[proto.type]:
+                    del fixed[proto.type]
+            continue
         generic = bool((names.get(m.key) or {}).get("generic"))
         n = max(1, m.count or 1) if (generic or m.count) else (2 if m.plural else 1)  # "tatami rooms"
         n = min(n, MAX_COUNT)
@@ -282,6 +294,14 @@ def _claim_mentions(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], fixed:
             elif proto.area_from == "stated":  # "a 30 m2 living room"
                 target.area_range, target.area_from = proto.area_range, proto.area_from
             first = first or target
+
+
+def _taken_in(m: Mention, proto: Slot, held: set[str], taken: set[str]) -> bool:
+    """Whether the program's main room takes the mention in as a part of itself ("a
+    studio apartment with a kitchenette"): a room of a type it holds (``held``), named
+    once, of a type not taken in yet (``taken``), not counted, sized or ruled out."""
+    return (proto.type in held and proto.type not in taken and not m.negated and (m.count or 1) == 1
+            and not m.plural and m.area_m2 is None)
 
 
 def _room_word(key: str | None) -> str:
@@ -352,8 +372,9 @@ def _asked_per_type(kb: KnowledgeBase, parsed: Parsed, fixed: dict[str, int], sl
     """Rooms of each type the text asked for, as written (before any cap), of the type
     the room that claimed the words has (the program may read them in context)."""
     asked: dict[str, int] = {}
+    parts = {j for s in slots for j in s.parts}
     for i, m in enumerate(parsed.rooms):
-        if m.negated:
+        if m.negated or i in parts:  # a part of the main room (a studio's kitchenette)
             continue
         if m.asked is not None and m.asked > 0:  # repeated mentions of one room are one room
             t = next((s.type for s in slots if s.mention == i), None) or _slot_from_mention(kb, m, i).type
@@ -877,8 +898,14 @@ def sizing(kb: KnowledgeBase, parsed: Parsed, program: str | None) -> Sizing:
     sz = Sizing(program, kind, stretch=float(sizes.get("stretch", 1.6)),
                 add=[*kind.get("add", []), *sizes.get("add", [])] if program in homes else [],
                 circulation_share=float(sizes.get("circulation_share", 1.0)) if program in homes else 1.0)  # fmt: skip
+    one_room = bool((kb.raw("programs")["programs"].get(program or "") or {}).get("one_room"))
+    if one_room:  # a studio is one room and a bathroom, whatever its total
+        sz.add = []
     word_band = None
     for w in parsed.size_words:
+        if one_room and sizes.get("words", {}).get(w):  # "a small studio": smaller rooms, not a home's total
+            sz.scale = float(sizes["words"][w].get("factor", 1.0))
+            break
         if sizes.get("words", {}).get(w, {}).get("total_m2"):
             word_band = tuple(sizes["words"][w]["total_m2"])
             sz.scale = float(sizes["words"][w].get("scale", 1.0)) if program in homes else 1.0
