@@ -224,6 +224,14 @@ def cmd_eval(args: argparse.Namespace) -> int:
             if expect is None and not args.quiet:
                 _err(f"note: no entry in {args.expect} for this house's prompt; coverage skipped")
     report = evaluate_house(house, expect)
+    folder = Path(args.path) if Path(args.path).suffix != ".json" else Path(args.path).parent
+    if (folder / "house.glb").is_file():
+        from anyhome.evaluate.material_words import material_words, summary
+
+        try:
+            report.materials = summary(material_words(house, folder / "house.glb"))
+        except (OSError, ValueError, KeyError) as e:  # a damaged GLB: the house is still evaluated
+            _err(f"note: {folder / 'house.glb'} could not be read ({clean_text(str(e))[:80]}); material words skipped")
     if args.json:
         print(json.dumps(report.to_dict(), indent=1))
     else:

@@ -53,7 +53,13 @@ def test_sofa_parts_keep_the_mesh_and_texture_the_body() -> None:
 
 def test_later_clauses_dress_the_parts_of_their_role() -> None:
     brass = part_spec("metal", "#222222", "oak and brass", 32)
-    assert brass.metallic >= MIN_METALLIC and not brass.textured
+    assert brass.metallic >= MIN_METALLIC and brass.kind == "metal" and brass.textured  # it shows as metal
+    legs = part_spec("wood", "#3a2a1f", "charcoal upholstery on dark wood", 32)
+    assert legs.kind == "wood" and legs.textured  # the legs are the dark wood, grain and all
+    # a body takes the clause of its own role first: a bed's frame is the wood, not the linen
+    frame = part_spec("wood", "#5a3f27", "green linen bedding on dark wood", 32, body=True)
+    assert frame.kind == "wood"
+    assert part_spec("fabric", "#4a6a4a", "green linen bedding on dark wood", 32).kind == "fabric"
     assert part_spec("fabric", "#b9b2a6", "oak", 32).roughness >= 0.8  # the role's own material
     # the body takes the first clause; a metal part never becomes wood
     assert part_spec("wood", "#a0714a", "marble", 32, body=True).kind == "marble"

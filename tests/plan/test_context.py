@@ -81,3 +81,47 @@ def test_a_period_house_has_no_office_chairs_or_monitors_unless_asked(seed):
     assert "computer monitor" in asked
     modern = [n for r in _plan("A modern office with four desks.", seed).rooms for n in _names(r)]
     assert "office chair" in modern
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_a_studio_apartments_kitchenette_is_a_part_of_the_studio(seed):
+    plan = _plan("A small studio apartment for a painter, with a bed, a kitchenette and two easels by the window", seed)
+    assert sorted(r.type for r in plan.rooms) in (["bathroom", "living_room"], ["bathroom", "entry", "living_room"])
+    studio = next(r for r in plan.rooms if r.type == "living_room")
+    names = _names(studio)
+    assert any("kitchenette" in n for n in names) and sum("easel" in n for n in names) == 2
+    # "small" scales the studio's rooms; it does not add rooms to reach a home's total
+    normal = _plan("A studio apartment for a painter, with a bed, a kitchenette and two easels by the window", seed)
+    assert len(plan.rooms) <= len(normal.rooms) <= 3
+
+
+@pytest.mark.parametrize("text", ["a studio apartment with a kitchen and a balcony", "a tiny cabin with a kitchen"])
+def test_a_kitchen_named_in_a_one_room_home_is_its_kitchenette(text):
+    plan = _plan(text)
+    assert not any(r.type == "kitchen" for r in plan.rooms)
+    assert not any("planned 0" in w for w in plan.warnings)
+
+
+def test_two_kitchens_in_a_studio_are_rooms_the_text_counts():
+    plan = _plan("a studio apartment with two kitchens")
+    assert sum(r.type == "kitchen" for r in plan.rooms) >= 1
+
+
+def test_a_mood_word_does_not_lead_the_style_over_a_look():
+    assert _plan("A cozy Victorian parlour with a piano and two velvet armchairs").styles[0] == "victorian"
+    assert _plan("an elegant art deco apartment").styles[0] == "art_deco"
+    assert _plan("a cozy cottage with two bedrooms").styles[0] == "cottage"
+
+
+def test_a_kids_room_is_a_room_not_a_household():
+    plan = _plan("a kids room with a bunk bed and a single bed")
+    assert len(plan.rooms) == 1
+    names = _names(plan.rooms[0])
+    assert "bunk bed" in names
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_a_nursery_gets_no_desk_or_end_of_bed_bench(seed):
+    plan = _plan("a family home with a nursery and a kids room with bunk beds", seed)
+    nursery = next(r for r in plan.rooms if r.name == "nursery")
+    assert not any(n in ("desk", "office chair", "end-of-bed bench") for n in _names(nursery))

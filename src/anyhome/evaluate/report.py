@@ -115,6 +115,9 @@ class EvalReport:
     """Plan figures (circulation, proportions, size words, open air, levels): not violations."""
     furnish: FurnishMetrics | None = None
     """Furnishing figures (drops, rugs, TV stands, sets, floor coverage): not violations."""
+    materials: dict[str, Any] | None = None
+    """Material words the house's GLB shows (:mod:`anyhome.evaluate.material_words`), when
+    the house folder has its house.glb; a figure, not a violation."""
 
     @property
     def ok(self) -> bool:
@@ -135,6 +138,7 @@ class EvalReport:
             "coverage": self.coverage.to_dict() if self.coverage is not None else None,
             "plan": self.plan.to_dict() if self.plan is not None else None,
             "furnish": self.furnish.to_dict() if self.furnish is not None else None,
+            "materials": self.materials,
         }
 
     def summary_lines(self) -> list[str]:
@@ -174,6 +178,12 @@ class EvalReport:
             lines += self.plan.summary_lines()
         if self.furnish is not None:
             lines += self.furnish.summary_lines()
+        if self.materials is not None and self.materials.get("n_material_words"):
+            mw = self.materials
+            lines.append(f"material words shown in the GLB: {mw['n_material_words_realised']}/{mw['n_material_words']} "
+                         f"({100 * float(mw['material_words_realised']):.0f}%)")
+            for miss in mw.get("material_word_misses", [])[:MAX_SUMMARY_CHECKS]:
+                lines.append(f"  not shown: {miss}")
         return lines
 
 

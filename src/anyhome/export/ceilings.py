@@ -55,6 +55,62 @@ def profile(room: Room) -> tuple[int, float, np.ndarray, np.ndarray]:
     return axis, lo, np.array([0.0, span]), np.array([h, h])
 
 
+BEAM_WIDTH_M = 0.14
+BEAM_DEPTH_M = 0.2
+"""Cross-section of a ceiling beam (width across it, depth below the ceiling)."""
+BEAM_SPACING_M = 1.1
+"""Centre-to-centre distance of beams across a room (joists of a beamed ceiling)."""
+COFFER_RIB_WIDTH_M = 0.16
+COFFER_RIB_DEPTH_M = 0.14
+COFFER_SPACING_M = 1.0
+"""Ribs of a coffered ceiling: cross-section and the size of the square coffers."""
+MIN_STRUCTURE_ROOM_M = 1.2
+"""Rooms narrower than this get no beams or coffers (a corridor's ceiling stays plain)."""
+
+
+def structure_mesh(room: Room, kind: str) -> trimesh.Trimesh | None:
+    """Geometry hung under a flat ceiling: ``beams`` (parallel beams spanning the room's
+    short side, :data:`BEAM_SPACING_M` apart, one down the long axis on rooms wider than
+    4 m) or ``coffers`` (ribs both ways, square coffers of :data:`COFFER_SPACING_M`),
+    clipped to the room's polygon; None for a sloped or open ceiling, an unknown kind or
+    a room too narrow for them."""
+    if room.open_air or room.ceiling != "flat" or kind not in ("beams", "coffers"):
+        return None
+    poly = _poly(room)
+    x0, y0, x1, y1 = poly.bounds
+    if min(x1 - x0, y1 - y0) < MIN_STRUCTURE_ROOM_M:
+        return None
+    width, depth, step = ((BEAM_WIDTH_M, BEAM_DEPTH_M, BEAM_SPACING_M) if kind == "beams"
+                          else (COFFER_RIB_WIDTH_M, COFFER_RIB_DEPTH_M, COFFER_SPACING_M))
+    long_x = (x1 - x0) >= (y1 - y0)
+    strips = []
+
+    def across(axis_x: bool) -> None:
+        """Ribs crossing the room at regular spacing along x (``axis_x``) or y."""
+        lo, hi = (x0, x1) if axis_x else (y0, y1)
+        n = max(1, int((hi - lo) // step))
+        margin = ((hi - lo) - (n - 1) * step) / 2 if n > 1 else (hi - lo) / 2
+        for k in range(n):
+            c = lo + margin + k * step
+            strips.append(box(c - width / 2, y0, c + width / 2, y1) if axis_x else box(x0, c - width / 2, x1, c + width / 2))
+
+    across(long_x)  # beams span the short side: they stand at intervals along the long one
+    if kind == "coffers":
+        across(not long_x)
+    elif min(x1 - x0, y1 - y0) > 4.0:  # a wide room: a spine beam carries the joists
+        c = (y0 + y1) / 2 if long_x else (x0 + x1) / 2
+        strips.append(box(x0, c - width, x1, c + width) if long_x else box(c - width, y0, c + width, y1))
+    meshes = []
+    for strip in strips:
+        part = poly.intersection(strip)
+        for p in getattr(part, "geoms", [part]):
+            if isinstance(p, Polygon) and p.area > MIN_SLAB_M2:
+                m = trimesh.creation.extrude_polygon(p, depth)
+                m.apply_translation((0.0, 0.0, room.height - depth))
+                meshes.append(m)
+    return cast(trimesh.Trimesh, trimesh.util.concatenate(meshes)) if meshes else None
+
+
 def ceiling_height_at(room: Room, x: float, y: float) -> float:
     """Height of the ceiling above the plan point (x, y) (``room.height`` when flat)."""
     axis, lo, s, z = profile(room)

@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import os
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import lru_cache
 from typing import TYPE_CHECKING, Any
 
@@ -51,6 +51,8 @@ class MaterialSpec:
     tile_m : meters one texture repeat covers (UV = meters / tile_m)
     alpha : opacity (< 1 is drawn blended)
     size_px : texture size in texels
+    weathered : drawn aged (stains, worn patches, flaked finish): the words hold a
+        weathering word (materials.yaml ``weathering``: peeling, dusty, rusty...)
     """
 
     kind: str
@@ -61,6 +63,7 @@ class MaterialSpec:
     tile_m: float = 1.0
     alpha: float = 1.0
     size_px: int = DEFAULT_SIZE_PX
+    weathered: bool = False
 
     @property
     def textured(self) -> bool:
@@ -152,21 +155,36 @@ def _words(text: str) -> list[str]:
     return material_words(text)
 
 
-def _match(clause: str, t: _Tables) -> tuple[dict[str, Any], list[str]] | None:
-    """The winning entry of one clause and the clause's words, or None (the longest
-    material word at each place: "white oak" before "oak")."""
+def _winner(clause: str, t: _Tables) -> tuple[tuple[str, ...], dict[str, Any]] | None:
+    """The winning material word of one clause and its entry, or None (the longest
+    material word at each place: "white oak" before "oak"; the highest rank wins, ties
+    going to the later word)."""
     lex = t.lexicon
     words = _words(clause)
-    best: tuple[int, dict[str, Any]] | None = None
+    best: tuple[int, tuple[str, ...], dict[str, Any]] | None = None
     i = 0
     while i < len(words):
         n = next((n for n in range(min(t.longest, len(words) - i), 0, -1) if tuple(words[i:i + n]) in lex), 0)
         if n:
-            hit = lex[tuple(words[i:i + n])]
-            if best is None or hit[0] >= best[0]:
-                best = hit  # ties: the later word wins
+            key = tuple(words[i:i + n])
+            rank, entry = lex[key]
+            if best is None or rank >= best[0]:
+                best = (rank, key, entry)  # ties: the later word wins
         i += max(n, 1)
-    return None if best is None else (best[1], words)
+    return None if best is None else (best[1], best[2])
+
+
+def _match(clause: str, t: _Tables) -> tuple[dict[str, Any], list[str]] | None:
+    """The winning entry of one clause and the clause's words, or None (:func:`_winner`)."""
+    won = _winner(clause, t)
+    return None if won is None else (won[1], _words(clause))
+
+
+def clause_heads(words: str, kb: KnowledgeBase | None = None) -> list[str]:
+    """The material word that decides each clause of ``words`` that names one, in order
+    ("warm oak linen and brass" -> ["linen", "brass"]: "oak" there is a colour)."""
+    t = _tables(kb)
+    return [" ".join(won[0]) for c in clauses(words, kb) if (won := _winner(c, t)) is not None]
 
 
 def clauses(words: str, kb: KnowledgeBase | None = None) -> list[str]:
@@ -235,7 +253,29 @@ def spec_from_entry(entry: dict[str, Any], surface: str, words: list[str], color
         tile_m=float(d.get("tile_m", 1.0)),
         alpha=float(d.get("alpha", 1.0)),
         size_px=texture_size_px(size_px),
+        weathered=weathered(words, kb),
     )
+
+
+def ceiling_structure(words: str, kb: KnowledgeBase | None = None) -> tuple[str | None, str]:
+    """(structure, rest): the geometry a ceiling's words ask for (materials.yaml
+    ``ceiling_structure``: "beams" or "coffers", None) and the words left for the ceiling
+    surface itself, the structure's words taken out ("exposed oak beams" -> ("beams",
+    "oak"))."""
+    table = _data(kb).get("ceiling_structure") or {}
+    ws = _words(words)
+    for phrase in sorted(table, key=lambda p: -len(p.split())):
+        pw = _words(phrase)
+        for i in range(len(ws) - len(pw) + 1):
+            if ws[i:i + len(pw)] == pw:
+                return str(table[phrase]), " ".join(ws[:i] + ws[i + len(pw):])
+    return None, words
+
+
+def weathered(words: list[str] | str, kb: KnowledgeBase | None = None) -> bool:
+    """Whether material words say the surface is aged (materials.yaml ``weathering``)."""
+    ws = _words(words) if isinstance(words, str) else words
+    return bool(set(ws) & set(_data(kb).get("weathering") or ()))
 
 
 def _known_variants(kind: str, kb: KnowledgeBase | None) -> set[str]:
@@ -272,5 +312,8 @@ def _surface_material(words: str, surface: str, size_px: int, color: str | None,
         entry, clause_words = hit[0] if hit else ({"kind": "plain"}, [])
         color = color or material_color(words, kb) or material_color(default, kb)
     color = color or material_color(" ".join(clause_words), kb) or material_color(words, kb)
-    return spec_from_entry(entry, surface, clause_words, color, size_px, kb)
+    spec = spec_from_entry(entry, surface, clause_words, color, size_px, kb)
+    if not spec.weathered and weathered(words, kb):  # "dusty, dark oak": the whole phrase ages it
+        spec = replace(spec, weathered=True)
+    return spec
 

@@ -44,7 +44,7 @@ def _u8(x: np.ndarray) -> np.ndarray:
     return (np.clip(x, 0.0, 1.0) * 255.0 + 0.5).astype(np.uint8)
 
 
-_DetailKey = tuple[str, str, float, int]
+_DetailKey = tuple[str, str, float, int, bool]
 _details: dict[_DetailKey, tuple[Image.Image, Image.Image, float]] = {}
 """(kind, variant, roughness, size) -> (metallicRoughness, normal, roughness factor); the
 maps do not depend on the colour, so every colour of a material shares them."""
@@ -68,8 +68,8 @@ def _detail_images(key: _DetailKey, tex: Texture | None = None) -> tuple[Image.I
     """
     Image = _pil()
     if key not in _details:
-        kind, variant, roughness, size = key
-        tex = tex or generate(kind, size, "#808080", roughness, variant)
+        kind, variant, roughness, size, aged = key
+        tex = tex or generate(kind, size, "#808080", roughness, variant, weathered=aged)
         factor = float(np.ceil(tex.roughness.max() * 255.0) / 255.0)
         n = tex.roughness.shape[0]
         ones = np.full((n, n), 255, np.uint8)
@@ -82,11 +82,11 @@ def _detail_images(key: _DetailKey, tex: Texture | None = None) -> tuple[Image.I
 
 
 @lru_cache(maxsize=CACHE_SIZE)
-def _texture_images(kind: str, variant: str, color: str, roughness: float, size: int
+def _texture_images(kind: str, variant: str, color: str, roughness: float, size: int, aged: bool = False
                     ) -> tuple[Image.Image, Image.Image, Image.Image, float]:
     Image = _pil()
-    tex = generate(kind, size, color, roughness, variant)
-    mr, normal, factor = _detail_images((kind, variant, roughness, size), tex)
+    tex = generate(kind, size, color, roughness, variant, weathered=aged)
+    mr, normal, factor = _detail_images((kind, variant, roughness, size, aged), tex)
     return Image.fromarray(_u8(tex.color), "RGB"), mr, normal, factor
 
 
@@ -108,7 +108,7 @@ def texture_factors(spec: MaterialSpec) -> tuple[float, float]:
 def _images(spec: MaterialSpec) -> tuple[Image.Image, Image.Image, Image.Image, float]:
     if not spec.textured:
         raise ValueError(f"material kind {spec.kind!r} has no texture")
-    return _texture_images(spec.kind, spec.variant, spec.color, spec.roughness, spec.size_px)
+    return _texture_images(spec.kind, spec.variant, spec.color, spec.roughness, spec.size_px, spec.weathered)
 
 
 def _encode(image: Image.Image, fmt: str) -> EncodedImage:
@@ -126,7 +126,7 @@ _encoded_details: dict[_DetailKey, tuple[EncodedImage, EncodedImage]] = {}
 @lru_cache(maxsize=CACHE_SIZE)
 def _encoded(spec: MaterialSpec) -> tuple[EncodedImage, EncodedImage, EncodedImage]:
     base, mr, normal = texture_images(spec)
-    key = (spec.kind, spec.variant, spec.roughness, spec.size_px)
+    key = (spec.kind, spec.variant, spec.roughness, spec.size_px, spec.weathered)
     if key not in _encoded_details:
         if len(_encoded_details) >= CACHE_SIZE:
             _encoded_details.pop(next(iter(_encoded_details)))
@@ -145,7 +145,8 @@ def material_key(spec: MaterialSpec) -> str:
     kind = f"{spec.kind}/{spec.variant}" if spec.variant else spec.kind
     tex = f" {spec.size_px}px" if spec.textured else ""
     alpha = f" a{spec.alpha:.2f}" if spec.alpha < 1.0 else ""
-    return f"{kind} {spec.color} r{spec.roughness:.2f} m{spec.metallic:.2f}{alpha}{tex}"
+    aged = " weathered" if spec.weathered and spec.textured else ""
+    return f"{kind} {spec.color} r{spec.roughness:.2f} m{spec.metallic:.2f}{alpha}{tex}{aged}"
 
 
 @lru_cache(maxsize=CACHE_SIZE)

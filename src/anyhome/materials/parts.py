@@ -5,12 +5,14 @@ The procedural assets label every face with its material role as they build it
 :func:`~anyhome.assets.procedural._parts.face_roles`). Faces are grouped by (role, colour,
 alpha); each group becomes a part whose role picks its material:
 
-- the **body** (parts of the role the family's primary colour paints, ``body_role``):
-  the object's material words (their first clause), textured, tinted by the part's own
-  colour; with no words, the role's own material;
-- any other part: a later clause of the words that names a material of its role ("oak
-  and brass": the metal parts are brass), else the role's plain material
-  (:data:`ROLE_MATERIALS`);
+- every part: the first clause of the object's material words that names a material of
+  its role, textured, tinted by the part's own colour ("oak and brass": the metal parts
+  are brass; "linen bedding on dark wood": the bed's frame is the dark wood, its bedding
+  the linen);
+- the **body** (parts of the role the family's primary colour paints, ``body_role``)
+  with no clause of its role: the words' first clause (a sofa "in green velvet" is
+  velvet whatever its family paints it with); with no words, the role's own material;
+- any other part: the role's plain material (:data:`ROLE_MATERIALS`);
 - ``glass``: blended glass, alpha GLASS_ALPHA; a part drawn with alpha (a lamp shade) is
   blended with its own alpha.
 
@@ -108,13 +110,11 @@ def part_spec(role: Role, color: str, words: str, size_px: int, alpha: float = 1
                             size_px=size_px)
     clauses = material_clauses(words)
     spec: MaterialSpec | None = None
-    if body and clauses and (role != "metal" or clauses[0][0]["kind"] == "metal"):
+    match = next((c for c in clauses if _clause_role(c[0]) == role), None)
+    if match is not None:  # "linen bedding on dark wood": the frame is the wood, the bedding the linen
+        spec = spec_from_entry(match[0], "furniture", match[1], color, size_px)
+    elif body and clauses and (role != "metal" or clauses[0][0]["kind"] == "metal"):
         spec = surface_material(words, "furniture", size_px, color=color)
-    else:
-        later = clauses[1:] if body or len(clauses) > 1 else clauses
-        match = next((c for c in later if _clause_role(c[0]) == role), None)
-        if match is not None:
-            spec = _plain(spec_from_entry(match[0], "furniture", match[1], color, size_px))
     if spec is None:
         spec = spec_from_entry(ROLE_MATERIALS[role], "furniture", [], color, size_px)
         if not body:

@@ -538,6 +538,10 @@ class MaterialsFile(_Model):
     surfaces: dict[Surface, SurfaceRule]
     finish: dict[Word, Annotated[float, Field(ge=-1, le=1)]] = Field(default_factory=dict)
     tone: dict[Word, Annotated[float, Field(gt=0, le=3)]] = Field(default_factory=dict)
+    weathering: list[Word] = Field(default_factory=list, description=(
+        "words that age a surface visibly: its texture is drawn weathered (stains, wear, cracks)"))
+    ceiling_structure: dict[Word, Literal["beams", "coffers"]] = Field(default_factory=dict, description=(
+        "ceiling words that are geometry under a plaster ceiling (beams across the room, a grid of coffers)"))
 
     @field_validator("surfaces")
     @classmethod
