@@ -103,7 +103,7 @@ def test_near_follows_the_objects_placed_and_taken_back():
     assert sp.near(np.array([2.5, 2.5]), np.array([3.5, 3.5])) == [b]
 
 
-def test_rect_corners_of_one_size_or_many_are_the_same_and_match_the_contract():
+def test_rect_corners_of_one_size_or_many_or_one_box_are_the_same_and_match_the_contract():
     rng = np.random.default_rng(0)
     xy = rng.uniform(0, 5, (50, 2))
     yaw = rng.uniform(-np.pi, np.pi, 50)
@@ -111,6 +111,9 @@ def test_rect_corners_of_one_size_or_many_are_the_same_and_match_the_contract():
     many = rect_corners(xy, np.tile([1.2, 0.7], (50, 1)), yaw)
     assert np.array_equal(one, many)
     assert np.array_equal(rect_corners(xy[3], (1.2, 0.7), [yaw[3]])[0], one[3])
+    for k in range(50):  # one box of one size (the scalar path) as among many, bit for bit
+        alone = rect_corners(xy[k][None], (1.2, 0.7), [float(yaw[k])])
+        assert alone.shape == (1, 4, 2) and np.array_equal(alone[0], one[k])
     for k in range(50):
         assert np.allclose(one[k], footprint_corners((*xy[k], 0.0), (1.2, 0.7, 1.0), yaw[k]), atol=1e-12)
 

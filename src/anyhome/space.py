@@ -8,8 +8,10 @@ margins everywhere), so a pose accepted here stays valid after house.json rounds
 
 from __future__ import annotations
 
+import functools
+import math
 import operator
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
@@ -56,9 +58,9 @@ class Wall:
     openings: tuple[tuple[float, float, float, float, bool], ...]
     """(t0, t1, z0, z1, is_door) of each door or window on this wall, t in meters from a."""
 
-    @property
+    @functools.cached_property
     def yaw(self) -> float:
-        """Yaw of an object whose back is on this wall and whose front faces the room."""
+        """Yaw of an object whose back is on this wall and whose front faces the room (made once)."""
         return float(np.arctan2(-self.n[0], self.n[1]))
 
 
@@ -75,6 +77,9 @@ def rect_corners(xy: npt.ArrayLike, wd: npt.ArrayLike, yaw: npt.ArrayLike) -> np
     -------
     corners : (n, 4, 2) float, back-left, back-right, front-right, front-left
     """
+    if (isinstance(xy, np.ndarray) and xy.shape == (1, 2) and isinstance(wd, (tuple, list)) and len(wd) == 2
+            and isinstance(yaw, (tuple, list)) and len(yaw) == 1):  # one box: on Python floats
+        return _rect_corners_one(xy, wd, yaw)
     xy_a = np.asarray(xy, dtype=float).reshape(-1, 2)
     n = len(xy_a)
     yaw_a = np.asarray(yaw, dtype=float).reshape(-1)
@@ -82,22 +87,34 @@ def rect_corners(xy: npt.ArrayLike, wd: npt.ArrayLike, yaw: npt.ArrayLike) -> np
         yaw_a = np.broadcast_to(yaw_a, (n,))
     wd_a = np.asarray(wd, dtype=float)
     if wd_a.ndim == 1:  # one size: the same arithmetic on scalars
-        lx = (wd_a[0] / 2.0) * _SIGN_X  # -hw, hw, hw, -hw (a sign flip is exact)
-        ly = (wd_a[1] / 2.0) * _SIGN_Y
+        lx = ((wd_a[0] / 2.0) * _SIGN_X)[:, None]  # -hw, hw, hw, -hw (a sign flip is exact)
+        ly = ((wd_a[1] / 2.0) * _SIGN_Y)[:, None]
     else:
         wd_a = np.broadcast_to(wd_a, (n, 2))
-        lx = (wd_a[:, 0] / 2.0)[:, None] * _SIGN_X
-        ly = (wd_a[:, 1] / 2.0)[:, None] * _SIGN_Y
-    c, s = np.cos(yaw_a)[:, None], np.sin(yaw_a)[:, None]
-    x = lx * c  # lx * c - ly * s + x0, in place
+        lx = _SIGN_X[:, None] * (wd_a[:, 0] / 2.0)[None]
+        ly = _SIGN_Y[:, None] * (wd_a[:, 1] / 2.0)[None]
+    c, s = np.cos(yaw_a), np.sin(yaw_a)
+    # (x or y, corner, pose): each row a scalar times a contiguous vector (faster than (n, 4))
+    out = np.empty((2, 4, n))
+    x, y = out[0], out[1]
+    np.multiply(lx, c, out=x)  # lx * c - ly * s + x0, in place
     x -= ly * s
-    x += xy_a[:, 0, None]
-    y = lx * s
+    x += xy_a[:, 0]
+    np.multiply(lx, s, out=y)
     y += ly * c
-    y += xy_a[:, 1, None]
-    out = np.empty((n, 4, 2))
-    out[..., 0] = x
-    out[..., 1] = y
+    y += xy_a[:, 1]
+    return out.transpose(2, 1, 0)
+
+
+def _rect_corners_one(xy: np.ndarray, wd: Sequence[float], yaw: Sequence[float]) -> np.ndarray:
+    """:func:`rect_corners` of one box, on Python floats (the same operations, in the same order)."""
+    (x0, y0), = xy.tolist()
+    hw, hd = float(wd[0]) / 2.0, float(wd[1]) / 2.0
+    t = float(yaw[0])
+    c, s = math.cos(t), math.sin(t)
+    out = np.empty((1, 4, 2))
+    out[0] = [((lx * c) - (ly * s) + x0, (lx * s) + (ly * c) + y0)
+              for lx, ly in ((-hw, -hd), (hw, -hd), (hw, hd), (-hw, hd))]
     return out
 
 
@@ -611,7 +628,7 @@ class RoomSpace:
             return out
         ov = np.minimum(np.minimum(hi[0, i], bmax[j, 0]) - np.maximum(lo[0, i], bmin[j, 0]),
                         np.minimum(hi[1, i], bmax[j, 1]) - np.maximum(lo[1, i], bmin[j, 1]))
-        k = np.nonzero(~(_aligned(corners[i]) & _aligned(b)[j]) & (ov > -0.05))[0]
+        k = np.nonzero(~(_aligned(corners)[i] & _aligned(b)[j]) & (ov > -0.05))[0]  # squareness per pose, then per pair
         if k.size:
             ov[k] = _sat_pairs(corners[i[k]], b[j[k]])
         most = np.full(n, -np.inf)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 import re
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
@@ -22,6 +23,7 @@ SLUG_MAX_CHARS = 40
 """Longest name part of an object id (ids are at most 128 characters, see anyhome.sanitize)."""
 
 
+@functools.lru_cache(maxsize=1024)
 def slugify(text: str) -> str:
     return re.sub(r"[^a-z0-9]+", "_", text.lower())[:SLUG_MAX_CHARS].strip("_") or "object"
 
