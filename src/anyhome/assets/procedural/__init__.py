@@ -5,6 +5,6 @@ the registry imports the modules named in ``MODULES`` the first time it is asked
 """
 
 MODULES = ("appliances", "beds", "booths", "care_shop", "clinic", "crafts", "curios", "decor", "exhibits",
-           "fixtures", "games", "industry", "instruments", "kitchen_bath", "machines", "misc", "outdoor",
-           "performance", "pets", "play", "seating", "storage", "tables", "training", "utility", "vehicles",
-           "worship", "yard")
+           "fixtures", "flames", "games", "industry", "instruments", "kitchen_bath", "machines", "misc",
+           "outdoor", "performance", "pets", "photo", "play", "seating", "specialist", "storage", "tables",
+           "training", "utility", "vehicles", "worship", "yard")
