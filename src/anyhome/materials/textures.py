@@ -47,7 +47,7 @@ VARIANTS: dict[str, tuple[str, ...]] = {
     "stone": ("flags", "rubble"),
     "concrete": ("concrete", "polished", "terrazzo"),
     "plaster": ("plaster", "paint", "whitewash", "smooth"),
-    "fabric": ("weave", "velvet", "leather"),
+    "fabric": ("weave", "velvet", "leather", "check"),
     "wallpaper": ("stripes", "damask", "dots", "shoji"),
 }
 """The named variants of each kind (the first is the default; others have one look)."""

@@ -1,6 +1,7 @@
 """Soft and papered surfaces: fabric, carpet, wallpaper, tatami.
 
-Fabric variants: ``weave`` (plain weave, default), ``velvet``, ``leather``. Wallpaper
+Fabric variants: ``weave`` (plain weave, default), ``velvet``, ``leather``, ``check``
+(gingham, plaid, tartan: the weave under crossing bands of a darker shade). Wallpaper
 variants: ``stripes`` (default), ``damask``, ``dots``, ``shoji`` (paper panes in a
 cedar lattice).
 """
@@ -23,6 +24,10 @@ from anyhome.materials.noise import (
     white,
 )
 
+CHECK_BANDS = 4
+"""Check repeats across one texture (a check of a few centimetres on a 0.4 m texture)."""
+CHECK_DEPTH = 0.45
+"""How much darker a check's band is than its ground (where two cross: twice as dark)."""
 THREADS = 48
 """Threads per fabric texture along each axis (fewer on small textures)."""
 TATAMI_MATS = 2
@@ -61,6 +66,13 @@ def fabric(rng: np.random.Generator, n: int, tint: np.ndarray, roughness: float,
     shade = (0.82 + 0.2 * profile) * (1.0 + 0.06 * (thread_tone - 0.5) + 0.04 * fibre + 0.04 * slub)
     shade = shade * np.where(warp_top, 1.0, 0.96)
     height = 0.2 + 0.8 * profile + 0.05 * fibre
+    if variant == "check":  # bands of a darker shade crossing both ways; darker where they cross
+        bands = CHECK_BANDS
+        bu = (np.floor(np.broadcast_to(u, (n, n)) * bands * 2) % 2 == 0).astype(float)
+        bv = (np.floor(np.broadcast_to(v, (n, n)) * bands * 2) % 2 == 0).astype(float)
+        shade = shade * (1.0 - CHECK_DEPTH * 0.5 * (bu + bv))
+        line = (np.abs(((np.broadcast_to(u, (n, n)) * bands * 2) % 1.0) - 0.5) < 0.06).astype(float)
+        shade = shade * (1.0 - 0.25 * line)
     return tinted(tint, shade), height, np.clip(roughness + 0.05 * (1.0 - profile), 0, 1)
 
 
