@@ -9,8 +9,10 @@ and scored with ``anyhome.evaluate`` against the prompt's ``expect`` (coverage, 
 (name and type) or an object (name and category; in a room matching ``where`` when
 given) that matches a term, as whole words with an optional plural (the coverage
 matcher), is a reading a person would not accept ("a hair-salon chair in a riad").
-Printed: coverage, houses with any forbidden reading (with ``--list`` each one), and
-the share of objects shown with a stand-in mesh (asset records flagged ``approximate``).
+Printed: coverage, houses with any forbidden reading (with ``--list`` each one), houses
+that keep every object the prompt names and every room-defining object
+(:mod:`anyhome.evaluate.defining`; with ``--list`` what each lost), and the share of
+objects shown with a stand-in mesh (asset records flagged ``approximate``).
 
 benchmarks/prompts/heldout_context.jsonl (40 prompts) was written by a helper who had
 not read the knowledge base, at the start of the session that built context reading;
@@ -28,6 +30,7 @@ from typing import Any
 
 from anyhome.evaluate import evaluate_house
 from anyhome.evaluate.coverage import matches_any, object_text, room_text
+from anyhome.evaluate.defining import defining_elements
 from anyhome.evaluate.expectations import load_prompt_records
 from anyhome.house import House, stand_ins
 from anyhome.pipeline import generate
@@ -58,7 +61,8 @@ def forbidden(house: House, forbid: dict[str, Any]) -> list[str]:
 
 def run_set(path: Path, seeds: list[int]) -> dict[str, Any]:
     cov: list[float] = []
-    bad_houses = stand = objects = 0
+    bad_houses = stand = objects = kept = 0
+    lost: list[str] = []
     lines: list[str] = []
     fails: list[str] = []
     for rec in load_prompt_records(path):
@@ -71,6 +75,10 @@ def run_set(path: Path, seeds: list[int]) -> dict[str, Any]:
                 bad_houses += 1
                 continue
             cov.append(evaluate_house(house, rec.get("expect")).coverage.score)
+            d = defining_elements(house)
+            kept += d.kept
+            if not d.kept:
+                lost.append(f"{rec['id']} seed {seed}: " + ", ".join(d.missing + d.key_dropped))
             objects += len(house.objects)
             stand += len(stand_ins(house.objects))
             hits = forbidden(house, rec.get("forbid") or {})
@@ -79,7 +87,7 @@ def run_set(path: Path, seeds: list[int]) -> dict[str, Any]:
                 lines.append(f"{rec['id']} seed {seed}: " + "; ".join(sorted(set(hits))[:6]))
     return {"houses": len(cov), "coverage": statistics.mean(cov) if cov else 0.0,
             "forbidden_houses": bad_houses, "lines": lines, "failures": fails,
-            "objects": objects, "stand_ins": stand}
+            "objects": objects, "stand_ins": stand, "kept": kept, "lost": lost}
 
 
 def table(results: dict[str, dict[str, Any]], seeds: list[int]) -> str:
@@ -91,6 +99,8 @@ def table(results: dict[str, dict[str, Any]], seeds: list[int]) -> str:
                + " | ".join(f"{100 * results[n]['coverage']:.1f} %" for n in names) + " |")
     out.append("| houses with a forbidden reading (or failed) | 0 | "
                + " | ".join(f"{results[n]['forbidden_houses']}/{results[n]['houses']}" for n in names) + " |")
+    out.append("| houses keeping every named and room-defining object | all | "
+               + " | ".join(f"{results[n]['kept']}/{results[n]['houses']}" for n in names) + " |")
     out.append("| objects shown with a stand-in mesh (flagged `approximate`) | public <= 2 % | "
                + " | ".join(f"{100 * results[n]['stand_ins'] / max(1, results[n]['objects']):.1f} % "
                             f"({results[n]['stand_ins']}/{results[n]['objects']})" for n in names) + " |")
@@ -110,6 +120,7 @@ def main(argv: list[str] | None = None) -> int:
     text = table(results, seeds)
     if args.list:
         text += "\n\n" + "\n".join(f"- {n}: {line}" for n in results for line in results[n]["lines"] + results[n]["failures"])
+        text += "\n" + "\n".join(f"- {n}: lost {line}" for n in results for line in results[n]["lost"])
     print(text)
     if args.out:
         Path(args.out).write_text(text + "\n", encoding="utf-8")
