@@ -41,6 +41,8 @@ KEPT_CONSTANTS = {
     "PASSAGE_M", "HALL_DOORS", "HALL_DOOR_M", "DOOR_SLIDE_M",  # a stair hall: the landing beside the stair, its doors; how far a door slides clear of the stair
     "L_CORNERS", "INSCRIBED_TOL_M",  # merge.py: an L's corner count; the widest-disc search's precision
     "THROUGH_FACTOR", "THROUGH_OVERLAP_OK_M2",  # levels.py: what is a double-height room; a snapping sliver
+    "SPIRAL_RISER_MAX_M",  # a spiral stair's riser (BS 5395-2)
+    "SPIRAL_MAX_FLOOR_M2",  # which houses get a spiral stair: read by the planner too, which has no FloorplanOptions
 }
 
 

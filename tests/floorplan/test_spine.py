@@ -42,3 +42,31 @@ def test_a_room_with_many_sub_rooms_down_a_passage_joins_the_spine():
         owner = spine_owner(prog, np.random.default_rng(seed))
         assert not isinstance(owner, str), owner
         assert set(np.unique(owner).tolist()) >= set(range(prog.n))
+
+
+def test_a_stairwell_on_the_spine_is_laid_out_as_long_as_its_stair_needs():
+    """An upper storey (its stairwell the root, the stand-in entrance) whose stairwell
+    must be 3.9 m long: every spine layout gives it that long side (before, most spine
+    layouts of a storey failed the length check after they were built)."""
+    import dataclasses
+
+    from anyhome.floorplan.options import FloorplanOptions
+    from anyhome.floorplan.program import Program
+    from anyhome.floorplan.spine import spine_owner
+    from anyhome.plan.spec import HouseSpec, RoomSpec
+
+    rooms = [("stairwell", "stairwell", 8.5), ("landing", "hallway", 5.0), ("bed1", "bedroom", 12.0),
+             ("bed2", "bedroom", 11.0), ("bath", "bathroom", 5.0)]
+    conns = [("stairwell", "outside"), ("stairwell", "landing"), ("landing", "bed1"), ("landing", "bed2"),
+             ("landing", "bath")]
+    spec = HouseSpec(prompt="a house", rooms=[RoomSpec(id=i, name=i, type=t, area_m2=a) for i, t, a in rooms],
+                     connections=conns)
+    opts = FloorplanOptions()
+    prog = Program.from_spec(spec, opts)
+    prog = dataclasses.replace(prog, min_length_m=tuple(3.9 if i == "stairwell" else 0.0 for i in prog.ids))
+    k = prog.ids.index("stairwell")
+    for seed in range(8):
+        owner = spine_owner(prog, np.random.default_rng(seed))
+        assert not isinstance(owner, str), owner
+        xs, ys = np.nonzero(owner == k)
+        assert max(xs.max() - xs.min() + 1, ys.max() - ys.min() + 1) * opts.spine_cell_m >= 3.9 - 1e-6

@@ -98,3 +98,43 @@ def test_stairwell_doors_are_placed_where_the_stair_fits():
         rect = (min(xs), min(ys), max(xs) - min(xs), max(ys) - min(ys))
         fits += len(well.polygon) == 4 and stair_fits(rect, [d.segment for d in plan.doors if "stairwell" in d.rooms], 2.6)
     assert fits >= 5  # without stair_m: 1 of 4 ground floors of a townhouse, measured
+
+
+def test_stair_kind_is_a_spiral_for_a_small_house_only():
+    from anyhome.floorplan.stairs import (
+        DOGLEG,
+        SPIRAL,
+        SPIRAL_MAX_FLOOR_M2,
+        stair_kind,
+        stair_length_m,
+    )
+
+    assert stair_kind(SPIRAL_MAX_FLOOR_M2) == SPIRAL
+    assert stair_kind(SPIRAL_MAX_FLOOR_M2 + 1.0) == DOGLEG
+    assert stair_length_m(SPIRAL, 2.9) < stair_length_m(DOGLEG, 2.9)  # a spiral's stairwell is shorter
+
+
+def test_small_two_storey_house_gets_a_spiral_stair_that_joins_its_storeys():
+    """A tiny two-storey cottage: a spiral stair (one full turn in a square box), recorded
+    on its ground floor, joining the two storeys; every room reachable, no violation;
+    its stairwells are planned smaller than a dog-leg's."""
+    from anyhome.assets.registry import family_for
+    from anyhome.evaluate import evaluate_house
+    from anyhome.floorplan.levels import reachable_rooms, stair_link
+    from anyhome.floorplan.stairs import SPIRAL, SPIRAL_NAME
+    from anyhome.pipeline import generate
+    from anyhome.plan.program import SPIRAL_STAIRWELL_AREA_M2, STAIRWELL_AREA_M2
+
+    h = generate("A tiny two-storey cottage: a kitchen and sitting room downstairs, one bedroom and a bathroom upstairs.", 0)
+    stairs = [o for o in h.objects if o.category == "stairs"]
+    assert len(stairs) == 1 and stairs[0].name == SPIRAL_NAME
+    assert stairs[0].size[0] == pytest.approx(stairs[0].size[1])
+    assert h.levels[0].stairs_kind == SPIRAL
+    assert family_for(stairs[0].category, stairs[0].name) == "spiral_staircase"
+    a, b = stair_link(h.floorplan, stairs[0])
+    assert (h.room_level(a), h.room_level(b)) == (0, 1)
+    assert reachable_rooms(h) == {r.id for r in h.rooms}
+    assert evaluate_house(h).violations == []
+    planned = [r["area_m2"] for r in h.plan["rooms"] if r["type"] == "stairwell"]
+    assert planned and all(a < STAIRWELL_AREA_M2 for a in planned)
+    assert SPIRAL_STAIRWELL_AREA_M2 < STAIRWELL_AREA_M2

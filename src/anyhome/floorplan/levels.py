@@ -60,9 +60,12 @@ from anyhome.floorplan.merge import merge_open_plan
 from anyhome.floorplan.options import FloorplanOptions
 from anyhome.floorplan.solver import OPENING_HEADROOM_M, floorplan_candidates, solve_floorplan
 from anyhome.floorplan.stairs import (
+    DOGLEG,
     HALL_DOOR_M,
     HALL_DOORS,
     PASSAGE_M,
+    SPIRAL,
+    SPIRAL_NAME,
     STAIR_CLEAR_M,
     STAIR_WIDTH_M,
     STRIP_M,
@@ -71,6 +74,9 @@ from anyhome.floorplan.stairs import (
     flight_rect,
     is_dogleg_box,
     is_stairwell,
+    spiral_risers,
+    stair_kind,
+    stair_length_m,
 )
 from anyhome.floorplan.wells import wells_trimmed
 from anyhome.geometry import opening_zone
@@ -147,11 +153,23 @@ def storey_heights_m(spec: HouseSpec) -> dict[int, float]:
             for k in {r.level for r in spec.rooms}}
 
 
-def flight_length_m(heights: dict[int, float], k: int) -> float:
+def house_stair_kind(spec: HouseSpec) -> str:
+    """The kind of stairs of ``spec`` (:func:`~anyhome.floorplan.stairs.stair_kind`: a
+    spiral for a small house) from the floor its rooms, stairwells left out, plan."""
+    return stair_kind(sum(r.area_m2 for r in spec.rooms if not is_stairwell(r)))
+
+
+def plan_stair_kind(plan: Floorplan) -> str:
+    """The kind of stairs of a laid-out ``plan``, as recorded on its storeys
+    (:attr:`~anyhome.house.Level.stairs_kind`; none recorded: a dog-leg)."""
+    return SPIRAL if any(lv.stairs_kind == SPIRAL for lv in plan.levels) else DOGLEG
+
+
+def flight_length_m(heights: dict[int, float], k: int, kind: str = DOGLEG) -> float:
     """Length of the stair box the stairwell of storey ``k`` holds: the longer of the
-    dog-leg flights that start or arrive there (their rises: the storeys' heights)."""
+    flights of ``kind`` that start or arrive there (their rises: the storeys' heights)."""
     rises = [heights[j] for j in (k - 1, k) if j in heights and j + 1 in heights]
-    return max(dogleg(r).length_m for r in rises or [heights[k]])
+    return max(stair_length_m(kind, r) for r in rises or [heights[k]])
 
 
 def stairwell_min_m(spec: HouseSpec, k: int) -> tuple[float, float]:
@@ -164,7 +182,7 @@ def stairwell_min_m(spec: HouseSpec, k: int) -> tuple[float, float]:
     extra_m = HALL_DOOR_M * max(0, _stair_doors(spec, k) - HALL_DOORS)
     if k == 0 and any(stair_room(spec, 0) in c and "outside" in c for c in spec.connections):
         extra_m += ENTRANCE_WIDTH_M - DOOR_WIDTH_M  # the front door, wider, in the strip's long wall
-    return (round(flight_length_m(storey_heights_m(spec), k) + STRIP_M + extra_m, 4), STAIR_WIDTH_M)
+    return (round(flight_length_m(storey_heights_m(spec), k, house_stair_kind(spec)) + STRIP_M + extra_m, 4), STAIR_WIDTH_M)
 
 
 def stair_hall_width_m(spec: HouseSpec, k: int) -> float:
@@ -265,18 +283,22 @@ def _stacked(spec: HouseSpec, numbers: list[int], rng: np.random.Generator, opti
     for k in sorted((n for n in numbers if n < 0), reverse=True):
         elevation[k] = elevation[k + 1] - heights[k]
     levels = [Level(level=k, elevation_m=round(elevation[k], 4), height_m=round(heights[k], 4)) for k in numbers]
-    plan = _stairs_recorded(_under_above(_joined(spec, plans, levels), through_rooms(spec)))
+    plan = _stairs_recorded(_under_above(_joined(spec, plans, levels), through_rooms(spec)), house_stair_kind(spec))
     plan = wells_trimmed(plan, _stairs_place(plan)[1], {k: stair_room(spec, k) for k in numbers}, opts)
     return stairs_opened(plan, opts)
 
 
-def _stairs_recorded(plan: Floorplan) -> Floorplan:
-    """``plan`` with the place of its stairs (:func:`stack_box`) recorded on every storey
-    a flight rises from (:attr:`~anyhome.house.Level.stairs_at`), so it stays where it
-    is when a stairwell is merged into a room (:func:`stairs_opened`)."""
+def _stairs_recorded(plan: Floorplan, kind: str = DOGLEG) -> Floorplan:
+    """``plan`` with the place of its stairs of ``kind`` (:func:`stack_box`) recorded on
+    every storey a flight rises from (:attr:`~anyhome.house.Level.stairs_at`, and
+    ``stairs_kind`` for a spiral), so it stays where it is when a stairwell is merged
+    into a room (:func:`stairs_opened`)."""
     numbers = sorted(lv.level for lv in plan.levels)
     if len(numbers) < 2:
         return plan
+    marked = {"stairs_kind": SPIRAL} if kind == SPIRAL else {}
+    plan = plan.model_copy(update={"levels": [
+        lv.model_copy(update=marked) if lv.level < numbers[-1] else lv for lv in plan.levels]})
     found = _stairs_place(plan)
     return plan.model_copy(update={"levels": [
         lv.model_copy(update={"stairs_at": found}) if lv.level < numbers[-1] else lv for lv in plan.levels]})
@@ -286,7 +308,8 @@ def _stairs_place(plan: Floorplan) -> tuple[float, float, float]:
     """(foot_x, y0, yaw) of the stairs of ``plan`` (two storeys or more): as recorded on
     its storeys, else found in its stairwells (:func:`stack_box`)."""
     found = next((lv.stairs_at for lv in plan.levels if lv.stairs_at is not None), None)
-    found = found or stack_box([(lv.level, plan) for lv in plan.levels], {lv.level: lv.height_m for lv in plan.levels})
+    found = found or stack_box([(lv.level, plan) for lv in plan.levels], {lv.level: lv.height_m for lv in plan.levels},
+                               plan_stair_kind(plan))
     if found is None:
         names = ", ".join(repr(_stairwell(plan, lv.level).id) for lv in sorted(plan.levels, key=lambda lv: lv.level))
         raise FloorplanError(f"no room for the stairs in {names}")
@@ -399,7 +422,7 @@ def _door_beside_flight(plan: Floorplan, room_id: str, k: int) -> bool:
     foot, ya, yaw = _stairs_place(plan)
     poly = Polygon(room.polygon)
     x0, _, x1, _ = poly.bounds
-    length_m = dogleg(next(lv.height_m for lv in plan.levels if lv.level == k)).length_m  # the flight rising from it
+    length_m = stair_length_m(plan_stair_kind(plan), next(lv.height_m for lv in plan.levels if lv.level == k))  # the flight rising from it
     flight = flight_rect(foot, ya, length_m, STAIR_WIDTH_M, yaw)
     strip = box(foot, ya, foot + STRIP_M, ya + STAIR_WIDTH_M) if yaw == 0.0 else box(foot - STRIP_M, ya, foot, ya + STAIR_WIDTH_M)
     beside = poly.intersection(box(x0, ya, x1, ya + STAIR_WIDTH_M)).difference(flight.union(strip))
@@ -485,7 +508,7 @@ def _best_placed(spec: HouseSpec, plans: dict[int, Floorplan], plan: Floorplan, 
     # the stair is looked for (the costly test) in order of hang, the first place it fits wins
     for hang, over, fx, fy, dx, dy in sorted(places, key=lambda t: (t[1], round(t[0], 6))):
         cand = _moved(_mirrored(plan, stair, fx, fy), dx, dy)
-        if stack_box([*plans.items(), (k, cand)], heights) is None:
+        if stack_box([*plans.items(), (k, cand)], heights, house_stair_kind(spec)) is None:
             continue
         if over:
             raise _ThroughBlocked(f"every place for level {k} lies over a room rising through it from level {ref}")
@@ -567,6 +590,7 @@ def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options: Fl
     stair = stair_room(spec, k)
     sub = _storey_spec(spec, k, options or FloorplanOptions())
     heights = storey_heights_m(spec)
+    kind = house_stair_kind(spec)
     long_m, short_m = stairwell_min_m(spec, k)
     why = f"its stairwell never came out as a rectangle of at least {long_m:g} x {short_m:g} m for the stair"
     attempts = (options or FloorplanOptions()).level_attempts
@@ -575,7 +599,7 @@ def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options: Fl
     for _ in range(attempts):
         try:
             found = floorplan_candidates(sub, rng, options, min_length_m={stair: long_m}, min_side_m={stair: wide_m},
-                                         stair_m={stair: flight_length_m(heights, k)})
+                                         stair_m={stair: flight_length_m(heights, k, kind)})
         except FloorplanError as e:  # its own bounded tries all failed: trying again rarely helps
             if wide_m <= short_m:
                 raise _Unsolvable(f"could not lay out level {k} ({e})") from None
@@ -583,14 +607,14 @@ def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options: Fl
             if narrow is not None:
                 narrow.add(k)
             continue
-        fits = [f for plan in found if (f := _stair_fitted(plan, stair, k, heights, long_m, short_m)) is not None]
+        fits = [f for plan in found if (f := _stair_fitted(plan, stair, k, heights, long_m, short_m, kind)) is not None]
         if fits:
             return fits
     raise FloorplanError(f"could not lay out level {k} in {attempts} attempts ({why})")
 
 
 def _stair_fitted(plan: Floorplan, stair: str, k: int, heights: dict[int, float], long_m: float,
-                  short_m: float) -> Floorplan | None:
+                  short_m: float, kind: str = DOGLEG) -> Floorplan | None:
     """Storey ``k`` (``plan``, as the solver laid it out on its own) turned so its
     stairwell ``stair`` runs east-west, its stand-in entrance dropped (above or below the
     ground), with its stairwell's doors slid clear of the stair where needed
@@ -604,10 +628,10 @@ def _stair_fitted(plan: Floorplan, stair: str, k: int, heights: dict[int, float]
         x0, y0, w, h = _rect(plan.room(stair))
     if w < long_m - 1e-6 or h < short_m - 1e-6:
         return None
-    if stack_box([(k, plan)], heights) is not None:
+    if stack_box([(k, plan)], heights, kind) is not None:
         return plan
-    for slid in _doors_cleared(plan, stair, flight_length_m(heights, k)):  # only where the doors as laid out are in the way
-        if stack_box([(k, slid)], heights) is not None:
+    for slid in _doors_cleared(plan, stair, flight_length_m(heights, k, kind)):  # only where the doors as laid out are in the way
+        if stack_box([(k, slid)], heights, kind) is not None:
             return slid
     return None
 
@@ -717,14 +741,15 @@ def _stairwells(plans: list[tuple[int, Floorplan]]) -> list[tuple[int, Room, lis
     return out
 
 
-def stack_box(plans: list[tuple[int, Floorplan]], heights: dict[int, float]) -> tuple[float, float, float] | None:
+def stack_box(plans: list[tuple[int, Floorplan]], heights: dict[int, float],
+              kind: str = DOGLEG) -> tuple[float, float, float] | None:
     """(foot_x, y0, yaw) of the stairs: every flight stands against one long wall of
     every stairwell, on the strip ``y0`` to ``y0`` + the flights' width, its foot end (local
     +x, turned by ``yaw``) at ``foot_x``, with the strip of floor at the foot
     (:data:`~anyhome.floorplan.stairs.STRIP_M`) beyond it; the stairwell of storey ``k``
     (``plans``: (k, its storey laid out in one frame)) holds the box of the flights that
-    start or arrive there (:func:`flight_length_m`, ``heights``: each storey's
-    floor-to-floor height) and that strip, the box touching no door of it nor its swing
+    start or arrive there (:func:`flight_length_m` of stairs of ``kind``, ``heights``:
+    each storey's floor-to-floor height) and that strip, the box touching no door of it nor its swing
     (:data:`~anyhome.floorplan.stairs.STAIR_CLEAR_M` apart). Feet are tried on the 5 cm
     grid from the walls in; None: no place."""
     from shapely.geometry import LineString
@@ -736,7 +761,7 @@ def stack_box(plans: list[tuple[int, Floorplan]], heights: dict[int, float]) -> 
     if any(w <= 0 for _, _, w, _ in rects.values()):
         return None
     width = STAIR_WIDTH_M
-    lengths = {k: flight_length_m(heights, k) for k in rects}
+    lengths = {k: flight_length_m(heights, k, kind) for k in rects}
     y0, y1 = max(r[1] for r in rects.values()), min(r[1] + r[3] for r in rects.values())
     if y1 - y0 < width - 1e-6:
         return None
@@ -769,10 +794,12 @@ def _joined(spec: HouseSpec, plans: dict[int, Floorplan], levels: list[Level]) -
 
 
 def stairs_objects(plan: Floorplan) -> list[HouseObject]:
-    """One dog-leg stair per pair of storeys, in the lower stairwell, rising to the upper
+    """One stair per pair of storeys, in the lower stairwell, rising to the upper
     storey's floor (its height is the difference of the two elevations); all of them
-    with their foot at the same place (:func:`stack_box`), storey over storey. Its
-    ``position`` is, as for every object, relative to its room's floor."""
+    with their foot at the same place (:func:`stack_box`), storey over storey: a dog-leg,
+    or in a small house (:func:`plan_stair_kind`) a spiral stair of one full turn named
+    :data:`~anyhome.floorplan.stairs.SPIRAL_NAME` in a square box. Its ``position`` is,
+    as for every object, relative to its room's floor."""
     if not plan.levels:
         return []
     numbers = [lv.level for lv in plan.levels]
@@ -780,18 +807,26 @@ def stairs_objects(plan: Floorplan) -> list[HouseObject]:
         return []
     elev = {lv.level: lv.elevation_m for lv in plan.levels}
     foot, ya, yaw = _stairs_place(plan)
+    kind = plan_stair_kind(plan)
     width = STAIR_WIDTH_M
     out = []
     for lo, hi in zip(numbers, numbers[1:]):
         low = _stairwell(plan, lo)
-        d = dogleg(elev[hi] - elev[lo])
-        xa, _, xb, _ = flight_rect(foot, ya, d.length_m, width, yaw).bounds
+        rise_m = elev[hi] - elev[lo]
+        xa, _, xb, _ = flight_rect(foot, ya, stair_length_m(kind, rise_m), width, yaw).bounds
+        if kind == SPIRAL:
+            n = spiral_risers(rise_m)
+            name, text = SPIRAL_NAME, (f"a spiral stair from level {lo} up to level {hi}: one full turn in "
+                                       f"{n} risers of {rise_m / n:.3f} m, arriving over its foot")
+        else:
+            d = dogleg(rise_m)
+            name, text = "stairs", (f"a dog-leg stair from level {lo} up to level {hi}: {d.risers} risers of "
+                                    f"{d.riser_m:.3f} m, goings of {d.going_m:.2f} m, a half landing")
         out.append(HouseObject(
-            id=f"{low.id}-stairs", room=low.id, name="stairs", category=STAIRS_CATEGORY,
-            description=(f"a dog-leg stair from level {lo} up to level {hi}: {d.risers} risers of "
-                         f"{d.riser_m:.3f} m, goings of {d.going_m:.2f} m, a half landing"),
+            id=f"{low.id}-stairs", room=low.id, name=name, category=STAIRS_CATEGORY,
+            description=text,
             position=(round((xa + xb) / 2, 4), round(ya + width / 2, 4), 0.0),
-            size=(round(xb - xa, 4), width, round(d.rise_m, 4)),
+            size=(round(xb - xa, 4), width, round(rise_m, 4)),
             yaw=yaw, rule="place_wall", tags=["equipment"],
         ))
     return out
@@ -848,7 +883,9 @@ def stair_link(plan: Floorplan, obj: HouseObject) -> tuple[str, str] | None:
         return None
     x, y, _ = obj.position
     c, s = math.cos(obj.yaw), math.sin(obj.yaw)
-    if is_dogleg_box(obj.size[0], obj.size[1]):  # a dog-leg ends at its foot end, on its +y half
+    if obj.name == SPIRAL_NAME:  # a spiral turns once round: it ends over its foot end
+        lx, ly = obj.size[0] / 2 - 0.1, 0.0
+    elif is_dogleg_box(obj.size[0], obj.size[1]):  # a dog-leg ends at its foot end, on its +y half
         lx, ly = obj.size[0] / 2 - 0.1, obj.size[1] / 4
     else:  # a straight flight rises toward its local -x
         lx, ly = -(obj.size[0] / 2 - 0.1), 0.0

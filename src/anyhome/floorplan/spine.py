@@ -427,7 +427,15 @@ def _spine_length(prog: Program, s: int, blocks_len: int, rng) -> int:
     natural = int(round(np.sqrt(area * rng.uniform(opts.spine_aspect_min, opts.spine_aspect_max))))
     if prog.types[s] == "hallway" and blocks_len:
         return blocks_len
-    return max(natural, _min_side(prog, s))
+    return max(natural, _min_side(prog, s), _min_long(prog, s))
+
+
+def _min_long(prog: Program, k: int) -> int:
+    """Cells room ``k``'s long side must span (``Program.min_length_m``: a stairwell's
+    stair and the strip at its foot), 0 for none: a stairwell on the spine is laid out
+    that long at once instead of failing the length check after it is built."""
+    least_m = prog.min_length_m[k] if prog.min_length_m else 0.0
+    return int(np.ceil(least_m / prog.options.spine_cell_m - 1e-9)) if least_m > 0 else 0
 
 
 def _hall_width(prog: Program) -> int:

@@ -54,6 +54,43 @@ STAIR_DEPTH_M = 0.25
 """Structural depth of a flight under its pitch line (stringer and treads)."""
 
 
+SPIRAL = "spiral"
+"""Stair kind of a small house (:func:`stair_kind`): a spiral stair, one full turn."""
+DOGLEG = "dogleg"
+"""Stair kind of every other house of several storeys: the dog-leg of this module."""
+SPIRAL_DIAMETER_M = STAIR_WIDTH_M
+"""Diameter of a spiral stair: the dog-leg box's width, so it stands in the same
+stairwells and stacks the same way (1.2-2.0 m is usual for a home's main spiral stair)."""
+SPIRAL_RISER_MAX_M = 0.22
+"""Highest riser of a spiral stair (BS 5395-2, a private stair: 0.17-0.22 m)."""
+SPIRAL_MAX_FLOOR_M2 = 60.0
+"""A house of several storeys whose rooms (its stairwells left out) plan at most this
+much floor gets spiral stairs (:func:`stair_kind`): a tiny or small home, where a
+dog-leg's stairwell of 6-8.5 m2 per storey would take an eighth of the floor or more."""
+SPIRAL_NAME = "spiral stairs"
+"""Name of a spiral ``stairs`` object (the asset factory builds it as a spiral staircase)."""
+
+
+def stair_kind(floor_m2: float) -> str:
+    """The kind of stair (:data:`SPIRAL` or :data:`DOGLEG`) of a house whose rooms, its
+    stairwells left out, plan ``floor_m2`` of floor in all (:data:`SPIRAL_MAX_FLOOR_M2`)."""
+    return SPIRAL if floor_m2 <= SPIRAL_MAX_FLOOR_M2 + 1e-9 else DOGLEG
+
+
+def stair_length_m(kind: str, rise_m: float) -> float:
+    """Length of the box (along its foot-to-far-end axis) of a stair of ``kind`` climbing
+    ``rise_m``: a dog-leg's (:func:`dogleg`), a spiral's diameter. Both end over their
+    foot (a spiral turns once round), so the same strip of floor serves both ends."""
+    return SPIRAL_DIAMETER_M if kind == SPIRAL else dogleg(rise_m).length_m
+
+
+def spiral_risers(rise_m: float) -> int:
+    """Risers of a spiral stair climbing ``rise_m`` (:data:`SPIRAL_RISER_MAX_M`)."""
+    if rise_m <= 0:
+        raise ValueError(f"a stair needs a positive rise, got {rise_m}")
+    return max(2, math.ceil(rise_m / SPIRAL_RISER_MAX_M - 1e-9))
+
+
 @dataclass(frozen=True)
 class DogLeg:
     """One dog-leg stair of a given rise (all lengths in meters)."""

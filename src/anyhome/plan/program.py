@@ -630,14 +630,34 @@ and a 0.9 m landing beside it (2.65 m), with room for five doors
 STAIR_HALL_DOORS = 5
 STAIR_HALL_M2_PER_DOOR = 2.4
 """Floor a stair hall gains per door beyond :data:`STAIR_HALL_DOORS` (0.9 m more of it)."""
+SPIRAL_STAIRWELL_AREA_M2 = 5.7
+"""Floor of a small house's stairwell holding a spiral stair (anyhome.floorplan.stairs
+``stair_kind``: 1.75 m across, one full turn, ending over its foot) and the 1 m strip at
+its foot: 2.75 x 1.75 = 4.8 m2 at least, planned 2.05 m wide as the solver's least."""
+SPIRAL_STAIR_HALL_M2 = 7.3
+"""Floor of a spiral stair hall (three doors or more): the stair and its strip (2.75 m)
+by the stair's width and the 0.9 m landing beside it (2.65 m)."""
 
 
-def stairwell_area_m2(doors: int) -> float:
-    """Planned floor of a stairwell with ``doors`` doors: a plain stairwell for one or
+def stairwell_area_m2(doors: int, kind: str = "dogleg") -> float:
+    """Planned floor of a stairwell with ``doors`` doors holding stairs of ``kind``
+    (anyhome.floorplan.stairs ``DOGLEG`` or ``SPIRAL``): a plain stairwell for one or
     two, else a stair hall (:data:`STAIR_HALL_M2`) growing with its doors."""
+    from anyhome.floorplan.stairs import SPIRAL
+
+    spiral = kind == SPIRAL
     if doors <= 2:
-        return STAIRWELL_AREA_M2
-    return STAIR_HALL_M2 + STAIR_HALL_M2_PER_DOOR * max(0, doors - STAIR_HALL_DOORS)
+        return SPIRAL_STAIRWELL_AREA_M2 if spiral else STAIRWELL_AREA_M2
+    return (SPIRAL_STAIR_HALL_M2 if spiral else STAIR_HALL_M2) + STAIR_HALL_M2_PER_DOOR * max(0, doors - STAIR_HALL_DOORS)
+
+
+def planned_stair_kind(slots: list[Slot]) -> str:
+    """The kind of stairs the floorplan stage will build for ``slots``
+    (anyhome.floorplan.stairs ``stair_kind``: a spiral for a small house) from the floor
+    their rooms, stairwells and landings left out, plan now."""
+    from anyhome.floorplan.stairs import stair_kind
+
+    return stair_kind(sum(s.area for s in slots if s.key not in HELD_KEYS))
 
 
 def assign_levels(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], warnings: list[str]) -> None:
@@ -849,9 +869,10 @@ def connect_levels(kb: KnowledgeBase, slots: list[Slot], entrance_types: list[st
             tree = [e for e in connect(kb, [landing, *(s for s in on if s is not stair)], ["hallway"]) if e[1] != "outside"]
             tree.append((stair.id, landing.id))
         edges += tree
+    kind = planned_stair_kind(slots)
     for s in slots:
         if s.key == STAIRWELL_KEY:  # a stair hall as long as its doors need
-            a = stairwell_area_m2(sum(s.id in e for e in edges))
+            a = stairwell_area_m2(sum(s.id in e for e in edges), kind)
             s.area, s.area_range = a, (a, a)
     entrance = [e for e in edges if e[1] == "outside"]
     return [e for e in edges if e[1] != "outside"] + entrance
@@ -1087,8 +1108,8 @@ def fit_areas(kb: KnowledgeBase, slots: list[Slot], sz: Sizing, warnings: list[s
         if s.area_from != "stated":
             s.area = max(s.area, s.need)
     for s in slots:
-        if s.key == STAIRWELL_KEY:  # a stairwell holds its flight: never capped nor scaled
-            s.area = STAIRWELL_AREA_M2
+        if s.key == STAIRWELL_KEY:  # a stairwell holds its flight: never capped nor scaled (a spiral's is smaller)
+            s.area = min(STAIRWELL_AREA_M2, s.area_range[0])
     circ = [s for s in slots if _type_info(kb, s.type).get("circulation") and s.key != STAIRWELL_KEY]
     total = sum(s.area for s in slots)
     if circ and sz.circulation_share < 1.0:
