@@ -74,8 +74,9 @@ def run_set(path: Path, seeds: list[int]) -> dict[str, Any]:
                 cov.append(0.0)
                 bad_houses += 1
                 continue
-            cov.append(evaluate_house(house, rec.get("expect")).coverage.score)
-            d = defining_elements(house)
+            rep = evaluate_house(house, rec.get("expect"))
+            cov.append(rep.coverage.score)
+            d = defining_elements(house, furnish=rep.furnish)
             kept += d.kept
             if not d.kept:
                 lost.append(f"{rec['id']} seed {seed}: " + ", ".join(d.missing + d.key_dropped))

@@ -39,7 +39,7 @@ from anyhome.materials import (
     surface_material,
     texture_size_px,
 )
-from anyhome.materials.catalog import ceiling_structure, clauses, material_clauses
+from anyhome.materials.catalog import ceiling_materials
 from anyhome.materials.uv import face_normals, textured_mesh
 from anyhome.sanitize import clean_text
 
@@ -51,16 +51,6 @@ PLAN_TO_GLTF = np.array(
 )
 """Plan (x, y, z) -> glTF (x, z, -y)."""
 ROOM_PARTS: tuple[str, ...] = ("floor", "walls", "ceiling")
-STRUCTURE_CEILING = "white plaster"
-"""The ceiling between beams or coffers when its words name nothing else (``room:<id>:beams``
-and ``room:<id>:coffers`` are the structure's own nodes)."""
-
-
-def _unwooded(words: str) -> str:
-    """Ceiling words less those of wood: the beams take the wood, the ceiling between them
-    keeps the rest ("white plaster and dark oak" -> "white plaster")."""
-    kept = [c for c in clauses(words) if not any(e.get("kind") in ("wood", "planks") for e, _ in material_clauses(c))]
-    return " ".join(k for k in kept if material_clauses(k))
 WALL_PROBE_M = 0.03
 """A wall face belongs to the room this far in front of it (see room_wall_meshes)."""
 
@@ -197,26 +187,21 @@ class _SceneBuilder:
             base["ceiling_shape"] = room.ceiling
         slabs = {"floor": _slab(room.polygon, -FLOOR_THICKNESS_M, 0.0, self.openings.get((room.id, "floor"))),
                  "ceiling": ceiling_mesh(room, FLOOR_THICKNESS_M, self.openings.get((room.id, "ceiling")))}
-        structure, rest = ceiling_structure(room.materials.get("ceiling", ""))
+        ceiling, structure, structure_spec = ceiling_materials(room.materials.get("ceiling", ""), self.px)
         for part in ROOM_PARTS:
             mesh = slabs.get(part) if part != "walls" else self.walls.get(room.id)
             if mesh is None:
                 continue
             words = room.materials.get(part, "")
-            spec = surface_material(words, part, self.px)
-            if part == "ceiling" and structure is not None:  # the beams are wood, the ceiling between them plaster
-                spec = surface_material(_unwooded(rest) or STRUCTURE_CEILING, part, self.px)
+            spec = ceiling if part == "ceiling" else surface_material(words, part, self.px)
             meta = {**base, "name": f"{room.name} {part}", "category": part, "material": words,
                     "texture": spec.kind}
             self.add(self.surface(mesh, spec), f"room:{room.id}:{part}", meta, parent=parent)
         mesh = structure_mesh(room, structure) if structure is not None and slabs["ceiling"] is not None else None
-        if structure is not None and mesh is not None:
-            words = room.materials.get("ceiling", "")
-            spec = (surface_material(words, "furniture", self.px) if structure == "beams"
-                    else surface_material(_unwooded(rest) or STRUCTURE_CEILING, "ceiling", self.px))
-            meta = {**base, "name": f"{room.name} {structure}", "category": structure, "material": words,
-                    "texture": spec.kind}
-            self.add(self.surface(mesh, spec), f"room:{room.id}:{structure}", meta, parent=parent)
+        if structure is not None and structure_spec is not None and mesh is not None:  # beams, coffers
+            meta = {**base, "name": f"{room.name} {structure}", "category": structure,
+                    "material": room.materials.get("ceiling", ""), "texture": structure_spec.kind}
+            self.add(self.surface(mesh, structure_spec), f"room:{room.id}:{structure}", meta, parent=parent)
 
     def object(self, obj: HouseObject, parent: str = ROOT_NODE) -> None:
         node = f"object:{obj.id}"

@@ -2,46 +2,33 @@
 
 from __future__ import annotations
 
-import numpy as np
 import pytest
-
-from anyhome.plan import get_planner
-
-
-def _plan(text, seed=0):
-    return get_planner("offline").plan(text, np.random.default_rng(seed))
-
-
-def _names(room):
-    """Every object the room plans, one name per copy."""
-    return ([g.anchor.name for g in room.groups for _ in range(g.repeat)]
-            + [m.name for g in room.groups for m in g.members for _ in range(g.repeat * m.count)]
-            + [o.name for o in room.ornaments])
+from planned import names_of, plan_of
 
 
 @pytest.mark.parametrize("seed", range(3))
 def test_a_salon_in_a_riad_is_a_sitting_room_and_in_a_hair_salon_a_salon(seed):
-    riad = _plan("A Moroccan riad with a courtyard fountain and a salon with floor cushions.", seed)
+    riad = plan_of("A Moroccan riad with a courtyard fountain and a salon with floor cushions.", seed)
     salon = next(r for r in riad.rooms if "salon" in r.name)
     assert salon.type == "living_room"
-    assert not any(n.startswith(("hair", "salon", "styling", "shampoo")) for r in riad.rooms for n in _names(r))
-    shop = _plan("A hair salon with three styling chairs.", seed)
+    assert not any(n.startswith(("hair", "salon", "styling", "shampoo")) for r in riad.rooms for n in names_of(r))
+    shop = plan_of("A hair salon with three styling chairs.", seed)
     assert any(r.type == "shop" for r in shop.rooms)
 
 
 @pytest.mark.parametrize("seed", range(3))
 def test_a_plain_studio_is_a_home_and_an_artists_studio_a_workspace(seed):
-    home = _plan("A boho studio with plants and a macrame wall hanging.", seed)
-    names = [n for r in home.rooms for n in _names(r)]
+    home = plan_of("A boho studio with plants and a macrame wall hanging.", seed)
+    names = [n for r in home.rooms for n in names_of(r)]
     assert any("bed" in n for n in names) and not any("easel" in n for n in names)
-    work = _plan("An artist's studio with easels and a big window.", seed)
-    names = [n for r in work.rooms for n in _names(r)]
+    work = plan_of("An artist's studio with easels and a big window.", seed)
+    names = [n for r in work.rooms for n in names_of(r)]
     assert any("easel" in n for n in names) and not any(n.endswith(" bed") or n == "bed" for n in names)
 
 
 @pytest.mark.parametrize("seed", range(3))
 def test_a_hotel_suite_is_a_set_of_rooms_not_a_hotel(seed):
-    spec = _plan("An art deco hotel suite with a king bed and a marble bathroom.", seed)
+    spec = plan_of("An art deco hotel suite with a king bed and a marble bathroom.", seed)
     types = [r.type for r in spec.rooms]
     assert "reception" not in types and types.count("bedroom") == 1 and "bathroom" in types
     assert len(spec.rooms) <= 4
@@ -56,18 +43,18 @@ def test_an_area_before_a_room_word_that_is_also_a_building_word_is_the_rooms():
 
 @pytest.mark.parametrize("seed", range(3))
 def test_bunk_beds_after_three_bedrooms_go_one_in_each_and_replace_their_beds(seed):
-    spec = _plan("A house with three bedrooms with bunk beds, and a master bedroom with a queen bed.", seed)
-    bunks = {r.id: sum(n == "bunk bed" for n in _names(r)) for r in spec.rooms}
+    spec = plan_of("A house with three bedrooms with bunk beds, and a master bedroom with a queen bed.", seed)
+    bunks = {r.id: sum(n == "bunk bed" for n in names_of(r)) for r in spec.rooms}
     with_bunks = [r for r in spec.rooms if bunks[r.id]]
     assert len(with_bunks) == 3 and all(bunks[r.id] == 1 for r in with_bunks)
     for r in with_bunks:  # the bunk bed is the room's bed
         assert [g.anchor.name for g in r.groups if "bed" in g.anchor.tags] == ["bunk bed"]
-    assert any("queen bed" in _names(r) for r in spec.rooms if not bunks[r.id])
+    assert any("queen bed" in names_of(r) for r in spec.rooms if not bunks[r.id])
 
 
 def test_two_rooms_with_four_things_get_two_each():
-    spec = _plan("A cabin with two bedrooms with four single beds.")
-    beds = [sum(n == "single bed" for n in _names(r)) for r in spec.rooms if r.type == "bedroom"]
+    spec = plan_of("A cabin with two bedrooms with four single beds.")
+    beds = [sum(n == "single bed" for n in names_of(r)) for r in spec.rooms if r.type == "bedroom"]
     assert sorted(beds)[-2:] == [2, 2]
 
 
@@ -75,53 +62,53 @@ def test_two_rooms_with_four_things_get_two_each():
 def test_a_period_house_has_no_office_chairs_or_monitors_unless_asked(seed):
     for text in ("A Victorian study with a writing desk and a leather armchair.",
                  "A one-bedroom haunted house with dark wood and antique furniture."):
-        names = [n for r in _plan(text, seed).rooms for n in _names(r)]
+        names = [n for r in plan_of(text, seed).rooms for n in names_of(r)]
         assert not any(n in ("office chair", "monitor", "tv", "tv stand", "printer") for n in names), (text, names)
-    asked = [n for r in _plan("A haunted study with a computer monitor on the desk.", seed).rooms for n in _names(r)]
+    asked = [n for r in plan_of("A haunted study with a computer monitor on the desk.", seed).rooms for n in names_of(r)]
     assert "computer monitor" in asked
-    modern = [n for r in _plan("A modern office with four desks.", seed).rooms for n in _names(r)]
+    modern = [n for r in plan_of("A modern office with four desks.", seed).rooms for n in names_of(r)]
     assert "office chair" in modern
 
 
 @pytest.mark.parametrize("seed", range(3))
 def test_a_studio_apartments_kitchenette_is_a_part_of_the_studio(seed):
-    plan = _plan("A small studio apartment for a painter, with a bed, a kitchenette and two easels by the window", seed)
+    plan = plan_of("A small studio apartment for a painter, with a bed, a kitchenette and two easels by the window", seed)
     assert sorted(r.type for r in plan.rooms) in (["bathroom", "living_room"], ["bathroom", "entry", "living_room"])
     studio = next(r for r in plan.rooms if r.type == "living_room")
-    names = _names(studio)
+    names = names_of(studio)
     assert any("kitchenette" in n for n in names) and sum("easel" in n for n in names) == 2
     # "small" scales the studio's rooms; it does not add rooms to reach a home's total
-    normal = _plan("A studio apartment for a painter, with a bed, a kitchenette and two easels by the window", seed)
+    normal = plan_of("A studio apartment for a painter, with a bed, a kitchenette and two easels by the window", seed)
     assert len(plan.rooms) <= len(normal.rooms) <= 3
 
 
 @pytest.mark.parametrize("text", ["a studio apartment with a kitchen and a balcony", "a tiny cabin with a kitchen"])
 def test_a_kitchen_named_in_a_one_room_home_is_its_kitchenette(text):
-    plan = _plan(text)
+    plan = plan_of(text)
     assert not any(r.type == "kitchen" for r in plan.rooms)
     assert not any("planned 0" in w for w in plan.warnings)
 
 
 def test_two_kitchens_in_a_studio_are_rooms_the_text_counts():
-    plan = _plan("a studio apartment with two kitchens")
+    plan = plan_of("a studio apartment with two kitchens")
     assert sum(r.type == "kitchen" for r in plan.rooms) >= 1
 
 
 def test_a_mood_word_does_not_lead_the_style_over_a_look():
-    assert _plan("A cozy Victorian parlour with a piano and two velvet armchairs").styles[0] == "victorian"
-    assert _plan("an elegant art deco apartment").styles[0] == "art_deco"
-    assert _plan("a cozy cottage with two bedrooms").styles[0] == "cottage"
+    assert plan_of("A cozy Victorian parlour with a piano and two velvet armchairs").styles[0] == "victorian"
+    assert plan_of("an elegant art deco apartment").styles[0] == "art_deco"
+    assert plan_of("a cozy cottage with two bedrooms").styles[0] == "cottage"
 
 
 def test_a_kids_room_is_a_room_not_a_household():
-    plan = _plan("a kids room with a bunk bed and a single bed")
+    plan = plan_of("a kids room with a bunk bed and a single bed")
     assert len(plan.rooms) == 1
-    names = _names(plan.rooms[0])
+    names = names_of(plan.rooms[0])
     assert "bunk bed" in names
 
 
 @pytest.mark.parametrize("seed", range(3))
 def test_a_nursery_gets_no_desk_or_end_of_bed_bench(seed):
-    plan = _plan("a family home with a nursery and a kids room with bunk beds", seed)
+    plan = plan_of("a family home with a nursery and a kids room with bunk beds", seed)
     nursery = next(r for r in plan.rooms if r.name == "nursery")
-    assert not any(n in ("desk", "office chair", "end-of-bed bench") for n in _names(nursery))
+    assert not any(n in ("desk", "office chair", "end-of-bed bench") for n in names_of(nursery))

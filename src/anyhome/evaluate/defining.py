@@ -3,9 +3,10 @@ a room is named for, in the house?
 
 The named objects are the prompt's object mentions as the offline parser reads them
 (:func:`anyhome.plan.parse.parse`; not those the text rules out, "no TV"). A named
-object is **kept** when the house has an object whose name holds the mention's words
-(the user's name: "clawfoot tub") or the prototype's key ("bathtub"), or whose category
-is the prototype's (objects.yaml). The room-defining objects are the plan's key items
+object is **kept** when the house has an object whose name or category holds the mention's
+words (the user's name: "clawfoot tub") or the prototype's key ("bathtub"), as whole words
+with an optional plural (the coverage matcher), or whose category is the prototype's
+(objects.yaml). The room-defining objects are the plan's key items
 (:attr:`anyhome.plan.spec.GroupSpec.key`: the bed of a bedroom, the screen of a home
 theater); one is kept when the furnishing figures list no drop of it
 (:attr:`anyhome.evaluate.furnish_metrics.FurnishMetrics.key_dropped`). The parser reads
@@ -16,9 +17,10 @@ missed altogether).
 
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass, field
 
+from anyhome.evaluate.coverage import matches_any, object_text
+from anyhome.evaluate.furnish_metrics import FurnishMetrics, furnish_metrics
 from anyhome.house import House
 from anyhome.plan.kb import KnowledgeBase
 
@@ -34,13 +36,11 @@ class Defining:
         return not self.missing and not self.key_dropped
 
 
-def _words(text: str) -> str:
-    return " " + " ".join(re.findall(r"[a-z0-9]+", text.lower())) + " "
-
-
-def defining_elements(house: House, kb: KnowledgeBase | None = None) -> Defining:
-    """The figure of the module doc for one house (its ``prompt`` parsed again)."""
-    from anyhome.evaluate.furnish_metrics import furnish_metrics
+def defining_elements(house: House, kb: KnowledgeBase | None = None,
+                      furnish: FurnishMetrics | None = None) -> Defining:
+    """The figure of the module doc for one house (its ``prompt`` parsed again);
+    ``furnish``: the house's furnishing figures when already computed (an
+    :class:`~anyhome.evaluate.report.EvalReport`'s)."""
     from anyhome.plan.kbview import resolve
     from anyhome.plan.parse import parse
 
@@ -48,19 +48,15 @@ def defining_elements(house: House, kb: KnowledgeBase | None = None) -> Defining
     out = Defining()
     parsed = parse(house.prompt, kb)
     objects = kb.raw("objects")
-    names = [_words(o.name) for o in house.objects]
+    texts = [object_text(o) for o in house.objects]
     cats = {o.category for o in house.objects}
     for m in parsed.objects:
         if m.negated or not m.key:
             continue
         out.n_named += 1
         want = [w for w in {m.name, m.key} if w]
-        cat = (objects.get(m.key) or {}).get("category")
-        if not any(_words(w) in n or _words(_singular(w)) in n for w in want for n in names) and cat not in cats:
+        if (objects.get(m.key) or {}).get("category") not in cats and not any(matches_any(want, t) for t in texts):
             out.missing.append(m.name or m.key)
-    out.key_dropped = list(furnish_metrics(house).key_dropped)
+    out.key_dropped = list((furnish or furnish_metrics(house)).key_dropped)
     return out
 
-
-def _singular(word: str) -> str:
-    return word[:-1] if word.endswith("s") and not word.endswith("ss") else word

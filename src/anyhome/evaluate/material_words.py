@@ -58,17 +58,14 @@ def phrase_words(phrase: str, kb: KnowledgeBase | None = None) -> list[tuple[str
     decides each clause (:func:`anyhome.materials.catalog.clause_heads`: in "warm oak
     linen" the material is linen, oak its colour), ``weathering`` and ``structure`` for
     those words; structure words first, in the phrase's order otherwise."""
-    from anyhome.materials.catalog import _data, _words, ceiling_structure, clause_heads
+    from anyhome.materials.catalog import _data, _words, clause_heads, find_structure
 
     weather = set(_data(kb).get("weathering") or ())
     out: list[tuple[str, str]] = []
     rest = phrase
-    while True:
-        found, left = ceiling_structure(rest, kb)
-        if found is None:
-            break
-        out.append((" ".join(w for w in _words(rest) if w not in _words(left)) or found, "structure"))
-        rest = left
+    while (found := find_structure(rest, kb)) is not None:
+        out.append((found[0], "structure"))
+        rest = found[2]
     out += [(w, "texture") for w in clause_heads(rest, kb)]
     out += [(w, "weathering") for w in dict.fromkeys(_words(phrase)) if w in weather]
     return out

@@ -257,19 +257,47 @@ def spec_from_entry(entry: dict[str, Any], surface: str, words: list[str], color
     )
 
 
-def ceiling_structure(words: str, kb: KnowledgeBase | None = None) -> tuple[str | None, str]:
-    """(structure, rest): the geometry a ceiling's words ask for (materials.yaml
-    ``ceiling_structure``: "beams" or "coffers", None) and the words left for the ceiling
-    surface itself, the structure's words taken out ("exposed oak beams" -> ("beams",
-    "oak"))."""
+STRUCTURE_CEILING = "white plaster"
+"""The ceiling between beams or coffers when its words name nothing else for it."""
+
+
+def find_structure(words: str, kb: KnowledgeBase | None = None) -> tuple[str, str, str] | None:
+    """(phrase, structure, rest) of the first ceiling-structure phrase in ``words``
+    (materials.yaml ``ceiling_structure``, the longest first): the phrase as found,
+    "beams" or "coffers", and the words around it; None without one."""
     table = _data(kb).get("ceiling_structure") or {}
     ws = _words(words)
     for phrase in sorted(table, key=lambda p: -len(p.split())):
         pw = _words(phrase)
         for i in range(len(ws) - len(pw) + 1):
             if ws[i:i + len(pw)] == pw:
-                return str(table[phrase]), " ".join(ws[:i] + ws[i + len(pw):])
-    return None, words
+                return " ".join(pw), str(table[phrase]), " ".join(ws[:i] + ws[i + len(pw):])
+    return None
+
+
+def ceiling_structure(words: str, kb: KnowledgeBase | None = None) -> tuple[str | None, str]:
+    """(structure, rest): the geometry a ceiling's words ask for ("beams", "coffers" or
+    None) and the words left for the ceiling surface itself ("exposed oak beams" ->
+    ("beams", "exposed"): "oak beams" is the structure's phrase)."""
+    found = find_structure(words, kb)
+    return (found[1], found[2]) if found else (None, words)
+
+
+def ceiling_materials(words: str, size_px: int | None = None, kb: KnowledgeBase | None = None
+                      ) -> tuple[MaterialSpec, str | None, MaterialSpec | None]:
+    """(ceiling, structure, structure's material) of a ceiling's words. Without a
+    structure word: the ceiling as :func:`surface_material` makes it, None, None. With
+    one, the beams take the wood (the words as furniture: "exposed oak beams" are oak)
+    and the ceiling between them keeps the other material clauses, else
+    :data:`STRUCTURE_CEILING`; coffers are of the ceiling's own material."""
+    structure, rest = ceiling_structure(words, kb)
+    if structure is None:
+        return surface_material(words, "ceiling", size_px, kb=kb), None, None
+    kept = [c for c in clauses(rest, kb)
+            if (found := material_clauses(c, kb)) and not any(e.get("kind") in ("wood", "planks") for e, _ in found)]
+    ceiling = surface_material(" ".join(kept) or STRUCTURE_CEILING, "ceiling", size_px, kb=kb)
+    own = surface_material(words, "furniture", size_px, kb=kb) if structure == "beams" else ceiling
+    return ceiling, structure, own
 
 
 def weathered(words: list[str] | str, kb: KnowledgeBase | None = None) -> bool:

@@ -872,11 +872,11 @@ def _find_materials(kb: KnowledgeBase, text: str, p: Parsed, rooms: list[Mention
     for mt in voc.material_regex.finditer(text):
         material = mt.group()
         words = [t for t, _, _ in _tokens(text[max(0, mt.start() - 30) : mt.start()])][-2:]
-        colour = [w for w in words if vocabulary(kb).colour_regex.fullmatch(w) or w in weathering]
+        modifiers = [w for w in words if voc.colour_regex.fullmatch(w) or w in weathering]
         after = _tokens(text[mt.end() : mt.end() + 30])[:2]
         surfaces: list[str] = []
         explicit = False
-        phrase = " ".join(colour + [material])  # with its colour and weathering words ("peeling")
+        phrase = " ".join(modifiers + [material])  # with its colour and weathering words ("peeling")
         for tok, _, _ in after:
             surface = surface_of_word(tok, kb)
             if surface is not None:
