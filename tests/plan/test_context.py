@@ -112,3 +112,12 @@ def test_a_nursery_gets_no_desk_or_end_of_bed_bench(seed):
     plan = plan_of("a family home with a nursery and a kids room with bunk beds", seed)
     nursery = next(r for r in plan.rooms if r.name == "nursery")
     assert not any(n in ("desk", "office chair", "end-of-bed bench") for n in names_of(nursery))
+
+
+@pytest.mark.parametrize("text", ["A mountain cabin with exposed timber beams and a wood stove",
+                                  "An old house with peeling wallpaper and dusty floors"])
+def test_finish_words_are_no_objects(text):
+    plan = plan_of(text, 3)
+    names = [n for r in plan.rooms for n in names_of(r)]
+    assert not any(n in ("exposed", "peeling", "dusty") for n in names)
+    assert not any("no known object" in w for w in plan.warnings)

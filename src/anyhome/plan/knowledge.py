@@ -235,6 +235,7 @@ class Vocabulary:
     style_regex: re.Pattern[str]
     material_regex: re.Pattern[str]
     colour_regex: re.Pattern[str]
+    finish_regex: re.Pattern[str]  # weathering words and the words of ceiling structures ("peeling", "exposed")
 
 
 def _alternation(phrases: list[str]) -> re.Pattern[str]:
@@ -288,6 +289,8 @@ def compile_vocabulary(kb: KnowledgeBase) -> Vocabulary:
     mats = [normalize(m) for m in planner_materials(kb)]
     colours = load("colours")
     cols = [normalize(c) for c in [*colours["colours"], *colours.get("modifiers", {})]]
+    finish = [normalize(w) for w in load("materials").get("weathering") or []]
+    finish += [normalize(w) for phrase in load("materials").get("ceiling_structure") or {} for w in phrase.split()]
     return Vocabulary(
         forms=forms,
         regex=_alternation(list(forms)),
@@ -297,4 +300,5 @@ def compile_vocabulary(kb: KnowledgeBase) -> Vocabulary:
         style_regex=_alternation(list(style_forms)),
         material_regex=_alternation(mats),
         colour_regex=_alternation(cols),
+        finish_regex=_alternation(finish or ["\x00"]),
     )

@@ -912,13 +912,15 @@ def _singular(word: str) -> tuple[str, bool]:
 def _known_spans(kb: KnowledgeBase, text: str, taken: list[tuple[int, int]], mentions: list[Mention]) -> tuple[list[tuple[int, int]], list[tuple[int, int]]]:
     """Spans of what the lexical pass found: (mentions and codes, modifier words).
 
-    Modifier words (styles, materials, colours) may stand inside an open-vocabulary
-    object phrase; mentions may not."""
+    Modifier words (styles, materials, colours, weathering and ceiling-structure words:
+    "peeling", "exposed") may stand inside an open-vocabulary object phrase; mentions may
+    not."""
     voc = vocabulary(kb)
     spans = list(taken)
     for m in mentions:
         spans.append((m.start - len(" ".join(m.words)) - (1 if m.words else 0), m.end))
-    soft = [(mt.start(), mt.end()) for rx in (voc.style_regex, voc.material_regex, voc.colour_regex) for mt in rx.finditer(text)]
+    soft = [(mt.start(), mt.end()) for rx in (voc.style_regex, voc.material_regex, voc.colour_regex, voc.finish_regex)
+            for mt in rx.finditer(text)]
     return spans, soft
 
 
