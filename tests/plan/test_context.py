@@ -121,3 +121,11 @@ def test_finish_words_are_no_objects(text):
     names = [n for r in plan.rooms for n in names_of(r)]
     assert not any(n in ("exposed", "peeling", "dusty") for n in names)
     assert not any("no known object" in w for w in plan.warnings)
+
+
+def test_a_weathering_word_on_a_surface_ages_the_styles_material():
+    plan = plan_of("An abandoned Victorian house with peeling wallpaper, dusty floors and a cobwebbed chandelier", 3)
+    living = next(r for r in plan.rooms if r.type == "living_room")
+    assert living.materials["floor"].startswith("dusty ") and living.materials["walls"] == "peeling wallpaper"
+    plan = plan_of("a derelict farmhouse with peeling walls", 1)
+    assert any(r.materials["walls"].startswith("peeling ") for r in plan.rooms)

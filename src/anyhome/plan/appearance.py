@@ -69,6 +69,10 @@ def choose_look(kb: KnowledgeBase, parsed: Parsed, implied: list[str], building:
         look.notes.append(mm.phrase)
     if furniture_words:
         look.furniture = ", ".join(dict.fromkeys(furniture_words))
+    for surface, aged in parsed.aged.items():  # "dusty floors": the style's floor, dusty
+        if surface in ("floor", "walls", "ceiling", "furniture"):
+            setattr(look, surface, " ".join(aged) + " " + getattr(look, surface))
+            look.notes.append(" ".join(aged) + " " + surface)
     if look.notes:
         look.describe += "; " + ", ".join(dict.fromkeys(look.notes))
     if parsed.colours:

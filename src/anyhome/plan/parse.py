@@ -119,9 +119,8 @@ _MEMBERS = re.compile(
     r"boys|girls|teens|teenagers|sons|daughters)\b(?!'|\s+(?:room|rooms|bedroom|bedrooms|bathroom|bathrooms|area|"
     r"corner|zone|space|wing|bed|beds|table|tables|desk|desks|furniture|play)\b)"
 )
-"""Household members counted ("two kids", "three teenagers"); not a room or an object
-named for them ("a kids room", "two kids' desks")."""
-"""Household members counted when no "family of N" is given ("two parents and three kids")."""
+"""Household members counted when no "family of N" is given ("two parents and three
+kids"); not a room or an object named for them ("a kids room", "two kids' desks")."""
 _UNKNOWN_ROOM = re.compile(
     r"\b([^\W\d_]+(?:'s|s')?) (room|nook|corner|suite|lounge|den|booth|cave|shed|chamber|parlou?r|studio|"
     r"cellar|loft|workshop|bay|quarters|sanctuary)s?\b"
@@ -200,6 +199,7 @@ class Parsed:
     style_words: list[str] = field(default_factory=list)  # the user's style words, as written
     colours: list[str] = field(default_factory=list)
     materials: list[MaterialMention] = field(default_factory=list)
+    aged: dict[str, list[str]] = field(default_factory=dict)  # surface -> weathering words on it alone ("dusty floors")
     bedrooms: int | None = None  # from "3B2B" / "3br"
     bathrooms: int | None = None
     people: int | None = None
@@ -897,6 +897,12 @@ def _find_materials(kb: KnowledgeBase, text: str, p: Parsed, rooms: list[Mention
                 if r.end <= mt.start() and CONTEXT_OPENERS.match(text[r.end : r.end + 40]) and "." not in text[r.end : mt.start()] and mt.start() - r.end < 60:
                     room = i
         p.materials.append(MaterialMention(phrase, material, surfaces, mt.start(), room, explicit))
+    tokens = _tokens(text)
+    for k, (tok, _, _) in enumerate(tokens[:-1]):  # "dusty floors", "peeling walls": no material named
+        nxt = tokens[k + 1][0]
+        surface = None if voc.material_regex.fullmatch(nxt) else surface_of_word(nxt, kb)  # "peeling wallpaper" is a material
+        if tok in weathering and surface is not None and tok not in p.aged.get(surface, []):
+            p.aged.setdefault(surface, []).append(tok)
 
 
 def _singular(word: str) -> tuple[str, bool]:
