@@ -129,3 +129,11 @@ def test_a_weathering_word_on_a_surface_ages_the_styles_material():
     assert living.materials["floor"].startswith("dusty ") and living.materials["walls"] == "peeling wallpaper"
     plan = plan_of("a derelict farmhouse with peeling walls", 1)
     assert any(r.materials["walls"].startswith("peeling ") for r in plan.rooms)
+
+
+def test_a_material_named_with_an_object_dresses_that_object_only():
+    plan = plan_of("a living room with an orange tartan sofa and a coffee table", 3)
+    items = [i for r in plan.rooms for g in r.groups for i in [g.anchor, *g.members]]
+    sofa = next(i for i in items if i.name == "orange tartan sofa")
+    table = next(i for i in items if i.name == "coffee table")
+    assert sofa.material == "orange tartan" and "tartan" not in table.material

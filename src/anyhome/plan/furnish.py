@@ -15,6 +15,7 @@ import numpy as np
 
 from anyhome.layout.rules import params_for, place_around
 from anyhome.plan.kb import KnowledgeBase
+from anyhome.plan.kbview import vocabulary
 from anyhome.plan.openvocab import fallback_object
 from anyhome.plan.parse import Mention
 from anyhome.plan.spec import MAX_COUNT
@@ -320,6 +321,8 @@ def apply_mention(kb: KnowledgeBase, m: Mention, groups: list[Group], ornaments:
     g["priority"] = min(g["priority"], 0)
     if named:
         item["name"] = m.name
+    if m.words and vocabulary(kb).material_regex.search(" ".join(m.words)):  # "an orange tartan sofa"
+        item["material"] = " ".join(m.words)
     if m.size != 1.0:
         item["size_m"] = tuple(round(min(20.0, s * m.size), 3) for s in item["size_m"])
     # a member of the group made for it (its objects.yaml group: a chair at a styling
