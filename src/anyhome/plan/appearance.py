@@ -53,9 +53,9 @@ def choose_look(kb: KnowledgeBase, parsed: Parsed, implied: list[str], building:
     if own:  # the user's own words lead ("moroccan: mediterranean, terracotta...")
         look.describe = ", ".join(own) + ": " + look.describe
     furniture_words: list[str] = []
-    own = [(m.start - len(" ".join(m.words)) - 1, m.start) for m in parsed.objects if m.words and not m.negated]
+    objects_words = [(m.start - len(" ".join(m.words)) - 1, m.start) for m in parsed.objects if m.words and not m.negated]
     for mm in parsed.materials:
-        if mm.surfaces == ["furniture"] and any(a <= mm.start < b for a, b in own):
+        if mm.surfaces == ["furniture"] and any(a <= mm.start < b for a, b in objects_words):
             continue  # "an orange tartan sofa": the sofa's own material (plan.furnish.apply_mention), not the house's
         for surface in mm.surfaces:
             words = mm.phrase
