@@ -16,7 +16,9 @@ objects shown with a stand-in mesh (asset records flagged ``approximate``).
 
 benchmarks/prompts/heldout_context.jsonl (40 prompts) was written by a helper who had
 not read the knowledge base, at the start of the session that built context reading;
-it is for measuring only, never for tuning.
+it is for measuring only, never for tuning. benchmarks/prompts/dev_context.jsonl (36
+prompts, same form) was written the same way at the start of the sixth session, as the
+set to find and fix causes on.
 """
 
 from __future__ import annotations
@@ -39,6 +41,7 @@ HERE = Path(__file__).resolve().parent
 SETS = {
     "public": HERE.parent.parent / "shared" / "eval" / "prompts.jsonl",
     "heldout_context": HERE / "prompts" / "heldout_context.jsonl",
+    "dev_context": HERE / "prompts" / "dev_context.jsonl",
 }
 
 

@@ -54,3 +54,21 @@ def test_the_scene_hangs_wooden_beams_under_a_plaster_ceiling(tmp_path) -> None:
         assert beam.visual.material.name.startswith("wood")
         assert ceiling.visual.material.name.startswith("plaster")
         assert isinstance(beam, trimesh.Trimesh) and beam.volume > 0.05
+
+
+def test_beams_are_hidden_with_the_ceiling_from_the_birds_eye_view() -> None:
+    """The bird's-eye view hides the ceiling layer: beams and coffers hang in it (before,
+    a beamed manor's bird's-eye was a lattice of beams over its rooms)."""
+    from anyhome.house import House
+    from anyhome.render.meshes import scene_meshes
+
+    house = House(prompt="a beamed room", seed=0, rooms=[_room(5.0, 4.0)])
+    meshes = scene_meshes(house, build_scene(house, texture_px=16))
+    ceiling = np.concatenate([b.vertices["pos"] for b in meshes.batches if b.layer == "ceiling"])
+    main = np.concatenate([b.vertices["pos"] for b in meshes.batches if b.layer == "main"])
+    under = 2.7 - BEAM_DEPTH_M + 1e-3
+    assert (ceiling[:, 2] <= under).any()  # the beams' undersides are in the ceiling layer
+    beam_x = ceiling[ceiling[:, 2] <= under][:, 0]
+    assert ((beam_x > 0.3) & (beam_x < 4.7)).any()  # the beams across the room
+    high = (main[:, 0] > 0.3) & (main[:, 0] < 4.7) & (main[:, 2] > 2.0)
+    assert not high.any()  # nothing of them is left in the main layer (walls stand at x 0 and 5)

@@ -70,3 +70,31 @@ def test_a_stairwell_on_the_spine_is_laid_out_as_long_as_its_stair_needs():
         assert not isinstance(owner, str), owner
         xs, ys = np.nonzero(owner == k)
         assert max(xs.max() - xs.min() + 1, ys.max() - ys.min() + 1) * opts.spine_cell_m >= 3.9 - 1e-6
+
+
+def test_a_hallway_with_a_corridor_and_a_busy_living_room_behind_it_roots_the_spine():
+    """Entrance hall -> hallway, and behind the hallway both a corridor of four bedrooms
+    and a drawing room of four rooms (a manor): a spine from the entrance can hold only
+    one of them, so the spine is built from the hallway and the entrance sits in a block.
+    Before, every spine layout failed ("room ... has more than two sub-rooms")."""
+    from anyhome.floorplan.options import FloorplanOptions
+    from anyhome.floorplan.program import Program
+    from anyhome.floorplan.spine import spine_owner
+    from anyhome.plan.spec import HouseSpec, RoomSpec
+
+    rooms = [("ballroom", "hall", 45.0), ("hallway", "hallway", 9.0), ("corridor", "hallway", 8.0),
+             ("drawing", "living_room", 30.0), ("dining", "dining_room", 20.0), ("kitchen", "kitchen", 14.0),
+             ("library", "library", 20.0), ("study", "study", 12.0), ("music", "studio", 18.0),
+             *((f"bed{k}", "bedroom", 14.0) for k in range(6)), ("bath", "bathroom", 5.0)]
+    conns = [("ballroom", "outside"), ("ballroom", "hallway"), ("hallway", "corridor"), ("hallway", "drawing"),
+             ("hallway", "bed0"), ("hallway", "bed1"), ("drawing", "dining"), ("dining", "kitchen"),
+             ("drawing", "library"), ("drawing", "music"), ("drawing", "study"),
+             ("corridor", "bed2"), ("corridor", "bed3"), ("corridor", "bed4"), ("corridor", "bed5"),
+             ("corridor", "bath")]
+    spec = HouseSpec(prompt="a manor", rooms=[RoomSpec(id=i, name=i, type=t, area_m2=a) for i, t, a in rooms],
+                     connections=conns)
+    prog = Program.from_spec(spec, FloorplanOptions())
+    for seed in range(4):
+        owner = spine_owner(prog, np.random.default_rng(seed))
+        assert not isinstance(owner, str), owner
+        assert set(np.unique(owner).tolist()) >= set(range(prog.n))

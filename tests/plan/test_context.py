@@ -137,3 +137,42 @@ def test_a_material_named_with_an_object_dresses_that_object_only():
     sofa = next(i for i in items if i.name == "orange tartan sofa")
     table = next(i for i in items if i.name == "coffee table")
     assert sofa.material == "orange tartan" and "tartan" not in table.material
+
+
+def test_bedrooms_beyond_what_a_hallway_holds_get_a_corridor_not_the_living_room():
+    """A one-storey manor of six bedrooms: the hallway holds five rooms, and before, the
+    other bedrooms opened off the drawing room (a living room). Now a corridor carries on
+    from the hallway and every bedroom opens off a hallway or the corridor."""
+    import numpy as np
+
+    from anyhome.plan import get_planner
+
+    text = ("A grand single-storey manor with a ballroom, a library, a drawing room, a dining room, a kitchen, "
+            "a pantry, a study, a music room, six bedrooms and four bathrooms.")
+    spec = get_planner("offline").plan(text, np.random.default_rng(0))
+    types = {r.id: r.type for r in spec.rooms}
+    halls = [r.id for r in spec.rooms if r.type == "hallway"]
+    assert len(halls) == 2
+    assert any({a, b} == set(halls) for a, b in spec.connections)  # the corridor carries on from the hallway
+    for a, b in spec.connections:
+        if types.get(b) == "bedroom":
+            assert types[a] == "hallway", (a, b)
+
+
+def test_fourteen_guest_rooms_open_off_a_chain_of_corridors():
+    """The issue's hotel floor: every guest room opens off a corridor (before, six of
+    them opened off the breakfast room and the lift lobby), and each added corridor
+    carries on from the one before (a chain the spine layout can hold)."""
+    import numpy as np
+
+    from anyhome.plan import get_planner
+
+    spec = get_planner("offline").plan(
+        "A hotel floor with fourteen guest rooms, each with its own bathroom.", np.random.default_rng(0))
+    types = {r.id: r.type for r in spec.rooms}
+    guests = [b for a, b in spec.connections if types.get(b) == "bedroom"]
+    assert len(guests) == 14
+    assert all(types[a] == "hallway" for a, b in spec.connections if types.get(b) == "bedroom")
+    hall_links = [(a, b) for a, b in spec.connections if types.get(a) == types.get(b) == "hallway"]
+    parents = [a for a, _ in hall_links]
+    assert hall_links and len(parents) == len(set(parents))  # no hallway carries two corridors on

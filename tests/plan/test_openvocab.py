@@ -122,3 +122,37 @@ def test_object_on_a_room_goes_there():
     h = plan("A house with two hammocks on the porch.")
     porch = next(r for r in h.rooms if r.name == "porch")
     assert ("hammock", 2) in items(porch)
+
+
+def test_a_colon_opens_a_list_as_with_does():
+    """"A monastery: twelve cells, a chapel": before, what stood right after the colon
+    was read as nothing, so the twelve cells were lost."""
+    assert _phrases("a monastery: twelve cells, a chapel") == ["cells", "chapel"]
+    cells = [m for m in parse("A small monastery: twelve cells, a chapel and a refectory.").rooms if m.name == "cell"]
+    assert cells and cells[0].count == 12
+
+
+def test_a_closed_compound_on_room_is_a_room():
+    """"two courtrooms" was read as two objects named courtroom; "a mushroom" stays
+    no room."""
+    p = parse("A courthouse with two courtrooms and a mushroom planter.")
+    rooms = {m.name: m for m in p.rooms}
+    assert "courtroom" in rooms and rooms["courtroom"].count == 2
+    assert not any("mushroom" in m.name for m in p.rooms)
+
+
+def test_a_building_word_weakly_guessed_as_a_home_plans_only_the_named_rooms():
+    """"A county courthouse with ...": the embedding matcher's nearest building for
+    "courthouse" is a courtyard house (a weak match); with none of a home's rooms named,
+    the house has the named rooms and no bedrooms, and the holding cells alone go to the
+    basement (before, every room went down and the plan had no entrance)."""
+    spec = plan("County courthouse with two courtrooms, judges chambers, a jury deliberation room, "
+                "and a few holding cells in the basement.")
+    types = [r.type for r in spec.rooms]
+    assert "bedroom" not in types and "living_room" not in types
+    names = {r.name: r for r in spec.rooms}
+    assert {"courtroom", "courtroom 2", "jury deliberation room"} <= set(names)
+    assert names["courtroom"].level == 0 and names["holding cell"].level == -1
+    by_id = {r.id: r for r in spec.rooms}
+    entrances = [by_id[c[0]] for c in spec.connections if c[1] == "outside"]
+    assert entrances and all(r.level == 0 for r in entrances)

@@ -30,7 +30,8 @@ def spine_owner(prog: Program, rng: np.random.Generator) -> np.ndarray | str:
     if isinstance(tree, str):
         return tree
     root, children = tree
-    spine = _spine(root, children)
+    top, children = _spine_root(root, children, prog)
+    spine = _spine(top, children)
     blocks: dict[int, list[list[Column]]] = {}
     for s in spine:
         blocks[s] = []
@@ -105,6 +106,47 @@ def _tree(prog: Program, rng: np.random.Generator) -> tuple[int, list[list[int]]
         return "the bubble diagram is not connected"
     for k in range(prog.n):
         rng.shuffle(children[k])
+    return root, children
+
+
+def _fits(root: int, children: list[list[int]], prog: Program) -> bool:
+    """True if every room off the spine through ``root`` fits in a block beside it."""
+    spine = _spine(root, children)
+    return all(not isinstance(_block(c, children, prog, None), str)
+               for s in spine for c in children[s] if c not in spine)
+
+
+def _rerooted(children: list[list[int]], old_root: int, root: int) -> list[list[int]]:
+    """The same tree hung from ``root``: each room's children in their old order, its old
+    parent (where it is not the new one) last."""
+    parent = {c: k for k, cs in enumerate(children) for c in cs}
+    out: list[list[int]] = [[] for _ in children]
+    order, seen = [root], {root}
+    for k in order:
+        nbrs = list(children[k]) + ([parent[k]] if k != old_root else [])
+        for j in nbrs:
+            if j not in seen:
+                seen.add(j)
+                out[k].append(j)
+                order.append(j)
+    return out
+
+
+def _spine_root(root: int, children: list[list[int]], prog: Program) -> tuple[int, list[list[int]]]:
+    """Where the spine is built from: the entrance room, or, where a spine through it
+    leaves a room with more than two sub-rooms in a block (a hallway with both a
+    corridor and a living room of four rooms behind it), the nearest room (breadth
+    first) from which every such room lies on the spine. The entrance then sits in a
+    block, whose column reaches the outer edge for its door."""
+    if _fits(root, children, prog):
+        return root, children
+    order = [root]
+    for k in order:
+        order.extend(children[k])
+    for k in order[1:]:
+        tree = _rerooted(children, root, k)
+        if _fits(k, tree, prog):
+            return k, tree
     return root, children
 
 

@@ -69,7 +69,7 @@ def find_object_phrases(
     """Noun phrases in object lists that no known phrase covers.
 
     Returns (phrase, start, end) triples; a phrase qualifies when a list
-    opener ("with", "featuring"...) precedes it in the same clause and a determiner, a
+    opener ("with", "featuring"..., or a colon) precedes it in the same clause and a determiner, a
     count, a comma or "and" stands right before it. Words in ``soft`` spans (colours,
     materials, styles) may modify a phrase ("a tufted pink ottoman", "six steel
     fermentation tanks") but never end it.
@@ -88,16 +88,16 @@ def find_object_phrases(
     n = len(tokens)
     while i < n:
         tok, s, e = tokens[i]
-        if tok in ".;:!?()":
+        if tok in ".;!?()":
             in_list = False
             i += 1
             continue
-        if tok in LIST_OPENERS:
+        if tok in LIST_OPENERS or tok == ":":  # "a monastery: twelve cells, a chapel" lists as "with" does
             in_list = True
             i += 1
             continue
         prev = tokens[i - 1][0] if i > 0 else ""
-        starts = prev in DETERMINERS or is_number(prev) or prev in (",", "and", "of") or prev in LIST_OPENERS
+        starts = prev in DETERMINERS or is_number(prev) or prev in (",", "and", "of", ":") or prev in LIST_OPENERS
         if not (in_list and starts) or (is_taken(s, e) and not is_soft(s, e)) or not tok.isalpha() or tok in PHRASE_BREAKS or tok in DETERMINERS:
             i += 1
             continue
@@ -144,7 +144,9 @@ def classify(phrase: str, kb: KnowledgeBase | None = None, room_ok: bool = True)
     A phrase is a room when its room match clears the threshold and beats its object
     match by ``ROOM_MARGIN`` ("a home theater", "a sauna"); otherwise an object.
     ``room_ok=False``: the context says it is what a room holds ("a bay for two
-    engines"), so an object whatever it matches.
+    engines"), so an object whatever it matches. A closed compound on "room"
+    ("courtroom") is a room whatever it matches, with no concept when its room match is
+    weak (a courtroom is no control room: it is furnished as a room of type ``other``).
     """
     mo = _best(nearest("objects", phrase, with_score=True, kb=kb), None)
     mr = _best(nearest("rooms", phrase, with_score=True, kb=kb), None)
@@ -156,7 +158,22 @@ def classify(phrase: str, kb: KnowledgeBase | None = None, room_ok: bool = True)
         mo = _best(mo, ho)
     if room_ok and mr is not None and mr.score >= max(threshold("rooms", kb=kb), LIST_ROOM_MIN) and (mo is None or mr.score > mo.score + ROOM_MARGIN):
         return "room", mr
+    if room_ok and _room_compound(head):  # "two courtrooms": a room; its concept only when close
+        return "room", mr if mr is not None and mr.score >= LIST_ROOM_MIN else None
     return "object", mo if mo is not None and mo.score >= threshold("objects", kb=kb) else None
+
+
+ROOM_COMPOUND_MIN_CHARS = 7
+"""A closed compound on "room" needs this many letters to be read as one ("courtroom",
+"stockroom"), so that a plain "room" or "broom" is not."""
+NOT_ROOM_COMPOUNDS = frozenset("mushroom mushrooms broom brooms vroom heirloom".split())
+"""Words that end in "room" and are no room."""
+
+
+def _room_compound(word: str) -> bool:
+    """Whether ``word`` is a closed compound naming a room ("courtroom", "boardroom",
+    "storeroom", "stillroom"): it ends in "room" and is no known exception."""
+    return word.endswith("room") and len(word) >= ROOM_COMPOUND_MIN_CHARS and word not in NOT_ROOM_COMPOUNDS
 
 
 def _best(a: Match | None, b: Match | None) -> Match | None:

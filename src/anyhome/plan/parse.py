@@ -191,6 +191,7 @@ class Parsed:
     text: str
     building: int | None = None  # index into programs.yaml buildings
     building_word: str | None = None  # the user's word when the embedding matcher chose the program
+    building_score: float = 1.0  # how close the embedding matcher found it (1.0: a word the knowledge lists)
     building_size: float = 1.0
     building_phrase: str | None = None  # the user's words for the building ("pilates studio", "sushi restaurant")
     rooms: list[Mention] = field(default_factory=list)
@@ -409,9 +410,9 @@ def _parse_building(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[i
         best = nxt
     opening = _opening_building(kb, text, best.start(), taken)
     if opening is not None:  # "a steakhouse with ... a bar": the text's subject is the building
-        program, span, head = opening
+        program, span, head, score = opening
         p.building = next(i for i, b in enumerate(kb.raw("programs")["buildings"]) if b["program"] == program)
-        p.building_word = head
+        p.building_word, p.building_score = head, score
         _building_modifiers(kb, text, span[0], p, taken=taken)
         _size_words(kb, text, span[1], p)  # the head itself may be the size word ("a tiny")
         p.building_phrase = _with_modifier(kb, text, span[0], head, taken)
@@ -444,7 +445,7 @@ def _with_modifier(kb: KnowledgeBase, text: str, start: int, phrase: str, taken:
     return phrase
 
 
-def _opening_building(kb: KnowledgeBase, text: str, known_start: int, taken: list[tuple[int, int]]) -> tuple[str, tuple[int, int], str] | None:
+def _opening_building(kb: KnowledgeBase, text: str, known_start: int, taken: list[tuple[int, int]]) -> tuple[str, tuple[int, int], str, float] | None:
     """The program for the head of the text's opening noun phrase when the first known
     building word only comes after it; None when the head maps to no building."""
     tokens = _tokens(text)
@@ -456,7 +457,7 @@ def _opening_building(kb: KnowledgeBase, text: str, known_start: int, taken: lis
     if any(a < fnp[2] and s < b for a, b in taken) or head in ov.non_objects(kb) or head in vocabulary(kb).forms:
         return None
     mb = ov.map_building(head, kb)
-    return (mb.key, (s, fnp[2]), head) if mb is not None else None
+    return (mb.key, (s, fnp[2]), head, mb.score) if mb is not None else None
 
 
 def _filler(tok: str, kb: KnowledgeBase) -> bool:
@@ -944,7 +945,7 @@ def _open_vocabulary(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[
             mb = ov.map_building(phrase, kb)
             if mb is not None:
                 p.building = next(i for i, b in enumerate(kb.raw("programs")["buildings"]) if b["program"] == mb.key)
-                p.building_word = phrase
+                p.building_word, p.building_score = phrase, mb.score
                 spans.append((fnp[1], fnp[2]))
                 head_start = fnp[2] - len(phrase.split()[-1])
                 _building_modifiers(kb, text, head_start, p, taken=spans)
@@ -976,8 +977,8 @@ def _open_vocabulary(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[
         head, plural = _singular(words[-1])
         name = " ".join([*words[:-1], head])
         kind, mo = ov.classify(name, kb, room_ok=not _HELD_FOR.search(text[:s]))
-        if kind == "room" and mo is not None:
-            m = Mention("room", "", name, s, e, plural=plural, concept=mo.key, open_vocab=True)
+        if kind == "room":
+            m = Mention("room", "", name, s, e, plural=plural, concept=mo.key if mo else None, open_vocab=True)
             _look_back(m, text, tokens, spans, keep_words=False, kb=kb)
             mentions.append(m)
             continue

@@ -123,6 +123,8 @@ def choose_program(kb: KnowledgeBase, parsed: Parsed) -> tuple[str | None, list[
     """Program key (None: only the named rooms) and the styles the building implies."""
     if parsed.building is not None:
         b = kb.raw("programs")["buildings"][parsed.building]
+        if _guessed_home(kb, parsed, b["program"]):
+            return None, []
         return b["program"], list(b.get("styles", []))
     if any(not m.negated for m in parsed.rooms):
         types = {_slot_from_mention(kb, m, i).type for i, m in enumerate(parsed.rooms) if not m.negated}
@@ -130,6 +132,23 @@ def choose_program(kb: KnowledgeBase, parsed: Parsed) -> tuple[str | None, list[
             return DEFAULT_PROGRAM, []
         return None, []
     return DEFAULT_PROGRAM, []
+
+
+GUESSED_HOME_MAX = 0.9
+"""A building word the knowledge does not list, matched to a dwelling's program by the
+embedding matcher below this score, is trusted only if the text names a room of a home
+(:func:`_guessed_home`)."""
+
+
+def _guessed_home(kb: KnowledgeBase, parsed: Parsed, program: str) -> bool:
+    """Whether the building is a weak guess at a dwelling ("a county courthouse" read as
+    a courtyard house) while the text names rooms, none of them a home's
+    (:data:`HOME_TYPES`): then only the named rooms are planned, no bedrooms."""
+    if parsed.building_score >= GUESSED_HOME_MAX or program not in set(_sizes(kb).get("homes", [])):
+        return False
+    named = [m for m in parsed.rooms if not m.negated]
+    types = {_slot_from_mention(kb, m, i).type for i, m in enumerate(parsed.rooms) if not m.negated}
+    return len(named) >= 2 and not (types & HOME_TYPES) and not parsed.bedrooms and not parsed.people
 
 
 def plan_rooms(kb: KnowledgeBase, parsed: Parsed, program: str | None, rng: np.random.Generator, warnings: list[str], sizing: Sizing | None = None) -> tuple[list[Slot], str | None]:
@@ -267,21 +286,26 @@ def _claim_mentions(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], fixed:
         n = max(1, m.count or 1) if (generic or m.count) else (2 if m.plural else 1)  # "tatami rooms"
         n = min(n, MAX_COUNT)
         first: Slot | None = None  # more rooms than the program has copy the first one's furnishing
+        headed = False  # the mention claimed the program's rooms by their head word
         # "three practice rooms" in a music school: the program's practice rooms, as the
         # building reads them, not the word's own reading (a yoga room)
         word = _room_word(m.key)
         for _ in range(n):
             by_key = [s for s in slots if s.mention is None and s.key and s.key == word]
             same_name = [s for s in slots if s.mention is None and s.name in (proto.name, m.key)]
+            # "twelve monks' cells" in a monastery: the program's cells, as it furnishes them
+            same_head = [s for s in slots if s.mention is None and s.key and len(proto.name.split()) > 1
+                         and s.name == proto.name.split()[-1]]
             # rooms of the catch-all type "other" are too unlike to stand in for each other
             same_type = [s for s in slots if s.mention is None and s.type == proto.type != "other"]
             same_set = [s for s in slots if s.mention is None and s.furnish == proto.furnish != "other"]
-            target = next(iter(by_key or same_name or same_set or same_type), None)
+            target = next(iter(by_key or same_name or same_head or same_set or same_type), None)
             if target is None:
                 like = first or proto
                 target = Slot(proto.name, like.type, like.furnish, like.area_range, key=like.key)
                 slots.append(target)
-            in_context = bool(target.key) and target.key == word
+            headed = headed or target in same_head  # the rest copy the program's cells too
+            in_context = bool(target.key) and (target.key == word or headed)
             target.mention = i
             target.size = proto.size
             target.optional = False
@@ -591,6 +615,8 @@ def connect(kb: KnowledgeBase, slots: list[Slot], entrance_types: list[str]) -> 
 
         free = [p for p in placed if degree[p.id] < cap(p)]
         ranked = [p for t in attach for p in free if p.type == t]
+        if s.key == CORRIDOR_KEY:  # an added corridor carries on from the hallway it relieves
+            ranked = [p for p in reversed(free) if p.type == "hallway"] + ranked  # the last one: a chain
         if _type_info(kb, s.type).get("habitable"):  # rooms open onto the courtyard they wrap
             ranked = [p for p in free if _type_info(kb, p.type).get("enclosed")] + ranked
         by_degree = sorted(placed, key=lambda p: degree[p.id])
@@ -690,12 +716,15 @@ def assign_levels(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], warnings
         pick.level = top + 1
     if parsed.basement:
         down = [s for s in slots if s.type in st.basement and s.level == 0]
+        if len(down) == sum(s.level == 0 for s in slots):  # a basement under nothing: the words say what goes down
+            down = []
         if not down:
             down = [_slot_from_entry(kb, {"type": "storage", "name": "basement"})]
             slots.append(down[0])
         for s in down:
             s.level = -1
     _worded_levels(parsed, slots, top, set(st.up) | {"bathroom"})
+    _keep_a_ground_floor(parsed, slots)
     _fill_empty_storeys(kb, slots, top)  # one the words emptied
     levels = sorted({s.level for s in slots})
     while len(slots) + len(levels) > MAX_ROOMS:
@@ -712,6 +741,21 @@ def assign_levels(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], warnings
         s = Slot("stairwell", "stairwell", "hallway", (STAIRWELL_AREA_M2, STAIRWELL_AREA_M2), key=STAIRWELL_KEY)
         s.level = k
         slots.append(s)
+
+
+def _keep_a_ground_floor(parsed: Parsed, slots: list[Slot]) -> None:
+    """A list ending "... and a few holding cells in the basement" that sent every room
+    down: only the room named last before the words stays in the basement, the rest come
+    up to the ground floor (a building has an entrance storey)."""
+    if any(s.level == 0 for s in slots) or not any(s.level < 0 for s in slots):
+        return
+    down = [(span[0], s) for s in slots if s.level < 0 and (span := _slot_span(s, parsed)) is not None]
+    if not down:
+        return
+    last = max(start for start, _ in down)
+    for start, s in down:
+        if start != last:
+            s.level = 0
 
 
 def _fill_empty_storeys(kb: KnowledgeBase, slots: list[Slot], top: int) -> None:
@@ -849,17 +893,67 @@ def _landing(kb: KnowledgeBase, slots: list[Slot], level: int, doors: int) -> Sl
     return s
 
 
+CORRIDOR_KEY = "corridor"
+"""Program key of a hallway added because the rooms that open off a hallway outnumber
+what the hallways hold (:func:`connect_corridors`); it opens off the hallway before it."""
+CORRIDORS_MAX = 4
+"""Most hallways a house may have once corridors are added for its rooms (a hotel floor
+of fourteen rooms, each with its bathroom, needs four)."""
+OVERFLOW_MIN = 2
+"""Rooms that would open off a hallway but land on a living room, a hall or an entry
+instead: from this many on, one more hallway is planned for them (a manor's seven
+bedrooms off its morning room, before; a spine of hub rooms cannot lay such a hub out)."""
+
+
+def _overflow(kb: KnowledgeBase, on: list[Slot], edges: list[tuple[str, str]]) -> int:
+    """Rooms whose first choice is a hallway, attached to another hub room instead."""
+    by_id = {s.id: s for s in on}
+    n = 0
+    for a, b in edges:
+        if b == "outside" or a not in by_id or b not in by_id:
+            continue
+        parent, child = by_id[a], by_id[b]
+        attach = _type_info(kb, child.type).get("attach", [])
+        if attach[:1] == ["hallway"] and parent.type != "hallway" and _type_info(kb, parent.type).get("hub"):
+            n += 1
+    return n
+
+
+def connect_corridors(kb: KnowledgeBase, slots: list[Slot], on: list[Slot],
+                      entrance_types: list[str]) -> list[tuple[str, str]]:
+    """:func:`connect` over the rooms ``on`` one storey, with one more hallway (added to
+    ``slots`` and ``on``) while :data:`OVERFLOW_MIN` rooms or more that open off a
+    hallway would otherwise hang off a living room or a hall, up to :data:`CORRIDORS_MAX`
+    hallways (or the hallway type's ``max``, if more) and ``MAX_ROOMS`` rooms in all."""
+    edges = connect(kb, on, entrance_types)
+    cap = max(int(_type_info(kb, "hallway").get("max", 2)), CORRIDORS_MAX)
+    while (_overflow(kb, on, edges) >= OVERFLOW_MIN and any(s.type == "hallway" for s in on)
+           and sum(s.type == "hallway" for s in slots) < cap and len(slots) < MAX_ROOMS):
+        s = _slot_from_entry(kb, {"type": "hallway", "name": "corridor", "key": CORRIDOR_KEY})
+        s.level = on[0].level
+        taken = {x.id for x in slots}
+        s.id = next(i for i in ("corridor", *(f"corridor_{n}" for n in range(2, 99))) if i not in taken)
+        names = {x.name for x in slots}
+        s.name = next(n for n in ("corridor", *(f"corridor {k}" for k in range(2, 99))) if n not in names)
+        s.area = s.drawn_area = s.area_range[0]
+        slots.append(s)
+        if on is not slots:
+            on.append(s)
+        edges = connect(kb, on, entrance_types)
+    return edges
+
+
 def connect_levels(kb: KnowledgeBase, slots: list[Slot], entrance_types: list[str]) -> list[tuple[str, str]]:
     """:func:`connect` per storey: the ground floor as a one-storey house (its stairwell a
     hub like a hallway), every other storey a tree rooted at its stairwell (no entrance).
     The stairs, not doors, join the storeys."""
     if all(s.level == 0 for s in slots):
-        return connect(kb, slots, entrance_types)
+        return connect_corridors(kb, slots, slots, entrance_types)
     edges: list[tuple[str, str]] = []
     for k in sorted({s.level for s in slots}, key=lambda k: (k != 0, k)):
         on = [s for s in slots if s.level == k]
         if k == 0:
-            edges += connect(kb, on, entrance_types)
+            edges += connect_corridors(kb, slots, on, entrance_types)
             continue
         stair = next(s for s in on if s.key == STAIRWELL_KEY)
         tree = [e for e in connect(kb, [stair, *(s for s in on if s is not stair)], ["stairwell"]) if e[1] != "outside"]

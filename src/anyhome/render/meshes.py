@@ -51,8 +51,9 @@ WALL_REACH_M = 0.06
 """A face on a wall's edge (a door jamb) counts as in a room it lies this close to."""
 FACTORS_ARE_SRGB = True
 """Decode baseColorFactor and vertex colours as sRGB (see the module doc); False is glTF's reading."""
-CEILING_PARTS = frozenset({"ceiling", "light"})
-"""Room parts (``room:<id>:<part>``) hidden from the bird's-eye view."""
+CEILING_PARTS = frozenset({"ceiling", "light", "beams", "coffers"})
+"""Room parts (``room:<id>:<part>``) hidden from the bird's-eye view: the ceiling, its
+light and what hangs under it (beams, coffers: anyhome.export.ceilings)."""
 PROBED_PARTS = frozenset({"walls", "skirting", "frame", "leaf", "glass"})
 """Parts whose faces take the light of the room they face (walls and what sits in them)."""
 GROUND_COLOR = (0.16, 0.19, 0.13, 1.0)
