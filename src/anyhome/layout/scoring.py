@@ -21,7 +21,6 @@ from anyhome.layout.state import Choice, RoomState
 from anyhome.plan.spec import GroupSpec, ItemSpec
 from anyhome.space import NO_COLLISION_M, rect_corners, sat_overlap
 
-
 FIRST_CHUNK = 48
 """Candidates checked first by a :class:`Ranking` (those with the highest bound on their score)..."""
 CHUNK_GROWTH = 4
