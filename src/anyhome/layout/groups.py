@@ -238,6 +238,8 @@ def place_members(st: RoomState, g: GroupSpec, label: str, anchor: HouseObject,
     pending = list(g.members)
     run: list[HouseObject] = [anchor] if REGISTRY[anchor.rule].against_wall else []  # grown by the copies
     names = {m.name for m in g.members} | {g.anchor.name}
+    if stop is not None and pending and stop(drops):
+        return None
     while pending:
         ready = [m for m in pending if (m.target or g.anchor.name) in placed or (m.target or "") not in names]
         if not ready:
