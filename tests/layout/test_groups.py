@@ -151,8 +151,8 @@ def test_anchor_pose_judged_best_keeps_the_members_it_was_judged_with(monkeypatc
     trials: list[tuple[tuple[float, float, float], list[tuple]]] = []
     inner = groups.place_members
 
-    def recording(st, g, label, anchor):
-        drops = inner(st, g, label, anchor)
+    def recording(st, g, label, anchor, stop=None):
+        drops = inner(st, g, label, anchor, stop)
         mine = [(o.name, round(o.position[0], 6), round(o.position[1], 6), round(o.yaw, 6))
                 for o in st.space.objects if o.group == label and o.anchor == anchor.id]
         trials.append(((round(anchor.position[0], 6), round(anchor.position[1], 6), round(anchor.yaw, 6)), mine))

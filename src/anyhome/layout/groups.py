@@ -21,7 +21,7 @@ from anyhome.layout.rules.place_around import (
     around_slots,
     seat_candidates,
 )
-from anyhome.layout.state import Choice, Outcome, RoomState
+from anyhome.layout.state import Choice, Outcome, RoomState, Snapshot
 from anyhome.plan.spec import GroupSpec, ItemSpec
 from anyhome.space import rect_corners
 
@@ -36,7 +36,7 @@ def place_group_copy(st: RoomState, g: GroupSpec, copy: int, prev: HouseObject |
         if obj is None:
             drop_group(st, g, "no surface to stand on")
             return None
-        st.dropped.extend(place_members(st, g, label, obj))
+        st.dropped.extend(place_members(st, g, label, obj) or [])
         return obj
     c, kind, rule, ref = arrangements.anchor_candidates(st, g, prev)
     o = st.options
@@ -50,7 +50,8 @@ def place_group_copy(st: RoomState, g: GroupSpec, copy: int, prev: HouseObject |
     run_on = prev is not None and REGISTRY[rule].continues  # the copy continues a run: no jump
     hangs = bool(anchored(g, "place_on_wall"))
     order = scoring.rank(st, c, size, kind, o.member_noise if run_on else o.noise, spacing=not run_on,
-                         avoid_windows=hangs, bonus=bonus if kind == "floor" else None)
+                         avoid_windows=hangs, bonus=bonus if kind == "floor" else None,
+                         bonus_max=scoring.bonus_max(st, g, rule, prev is None))
     poses = scoring.Verifier(st, c, order, size, kind, None, min_sep_m=o.anchor_min_sep_m)
     choices = poses.upto(tries)  # checked as tried: the first pose most often keeps the group
 
@@ -90,14 +91,16 @@ def try_choices(st: RoomState, g: GroupSpec, label: str, choices: Iterable[Choic
         got = st.commit_checked(item, item.size_m, ch, support, rule, label, None, check=kind != "top")
         if got is not None:  # else it closed a walkway (and was taken back)
             anchor = got[0]
-            drops = place_members(st, g, label, anchor)
-            bent = compromises(st, g, label, anchor)
-            unreached = st.unreached_since(snap)
-            if not drops and not bent and not unreached:
-                return anchor
-            if best is None or (len(drops), unreached, bent) < best[:3]:
-                best = (len(drops), unreached, bent, k)
-                kept = (st.outcome(), anchor, drops)
+            worse = None if best is None else _no_better(st, g, label, anchor, snap, best[:3])
+            drops = place_members(st, g, label, anchor, worse)
+            if drops is not None:
+                bent = compromises(st, g, label, anchor)
+                unreached = st.unreached_since(snap)
+                if not drops and not bent and not unreached:
+                    return anchor
+                if best is None or (len(drops), unreached, bent) < best[:3]:
+                    best = (len(drops), unreached, bent, k)
+                    kept = (st.outcome(), anchor, drops)
             st.restore(snap)
         if k == len(pool) - 1:  # the next choice, checked with the room as it was
             pool += [ch for ch in [next(todo, None)] if ch is not None]
@@ -116,6 +119,22 @@ def try_choices(st: RoomState, g: GroupSpec, label: str, choices: Iterable[Choic
     st.resume(outcome)  # the anchor and its members where they stood when it was judged best
     st.dropped.extend(drops)
     return anchor
+
+
+def _no_better(st: RoomState, g: GroupSpec, label: str, anchor: HouseObject, snap: Snapshot,
+               best: tuple[int, int, int]) -> Callable[[list[Dropped]], bool]:
+    """Whether a copy of ``g`` whose members are placed in part (``drops`` so far) can no
+    longer beat ``best`` (drops, objects out of reach, compromises) in :func:`try_choices`:
+    drops and objects out of reach only grow as members are placed, and so do the
+    compromises of the members placed (a run's jumps left out: a later piece may join it)."""
+
+    def no_better(drops: list[Dropped]) -> bool:
+        head = (len(drops), st.unreached_since(snap))
+        if head != best[:2]:
+            return head > best[:2]
+        return compromises(st, g, label, anchor, runs=False) >= best[2]
+
+    return no_better
 
 
 NUDGES_M = tuple(s * 0.05 * k for k in range(1, 11) for s in (1, -1))
@@ -150,7 +169,7 @@ of its anchor: the relations in front and centred broken, and the seat no longer
 (worse than a TV stand off centre on the wall ahead, or a coffee table off centre)."""
 
 
-def compromises(st: RoomState, g: GroupSpec, label: str, anchor: HouseObject) -> int:
+def compromises(st: RoomState, g: GroupSpec, label: str, anchor: HouseObject, runs: bool = True) -> int:
     """How far this copy's members stand from where their rules ask, counted as the
     relations they break: a ``to_wall`` item (a TV stand) not on the wall straight ahead
     of the anchor, facing it (:data:`OFF_WALL_AHEAD_COST`), else off the anchor's axis (1);
@@ -158,12 +177,12 @@ def compromises(st: RoomState, g: GroupSpec, label: str, anchor: HouseObject) ->
     members beside it where ``place_beside`` does not put them (:func:`beside_compromises`);
     a wall item not centred behind an anchor that stands against a wall (a window in the
     way); each piece of a run along the walls cut off from its start
-    (:func:`~.rules.place_next_wall.jumps`)."""
+    (:func:`~.rules.place_next_wall.jumps`; ``runs`` False: not counted)."""
     front = anchored(g, "place_front")
     walls = {m.name for m in g.members if m.name in front and m.params.get("to_wall")}
     beside = anchored(g, "place_beside")
     over = anchored(g, "place_on_wall")
-    runs = REGISTRY[anchor.rule].runs_along_wall and any(m.rule == "place_next_wall" for m in g.members)
+    runs = runs and REGISTRY[anchor.rule].runs_along_wall and any(m.rule == "place_next_wall" for m in g.members)
     if not front and not beside and not over and not runs:
         return 0
     back = front_dir(anchor.yaw)
@@ -209,13 +228,18 @@ def drop_group(st: RoomState, g: GroupSpec, reason: str) -> None:
         st.drop(m.name, f"its anchor {g.anchor.name!r} was not placed", m.count)
 
 
-def place_members(st: RoomState, g: GroupSpec, label: str, anchor: HouseObject) -> list[Dropped]:
-    """Every member of ``g`` around ``anchor``, each after its target; what was dropped."""
+def place_members(st: RoomState, g: GroupSpec, label: str, anchor: HouseObject,
+                  stop: Callable[[list[Dropped]], bool] | None = None) -> list[Dropped] | None:
+    """Every member of ``g`` around ``anchor``, each after its target; what was dropped.
+    ``stop``: asked after each member with what was dropped so far; when it says so, the
+    rest are left unplaced and None is returned (the caller takes the copy back)."""
     placed: dict[str, list[HouseObject]] = {g.anchor.name: [anchor]}
     drops: list[Dropped] = []
     pending = list(g.members)
     run: list[HouseObject] = [anchor] if REGISTRY[anchor.rule].against_wall else []  # grown by the copies
     names = {m.name for m in g.members} | {g.anchor.name}
+    if stop is not None and pending and stop(drops):
+        return None
     while pending:
         ready = [m for m in pending if (m.target or g.anchor.name) in placed or (m.target or "") not in names]
         if not ready:
@@ -231,6 +255,8 @@ def place_members(st: RoomState, g: GroupSpec, label: str, anchor: HouseObject) 
         objs, d = place_item_copies(st, m, refs, label, anchor.id, run[-1] if run else None, run)
         placed.setdefault(m.name, []).extend(objs)
         drops += d
+        if stop is not None and pending and stop(drops):
+            return None
     return drops
 
 

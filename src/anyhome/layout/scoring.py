@@ -3,6 +3,7 @@ verify the best with the contract's exact geometry; the room a whole group needs
 
 from __future__ import annotations
 
+import heapq
 import math
 from collections.abc import Callable, Iterator, Sequence
 
@@ -20,40 +21,134 @@ from anyhome.layout.state import Choice, RoomState
 from anyhome.plan.spec import GroupSpec, ItemSpec
 from anyhome.space import NO_COLLISION_M, rect_corners, sat_overlap
 
+FIRST_CHUNK = 48
+"""Candidates checked first by a :class:`Ranking` (those with the highest bound on their score)..."""
+CHUNK_GROWTH = 4
+"""...and how many times more each next batch checks, while the best are not settled."""
+
 
 def rank(st: RoomState, c: Cands, size: Sequence[float], kind: str, noise: float, spacing: bool,
-         layer: bool = False, avoid_windows: bool = False, bonus: Callable[[Cands], Cands] | None = None) -> np.ndarray:
-    """Indices of the valid candidates, best first (``layer``: a rug, see RoomSpace.valid;
-    ``avoid_windows``: keep off windows as tall objects do, for an anchor with something
-    to hang on the wall behind it, a dresser's mirror; ``bonus``: the valid candidates
-    with their preferences raised, as :func:`group_room_bonus` does, asked only of those)."""
-    if not len(c):
-        return np.zeros(0, dtype=int)
-    o = st.options
-    corners = rect_corners(c.xy, size[:2], c.yaw)
-    mask = st.space.valid(corners, c.z, c.z + size[2], floor=kind == "floor", doors=kind != "top", layer=layer)
-    idx = np.nonzero(mask)[0]
-    if not idx.size:
-        return idx
-    pref = c.pref[idx] if bonus is None else bonus(Cands(c.xy[idx], c.yaw[idx], c.z[idx], c.pref[idx])).pref
-    score = pref + noise * st.rng.random(idx.size)
-    if spacing and kind == "floor":
-        weight, cap = (o.zone_spacing_weight, o.zone_spacing_cap_m) if st.spread else (o.spacing_weight, o.spacing_cap_m)
-        score += weight * st.space.clearance(corners[idx], cap) / cap
-    if kind == "floor" and st.zone is not None:
-        score += o.zone_bonus * shapely.contains_xy(st.zone, c.xy[idx, 0], c.xy[idx, 1])
-    if kind == "floor" and (size[2] > o.tall_m or avoid_windows):
-        score -= o.window_penalty * st.space.window_penalty(corners[idx])
-    return idx[np.argsort(-score, kind="stable")]
+         layer: bool = False, avoid_windows: bool = False, bonus: Callable[[Cands], Cands] | None = None,
+         bonus_max: float = 0.0) -> Ranking:
+    """The valid candidates, best first, found as they are asked for (:class:`Ranking`;
+    ``layer``: a rug, see RoomSpace.valid; ``avoid_windows``: keep off windows as tall
+    objects do, for an anchor with something to hang on the wall behind it, a dresser's
+    mirror; ``bonus``: the valid candidates with their preferences raised, as
+    :func:`group_room_bonus` does, by at most ``bonus_max``, asked only of those)."""
+    return Ranking(st, c, size, kind, noise, spacing, layer, avoid_windows, bonus, bonus_max)
 
 
-def verified(st: RoomState, c: Cands, order: np.ndarray, size: Sequence[float], kind: str,
+class Ranking:
+    """Indices of the valid candidates of ``c``, best first, by score: preference (raised
+    by ``bonus``), ``noise`` times a seeded draw per candidate (one draw over all of them,
+    so that a candidate's noise does not depend on which others are valid), free space
+    around a floor pose (``spacing``), the group's zone, windows. Found lazily: candidates
+    are checked (validity, then the terms asked of valid poses only: ``bonus``, spacing)
+    in batches by a bound on their score, highest first, and a candidate is handed out
+    once its score beats every bound left; the order is the one checking all at once
+    gives (ties by index). The room must be the same whenever one is asked for."""
+
+    def __init__(self, st: RoomState, c: Cands, size: Sequence[float], kind: str, noise: float, spacing: bool,
+                 layer: bool = False, avoid_windows: bool = False, bonus: Callable[[Cands], Cands] | None = None,
+                 bonus_max: float = 0.0) -> None:
+        o = st.options
+        self.st, self.c, self.size, self.kind, self.layer, self.bonus = st, c, size, kind, layer, bonus
+        n = len(c)
+        base = c.pref.astype(float, copy=True)
+        if n and noise:
+            base += noise * st.rng.random(n)
+        floor = kind == "floor"
+        if floor and st.zone is not None and n:
+            base += o.zone_bonus * shapely.contains_xy(st.zone, c.xy[:, 0], c.xy[:, 1])
+        self._windows = floor and (size[2] > o.tall_m or avoid_windows)
+        """Poses in front of a window score less (asked of valid poses only)."""
+        self._spacing: tuple[float, float] | None = None
+        if spacing and floor:
+            self._spacing = (o.zone_spacing_weight, o.zone_spacing_cap_m) if st.spread else (o.spacing_weight,
+                                                                                             o.spacing_cap_m)
+        self._base = base
+        """The terms of the score asked of every candidate."""
+        self._bound = base + (bonus_max if bonus is not None else 0.0) + (self._spacing[0] if self._spacing else 0.0)
+        """The highest score each candidate may have."""
+        self._rest = np.arange(n)
+        """Candidates not checked yet..."""
+        self._top = float(self._bound.max()) if n else -np.inf
+        """...and the highest bound among them."""
+        self._chunk = FIRST_CHUNK
+        self._heap: list[tuple[float, int]] = []
+        """(-score, index) of the valid candidates checked and not handed out yet."""
+        self.found: list[int] = []
+        """The valid candidates handed out so far, best first."""
+
+    def get(self, pos: int) -> int | None:
+        """Index of the ``pos``-th best valid candidate; None when fewer are valid."""
+        while len(self.found) <= pos:
+            if not self._next():
+                return None
+        return self.found[pos]
+
+    def all(self) -> np.ndarray:
+        """The whole order (every candidate checked)."""
+        while self._next():
+            pass
+        return np.asarray(self.found, dtype=int)
+
+    def _next(self) -> bool:
+        """Hand out the next best valid candidate, checking more where the bounds ask to;
+        False when none is left."""
+        heap = self._heap
+        while True:
+            if heap and -heap[0][0] > self._top:
+                self.found.append(heapq.heappop(heap)[1])
+                return True
+            if not len(self._rest):
+                if not heap:
+                    return False
+                self.found.append(heapq.heappop(heap)[1])
+                return True
+            self._check(self._take())
+
+    def _take(self) -> np.ndarray:
+        """The next batch: the unchecked candidates of the highest bounds."""
+        rest, k = self._rest, self._chunk
+        self._chunk *= CHUNK_GROWTH
+        if len(rest) <= k:
+            self._rest, self._top = rest[:0], -np.inf
+            return rest
+        part = np.argpartition(-self._bound[rest], k - 1)
+        self._rest = rest[part[k:]]
+        self._top = float(self._bound[self._rest].max())
+        return rest[part[:k]]
+
+    def _check(self, idx: np.ndarray) -> None:
+        """Validity, then the scores of the valid ones of ``idx``."""
+        st, c, size, kind = self.st, self.c, self.size, self.kind
+        corners = rect_corners(c.xy[idx], size[:2], c.yaw[idx])
+        z = c.z[idx]
+        ok = st.space.valid(corners, z, z + size[2], floor=kind == "floor", doors=kind != "top", layer=self.layer)
+        idx = idx[ok]
+        if not idx.size:
+            return
+        score = self._base[idx].copy()
+        if self.bonus is not None:
+            sub = Cands(c.xy[idx], c.yaw[idx], c.z[idx], c.pref[idx])
+            score += self.bonus(sub).pref - sub.pref
+        if self._spacing is not None:
+            weight, cap = self._spacing
+            score += weight * st.space.clearance(corners[ok], cap) / cap
+        if self._windows:
+            score -= st.options.window_penalty * st.space.window_penalty(corners[ok])
+        for sc, i in zip((-score).tolist(), idx.tolist(), strict=True):
+            heapq.heappush(self._heap, (sc, i))
+
+
+def verified(st: RoomState, c: Cands, order: Ranking, size: Sequence[float], kind: str,
              supporter: HouseObject | None, k: int = 1, min_sep_m: float = 0.0) -> list[Choice]:
     """Up to ``k`` candidates from ``order`` that pass the exact geometry checks."""
     return list(verified_lazily(st, c, order, size, kind, supporter, k, min_sep_m))
 
 
-def verified_lazily(st: RoomState, c: Cands, order: np.ndarray, size: Sequence[float], kind: str,
+def verified_lazily(st: RoomState, c: Cands, order: Ranking, size: Sequence[float], kind: str,
                     supporter: HouseObject | None, k: int = 1, min_sep_m: float = 0.0) -> Iterator[Choice]:
     """:func:`verified`'s choices, each checked when asked for (the same choices as long as
     the room is the same whenever one is asked for)."""
@@ -66,7 +161,7 @@ class Verifier:
     the last ask stopped rather than checking the first ones again. The choices are those
     of :func:`verified` as long as the room is the same whenever one is checked."""
 
-    def __init__(self, st: RoomState, c: Cands, order: np.ndarray, size: Sequence[float], kind: str,
+    def __init__(self, st: RoomState, c: Cands, order: Ranking, size: Sequence[float], kind: str,
                  supporter: HouseObject | None, min_sep_m: float = 0.0) -> None:
         self.st, self.c, self.order, self.size, self.kind = st, c, order, size, kind
         self.supporter, self.min_sep_m = supporter, min_sep_m
@@ -78,7 +173,7 @@ class Verifier:
     def upto(self, k: int) -> Iterator[Choice]:
         """The first ``k`` choices among the first ``verify_factor * k`` candidates of
         ``order``, each found when asked for."""
-        end = min(len(self.order), self.st.options.verify_factor * k)
+        end = self.st.options.verify_factor * k
         for i in range(k):
             if i >= len(self.found) and not self._find(end):
                 return
@@ -92,7 +187,9 @@ class Verifier:
         """Check candidates up to position ``end`` of ``order`` until one passes."""
         c, out, sep = self.c, self.found, self.min_sep_m
         while self._next < end:
-            i = self.order[self._next]
+            i = self.order.get(self._next)
+            if i is None:
+                return False
             self._next += 1
             ch = Choice(c.xy[i].copy(), float(c.yaw[i]), float(c.z[i]))
             if sep and any(
@@ -174,6 +271,13 @@ def group_extent(g: GroupSpec, near_m: float | None = None) -> Extent:
         rule = REGISTRY[m.rule]
         box = rule.extent(box, g.anchor.size_m, m.size_m, rule.parse(m.params), m.count, near_m)
     return box
+
+
+def bonus_max(st: RoomState, g: GroupSpec, rule: str, first: bool) -> float:
+    """The most :func:`group_room_bonus` then :func:`run_room_bonus` add to a preference."""
+    o = st.options
+    group = o.group_room_bonus + o.beside_lane_bonus if g.members else 0.0
+    return group + (o.group_room_bonus if run_length(g, rule, first)[0] > 0 else 0.0)
 
 
 def group_room_bonus(st: RoomState, g: GroupSpec, c: Cands) -> Cands:
