@@ -177,3 +177,20 @@ def test_what_a_room_is_for_is_not_a_room(text):
     assert [m.key for m in p.rooms][:1] == ["apparatus bay"] and all("engine" not in m.name for m in p.rooms)
     engines = [m for m in p.objects if "engine" in m.name]
     assert [(m.key, m.count) for m in engines] == [("fire engine", 2)]
+
+
+def test_each_with_an_en_suite_gives_every_room_one():
+    """"six guest rooms, each with an en-suite shower" and "four bedrooms that each have
+    their own bathroom": before, one en-suite in all and no bathroom count."""
+    p = parse("A hotel with six standard guest rooms, each with an en-suite shower.")
+    assert [m.count for m in p.rooms] == [6, 6]
+    p = parse("A villa with four bedrooms that each have their own bathroom.")
+    assert {m.name: m.count for m in p.rooms} == {"bedroom": 4, "bathroom": 4}
+    p = parse("A house with three bedrooms, each with a desk, and a kitchen.")  # the kitchen is one
+    assert {m.name: m.count for m in p.rooms} == {"bedroom": 3, "kitchen": 1}
+
+
+def test_a_pair_of_counts_two():
+    p = parse("A workshop with a lathe, a pair of sawhorses and a couple of old stools.")
+    counts = {m.name: m.count for m in p.objects}
+    assert counts["sawhorse"] == 2 and counts["old stool"] == 2 and counts["lathe"] == 1

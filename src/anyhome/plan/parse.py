@@ -64,12 +64,12 @@ STOP_WORDS = frozenset(
 )
 """Words that end the look-back from a mention towards its count and adjectives."""
 
-EACH_OPENER = re.compile(r"^\s*(?:,\s*)?(?:each|every one|all)(?: of them)?\s*(?:,\s*)?(?=with|has|having|featuring|containing|equipped|furnished)")
+EACH_OPENER = re.compile(r"^\s*(?:,\s*)?(?:(?:that|which)\s+)?(?:each|every one|all)(?: of them)?\s*(?:,\s*)?(?=with|has|have|having|featuring|containing|equipped|furnished)")
 """Text right after a plural room mention that gives every one of those rooms what follows."""
 
 CONTEXT_OPENERS = re.compile(
-    r"^\s*(?:,\s*)?(?:(?:each|every one|all)(?: of them)?\s*(?:,\s*)?)?(?:with|without|full of|filled with|lined with|packed with|featuring|containing|"
-    r"that has|which has|having|where|equipped with|furnished with|holding|housing|that holds|which holds|that houses|which houses)\b"
+    r"^\s*(?:,\s*)?(?:(?:(?:that|which)\s+)?(?:each|every one|all)(?: of them)?\s*(?:,\s*)?)?(?:with|without|full of|filled with|lined with|packed with|featuring|containing|"
+    r"that has|which has|has|have|having|where|equipped with|furnished with|holding|housing|that holds|which holds|that houses|which houses)\b"
 )
 """Text right after a room mention that makes the following objects belong to it."""
 
@@ -355,6 +355,12 @@ def _tokens(text: str) -> list[tuple[str, int, int]]:
     return [(m.group(), m.start(), m.end()) for m in _TOKEN.finditer(text)]
 
 
+PAIR_WORDS = {"pair": 2, "couple": 2, "brace": 2, "trio": 3}
+"""Nouns that count what follows them with "of" ("a pair of speakers": two)."""
+PAIR_OF = re.compile(r"\b(?:a|one)\s+(pair|couple|brace|trio)\s+of\s+$")
+"""The words right before a mention's phrase that count it (:data:`PAIR_WORDS`)."""
+
+
 def _look_back(m: Mention, text: str, tokens: list[tuple[str, int, int]], taken: list[tuple[int, int]], keep_words: bool, kb: KnowledgeBase) -> None:
     """Fill count, size and adjectives of ``m`` from the words just before it."""
     sizes = size_factors(kb)
@@ -387,6 +393,8 @@ def _look_back(m: Mention, text: str, tokens: list[tuple[str, int, int]], taken:
     prefix = text[max(0, first - 16) : first]  # "rows of wooden pews", "full of old books"
     if any(prefix.rstrip().endswith(f) for f in FULL_WORDS):
         m.many = True
+    if m.count is None and (pair := PAIR_OF.search(prefix)) is not None:  # "a pair of sawhorses"
+        m.count = PAIR_WORDS[pair.group(1)]
     m.words = words
     if m.count is not None and m.count > 1:
         m.plural = True
@@ -778,8 +786,10 @@ def _assign_rooms(text: str, mentions: list[Mention]) -> None:
     room_idx = {id(m): i for i, m in enumerate(rooms)}
     for i, m in enumerate(mentions):
         if m.kind == "room":
-            if each is not None and m.count is None and "." not in text[each.end : m.start]:
-                m.count, m.plural = each.count, True  # "six guest rooms, each with its own bathroom"
+            right_after = i > 0 and mentions[i - 1] is each  # "each with an en-suite", not "..., and a kitchen"
+            if (each is not None and (m.count is None or (m.count == 1 and not m.plural and right_after))
+                    and "." not in text[each.end : m.start]):
+                m.count, m.plural = each.count, True  # "six guest rooms, each with its own bathroom" / "an en-suite"
                 continue
             tail = text[m.end : m.end + 40]
             context = room_idx[id(m)] if CONTEXT_OPENERS.match(tail) else None
