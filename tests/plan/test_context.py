@@ -176,3 +176,17 @@ def test_fourteen_guest_rooms_open_off_a_chain_of_corridors():
     hall_links = [(a, b) for a, b in spec.connections if types.get(a) == types.get(b) == "hallway"]
     parents = [a for a, _ in hall_links]
     assert hall_links and len(parents) == len(set(parents))  # no hallway carries two corridors on
+
+
+def test_an_indoor_swimming_pool_in_a_villa_is_a_room_with_its_pool():
+    """Before, "an indoor swimming pool" was one object set down in some room."""
+    import numpy as np
+
+    from anyhome.plan import get_planner
+
+    spec = get_planner("offline").plan("A modern villa with an indoor swimming pool, a kitchen and two bedrooms.",
+                                       np.random.default_rng(0))
+    pool = [r for r in spec.rooms if r.name == "indoor swimming pool"]
+    assert len(pool) == 1 and pool[0].area_m2 >= 30
+    anchors = [g.anchor.name for g in pool[0].groups]
+    assert "swimming pool" in anchors

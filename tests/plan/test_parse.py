@@ -194,3 +194,10 @@ def test_a_pair_of_counts_two():
     p = parse("A workshop with a lathe, a pair of sawhorses and a couple of old stools.")
     counts = {m.name: m.count for m in p.objects}
     assert counts["sawhorse"] == 2 and counts["old stool"] == 2 and counts["lathe"] == 1
+
+
+def test_a_count_before_a_room_word_and_a_plural_noun_counts_the_noun():
+    """"six study carrels": six carrels (before: six study rooms and some carrels)."""
+    p = parse("A library with a row of six study carrels and a returns desk.")
+    assert [m.count for m in p.rooms if m.name == "study"] == [1]
+    assert [m.count for m in p.objects if m.name == "carrel"] == [6]

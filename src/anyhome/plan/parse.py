@@ -1023,7 +1023,8 @@ ROOM_SUFFIXES = frozenset("area corner bay zone space nook wing section suite en
 
 def _room_compounds(kb: KnowledgeBase, text: str, tokens: list[tuple[str, int, int]], mentions: list[Mention], hard: list[tuple[int, int]]) -> None:
     """A room word followed by one more noun: "a kennel area" extends the room's name;
-    "a courtyard fountain" adds a fountain in the courtyard."""
+    "a courtyard fountain" adds a fountain in the courtyard; a count before a singular
+    room word and a plural noun counts the noun ("six study carrels")."""
     starts = {s: k for k, (_, s, _) in enumerate(tokens)}
     for m in [x for x in mentions if x.kind == "room"]:
         k = starts.get(m.end + 1)  # the very next word, one space on
@@ -1054,6 +1055,8 @@ def _room_compounds(kb: KnowledgeBase, text: str, tokens: list[tuple[str, int, i
         if kind != "object":
             continue
         obj = Mention("object", mo.key if mo else "", head, s, e, plural=plural, open_vocab=True, host=m)
+        if plural and (m.count or 1) > 1 and not text[m.start : m.end].endswith("s"):
+            obj.count, m.count, m.plural = m.count, 1, False  # "six study carrels": six carrels, one study
         mentions.append(obj)
         hard.append((s, e))
     mentions.sort(key=lambda m: m.start)
