@@ -201,3 +201,9 @@ def test_a_count_before_a_room_word_and_a_plural_noun_counts_the_noun():
     p = parse("A library with a row of six study carrels and a returns desk.")
     assert [m.count for m in p.rooms if m.name == "study"] == [1]
     assert [m.count for m in p.objects if m.name == "carrel"] == [6]
+
+
+def test_a_couple_of_things_is_no_couple_of_people():
+    """"a couple of armchairs" in a hair salon planned a home for two (a bedroom)."""
+    assert parse("A hair salon with four styling stations and a couple of armchairs by the window.").people is None
+    assert parse("A flat for a young couple with a balcony.").people == 2

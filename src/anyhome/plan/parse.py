@@ -113,7 +113,7 @@ _PEOPLE = re.compile(
     r"\b(?:family|household|group) of (\w+)\b|\bfor (\w+) (?:people|persons|adults|kids|children|guests)\b"
     r"|\bsleep(?:s|ing)? (?:up to )?(\w+)\b"
 )
-_COUPLE = re.compile(r"\b(?:couple|newlyweds|two people)\b")
+_COUPLE = re.compile(r"\b(?:couple(?! of\b)|newlyweds|two people)\b")  # "a couple of armchairs" counts chairs
 _MEMBERS = re.compile(
     r"\b(?!an?\b)(\w+) (parents|adults|grandparents|roommates|flatmates|friends|kids|children|toddlers|babies|"
     r"boys|girls|teens|teenagers|sons|daughters)\b(?!'|\s+(?:room|rooms|bedroom|bedrooms|bathroom|bathrooms|area|"
