@@ -79,7 +79,7 @@ from anyhome.floorplan.stairs import (
     stair_length_m,
 )
 from anyhome.floorplan.wells import wells_trimmed
-from anyhome.geometry import opening_zone
+from anyhome.geometry import DOOR_CLEARANCE_M, opening_zone
 from anyhome.house import Door, Floorplan, HouseObject, Level, Room, Window
 from anyhome.plan.spec import HouseSpec
 
@@ -236,7 +236,7 @@ def _levels_tried(spec: HouseSpec, numbers: list[int], rng: np.random.Generator,
 
 def _stacked(spec: HouseSpec, numbers: list[int], rng: np.random.Generator, options: FloorplanOptions | None) -> Floorplan:
     opts = options or FloorplanOptions()
-    plans: dict[int, Floorplan] = {0: _solve_storey(spec, 0, rng, options)[0]}
+    plans: dict[int, Floorplan] = {0: _solve_storey(spec, 0, rng, options)}
     outward = [n for n in numbers if n > 0] + sorted((n for n in numbers if n < 0), reverse=True)
     for k in outward:  # each storey on (or under) the one next to it toward the ground
         ref = k - 1 if k > 0 else k + 1
@@ -244,29 +244,27 @@ def _stacked(spec: HouseSpec, numbers: list[int], rng: np.random.Generator, opti
         why = ""
         blocked = True  # every try failed only for want of a place beside a through room
         tried = 0
-        while tried < opts.storey_candidates:  # a few layouts of the storey; the one that sits best
+        while tried < opts.storey_candidates:  # a few layouts of the storey (separate searches); the one that sits best
+            tried += 1
             try:
-                layouts = _solve_storey(spec, k, rng, options)  # one search's layouts, all of them tried
+                layout = _solve_storey(spec, k, rng, options)  # the best layout of one search that holds the stair
             except _Unsolvable:
                 raise
             except FloorplanError as e:
-                why, blocked, tried = str(e), False, tried + 1
+                why, blocked = str(e), False
                 continue
-            for layout in layouts[:1]:  # one search's best: separate searches differ more than one search's layouts
-                tried += 1
-                try:
-                    hang, placed = _best_placed(spec, plans, layout, k, ref)
-                except _ThroughBlocked as e:
-                    why = str(e)
-                    continue
-                except FloorplanError as e:
-                    why, blocked = str(e), False
-                    continue
-                if best is None or hang < best[0] - 1e-6:
-                    best = (hang, placed)
-                if hang <= opts.overhang_ok_m2:
-                    tried = opts.storey_candidates
-                    break
+            try:
+                hang, placed = _best_placed(spec, plans, layout, k, ref)
+            except _ThroughBlocked as e:
+                why = str(e)
+                continue
+            except FloorplanError as e:
+                why, blocked = str(e), False
+                continue
+            if best is None or hang < best[0] - 1e-6:
+                best = (hang, placed)
+            if hang <= opts.overhang_ok_m2:
+                break
         if best is None:
             if blocked and through_rooms(spec):  # as before: through rooms as ordinary ones
                 token = _AS_ORDINARY.set(True)
@@ -583,10 +581,11 @@ def _one_storey(spec: HouseSpec, rng: np.random.Generator, options: FloorplanOpt
     return plan.model_copy(update={"warnings": [*plan.warnings, f"{ONE_STOREY_NOTE} ({why}); every room is on the ground floor"]})
 
 
-def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options: FloorplanOptions | None) -> list[Floorplan]:
-    """Storey ``k`` of ``spec`` laid out on its own: the layouts of one solver search
-    whose stairwell holds the stair (:func:`_stair_fitted`), best score first; the
-    search is run again (at most ``level_attempts`` times) while none does."""
+def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options: FloorplanOptions | None) -> Floorplan:
+    """Storey ``k`` of ``spec`` laid out on its own: the best-scoring layout of one solver
+    search whose stairwell holds the stair (:func:`_stair_fitted`; the layouts after it
+    are not tried, the costly test); the search is run again (at most ``level_attempts``
+    times) while none does."""
     stair = stair_room(spec, k)
     sub = _storey_spec(spec, k, options or FloorplanOptions())
     heights = storey_heights_m(spec)
@@ -607,9 +606,10 @@ def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options: Fl
             if narrow is not None:
                 narrow.add(k)
             continue
-        fits = [f for plan in found if (f := _stair_fitted(plan, stair, k, heights, long_m, short_m, kind)) is not None]
-        if fits:
-            return fits
+        for plan in found:
+            fitted = _stair_fitted(plan, stair, k, heights, long_m, short_m, kind)
+            if fitted is not None:
+                return fitted
     raise FloorplanError(f"could not lay out level {k} in {attempts} attempts ({why})")
 
 
@@ -649,8 +649,14 @@ def _doors_cleared(plan: Floorplan, stair: str, length_m: float) -> list[Floorpl
     x0, y0, w, h = _rect(plan.room(stair))
     if w < length_m + STRIP_M - 1e-6 or h < STAIR_WIDTH_M - 1e-6:
         return []
-    others = {r.id: Polygon(r.polygon).exterior.buffer(1e-6) for r in plan.rooms if r.id != stair}
-    own = Polygon(plan.room(stair).polygon).exterior.buffer(1e-6)
+    walls: dict[str, object] = {}  # room id -> its outline, buffered (built when a door of it is slid)
+
+    def wall(room_id: str):
+        if room_id not in walls:
+            room = next((r for r in plan.rooms if r.id == room_id), None)
+            walls[room_id] = None if room is None else Polygon(room.polygon).exterior.buffer(1e-6)
+        return walls[room_id]
+
     out: list[tuple[int, Floorplan]] = []
     for ya in (y0, y0 + h - STAIR_WIDTH_M):
         for xa in (x0, x0 + w - length_m):  # the box against the west (foot east) or the east end wall
@@ -661,7 +667,7 @@ def _doors_cleared(plan: Floorplan, stair: str, length_m: float) -> list[Floorpl
                 if stair not in d.rooms or not _meets(d.segment, stair_box):
                     continue
                 other = next((x for x in d.rooms if x != stair), "outside")
-                seg = _clear_spot(d.segment, stair_box, (own, others.get(other)), [e.segment for j, e in enumerate(doors) if j != i])
+                seg = _clear_spot(d.segment, stair_box, (wall(stair), wall(other)), [e.segment for j, e in enumerate(doors) if j != i])
                 if seg is None:
                     break
                 doors[i] = d.model_copy(update={"segment": seg})
@@ -685,24 +691,39 @@ def _clear_spot(segment, stair_box, walls: tuple, near: list) -> tuple | None:
     """``segment`` (a door) slid along its own line to the nearest place (5 cm steps, at
     most :data:`DOOR_SLIDE_M`) where its swing clears ``stair_box``, it still lies on both
     ``walls`` (the two rooms' outlines, buffered; None: outside, not moved) and no door
-    of ``near`` is within 0.1 m; None: no such place."""
-    from shapely.geometry import LineString
+    of ``near`` is within 0.1 m; None: no such place. Every place is tested at once
+    (shapely's array functions), the nearest that passes wins."""
+    import shapely
 
     if any(w is None for w in walls):
         return None
     (ax, ay), (bx, by) = segment
     ux, uy = (1.0, 0.0) if abs(ay - by) < 1e-6 else (0.0, 1.0)
-    for i in range(1, int(DOOR_SLIDE_M / SNAP_M) + 1):
-        for sign in (1, -1):
-            t = sign * i * SNAP_M
-            seg = ((round(ax + ux * t, 6), round(ay + uy * t, 6)), (round(bx + ux * t, 6), round(by + uy * t, 6)))
-            line = LineString(seg)
-            if _meets(seg, stair_box) or not all(w.contains(line) for w in walls):
-                continue
-            if any(LineString(e).distance(line) < 0.1 for e in near):
-                continue
-            return seg
-    return None
+    shifts = [sign * i * SNAP_M for i in range(1, int(DOOR_SLIDE_M / SNAP_M) + 1) for sign in (1, -1)]
+    segs = [((round(ax + ux * t, 6), round(ay + uy * t, 6)), (round(bx + ux * t, 6), round(by + uy * t, 6))) for t in shifts]
+    ends = np.asarray(segs, dtype=float)  # (place, end, xy)
+    lines = shapely.linestrings(ends)
+    ok = ~(shapely.intersects(_opening_zones(ends), stair_box) | shapely.intersects(lines, stair_box))
+    for w in walls:
+        ok &= shapely.contains(w, lines)
+    for e in near:
+        ok &= shapely.distance(shapely.linestrings(np.asarray(e, dtype=float)), lines) >= 0.1
+    first = np.flatnonzero(ok)
+    return segs[int(first[0])] if len(first) else None
+
+
+def _opening_zones(ends: np.ndarray):
+    """:func:`~anyhome.geometry.opening_zone` of every segment of ``ends`` (n, 2, 2), as
+    an array of polygons (the same corners, computed the same way)."""
+    import shapely
+
+    from anyhome.geometry import segment_normal
+
+    corners = np.empty((len(ends), 4, 2))
+    for i, (a, b) in enumerate(ends):
+        n = segment_normal((a, b)) * DOOR_CLEARANCE_M
+        corners[i] = (a - n, b - n, b + n, a + n)
+    return shapely.polygons(corners)
 
 
 def _rect(room: Room) -> tuple[float, float, float, float]:
@@ -774,12 +795,36 @@ def stack_box(plans: list[tuple[int, Floorplan]], heights: dict[int, float],
     tries += [(west_hi - i * SNAP_M, math.pi) for i in range(int((west_hi - west_lo) / SNAP_M + 1e-6) + 1)] if west_hi >= west_lo - 1e-6 else []
     door_segments = {k: [LineString(dr.segment) for dr in doors] for k, _, doors in wells}
     for ya in (y0, y1 - width):
-        for foot, yaw in tries:
-            if all(not any(flight_rect(foot, ya, lengths[k], width, yaw).buffer(STAIR_CLEAR_M).intersects(z) for z in zones[k])
-                   and doors_joined(rects[k], flight_rect(foot, ya, lengths[k], width, yaw), door_segments[k])
-                   for k in rects):
+        clear = _clear_of_doors(tries, ya, width, lengths, zones)  # the cheap test, every foot at once
+        for i, (foot, yaw) in enumerate(tries):
+            if clear[i] and all(doors_joined(rects[k], flight_rect(foot, ya, lengths[k], width, yaw), door_segments[k])
+                                for k in rects):
                 return (round(foot, 6), round(ya, 6), yaw)
     return None
+
+
+def _clear_of_doors(tries: list[tuple[float, float]], ya: float, width: float, lengths: dict[int, float],
+                    zones: dict[int, list]) -> np.ndarray:
+    """For each (foot, yaw) of ``tries``: whether the flight box of every storey ``k``
+    (``lengths[k]`` long, on the strip ``ya`` to ``ya`` + ``width``), grown by
+    :data:`~anyhome.floorplan.stairs.STAIR_CLEAR_M`, meets none of that storey's door
+    ``zones`` (:func:`stack_box`'s first test, as :func:`flight_rect` draws the box)."""
+    import shapely
+
+    ok = np.ones(len(tries), dtype=bool)
+    if not tries:
+        return ok
+    foot = np.array([f for f, _ in tries])
+    east = np.array([abs(yaw) < 1e-9 for _, yaw in tries])  # yaw 0: the foot toward +x, the box west of it
+    for k, length in lengths.items():
+        if not zones.get(k):
+            continue
+        x0 = np.where(east, foot - length, foot)
+        x1 = np.where(east, foot, foot + length)
+        grown = shapely.buffer(shapely.box(x0, ya, x1, ya + width), STAIR_CLEAR_M, quad_segs=16)
+        for z in zones[k]:
+            ok &= ~shapely.intersects(grown, z)
+    return ok
 
 
 def _joined(spec: HouseSpec, plans: dict[int, Floorplan], levels: list[Level]) -> Floorplan:
