@@ -583,34 +583,49 @@ def _one_storey(spec: HouseSpec, rng: np.random.Generator, options: FloorplanOpt
 
 def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options: FloorplanOptions | None) -> Floorplan:
     """Storey ``k`` of ``spec`` laid out on its own: the best-scoring layout of one solver
-    search whose stairwell holds the stair (:func:`_stair_fitted`; the layouts after it
-    are not tried, the costly test); the search is run again (at most ``level_attempts``
-    times) while none does."""
+    search whose stairwell holds the stair (:func:`_stair_fitted`, asked of each valid
+    layout as the search finds it: one that fails is a failed attempt and the search goes
+    on, :data:`STOREY_WANTED_CANDIDATES`); the search is run again (at most
+    ``level_attempts`` times) while none does."""
     stair = stair_room(spec, k)
-    sub = _storey_spec(spec, k, options or FloorplanOptions())
+    opts = options or FloorplanOptions()
+    sub = _storey_spec(spec, k, opts)
     heights = storey_heights_m(spec)
     kind = house_stair_kind(spec)
     long_m, short_m = stairwell_min_m(spec, k)
     why = f"its stairwell never came out as a rectangle of at least {long_m:g} x {short_m:g} m for the stair"
-    attempts = (options or FloorplanOptions()).level_attempts
+    attempts = opts.level_attempts
+    search = dataclasses.replace(opts, wanted_candidates=min(opts.wanted_candidates, STOREY_WANTED_CANDIDATES))
     narrow = _NARROW_HALLS.get()
     wide_m = short_m if narrow is not None and k in narrow else stair_hall_width_m(spec, k)
+    refused = [0]
+
+    def fitted(plan: Floorplan) -> Floorplan | None:
+        out = _stair_fitted(plan, stair, k, heights, long_m, short_m, kind)
+        refused[0] += out is None
+        return out
+
     for _ in range(attempts):
+        refused[0] = 0
         try:
-            found = floorplan_candidates(sub, rng, options, min_length_m={stair: long_m}, min_side_m={stair: wide_m},
-                                         stair_m={stair: flight_length_m(heights, k, kind)})
+            found = floorplan_candidates(sub, rng, search, min_length_m={stair: long_m}, min_side_m={stair: wide_m},
+                                         stair_m={stair: flight_length_m(heights, k, kind)}, accept=fitted)
         except FloorplanError as e:  # its own bounded tries all failed: trying again rarely helps
+            if refused[0]:  # it did lay the storey out, the stair did not fit: search again
+                continue
             if wide_m <= short_m:
                 raise _Unsolvable(f"could not lay out level {k} ({e})") from None
             wide_m = short_m  # a hall as narrow as the stair, its doors where the flight leaves them reachable
             if narrow is not None:
                 narrow.add(k)
             continue
-        for plan in found:
-            fitted = _stair_fitted(plan, stair, k, heights, long_m, short_m, kind)
-            if fitted is not None:
-                return fitted
+        return found[0]
     raise FloorplanError(f"could not lay out level {k} in {attempts} attempts ({why})")
+
+
+STOREY_WANTED_CANDIDATES = 1
+"""Valid layouts whose stairwell holds the stair one search of a storey gathers before
+the best-scoring is taken (at most ``wanted_candidates``)."""
 
 
 def _stair_fitted(plan: Floorplan, stair: str, k: int, heights: dict[int, float], long_m: float,
