@@ -242,31 +242,9 @@ def _stacked(spec: HouseSpec, numbers: list[int], rng: np.random.Generator, opti
     outward = [n for n in numbers if n > 0] + sorted((n for n in numbers if n < 0), reverse=True)
     for k in outward:  # each storey on (or under) the one next to it toward the ground
         ref = k - 1 if k > 0 else k + 1
-        best: tuple[float, Floorplan] | None = None
-        why = ""
-        blocked = True  # every try failed only for want of a place beside a through room
-        tried = 0
-        while tried < opts.storey_candidates:  # a few layouts of the storey (separate searches); the one that sits best
-            tried += 1
-            try:
-                layout = _solve_storey(spec, k, rng, options)  # the best layout of one search that holds the stair
-            except _Unsolvable:
-                raise
-            except FloorplanError as e:
-                why, blocked = str(e), False
-                continue
-            try:
-                hang, placed = _best_placed(spec, plans, layout, k, ref)
-            except _ThroughBlocked as e:
-                why = str(e)
-                continue
-            except FloorplanError as e:
-                why, blocked = str(e), False
-                continue
-            if best is None or hang < best[0] - 1e-6:
-                best = (hang, placed)
-            if hang <= opts.overhang_ok_m2:
-                break
+        best, why, blocked = _placed_storey(spec, plans, k, ref, rng, options, STOREY_WANTED_CANDIDATES)
+        if best is None and blocked and through_rooms(spec) and opts.wanted_candidates > STOREY_WANTED_CANDIDATES:
+            best, why, blocked = _placed_storey(spec, plans, k, ref, rng, options, opts.wanted_candidates)  # the tight fit beside a tall room: the best of more layouts
         if best is None:
             if blocked and through_rooms(spec):  # as before: through rooms as ordinary ones
                 token = _AS_ORDINARY.set(True)
@@ -286,6 +264,40 @@ def _stacked(spec: HouseSpec, numbers: list[int], rng: np.random.Generator, opti
     plan = _stairs_recorded(_under_above(_joined(spec, plans, levels), through_rooms(spec)), house_stair_kind(spec))
     plan = wells_trimmed(plan, _stairs_place(plan)[1], {k: stair_room(spec, k) for k in numbers}, opts)
     return stairs_opened(plan, opts)
+
+
+def _placed_storey(spec: HouseSpec, plans: dict[int, Floorplan], k: int, ref: int, rng: np.random.Generator,
+                   options: FloorplanOptions | None, wanted: int) -> tuple[tuple[float, Floorplan] | None, str, bool]:
+    """Storey ``k`` placed on (under) storey ``ref`` of ``plans``: of the layouts of a few
+    separate searches (``storey_candidates``; each the best of ``wanted`` that hold the
+    stair, :func:`_solve_storey`), the one hanging least over nothing, with its overhang
+    (None: none placed); why the last try failed; whether every try failed only for want
+    of a place beside a room rising through it."""
+    opts = options or FloorplanOptions()
+    best: tuple[float, Floorplan] | None = None
+    why = ""
+    blocked = True
+    for _ in range(opts.storey_candidates):
+        try:
+            layout = _solve_storey(spec, k, rng, options, wanted)
+        except _Unsolvable:
+            raise
+        except FloorplanError as e:
+            why, blocked = str(e), False
+            continue
+        try:
+            hang, placed = _best_placed(spec, plans, layout, k, ref)
+        except _ThroughBlocked as e:
+            why = str(e)
+            continue
+        except FloorplanError as e:
+            why, blocked = str(e), False
+            continue
+        if best is None or hang < best[0] - 1e-6:
+            best = (hang, placed)
+        if hang <= opts.overhang_ok_m2:
+            break
+    return best, why, blocked
 
 
 def _stairs_recorded(plan: Floorplan, kind: str = DOGLEG) -> Floorplan:
@@ -583,12 +595,13 @@ def _one_storey(spec: HouseSpec, rng: np.random.Generator, options: FloorplanOpt
     return plan.model_copy(update={"warnings": [*plan.warnings, f"{ONE_STOREY_NOTE} ({why}); every room is on the ground floor"]})
 
 
-def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options: FloorplanOptions | None) -> Floorplan:
+def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options: FloorplanOptions | None,
+                  wanted: int | None = None) -> Floorplan:
     """Storey ``k`` of ``spec`` laid out on its own: the best-scoring layout of one solver
     search whose stairwell holds the stair (:func:`_stair_fitted`, asked of each valid
     layout as the search finds it: one that fails is a failed attempt and the search goes
-    on, :data:`STOREY_WANTED_CANDIDATES`); the search is run again (at most
-    ``level_attempts`` times) while none does."""
+    on; ``wanted`` of them, None: :data:`STOREY_WANTED_CANDIDATES`); the search is run
+    again (at most ``level_attempts`` times) while none does."""
     stair = stair_room(spec, k)
     opts = options or FloorplanOptions()
     sub = _storey_spec(spec, k, opts)
@@ -597,7 +610,7 @@ def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options: Fl
     long_m, short_m = stairwell_min_m(spec, k)
     why = f"its stairwell never came out as a rectangle of at least {long_m:g} x {short_m:g} m for the stair"
     attempts = opts.level_attempts
-    search = dataclasses.replace(opts, wanted_candidates=min(opts.wanted_candidates, STOREY_WANTED_CANDIDATES))
+    search = dataclasses.replace(opts, wanted_candidates=min(opts.wanted_candidates, wanted or STOREY_WANTED_CANDIDATES))
     narrow = _NARROW_HALLS.get()
     wide_m = short_m if narrow is not None and k in narrow else stair_hall_width_m(spec, k)
     refused = [0]
@@ -629,7 +642,10 @@ STOREY_WANTED_CANDIDATES = 1
 """Valid layouts whose stairwell holds the stair one search of a storey gathers before
 the best-scoring is taken (at most ``wanted_candidates``). 1: the first (dev_storeys,
 CPU: median 1093 -> 354 ms, circulation and overhang as with 3 of any layout, the stair
-tested after; 3 that hold the stair: slower, a five-storey house 5 -> 15 s)."""
+tested after; 3 that hold the stair: slower, a five-storey house 5 -> 15 s). An upper
+storey that finds no place beside a room rising through it (a mezzanine) is searched
+again with ``wanted_candidates`` (the best of more layouts fits beside it more often:
+the test lofts' mezzanines) before it is stacked over that room."""
 
 
 def _stair_fitted(plan: Floorplan, stair: str, k: int, heights: dict[int, float], long_m: float,
