@@ -25,7 +25,7 @@ are tried again with roomier stairwells, then laid out on one storey.
 Work is saved between tries: a storey's search asks each valid layout for its stair as
 it finds it (:func:`~anyhome.floorplan.solver.floorplan_candidates` ``accept``; one
 that fails is a failed attempt) and stops at the first that holds it
-(:data:`STOREY_WANTED_CANDIDATES`); an upper storey chooses for the least
+(``storey_wanted_candidates``); an upper storey chooses for the least
 overhang among the layouts of separate searches (one search's layouts differ too
 little: with them the storey houses' hallways grew); the sixteen places of a storey on the one below
 are ranked by overhang (one union of its floor, moved) and the stair, the costly test,
@@ -242,8 +242,8 @@ def _stacked(spec: HouseSpec, numbers: list[int], rng: np.random.Generator, opti
     outward = [n for n in numbers if n > 0] + sorted((n for n in numbers if n < 0), reverse=True)
     for k in outward:  # each storey on (or under) the one next to it toward the ground
         ref = k - 1 if k > 0 else k + 1
-        best, why, blocked = _placed_storey(spec, plans, k, ref, rng, options, STOREY_WANTED_CANDIDATES)
-        if best is None and blocked and through_rooms(spec) and opts.wanted_candidates > STOREY_WANTED_CANDIDATES:
+        best, why, blocked = _placed_storey(spec, plans, k, ref, rng, options, opts.storey_wanted_candidates)
+        if best is None and blocked and through_rooms(spec) and opts.wanted_candidates > opts.storey_wanted_candidates:
             best, why, blocked = _placed_storey(spec, plans, k, ref, rng, options, opts.wanted_candidates)  # the tight fit beside a tall room: the best of more layouts
         if best is None:
             if blocked and through_rooms(spec):  # as before: through rooms as ordinary ones
@@ -600,8 +600,12 @@ def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options: Fl
     """Storey ``k`` of ``spec`` laid out on its own: the best-scoring layout of one solver
     search whose stairwell holds the stair (:func:`_stair_fitted`, asked of each valid
     layout as the search finds it: one that fails is a failed attempt and the search goes
-    on; ``wanted`` of them, None: :data:`STOREY_WANTED_CANDIDATES`); the search is run
-    again (at most ``level_attempts`` times) while none does."""
+    on; ``wanted`` of them, None: ``storey_wanted_candidates``; 1 measured on dev_storeys,
+    CPU median 1093 -> 428 ms with circulation and overhang as with the best of three
+    valid layouts, the stair tested after; three that hold it: a five-storey house 5 ->
+    15 s); the search is run again (at most ``level_attempts`` times) while none does.
+    (An upper storey finding no place beside a room rising through it is searched again
+    with ``wanted_candidates``, :func:`_stacked`.)"""
     stair = stair_room(spec, k)
     opts = options or FloorplanOptions()
     sub = _storey_spec(spec, k, opts)
@@ -610,7 +614,7 @@ def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options: Fl
     long_m, short_m = stairwell_min_m(spec, k)
     why = f"its stairwell never came out as a rectangle of at least {long_m:g} x {short_m:g} m for the stair"
     attempts = opts.level_attempts
-    search = dataclasses.replace(opts, wanted_candidates=min(opts.wanted_candidates, wanted or STOREY_WANTED_CANDIDATES))
+    search = dataclasses.replace(opts, wanted_candidates=min(opts.wanted_candidates, wanted or opts.storey_wanted_candidates))
     narrow = _NARROW_HALLS.get()
     wide_m = short_m if narrow is not None and k in narrow else stair_hall_width_m(spec, k)
     refused = [0]
@@ -638,14 +642,6 @@ def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options: Fl
     raise FloorplanError(f"could not lay out level {k} in {attempts} attempts ({why})")
 
 
-STOREY_WANTED_CANDIDATES = 1
-"""Valid layouts whose stairwell holds the stair one search of a storey gathers before
-the best-scoring is taken (at most ``wanted_candidates``). 1: the first (dev_storeys,
-CPU: median 1093 -> 354 ms, circulation and overhang as with 3 of any layout, the stair
-tested after; 3 that hold the stair: slower, a five-storey house 5 -> 15 s). An upper
-storey that finds no place beside a room rising through it (a mezzanine) is searched
-again with ``wanted_candidates`` (the best of more layouts fits beside it more often:
-the test lofts' mezzanines) before it is stacked over that room."""
 
 
 def _stair_fitted(plan: Floorplan, stair: str, k: int, heights: dict[int, float], long_m: float,
