@@ -251,12 +251,13 @@ def test_storey_is_placed_where_it_hangs_least():
 
     kb = knowledge_base()
     compared = 0
-    for text, seed in (("a three-storey townhouse", 0), ("a three-storey townhouse", 1), ("a two-storey farmhouse with a big kitchen", 1),
-                       ("a two-storey farmhouse with a big kitchen", 2)):  # fmt: skip
+    for text, seed in [(t, s) for s in range(6) for t in ("a three-storey townhouse", "a two-storey farmhouse with a big kitchen")]:
+        if compared >= 2:
+            break
         spec = get_planner("offline", kb).plan(text, stage_rngs(seed)["plan"])
         rng = np.random.default_rng(seed)
-        ground = levels._solve_storey(spec, 0, rng, None)[0]
-        upper = levels._solve_storey(spec, 1, rng, None)[0]
+        ground = levels._solve_storey(spec, 0, rng, None)
+        upper = levels._solve_storey(spec, 1, rng, None)
         placed = levels._best_placed(spec, {0: ground}, upper, 1, 0)[1]
         gx, gy = levels._rect(ground.room(levels.stair_room(spec, 0)))[:2]
         ux, uy = levels._rect(upper.room(levels.stair_room(spec, 1)))[:2]
@@ -517,8 +518,8 @@ def test_best_placed_is_the_least_hanging_place_the_stair_fits():
     for text, seed in (("a three-storey townhouse", 1), ("a two-storey farmhouse with a big kitchen", 2)):
         spec = get_planner("offline", kb).plan(text, stage_rngs(seed)["plan"])
         rng = np.random.default_rng(seed)
-        ground = levels._solve_storey(spec, 0, rng, None)[0]
-        upper = levels._solve_storey(spec, 1, rng, None)
+        ground = levels._solve_storey(spec, 0, rng, None)
+        upper = [levels._solve_storey(spec, 1, rng, None) for _ in range(2)]
         heights = levels.storey_heights_m(spec)
         stair, ref = levels.stair_room(spec, 1), levels.stair_room(spec, 0)
         rx, ry, rw, rh = levels._rect(ground.room(ref))
@@ -551,8 +552,82 @@ def test_storey_layouts_all_hold_their_stair():
     spec = get_planner("offline", knowledge_base()).plan("a three-storey townhouse", stage_rngs(0)["plan"])
     heights = levels.storey_heights_m(spec)
     for k in (0, 1, 2):
-        found = levels._solve_storey(spec, k, np.random.default_rng(k), None)
-        assert found
-        for plan in found:
-            assert levels.stack_box([(k, plan)], heights) is not None
-            assert k == 0 or not any("outside" in d.rooms for d in plan.doors)
+        plan = levels._solve_storey(spec, k, np.random.default_rng(k), None)
+        assert levels.stack_box([(k, plan)], heights) is not None
+        assert k == 0 or not any("outside" in d.rooms for d in plan.doors)
+
+
+def _clear_spot_one_by_one(segment, stair_box, walls, near):
+    """The definition of levels._clear_spot, one place at a time (the reference)."""
+    from shapely.geometry import LineString
+
+    from anyhome.floorplan import levels
+    from anyhome.geometry import opening_zone
+
+    (ax, ay), (bx, by) = segment
+    ux, uy = (1.0, 0.0) if abs(ay - by) < 1e-6 else (0.0, 1.0)
+    for i in range(1, int(levels.DOOR_SLIDE_M / 0.05) + 1):
+        for sign in (1, -1):
+            t = sign * i * 0.05
+            seg = ((round(ax + ux * t, 6), round(ay + uy * t, 6)), (round(bx + ux * t, 6), round(by + uy * t, 6)))
+            line = LineString(seg)
+            if opening_zone(seg).union(line).intersects(stair_box) or not all(w.contains(line) for w in walls):
+                continue
+            if any(LineString(e).distance(line) < 0.1 for e in near):
+                continue
+            return seg
+    return None
+
+
+def test_clear_spot_is_the_nearest_place_tested_one_by_one():
+    """The door slid clear of the stair (every place tested at once) is the place the
+    one-at-a-time definition finds, for doors on each wall of a stairwell, with a
+    neighbouring door in the way or none, and None where no place is clear."""
+    from shapely.geometry import Polygon, box
+
+    from anyhome.floorplan import levels
+    from anyhome.floorplan.stairs import STAIR_CLEAR_M, STAIR_WIDTH_M
+
+    well = Polygon([(0, 0), (4.6, 0), (4.6, 2.6), (0, 2.6)]).exterior.buffer(1e-6)
+    room_s = Polygon([(-2, -3), (6, -3), (6, 0), (-2, 0)]).exterior.buffer(1e-6)
+    room_w = Polygon([(-3, -1), (0, -1), (0, 4), (-3, 4)]).exterior.buffer(1e-6)
+    stair = box(0.0, 0.0, 3.6, STAIR_WIDTH_M).buffer(STAIR_CLEAR_M)
+    cases = [
+        (((1.0, 0.0), (1.9, 0.0)), (well, room_s), []),
+        (((3.0, 0.0), (3.9, 0.0)), (well, room_s), [((4.0, 0.0), (4.5, 0.0))]),
+        (((0.0, 0.5), (0.0, 1.4)), (well, room_w), []),
+        (((0.0, 0.5), (0.0, 1.4)), (well, room_w), [((0.0, 1.6), (0.0, 2.5))]),
+        (((1.0, 0.0), (1.9, 0.0)), (well, room_w), []),  # not on the west room's wall: no place
+    ]
+    found = 0
+    for segment, walls, near in cases:
+        expected = _clear_spot_one_by_one(segment, stair, walls, near)
+        assert levels._clear_spot(segment, stair, walls, near) == expected
+        found += expected is not None
+    assert 0 < found < len(cases)
+    assert levels._clear_spot(((1.0, 0.0), (1.9, 0.0)), stair, (well, None), []) is None
+
+
+def test_stack_box_door_test_at_once_matches_one_by_one():
+    """stack_box's first test (the flights' boxes clear of every door's swing), made for
+    every foot at once, says what testing each foot's box alone says."""
+    import math
+
+    from shapely.geometry import LineString
+
+    from anyhome.floorplan import levels
+    from anyhome.floorplan.stairs import STAIR_CLEAR_M, STAIR_WIDTH_M, flight_rect
+    from anyhome.geometry import opening_zone
+
+    doors = {0: [((1.0, 0.0), (1.9, 0.0)), ((4.6, 0.4), (4.6, 1.3))], 1: [((0.0, 2.6), (0.9, 2.6))]}
+    zones = {k: [opening_zone(d).union(LineString(d)) for d in segs] for k, segs in doors.items()}
+    lengths = {0: 3.4, 1: 3.6}
+    tries = [(3.4 + i * 0.05, 0.0) for i in range(60)] + [(i * 0.05, math.pi) for i in range(60)]
+    seen = []
+    for ya in (0.0, 2.6 - STAIR_WIDTH_M, 3.0):
+        at_once = levels._clear_of_doors(tries, ya, STAIR_WIDTH_M, lengths, zones)
+        one_by_one = [all(not any(flight_rect(f, ya, lengths[k], STAIR_WIDTH_M, yaw).buffer(STAIR_CLEAR_M).intersects(z)
+                                  for z in zones[k]) for k in lengths) for f, yaw in tries]
+        assert at_once.tolist() == one_by_one
+        seen += one_by_one
+    assert any(seen) and not all(seen)

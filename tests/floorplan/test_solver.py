@@ -171,3 +171,29 @@ def test_candidates_start_with_the_floorplan_solve_floorplan_gives() -> None:
         assert found[0].model_dump() == solve_floorplan(spec, np.random.default_rng(5), opts).model_dump()
         for plan in found:
             check_floorplan(spec, plan)
+
+
+def test_candidates_accept_refuses_layouts_and_the_search_goes_on() -> None:
+    """A layout ``accept`` refuses is a failed attempt: every layout given back passed it
+    (as ``accept`` made it), and the search went on past the refused ones."""
+    from anyhome.floorplan.options import FloorplanOptions
+    from anyhome.floorplan.solver import floorplan_candidates
+
+    spec = family_home()
+    opts = FloorplanOptions()
+    seen: list[Floorplan] = []
+
+    def every_other(plan: Floorplan) -> Floorplan | None:
+        seen.append(plan)
+        if len(seen) % 2:
+            return None
+        return plan.model_copy(update={"warnings": [*plan.warnings, "accepted"]})
+
+    found = floorplan_candidates(spec, np.random.default_rng(5), opts, accept=every_other)
+    assert len(found) == opts.wanted_candidates
+    assert len(seen) == 2 * opts.wanted_candidates
+    assert all(p.warnings[-1] == "accepted" for p in found)
+    for plan in found:
+        check_floorplan(spec, plan)
+    with pytest.raises(FloorplanError):
+        floorplan_candidates(spec, np.random.default_rng(5), FloorplanOptions(max_attempts=8), accept=lambda p: None)

@@ -22,13 +22,15 @@ stair rises in or arrives in, with no landing of its own (:func:`stairs_opened`)
 layout keeps the flights and the floor at their feet clear (:func:`stair_zones`). Storeys that will not stack
 are tried again with roomier stairwells, then laid out on one storey.
 
-Work is reused between tries: every valid layout one solver search of a storey found
-(:func:`~anyhome.floorplan.solver.floorplan_candidates`, best score first) is checked for
-its stair before the storey is searched again; an upper storey chooses for the least
-overhang among the best layouts of separate searches (one search's layouts differ too
+Work is saved between tries: a storey's search asks each valid layout for its stair as
+it finds it (:func:`~anyhome.floorplan.solver.floorplan_candidates` ``accept``; one
+that fails is a failed attempt) and stops at the first that holds it
+(``storey_wanted_candidates``); an upper storey chooses for the least
+overhang among the layouts of separate searches (one search's layouts differ too
 little: with them the storey houses' hallways grew); the sixteen places of a storey on the one below
 are ranked by overhang (one union of its floor, moved) and the stair, the costly test,
-is looked for in that order only until it fits.
+is looked for in that order only until it fits; a stairwell's doors are slid clear of
+the stair, and the stair's box tested against the doors, at every place at once.
 
 The narrow interface (:func:`solve_levels`, :func:`stairs_objects`) is what the pipeline
 sees; a solver that takes a footprint and a fixed stairwell rectangle can replace the
@@ -79,7 +81,7 @@ from anyhome.floorplan.stairs import (
     stair_length_m,
 )
 from anyhome.floorplan.wells import wells_trimmed
-from anyhome.geometry import opening_zone
+from anyhome.geometry import DOOR_CLEARANCE_M, opening_zone
 from anyhome.house import Door, Floorplan, HouseObject, Level, Room, Window
 from anyhome.plan.spec import HouseSpec
 
@@ -236,37 +238,13 @@ def _levels_tried(spec: HouseSpec, numbers: list[int], rng: np.random.Generator,
 
 def _stacked(spec: HouseSpec, numbers: list[int], rng: np.random.Generator, options: FloorplanOptions | None) -> Floorplan:
     opts = options or FloorplanOptions()
-    plans: dict[int, Floorplan] = {0: _solve_storey(spec, 0, rng, options)[0]}
+    plans: dict[int, Floorplan] = {0: _solve_storey(spec, 0, rng, options)}
     outward = [n for n in numbers if n > 0] + sorted((n for n in numbers if n < 0), reverse=True)
     for k in outward:  # each storey on (or under) the one next to it toward the ground
         ref = k - 1 if k > 0 else k + 1
-        best: tuple[float, Floorplan] | None = None
-        why = ""
-        blocked = True  # every try failed only for want of a place beside a through room
-        tried = 0
-        while tried < opts.storey_candidates:  # a few layouts of the storey; the one that sits best
-            try:
-                layouts = _solve_storey(spec, k, rng, options)  # one search's layouts, all of them tried
-            except _Unsolvable:
-                raise
-            except FloorplanError as e:
-                why, blocked, tried = str(e), False, tried + 1
-                continue
-            for layout in layouts[:1]:  # one search's best: separate searches differ more than one search's layouts
-                tried += 1
-                try:
-                    hang, placed = _best_placed(spec, plans, layout, k, ref)
-                except _ThroughBlocked as e:
-                    why = str(e)
-                    continue
-                except FloorplanError as e:
-                    why, blocked = str(e), False
-                    continue
-                if best is None or hang < best[0] - 1e-6:
-                    best = (hang, placed)
-                if hang <= opts.overhang_ok_m2:
-                    tried = opts.storey_candidates
-                    break
+        best, why, blocked = _placed_storey(spec, plans, k, ref, rng, options, opts.storey_wanted_candidates)
+        if best is None and blocked and through_rooms(spec) and opts.wanted_candidates > opts.storey_wanted_candidates:
+            best, why, blocked = _placed_storey(spec, plans, k, ref, rng, options, opts.wanted_candidates)  # the tight fit beside a tall room: the best of more layouts
         if best is None:
             if blocked and through_rooms(spec):  # as before: through rooms as ordinary ones
                 token = _AS_ORDINARY.set(True)
@@ -286,6 +264,40 @@ def _stacked(spec: HouseSpec, numbers: list[int], rng: np.random.Generator, opti
     plan = _stairs_recorded(_under_above(_joined(spec, plans, levels), through_rooms(spec)), house_stair_kind(spec))
     plan = wells_trimmed(plan, _stairs_place(plan)[1], {k: stair_room(spec, k) for k in numbers}, opts)
     return stairs_opened(plan, opts)
+
+
+def _placed_storey(spec: HouseSpec, plans: dict[int, Floorplan], k: int, ref: int, rng: np.random.Generator,
+                   options: FloorplanOptions | None, wanted: int) -> tuple[tuple[float, Floorplan] | None, str, bool]:
+    """Storey ``k`` placed on (under) storey ``ref`` of ``plans``: of the layouts of a few
+    separate searches (``storey_candidates``; each the best of ``wanted`` that hold the
+    stair, :func:`_solve_storey`), the one hanging least over nothing, with its overhang
+    (None: none placed); why the last try failed; whether every try failed only for want
+    of a place beside a room rising through it."""
+    opts = options or FloorplanOptions()
+    best: tuple[float, Floorplan] | None = None
+    why = ""
+    blocked = True
+    for _ in range(opts.storey_candidates):
+        try:
+            layout = _solve_storey(spec, k, rng, options, wanted)
+        except _Unsolvable:
+            raise
+        except FloorplanError as e:
+            why, blocked = str(e), False
+            continue
+        try:
+            hang, placed = _best_placed(spec, plans, layout, k, ref)
+        except _ThroughBlocked as e:
+            why = str(e)
+            continue
+        except FloorplanError as e:
+            why, blocked = str(e), False
+            continue
+        if best is None or hang < best[0] - 1e-6:
+            best = (hang, placed)
+        if hang <= opts.overhang_ok_m2:
+            break
+    return best, why, blocked
 
 
 def _stairs_recorded(plan: Floorplan, kind: str = DOGLEG) -> Floorplan:
@@ -583,34 +595,53 @@ def _one_storey(spec: HouseSpec, rng: np.random.Generator, options: FloorplanOpt
     return plan.model_copy(update={"warnings": [*plan.warnings, f"{ONE_STOREY_NOTE} ({why}); every room is on the ground floor"]})
 
 
-def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options: FloorplanOptions | None) -> list[Floorplan]:
-    """Storey ``k`` of ``spec`` laid out on its own: the layouts of one solver search
-    whose stairwell holds the stair (:func:`_stair_fitted`), best score first; the
-    search is run again (at most ``level_attempts`` times) while none does."""
+def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options: FloorplanOptions | None,
+                  wanted: int | None = None) -> Floorplan:
+    """Storey ``k`` of ``spec`` laid out on its own: the best-scoring layout of one solver
+    search whose stairwell holds the stair (:func:`_stair_fitted`, asked of each valid
+    layout as the search finds it: one that fails is a failed attempt and the search goes
+    on; ``wanted`` of them, None: ``storey_wanted_candidates``; 1 measured on dev_storeys,
+    CPU median 1093 -> 428 ms with circulation and overhang as with the best of three
+    valid layouts, the stair tested after; three that hold it: a five-storey house 5 ->
+    15 s); the search is run again (at most ``level_attempts`` times) while none does.
+    (An upper storey finding no place beside a room rising through it is searched again
+    with ``wanted_candidates``, :func:`_stacked`.)"""
     stair = stair_room(spec, k)
-    sub = _storey_spec(spec, k, options or FloorplanOptions())
+    opts = options or FloorplanOptions()
+    sub = _storey_spec(spec, k, opts)
     heights = storey_heights_m(spec)
     kind = house_stair_kind(spec)
     long_m, short_m = stairwell_min_m(spec, k)
     why = f"its stairwell never came out as a rectangle of at least {long_m:g} x {short_m:g} m for the stair"
-    attempts = (options or FloorplanOptions()).level_attempts
+    attempts = opts.level_attempts
+    search = dataclasses.replace(opts, wanted_candidates=min(opts.wanted_candidates, wanted or opts.storey_wanted_candidates))
     narrow = _NARROW_HALLS.get()
     wide_m = short_m if narrow is not None and k in narrow else stair_hall_width_m(spec, k)
+    refused = [0]
+
+    def fitted(plan: Floorplan) -> Floorplan | None:
+        out = _stair_fitted(plan, stair, k, heights, long_m, short_m, kind)
+        refused[0] += out is None
+        return out
+
     for _ in range(attempts):
+        refused[0] = 0
         try:
-            found = floorplan_candidates(sub, rng, options, min_length_m={stair: long_m}, min_side_m={stair: wide_m},
-                                         stair_m={stair: flight_length_m(heights, k, kind)})
+            found = floorplan_candidates(sub, rng, search, min_length_m={stair: long_m}, min_side_m={stair: wide_m},
+                                         stair_m={stair: flight_length_m(heights, k, kind)}, accept=fitted)
         except FloorplanError as e:  # its own bounded tries all failed: trying again rarely helps
+            if refused[0]:  # it did lay the storey out, the stair did not fit: search again
+                continue
             if wide_m <= short_m:
                 raise _Unsolvable(f"could not lay out level {k} ({e})") from None
             wide_m = short_m  # a hall as narrow as the stair, its doors where the flight leaves them reachable
             if narrow is not None:
                 narrow.add(k)
             continue
-        fits = [f for plan in found if (f := _stair_fitted(plan, stair, k, heights, long_m, short_m, kind)) is not None]
-        if fits:
-            return fits
+        return found[0]
     raise FloorplanError(f"could not lay out level {k} in {attempts} attempts ({why})")
+
+
 
 
 def _stair_fitted(plan: Floorplan, stair: str, k: int, heights: dict[int, float], long_m: float,
@@ -649,8 +680,14 @@ def _doors_cleared(plan: Floorplan, stair: str, length_m: float) -> list[Floorpl
     x0, y0, w, h = _rect(plan.room(stair))
     if w < length_m + STRIP_M - 1e-6 or h < STAIR_WIDTH_M - 1e-6:
         return []
-    others = {r.id: Polygon(r.polygon).exterior.buffer(1e-6) for r in plan.rooms if r.id != stair}
-    own = Polygon(plan.room(stair).polygon).exterior.buffer(1e-6)
+    walls: dict[str, object] = {}  # room id -> its outline, buffered (built when a door of it is slid)
+
+    def wall(room_id: str):
+        if room_id not in walls:
+            room = next((r for r in plan.rooms if r.id == room_id), None)
+            walls[room_id] = None if room is None else Polygon(room.polygon).exterior.buffer(1e-6)
+        return walls[room_id]
+
     out: list[tuple[int, Floorplan]] = []
     for ya in (y0, y0 + h - STAIR_WIDTH_M):
         for xa in (x0, x0 + w - length_m):  # the box against the west (foot east) or the east end wall
@@ -661,7 +698,7 @@ def _doors_cleared(plan: Floorplan, stair: str, length_m: float) -> list[Floorpl
                 if stair not in d.rooms or not _meets(d.segment, stair_box):
                     continue
                 other = next((x for x in d.rooms if x != stair), "outside")
-                seg = _clear_spot(d.segment, stair_box, (own, others.get(other)), [e.segment for j, e in enumerate(doors) if j != i])
+                seg = _clear_spot(d.segment, stair_box, (wall(stair), wall(other)), [e.segment for j, e in enumerate(doors) if j != i])
                 if seg is None:
                     break
                 doors[i] = d.model_copy(update={"segment": seg})
@@ -685,24 +722,39 @@ def _clear_spot(segment, stair_box, walls: tuple, near: list) -> tuple | None:
     """``segment`` (a door) slid along its own line to the nearest place (5 cm steps, at
     most :data:`DOOR_SLIDE_M`) where its swing clears ``stair_box``, it still lies on both
     ``walls`` (the two rooms' outlines, buffered; None: outside, not moved) and no door
-    of ``near`` is within 0.1 m; None: no such place."""
-    from shapely.geometry import LineString
+    of ``near`` is within 0.1 m; None: no such place. Every place is tested at once
+    (shapely's array functions), the nearest that passes wins."""
+    import shapely
 
     if any(w is None for w in walls):
         return None
     (ax, ay), (bx, by) = segment
     ux, uy = (1.0, 0.0) if abs(ay - by) < 1e-6 else (0.0, 1.0)
-    for i in range(1, int(DOOR_SLIDE_M / SNAP_M) + 1):
-        for sign in (1, -1):
-            t = sign * i * SNAP_M
-            seg = ((round(ax + ux * t, 6), round(ay + uy * t, 6)), (round(bx + ux * t, 6), round(by + uy * t, 6)))
-            line = LineString(seg)
-            if _meets(seg, stair_box) or not all(w.contains(line) for w in walls):
-                continue
-            if any(LineString(e).distance(line) < 0.1 for e in near):
-                continue
-            return seg
-    return None
+    shifts = [sign * i * SNAP_M for i in range(1, int(DOOR_SLIDE_M / SNAP_M) + 1) for sign in (1, -1)]
+    segs = [((round(ax + ux * t, 6), round(ay + uy * t, 6)), (round(bx + ux * t, 6), round(by + uy * t, 6))) for t in shifts]
+    ends = np.asarray(segs, dtype=float)  # (place, end, xy)
+    lines = shapely.linestrings(ends)
+    ok = ~(shapely.intersects(_opening_zones(ends), stair_box) | shapely.intersects(lines, stair_box))
+    for w in walls:
+        ok &= shapely.contains(w, lines)
+    for e in near:
+        ok &= shapely.distance(shapely.linestrings(np.asarray(e, dtype=float)), lines) >= 0.1
+    first = np.flatnonzero(ok)
+    return segs[int(first[0])] if len(first) else None
+
+
+def _opening_zones(ends: np.ndarray):
+    """:func:`~anyhome.geometry.opening_zone` of every segment of ``ends`` (n, 2, 2), as
+    an array of polygons (the same corners, computed the same way)."""
+    import shapely
+
+    from anyhome.geometry import segment_normal
+
+    corners = np.empty((len(ends), 4, 2))
+    for i, (a, b) in enumerate(ends):
+        n = segment_normal((a, b)) * DOOR_CLEARANCE_M
+        corners[i] = (a - n, b - n, b + n, a + n)
+    return shapely.polygons(corners)
 
 
 def _rect(room: Room) -> tuple[float, float, float, float]:
@@ -774,12 +826,36 @@ def stack_box(plans: list[tuple[int, Floorplan]], heights: dict[int, float],
     tries += [(west_hi - i * SNAP_M, math.pi) for i in range(int((west_hi - west_lo) / SNAP_M + 1e-6) + 1)] if west_hi >= west_lo - 1e-6 else []
     door_segments = {k: [LineString(dr.segment) for dr in doors] for k, _, doors in wells}
     for ya in (y0, y1 - width):
-        for foot, yaw in tries:
-            if all(not any(flight_rect(foot, ya, lengths[k], width, yaw).buffer(STAIR_CLEAR_M).intersects(z) for z in zones[k])
-                   and doors_joined(rects[k], flight_rect(foot, ya, lengths[k], width, yaw), door_segments[k])
-                   for k in rects):
+        clear = _clear_of_doors(tries, ya, width, lengths, zones)  # the cheap test, every foot at once
+        for i, (foot, yaw) in enumerate(tries):
+            if clear[i] and all(doors_joined(rects[k], flight_rect(foot, ya, lengths[k], width, yaw), door_segments[k])
+                                for k in rects):
                 return (round(foot, 6), round(ya, 6), yaw)
     return None
+
+
+def _clear_of_doors(tries: list[tuple[float, float]], ya: float, width: float, lengths: dict[int, float],
+                    zones: dict[int, list]) -> np.ndarray:
+    """For each (foot, yaw) of ``tries``: whether the flight box of every storey ``k``
+    (``lengths[k]`` long, on the strip ``ya`` to ``ya`` + ``width``), grown by
+    :data:`~anyhome.floorplan.stairs.STAIR_CLEAR_M`, meets none of that storey's door
+    ``zones`` (:func:`stack_box`'s first test, as :func:`flight_rect` draws the box)."""
+    import shapely
+
+    ok = np.ones(len(tries), dtype=bool)
+    if not tries:
+        return ok
+    foot = np.array([f for f, _ in tries])
+    east = np.array([abs(yaw) < 1e-9 for _, yaw in tries])  # yaw 0: the foot toward +x, the box west of it
+    for k, length in lengths.items():
+        if not zones.get(k):
+            continue
+        x0 = np.where(east, foot - length, foot)
+        x1 = np.where(east, foot, foot + length)
+        grown = shapely.buffer(shapely.box(x0, ya, x1, ya + width), STAIR_CLEAR_M, quad_segs=16)
+        for z in zones[k]:
+            ok &= ~shapely.intersects(grown, z)
+    return ok
 
 
 def _joined(spec: HouseSpec, plans: dict[int, Floorplan], levels: list[Level]) -> Floorplan:

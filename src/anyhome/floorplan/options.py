@@ -59,6 +59,8 @@ class FloorplanOptions:
     """Solves per storey of a house of several storeys before a FloorplanError."""
     storey_candidates: int = _opt(3, 1, 100)
     """Layouts tried of each storey off the ground; the one hanging least over nothing is kept."""
+    storey_wanted_candidates: int = _opt(1, 1, 1_000)
+    """Layouts holding the stair one search of a storey gathers (at most wanted_candidates); the best is kept."""
     overhang_ok_m2: float = _opt(1.0, 0.0, 1_000.0)
     """A storey hanging over nothing by at most this much (m2) is kept at once."""
     stairwell_spare_m: float = _opt(0.3, 0.0, 5.0)

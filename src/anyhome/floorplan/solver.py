@@ -116,21 +116,42 @@ def floorplan_candidates(
     min_length_m: Mapping[str, float] | None = None,
     min_side_m: Mapping[str, float] | None = None,
     stair_m: Mapping[str, float] | None = None,
+    accept: Callable[[Floorplan], Floorplan | None] | None = None,
 ) -> list[Floorplan]:
     """Every valid layout one :func:`solve_floorplan` search found (up to
     ``options.wanted_candidates``), best score first: the first is the floorplan
     :func:`solve_floorplan` gives with the same generator. A caller with checks of its
     own (a storey whose stair must fit and stack) tries the others before searching
-    again. Same parameters and errors as :func:`solve_floorplan`."""
-    prog, layouts = _layouts(spec, rng, options, kb, None, None, min_length_m, min_side_m, stair_m)
-    return [_to_floorplan(spec, prog, lay) for lay in layouts]
+    again, or passes them as ``accept`` (a layout -> the layout as the caller keeps it,
+    or None: refused): a refused layout is a failed attempt (:data:`REFUSED`) and the
+    search goes on. Same parameters and errors as :func:`solve_floorplan`."""
+    kept: dict[int, Floorplan] = {}  # id(layout) -> what ``accept`` made of it
+
+    def check(prog: Program, lay: Layout) -> str:
+        plan = _to_floorplan(spec, prog, lay)
+        if accept is not None:
+            made = accept(plan)
+            if made is None:
+                return REFUSED
+            plan = made
+        kept[id(lay)] = plan
+        return ""
+
+    _, layouts = _layouts(spec, rng, options, kb, None, None, min_length_m, min_side_m, stair_m, check)
+    return [kept[id(lay)] for lay in layouts]
+
+
+REFUSED = "refused by the caller's own check"
+"""The failure of a layout :func:`floorplan_candidates`' ``accept`` refused."""
 
 
 def _layouts(spec: HouseSpec, rng: np.random.Generator, options: FloorplanOptions | None, kb: KnowledgeBase | None,
              footprint: object | None, fixed: Mapping[str, tuple[float, float, float, float]] | None,
              min_length_m: Mapping[str, float] | None, min_side_m: Mapping[str, float] | None,
-             stair_m: Mapping[str, float] | None) -> tuple[Program, list[Layout]]:
-    """The program of ``spec`` and its valid layouts, best score first (see :func:`solve_floorplan`)."""
+             stair_m: Mapping[str, float] | None,
+             check: Callable[[Program, Layout], str] | None = None) -> tuple[Program, list[Layout]]:
+    """The program of ``spec`` and its valid layouts, best score first (see :func:`solve_floorplan`);
+    ``check``: a further test of each valid layout ('' or why it fails)."""
     opts = options or FloorplanOptions()
     if kb is None:
         from anyhome.plan.knowledge import knowledge_base
@@ -149,16 +170,21 @@ def _layouts(spec: HouseSpec, rng: np.random.Generator, options: FloorplanOption
         from anyhome.floorplan.fixed import solve_in_footprint
 
         return prog, [solve_in_footprint(prog, rng, footprint, dict(fixed or {}))]
-    ring = _court_ring(prog, rng, opts)
+    def checked(lay: Layout | str) -> Layout | str:
+        lay = _long_enough(prog, lay)
+        if check is None or isinstance(lay, str):
+            return lay
+        return check(prog, lay) or lay
+
+    ring = _court_ring(prog, rng, opts, checked)
     if ring is not None:
         return prog, [ring]
     slicing_attempts = opts.slicing_attempts if prog.n <= opts.slicing_max_rooms else 0
 
     def attempt(i: int) -> Layout | str:
         if i < slicing_attempts:
-            return _long_enough(prog, _attempt(prog, rng, opts))
-        return _long_enough(prog, _constructed_attempt(prog, spine_owner(prog, rng), rng, opts,
-                                                       opts.spine_score_handicap))
+            return checked(_attempt(prog, rng, opts))
+        return checked(_constructed_attempt(prog, spine_owner(prog, rng), rng, opts, opts.spine_score_handicap))
 
     return prog, best_attempts(attempt, prog.n, opts)
 
@@ -176,9 +202,14 @@ def _long_enough(prog: Program, lay: Layout | str) -> Layout | str:
     return lay
 
 
-def _court_ring(prog: Program, rng: np.random.Generator, opts: FloorplanOptions) -> Layout | None:
+def _court_ring(prog: Program, rng: np.random.Generator, opts: FloorplanOptions,
+                checked: Callable[[Layout | str], Layout | str] | None = None) -> Layout | None:
     """The best ring of rooms around the program's enclosed courtyard (closed, or a U at
-    ``court_open_side_probability``; a closed ring that fails is tried as a U), or None."""
+    ``court_open_side_probability``; a closed ring that fails is tried as a U), or None;
+    ``checked``: a layout or why not -> the same after the caller's checks (None:
+    :func:`_long_enough`)."""
+    if checked is None:
+        checked = lambda lay: _long_enough(prog, lay)  # noqa: E731
     if not any(prog.enclosed) or not opts.court_attempts:
         return None
     tries = replace(opts, max_attempts=opts.court_attempts)
@@ -186,7 +217,7 @@ def _court_ring(prog: Program, rng: np.random.Generator, opts: FloorplanOptions)
     for open_side in shapes:
         try:
             return best_attempt(
-                lambda i: _long_enough(prog, _constructed_attempt(prog, court_owner(prog, rng, open_side), rng, opts)),
+                lambda i: checked(_constructed_attempt(prog, court_owner(prog, rng, open_side), rng, opts)),
                 prog.n, tries, " around its courtyard")
         except FloorplanError:
             log.debug("floorplan: no courtyard %s in %d attempts", "U" if open_side else "ring", opts.court_attempts)
