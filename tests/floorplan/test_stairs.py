@@ -125,7 +125,13 @@ def test_ladder_is_steep_and_short():
     box (run and the floor at its top) well under a dog-leg's length."""
     import math
 
-    from anyhome.floorplan.stairs import LADDER, LADDER_GOING_M, LADDER_TOP_M, ladder_risers, stair_length_m
+    from anyhome.floorplan.stairs import (
+        LADDER,
+        LADDER_GOING_M,
+        LADDER_TOP_M,
+        ladder_risers,
+        stair_length_m,
+    )
 
     n = ladder_risers(2.9)
     assert 2.9 / n <= 0.24 + 1e-9
