@@ -140,10 +140,12 @@ class Level(_Model):
         description="where the flight up from this storey stands, fixed by the floorplan stage: (x of its "
         "foot end, y of its -y side, yaw 0 or pi; anyhome.floorplan.levels.stack_box). None: no flight up, "
         "or a file written before it was recorded (the place is then found again from the stairwells)")
-    stairs_kind: Literal["spiral"] | None = Field(
+    stairs_kind: Literal["spiral", "ladder"] | None = Field(
         default=None, exclude_if=lambda v: v is None,
         description="the kind of the flight up from this storey: 'spiral' (a small house's spiral stair, one "
-        "full turn in a square box; anyhome.floorplan.stairs.stair_kind); None: a dog-leg")
+        "full turn in a square box), 'ladder' (a tiny house's ship's ladder: one steep straight flight, "
+        "alternating treads, arriving at the far end of its box); anyhome.floorplan.stairs.stair_kind; "
+        "None: a dog-leg")
 
 
 class Door(_Model):

@@ -109,6 +109,8 @@ def test_resized_object_still_fits() -> None:
         ("garden fountain", "", "fountain"),
         ("", "fish tank", "aquarium"),
         ("", "spiral staircase", "spiral_staircase"),
+        ("stairs", "ship's ladder", "ship_ladder"),
+        ("stairs", "stairs", "staircase"),
     ],
 )
 def test_family_for(category: str, name: str, expected: str) -> None:

@@ -43,6 +43,12 @@ KEPT_CONSTANTS = {
     "THROUGH_FACTOR", "THROUGH_OVERLAP_OK_M2",  # levels.py: what is a double-height room; a snapping sliver
     "SPIRAL_RISER_MAX_M",  # a spiral stair's riser (BS 5395-2)
     "SPIRAL_MAX_FLOOR_M2",  # which houses get a spiral stair: read by the planner too, which has no FloorplanOptions
+    "LADDER_MAX_FLOOR_M2",  # which houses get a ship's ladder: read by the planner too
+    "LADDER_WIDTH_M",  # a ship's ladder's width (IBC 2018 1011.15)
+    "LADDER_RISER_MAX_M",  # a ship's ladder's riser (IBC 2018 1011.14-15)
+    "LADDER_GOING_M",  # a ship's ladder's projected tread (IBC 2018 1011.14-15)
+    "LADDER_TOP_M",  # the floor at a ladder's top inside its box: the asset draws it too
+    "LADDER_WELL_WIDTH_M",  # a ladder's stairwell: the ladder and a passage beside it
 }
 
 

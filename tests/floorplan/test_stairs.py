@@ -100,24 +100,50 @@ def test_stairwell_doors_are_placed_where_the_stair_fits():
     assert fits >= 5  # without stair_m: 1 of 4 ground floors of a townhouse, measured
 
 
-def test_stair_kind_is_a_spiral_for_a_small_house_only():
+def test_stair_kind_is_a_ladder_for_a_tiny_house_a_spiral_for_a_small_one():
     from anyhome.floorplan.stairs import (
         DOGLEG,
+        LADDER,
+        LADDER_MAX_FLOOR_M2,
         SPIRAL,
         SPIRAL_MAX_FLOOR_M2,
         stair_kind,
         stair_length_m,
+        stair_width_m,
     )
 
+    assert stair_kind(LADDER_MAX_FLOOR_M2) == LADDER
+    assert stair_kind(LADDER_MAX_FLOOR_M2 + 1.0) == SPIRAL
     assert stair_kind(SPIRAL_MAX_FLOOR_M2) == SPIRAL
     assert stair_kind(SPIRAL_MAX_FLOOR_M2 + 1.0) == DOGLEG
     assert stair_length_m(SPIRAL, 2.9) < stair_length_m(DOGLEG, 2.9)  # a spiral's stairwell is shorter
+    assert stair_width_m(LADDER) < stair_width_m(SPIRAL) == stair_width_m(DOGLEG)
+
+
+def test_ladder_is_steep_and_short():
+    """A ship's ladder of a 2.9 m storey: risers of at most 0.24 m, about 60 degrees, its
+    box (run and the floor at its top) well under a dog-leg's length."""
+    import math
+
+    from anyhome.floorplan.stairs import (
+        LADDER,
+        LADDER_GOING_M,
+        LADDER_TOP_M,
+        ladder_risers,
+        stair_length_m,
+    )
+
+    n = ladder_risers(2.9)
+    assert 2.9 / n <= 0.24 + 1e-9
+    assert 55 <= math.degrees(math.atan2(2.9 / n, LADDER_GOING_M)) <= 68
+    assert stair_length_m(LADDER, 2.9) == pytest.approx((n - 1) * LADDER_GOING_M + LADDER_TOP_M)
+    assert stair_length_m(LADDER, 2.9) < 2.2
 
 
 def test_small_two_storey_house_gets_a_spiral_stair_that_joins_its_storeys():
-    """A tiny two-storey cottage: a spiral stair (one full turn in a square box), recorded
-    on its ground floor, joining the two storeys; every room reachable, no violation;
-    its stairwells are planned smaller than a dog-leg's."""
+    """A small maisonette: a spiral stair (one full turn in a square box), recorded on its
+    ground floor, joining the two storeys; every room reachable, no violation; its
+    stairwells are planned smaller than a dog-leg's."""
     from anyhome.assets.registry import family_for
     from anyhome.evaluate import evaluate_house
     from anyhome.floorplan.levels import reachable_rooms, stair_link
@@ -125,7 +151,7 @@ def test_small_two_storey_house_gets_a_spiral_stair_that_joins_its_storeys():
     from anyhome.pipeline import generate
     from anyhome.plan.program import SPIRAL_STAIRWELL_AREA_M2, STAIRWELL_AREA_M2
 
-    h = generate("A tiny two-storey cottage: a kitchen and sitting room downstairs, one bedroom and a bathroom upstairs.", 0)
+    h = generate("A small maisonette over two floors with a lounge, a kitchen-diner, two bedrooms and a bathroom.", 0)
     stairs = [o for o in h.objects if o.category == "stairs"]
     assert len(stairs) == 1 and stairs[0].name == SPIRAL_NAME
     assert stairs[0].size[0] == pytest.approx(stairs[0].size[1])
@@ -138,3 +164,32 @@ def test_small_two_storey_house_gets_a_spiral_stair_that_joins_its_storeys():
     planned = [r["area_m2"] for r in h.plan["rooms"] if r["type"] == "stairwell"]
     assert planned and all(a < STAIRWELL_AREA_M2 for a in planned)
     assert SPIRAL_STAIRWELL_AREA_M2 < STAIRWELL_AREA_M2
+
+
+def test_tiny_two_storey_house_gets_a_ladder_and_stays_tiny():
+    """A tiny two-storey cottage whose rooms fit: a ship's ladder (category stairs, asset
+    family ship_ladder) joins its storeys, every room reachable, no violation, the house
+    at most 45 m2 (issue 13's bar for "tiny"), its stairwells planned at the ladder's
+    3.5 m2."""
+    from shapely.geometry import Polygon
+
+    from anyhome.assets.registry import family_for
+    from anyhome.evaluate import evaluate_house
+    from anyhome.floorplan.levels import STAIRS_CATEGORY, reachable_rooms, stair_link
+    from anyhome.floorplan.stairs import LADDER, LADDER_NAME
+    from anyhome.pipeline import generate
+    from anyhome.plan.program import LADDER_STAIRWELL_AREA_M2, SPIRAL_STAIRWELL_AREA_M2
+
+    h = generate("A tiny two-storey cottage: a kitchen and sitting room downstairs, one bedroom and a bathroom upstairs.", 2)
+    stairs = [o for o in h.objects if o.category == STAIRS_CATEGORY]
+    assert len(stairs) == 1 and stairs[0].name == LADDER_NAME and stairs[0].category == "stairs"
+    assert h.levels[0].stairs_kind == LADDER
+    assert family_for(stairs[0].category, stairs[0].name) == "ship_ladder"
+    a, b = stair_link(h.floorplan, stairs[0])
+    assert (h.room_level(a), h.room_level(b)) == (0, 1)
+    assert reachable_rooms(h) == {r.id for r in h.rooms}
+    assert evaluate_house(h).violations == []
+    assert sum(Polygon(r.polygon).area for r in h.rooms) <= 45.0
+    planned = [r["area_m2"] for r in h.plan["rooms"] if r["type"] == "stairwell"]
+    assert planned == [LADDER_STAIRWELL_AREA_M2] * 2
+    assert LADDER_STAIRWELL_AREA_M2 < SPIRAL_STAIRWELL_AREA_M2

@@ -65,10 +65,13 @@ from anyhome.floorplan.stairs import (
     DOGLEG,
     HALL_DOOR_M,
     HALL_DOORS,
+    LADDER,
+    LADDER_NAME,
     PASSAGE_M,
     SPIRAL,
     SPIRAL_NAME,
     STAIR_CLEAR_M,
+    STAIR_WIDTH,
     STAIR_WIDTH_M,
     STRIP_M,
     dogleg,
@@ -76,9 +79,12 @@ from anyhome.floorplan.stairs import (
     flight_rect,
     is_dogleg_box,
     is_stairwell,
+    ladder_risers,
     spiral_risers,
     stair_kind,
     stair_length_m,
+    stair_width_m,
+    well_width_m,
 )
 from anyhome.floorplan.wells import wells_trimmed
 from anyhome.geometry import DOOR_CLEARANCE_M, opening_zone
@@ -164,7 +170,8 @@ def house_stair_kind(spec: HouseSpec) -> str:
 def plan_stair_kind(plan: Floorplan) -> str:
     """The kind of stairs of a laid-out ``plan``, as recorded on its storeys
     (:attr:`~anyhome.house.Level.stairs_kind`; none recorded: a dog-leg)."""
-    return SPIRAL if any(lv.stairs_kind == SPIRAL for lv in plan.levels) else DOGLEG
+    return next((lv.stairs_kind for lv in plan.levels if lv.stairs_kind in (SPIRAL, LADDER)), DOGLEG)
+
 
 
 def flight_length_m(heights: dict[int, float], k: int, kind: str = DOGLEG) -> float:
@@ -184,7 +191,8 @@ def stairwell_min_m(spec: HouseSpec, k: int) -> tuple[float, float]:
     extra_m = HALL_DOOR_M * max(0, _stair_doors(spec, k) - HALL_DOORS)
     if k == 0 and any(stair_room(spec, 0) in c and "outside" in c for c in spec.connections):
         extra_m += ENTRANCE_WIDTH_M - DOOR_WIDTH_M  # the front door, wider, in the strip's long wall
-    return (round(flight_length_m(storey_heights_m(spec), k, house_stair_kind(spec)) + STRIP_M + extra_m, 4), STAIR_WIDTH_M)
+    kind = house_stair_kind(spec)
+    return (round(flight_length_m(storey_heights_m(spec), k, kind) + STRIP_M + extra_m, 4), well_width_m(kind))
 
 
 def stair_hall_width_m(spec: HouseSpec, k: int) -> float:
@@ -194,7 +202,11 @@ def stair_hall_width_m(spec: HouseSpec, k: int) -> float:
     open onto; a plain stairwell, the stair's width. (A hall narrower than that comes out
     with its flight cutting it in two and is refused, :func:`~anyhome.floorplan.stairs.doors_joined`: measured, a
     townhouse's five-door ground floor was laid out 40 times over, 10-20 s.)"""
-    return round(STAIR_WIDTH_M + PASSAGE_M, 4) if _stair_doors(spec, k) >= 3 else STAIR_WIDTH_M
+    kind = house_stair_kind(spec)
+    plain = well_width_m(kind)
+    if _stair_doors(spec, k) >= 3:
+        return round(max(plain, stair_width_m(kind) + PASSAGE_M), 4)
+    return plain
 
 
 def _stair_doors(spec: HouseSpec, k: int) -> int:
@@ -262,7 +274,8 @@ def _stacked(spec: HouseSpec, numbers: list[int], rng: np.random.Generator, opti
         elevation[k] = elevation[k + 1] - heights[k]
     levels = [Level(level=k, elevation_m=round(elevation[k], 4), height_m=round(heights[k], 4)) for k in numbers]
     plan = _stairs_recorded(_under_above(_joined(spec, plans, levels), through_rooms(spec)), house_stair_kind(spec))
-    plan = wells_trimmed(plan, _stairs_place(plan)[1], {k: stair_room(spec, k) for k in numbers}, opts)
+    plan = wells_trimmed(plan, _stairs_place(plan)[1], {k: stair_room(spec, k) for k in numbers}, opts,
+                         house_stair_kind(spec))
     return stairs_opened(plan, opts)
 
 
@@ -308,7 +321,7 @@ def _stairs_recorded(plan: Floorplan, kind: str = DOGLEG) -> Floorplan:
     numbers = sorted(lv.level for lv in plan.levels)
     if len(numbers) < 2:
         return plan
-    marked = {"stairs_kind": SPIRAL} if kind == SPIRAL else {}
+    marked = {"stairs_kind": kind} if kind in (SPIRAL, LADDER) else {}
     plan = plan.model_copy(update={"levels": [
         lv.model_copy(update=marked) if lv.level < numbers[-1] else lv for lv in plan.levels]})
     found = _stairs_place(plan)
@@ -434,10 +447,12 @@ def _door_beside_flight(plan: Floorplan, room_id: str, k: int) -> bool:
     foot, ya, yaw = _stairs_place(plan)
     poly = Polygon(room.polygon)
     x0, _, x1, _ = poly.bounds
-    length_m = stair_length_m(plan_stair_kind(plan), next(lv.height_m for lv in plan.levels if lv.level == k))  # the flight rising from it
-    flight = flight_rect(foot, ya, length_m, STAIR_WIDTH_M, yaw)
-    strip = box(foot, ya, foot + STRIP_M, ya + STAIR_WIDTH_M) if yaw == 0.0 else box(foot - STRIP_M, ya, foot, ya + STAIR_WIDTH_M)
-    beside = poly.intersection(box(x0, ya, x1, ya + STAIR_WIDTH_M)).difference(flight.union(strip))
+    kind = plan_stair_kind(plan)
+    length_m = stair_length_m(kind, next(lv.height_m for lv in plan.levels if lv.level == k))  # the flight rising from it
+    width = stair_width_m(kind)
+    flight = flight_rect(foot, ya, length_m, width, yaw)
+    strip = box(foot, ya, foot + STRIP_M, ya + width) if yaw == 0.0 else box(foot - STRIP_M, ya, foot, ya + width)
+    beside = poly.intersection(box(x0, ya, x1, ya + width)).difference(flight.union(strip))
     return any(opening_zone(dr.segment).intersection(beside).area > 0.05 for dr in plan.doors if room_id in dr.rooms)
 
 
@@ -573,7 +588,8 @@ def _storey_spec(spec: HouseSpec, k: int, opts: FloorplanOptions) -> HouseSpec:
     if k != 0:
         links.append((stair, "outside"))
     long_m = stairwell_min_m(spec, k)[0]
-    least_m2 = round(long_m * (stair_hall_width_m(spec, k) + opts.stairwell_spare_m), 2)  # a tall storey's stair needs a longer well
+    spare_m = opts.stairwell_spare_m if house_stair_kind(spec) != LADDER else 0.0  # a ladder's well: as narrow as planned
+    least_m2 = round(long_m * (stair_hall_width_m(spec, k) + spare_m), 2)  # a tall storey's stair needs a longer well
     rooms = [r.model_copy(update={"area_m2": max(r.area_m2, least_m2)}) if r.id == stair else r
              for r in spec.rooms if r.level == k]
     return spec.model_copy(update={"rooms": rooms, "connections": links})
@@ -627,8 +643,9 @@ def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options: Fl
     for _ in range(attempts):
         refused[0] = 0
         try:
-            found = floorplan_candidates(sub, rng, search, min_length_m={stair: long_m}, min_side_m={stair: wide_m},
-                                         stair_m={stair: flight_length_m(heights, k, kind)}, accept=fitted)
+            found = _candidates(sub, rng, search, min_length_m={stair: long_m}, min_side_m={stair: wide_m},
+                                stair_m={stair: flight_length_m(heights, k, kind)}, accept=fitted,
+                                width_m=stair_width_m(kind))
         except FloorplanError as e:  # its own bounded tries all failed: trying again rarely helps
             if refused[0]:  # it did lay the storey out, the stair did not fit: search again
                 continue
@@ -642,6 +659,16 @@ def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options: Fl
     raise FloorplanError(f"could not lay out level {k} in {attempts} attempts ({why})")
 
 
+def _candidates(sub: HouseSpec, rng: np.random.Generator, options: FloorplanOptions | None,
+                width_m: float, **kw) -> list[Floorplan]:
+    """:func:`~anyhome.floorplan.solver.floorplan_candidates` of the storey ``sub`` whose
+    stair's box is ``width_m`` wide (the solver's door checks,
+    :data:`~anyhome.floorplan.stairs.STAIR_WIDTH`)."""
+    token = STAIR_WIDTH.set(width_m)
+    try:
+        return floorplan_candidates(sub, rng, options, **kw)
+    finally:
+        STAIR_WIDTH.reset(token)
 
 
 def _stair_fitted(plan: Floorplan, stair: str, k: int, heights: dict[int, float], long_m: float,
@@ -661,15 +688,15 @@ def _stair_fitted(plan: Floorplan, stair: str, k: int, heights: dict[int, float]
         return None
     if stack_box([(k, plan)], heights, kind) is not None:
         return plan
-    for slid in _doors_cleared(plan, stair, flight_length_m(heights, k, kind)):  # only where the doors as laid out are in the way
+    for slid in _doors_cleared(plan, stair, flight_length_m(heights, k, kind), stair_width_m(kind)):  # only where the doors as laid out are in the way
         if stack_box([(k, slid)], heights, kind) is not None:
             return slid
     return None
 
 
-def _doors_cleared(plan: Floorplan, stair: str, length_m: float) -> list[Floorplan]:
+def _doors_cleared(plan: Floorplan, stair: str, length_m: float, width_m: float = STAIR_WIDTH_M) -> list[Floorplan]:
     """Ways of ``plan`` whose stairwell ``stair`` (running east-west) holds a stair box
-    ``length_m`` long by the flights' width against its far end wall, with the strip at
+    ``length_m`` long by the stair's width against its far end wall, with the strip at
     its foot: for each of the four such boxes (against the south or the north wall, its
     foot toward the east or the west), the doors of the stairwell whose swing meets the
     box slid along their wall to the nearest place clear of it, where the wall is still
@@ -678,7 +705,7 @@ def _doors_cleared(plan: Floorplan, stair: str, length_m: float) -> list[Floorpl
     from shapely.geometry import Polygon, box
 
     x0, y0, w, h = _rect(plan.room(stair))
-    if w < length_m + STRIP_M - 1e-6 or h < STAIR_WIDTH_M - 1e-6:
+    if w < length_m + STRIP_M - 1e-6 or h < width_m - 1e-6:
         return []
     walls: dict[str, object] = {}  # room id -> its outline, buffered (built when a door of it is slid)
 
@@ -689,9 +716,9 @@ def _doors_cleared(plan: Floorplan, stair: str, length_m: float) -> list[Floorpl
         return walls[room_id]
 
     out: list[tuple[int, Floorplan]] = []
-    for ya in (y0, y0 + h - STAIR_WIDTH_M):
+    for ya in (y0, y0 + h - width_m):
         for xa in (x0, x0 + w - length_m):  # the box against the west (foot east) or the east end wall
-            stair_box = box(xa, ya, xa + length_m, ya + STAIR_WIDTH_M).buffer(STAIR_CLEAR_M)
+            stair_box = box(xa, ya, xa + length_m, ya + width_m).buffer(STAIR_CLEAR_M)
             doors = list(plan.doors)
             moved = 0
             for i, d in enumerate(doors):
@@ -812,7 +839,7 @@ def stack_box(plans: list[tuple[int, Floorplan]], heights: dict[int, float],
     rects = {k: _rect(r) for k, r, _ in wells}
     if any(w <= 0 for _, _, w, _ in rects.values()):
         return None
-    width = STAIR_WIDTH_M
+    width = stair_width_m(kind)
     lengths = {k: flight_length_m(heights, k, kind) for k in rects}
     y0, y1 = max(r[1] for r in rects.values()), min(r[1] + r[3] for r in rects.values())
     if y1 - y0 < width - 1e-6:
@@ -884,13 +911,17 @@ def stairs_objects(plan: Floorplan) -> list[HouseObject]:
     elev = {lv.level: lv.elevation_m for lv in plan.levels}
     foot, ya, yaw = _stairs_place(plan)
     kind = plan_stair_kind(plan)
-    width = STAIR_WIDTH_M
+    width = stair_width_m(kind)
     out = []
     for lo, hi in zip(numbers, numbers[1:]):
         low = _stairwell(plan, lo)
         rise_m = elev[hi] - elev[lo]
         xa, _, xb, _ = flight_rect(foot, ya, stair_length_m(kind, rise_m), width, yaw).bounds
-        if kind == SPIRAL:
+        if kind == LADDER:
+            n = ladder_risers(rise_m)
+            name, text = LADDER_NAME, (f"a ship's ladder (alternating treads) from level {lo} up to level {hi}: "
+                                       f"{n} risers of {rise_m / n:.3f} m, arriving at its far end")
+        elif kind == SPIRAL:
             n = spiral_risers(rise_m)
             name, text = SPIRAL_NAME, (f"a spiral stair from level {lo} up to level {hi}: one full turn in "
                                        f"{n} risers of {rise_m / n:.3f} m, arriving over its foot")
@@ -961,6 +992,8 @@ def stair_link(plan: Floorplan, obj: HouseObject) -> tuple[str, str] | None:
     c, s = math.cos(obj.yaw), math.sin(obj.yaw)
     if obj.name == SPIRAL_NAME:  # a spiral turns once round: it ends over its foot end
         lx, ly = obj.size[0] / 2 - 0.1, 0.0
+    elif obj.name == LADDER_NAME:  # a ladder rises toward its local -x, onto the floor at its top end
+        lx, ly = -(obj.size[0] / 2 - 0.1), 0.0
     elif is_dogleg_box(obj.size[0], obj.size[1]):  # a dog-leg ends at its foot end, on its +y half
         lx, ly = obj.size[0] / 2 - 0.1, obj.size[1] / 4
     else:  # a straight flight rises toward its local -x

@@ -117,8 +117,12 @@ class Program:
 
     def min_side_m(self, k: int) -> float:
         """The narrowest side room ``k`` may have: its type's norm (``min_width_m``), never
-        below the options' floor for its kind (corridor, habitable, service)."""
+        below the options' floor for its kind (corridor, habitable, service); a stairwell
+        (``stair_m``) the side asked for its stair (anyhome.floorplan.levels), a hub's
+        floor where it has ``hub_min_doors`` doors."""
         opts = self.options
+        if self.stair_m and self.stair_m[k] > 0 and self.min_width_m:  # a stairwell: as wide as its stair asks
+            return max(self.min_width_m[k], opts.hub_min_side_m if self.doors[k] >= opts.hub_min_doors else 0.0)
         if self.types[k] in CORRIDOR_TYPES:
             floor = opts.corridor_width_m
         else:

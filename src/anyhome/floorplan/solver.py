@@ -161,8 +161,9 @@ def _layouts(spec: HouseSpec, rng: np.random.Generator, options: FloorplanOption
     if min_length_m:
         prog = dataclasses.replace(prog, min_length_m=tuple(float(min_length_m.get(i, 0.0)) for i in prog.ids))
     if min_side_m:
-        prog = dataclasses.replace(prog, min_width_m=tuple(
-            max(w, float(min_side_m.get(i, 0.0))) for i, w in zip(prog.ids, prog.min_width_m or (0.0,) * prog.n)))
+        prog = dataclasses.replace(prog, min_width_m=tuple(  # a stairwell: the side its stair needs (a ladder's is narrow)
+            float(min_side_m[i]) if stair_m and i in stair_m and i in min_side_m else max(w, float(min_side_m.get(i, 0.0)))
+            for i, w in zip(prog.ids, prog.min_width_m or (0.0,) * prog.n)))
     if stair_m:
         prog = dataclasses.replace(prog, stair_m=tuple(float(stair_m.get(i, 0.0)) for i in prog.ids))
     _precheck(prog, opts)

@@ -19,6 +19,7 @@ Dimensions follow UK Approved Document K (private stair): rise <= 220 mm, going 
 from __future__ import annotations
 
 import math
+from contextvars import ContextVar
 from dataclasses import dataclass
 
 RISER_MAX_M = 0.19
@@ -71,16 +72,68 @@ SPIRAL_NAME = "spiral stairs"
 """Name of a spiral ``stairs`` object (the asset factory builds it as a spiral staircase)."""
 
 
+LADDER = "ladder"
+"""Stair kind of a tiny house (:func:`stair_kind`): a ship's ladder (an alternating-tread
+stair), one steep straight flight, as tiny houses and cabins with a sleeping loft use."""
+LADDER_MAX_FLOOR_M2 = 45.0
+"""A house of several storeys whose rooms (its stairwells left out) plan at most this
+much floor, a tiny home's whole floor (issue 13's bar), gets a ship's ladder
+(:func:`stair_kind`): even a spiral's two stairwells (about 11 m2) would not fit in it."""
+LADDER_WIDTH_M = 0.6
+"""Width of a ship's ladder (IBC 2018 1011.15: 20 in, 0.51 m, at least)."""
+LADDER_RISER_MAX_M = 0.24
+"""Highest riser of a ship's ladder (IBC 2018 1011.14-15: 9.5 in, 0.241 m)."""
+LADDER_GOING_M = 0.13
+"""Projected tread (going) of a ship's ladder (IBC 2018 1011.14-15: 5 in, 0.127 m, at
+least): a pitch of 60-62 degrees for risers of 0.22-0.24 m."""
+LADDER_TOP_M = 0.5
+"""Floor at the ladder's top end inside its box, where one steps off onto the storey
+above (the flight's box is its run and this)."""
+LADDER_WELL_WIDTH_M = 1.2
+"""Narrowest side of a ladder's stairwell: the ladder and a 0.6 m passage beside it; its
+doors open onto the strip at the foot (:data:`STRIP_M`, on every storey as for the other
+kinds: in its end wall or in a long wall). (Measured: a top storey's well without the strip,
+1.93 x 1.45 m, came out with its doors in its end walls, in the ladder's way, and the
+storeys fell back to one.)"""
+LADDER_NAME = "ship's ladder"
+"""Name of a ladder ``stairs`` object (the asset factory builds it as a ship's ladder)."""
+
+
 def stair_kind(floor_m2: float) -> str:
-    """The kind of stair (:data:`SPIRAL` or :data:`DOGLEG`) of a house whose rooms, its
-    stairwells left out, plan ``floor_m2`` of floor in all (:data:`SPIRAL_MAX_FLOOR_M2`)."""
+    """The kind of stair of a house whose rooms, its stairwells left out, plan ``floor_m2``
+    of floor in all: :data:`LADDER` for a tiny home (:data:`LADDER_MAX_FLOOR_M2`),
+    :data:`SPIRAL` for a small one (:data:`SPIRAL_MAX_FLOOR_M2`), else :data:`DOGLEG`."""
+    if floor_m2 <= LADDER_MAX_FLOOR_M2 + 1e-9:
+        return LADDER
     return SPIRAL if floor_m2 <= SPIRAL_MAX_FLOOR_M2 + 1e-9 else DOGLEG
+
+
+def stair_width_m(kind: str) -> float:
+    """Width of the box of a stair of ``kind``: a ladder's, else two flights' (a spiral's
+    diameter is the dog-leg's width)."""
+    return LADDER_WIDTH_M if kind == LADDER else STAIR_WIDTH_M
+
+
+def well_width_m(kind: str) -> float:
+    """Narrowest side of a plain stairwell holding a stair of ``kind``."""
+    return LADDER_WELL_WIDTH_M if kind == LADDER else STAIR_WIDTH_M
+
+
+def ladder_risers(rise_m: float) -> int:
+    """Risers of a ship's ladder climbing ``rise_m`` (:data:`LADDER_RISER_MAX_M`)."""
+    if rise_m <= 0:
+        raise ValueError(f"a stair needs a positive rise, got {rise_m}")
+    return max(2, math.ceil(rise_m / LADDER_RISER_MAX_M - 1e-9))
 
 
 def stair_length_m(kind: str, rise_m: float) -> float:
     """Length of the box (along its foot-to-far-end axis) of a stair of ``kind`` climbing
-    ``rise_m``: a dog-leg's (:func:`dogleg`), a spiral's diameter. Both end over their
-    foot (a spiral turns once round), so the same strip of floor serves both ends."""
+    ``rise_m``: a dog-leg's (:func:`dogleg`), a spiral's diameter, a ladder's run and the
+    floor at its top (:data:`LADDER_TOP_M`). A dog-leg and a spiral end over their foot
+    (a spiral turns once round), so the same strip of floor serves both ends; a ladder
+    ends at the far end of its box, on the floor of the storey above."""
+    if kind == LADDER:
+        return round((ladder_risers(rise_m) - 1) * LADDER_GOING_M + LADDER_TOP_M, 4)
     return SPIRAL_DIAMETER_M if kind == SPIRAL else dogleg(rise_m).length_m
 
 
@@ -186,6 +239,12 @@ def doors_joined(rect: tuple[float, float, float, float], flight, doors: list) -
     return bool(reached) and bool(set.intersection(*reached))
 
 
+STAIR_WIDTH: ContextVar[float] = ContextVar("anyhome_stair_width", default=STAIR_WIDTH_M)
+"""Width of the box of the stair of the storey being laid out (:func:`stair_width_m`),
+which :func:`stair_fits` asks for: set by anyhome.floorplan.levels around a storey's
+solve; a dog-leg's by default."""
+
+
 def stair_fits(rect: tuple[float, float, float, float], doors: list, length_m: float) -> bool:
     """Whether a stairwell ``rect`` (x0, y0, w, h) holds a dog-leg stair box ``length_m``
     long (along its longer side) with the strip at its foot, clear of its ``doors``
@@ -201,13 +260,14 @@ def stair_fits(rect: tuple[float, float, float, float], doors: list, length_m: f
         rect = (y0, x0, h, w)
         doors = [((a[1], a[0]), (b[1], b[0])) for a, b in doors]
         x0, y0, w, h = rect
-    if w < length_m + STRIP_M - 1e-6 or h < STAIR_WIDTH_M - 1e-6:
+    width_m = STAIR_WIDTH.get()
+    if w < length_m + STRIP_M - 1e-6 or h < width_m - 1e-6:
         return False
     zones = [opening_zone(d).union(LineString(d)) for d in doors]
     lines = [LineString(d) for d in doors]
-    for ya in (y0, y0 + h - STAIR_WIDTH_M):
+    for ya in (y0, y0 + h - width_m):
         for foot, yaw in ((x0 + length_m, 0.0), (x0 + w - length_m, math.pi)):  # the box against an end wall
-            box_ = flight_rect(foot, ya, length_m, STAIR_WIDTH_M, yaw)
+            box_ = flight_rect(foot, ya, length_m, width_m, yaw)
             clear = box_.buffer(STAIR_CLEAR_M)
             if not any(clear.intersects(z) for z in zones) and doors_joined(rect, box_, lines):
                 return True

@@ -21,14 +21,17 @@ from shapely.geometry import LineString, Polygon, box
 
 from anyhome.floorplan.grid import SNAP_M
 from anyhome.floorplan.options import FloorplanOptions
-from anyhome.floorplan.stairs import PASSAGE_M, STAIR_WIDTH_M, is_stairwell
+from anyhome.floorplan.stairs import DOGLEG, PASSAGE_M, is_stairwell, stair_width_m, well_width_m
 from anyhome.house import Floorplan, Room
 
 
-def wells_trimmed(plan: Floorplan, ya: float, wells: dict[int, str], opts: FloorplanOptions) -> Floorplan:
+def wells_trimmed(plan: Floorplan, ya: float, wells: dict[int, str], opts: FloorplanOptions,
+                  kind: str = DOGLEG) -> Floorplan:
     """``plan`` with each stairwell of ``wells`` (storey -> room id; rectangles whose long
-    side runs east-west, their stair on the strip ``ya`` to ``ya`` + the stair's width)
-    trimmed on each long side to what its stair and doors need (see the module doc)."""
+    side runs east-west, their stair of ``kind`` on the strip ``ya`` to ``ya`` + the
+    stair's width) trimmed on each long side to what its stair and doors need (see the
+    module doc; a ladder's well keeps its passage beside the ladder)."""
+    width_m = stair_width_m(kind)
     from anyhome.house import is_habitable
 
     for k, well_id in wells.items():
@@ -42,13 +45,13 @@ def wells_trimmed(plan: Floorplan, ya: float, wells: dict[int, str], opts: Floor
             wall = LineString([(x0, edge), (x1, edge)])
             doors = [d for d in plan.doors if well_id in d.rooms]
             on_wall = [d for d in doors if _on(d.segment, wall)]
-            keep = STAIR_WIDTH_M + (PASSAGE_M if on_wall else 0.0)
+            keep = max(well_width_m(kind), width_m + (PASSAGE_M if on_wall else 0.0))
             in_ends = [p[1] for d in doors if abs(d.segment[0][0] - d.segment[1][0]) < 1e-6 for p in d.segment]
             if north:  # the band from the stair (and the doors in the end walls) to the north wall
                 cut = _snap_out(max([ya + keep, *in_ends]), up=True)
                 band = box(x0, cut, x1, y1) if y1 - cut >= opts.well_trim_min_m - 1e-6 else None
             else:
-                cut = _snap_out(min([ya + STAIR_WIDTH_M - keep, *in_ends]), up=False)
+                cut = _snap_out(min([ya + width_m - keep, *in_ends]), up=False)
                 band = box(x0, y0, x1, cut) if cut - y0 >= opts.well_trim_min_m - 1e-6 else None
             if band is None:
                 continue

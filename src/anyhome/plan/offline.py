@@ -41,6 +41,7 @@ from anyhome.plan.program import (
     sample_areas,
     size_rng,
     sizing,
+    stairwells_sized,
 )
 from anyhome.plan.spec import GroupSpec, HouseSpec, ItemSpec, RoomSpec, kb_context
 
@@ -146,6 +147,7 @@ class OfflinePlanner:
                     )
         if sz.band is not None:
             _fit_furnished(kb, slots, rooms, sz, warnings)
+        stairwells_sized(slots, connections)  # the kind of stairs the final areas call for (a tiny home's ladder)
         look = choose_look(kb, parsed, implied, building, rng)
         asked = {w for m in parsed.objects if not m.negated for w in (m.name, m.key) if w}
         for groups, ornaments in rooms:

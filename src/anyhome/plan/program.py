@@ -663,15 +663,24 @@ its foot: 2.75 x 1.75 = 4.8 m2 at least, planned 2.05 m wide as the solver's lea
 SPIRAL_STAIR_HALL_M2 = 7.3
 """Floor of a spiral stair hall (three doors or more): the stair and its strip (2.75 m)
 by the stair's width and the 0.9 m landing beside it (2.65 m)."""
+LADDER_STAIRWELL_AREA_M2 = 3.5
+"""Floor of a tiny house's stairwell holding its ship's ladder (anyhome.floorplan.stairs
+``LADDER``: a 2.6-2.65 m storey's 11-12 risers, goings of 0.13 m and 0.5 m of floor at the
+top, 1.8-1.93 m, and the 1 m strip at its foot) by the well's least width, 1.2 m: 3.5 m2."""
+LADDER_STAIR_HALL_M2 = 4.4
+"""Floor of a ladder's stair hall (three doors or more): the ladder and its strip (2.93 m)
+by the ladder's width and the 0.9 m landing beside it (1.5 m)."""
 
 
 def stairwell_area_m2(doors: int, kind: str = "dogleg") -> float:
     """Planned floor of a stairwell with ``doors`` doors holding stairs of ``kind``
-    (anyhome.floorplan.stairs ``DOGLEG`` or ``SPIRAL``): a plain stairwell for one or
-    two, else a stair hall (:data:`STAIR_HALL_M2`) growing with its doors."""
-    from anyhome.floorplan.stairs import SPIRAL
+    (anyhome.floorplan.stairs ``DOGLEG``, ``SPIRAL`` or ``LADDER``): a plain stairwell
+    for one or two, else a stair hall (:data:`STAIR_HALL_M2`) growing with its doors."""
+    from anyhome.floorplan.stairs import LADDER, SPIRAL
 
     spiral = kind == SPIRAL
+    if kind == LADDER:
+        return LADDER_STAIRWELL_AREA_M2 if doors <= 2 else LADDER_STAIR_HALL_M2 + STAIR_HALL_M2_PER_DOOR * max(0, doors - STAIR_HALL_DOORS)
     if doors <= 2:
         return SPIRAL_STAIRWELL_AREA_M2 if spiral else STAIRWELL_AREA_M2
     return (SPIRAL_STAIR_HALL_M2 if spiral else STAIR_HALL_M2) + STAIR_HALL_M2_PER_DOOR * max(0, doors - STAIR_HALL_DOORS)
@@ -963,13 +972,23 @@ def connect_levels(kb: KnowledgeBase, slots: list[Slot], entrance_types: list[st
             tree = [e for e in connect(kb, [landing, *(s for s in on if s is not stair)], ["hallway"]) if e[1] != "outside"]
             tree.append((stair.id, landing.id))
         edges += tree
-    kind = planned_stair_kind(slots)
-    for s in slots:
-        if s.key == STAIRWELL_KEY:  # a stair hall as long as its doors need
-            a = stairwell_area_m2(sum(s.id in e for e in edges), kind)
-            s.area, s.area_range = a, (a, a)
+    stairwells_sized(slots, edges)
     entrance = [e for e in edges if e[1] == "outside"]
     return [e for e in edges if e[1] != "outside"] + entrance
+
+
+def stairwells_sized(slots: list[Slot], edges: list[tuple[str, str]]) -> None:
+    """Every stairwell of ``slots`` planned as big as its stairs (of the kind the rooms'
+    areas now call for, :func:`planned_stair_kind`) and its doors (``edges``) need
+    (:func:`stairwell_area_m2`); asked again once the rooms have their final areas, so
+    the floorplan stage, which reads the kind from them, finds its stairwells sized for it."""
+    wells = [s for s in slots if s.key == STAIRWELL_KEY]
+    if not wells:
+        return
+    kind = planned_stair_kind(slots)
+    for s in wells:  # a stair hall as long as its doors need
+        a = stairwell_area_m2(sum(s.id in e for e in edges), kind)
+        s.area, s.area_range = a, (a, a)
 # ---------------------------------------------------------------- sizes
 # How big the rooms are (docs/space_standards.md): the building kind's typical room
 # sizes, and the total floor area a size word ("tiny", "grand") or a stated total ("a

@@ -1,4 +1,4 @@
-"""Ceiling fixtures and stairs: chandelier, ceiling_fan, staircase, spiral_staircase.
+"""Ceiling fixtures and stairs: chandelier, ceiling_fan, staircase, spiral_staircase, ship_ladder.
 
 A ``staircase`` box wide enough for two flights side by side is built as a dog-leg stair
 (:mod:`anyhome.floorplan.stairs`: the frame, risers and goings the floorplan sized it
@@ -29,7 +29,13 @@ from anyhome.assets.procedural._parts import (
     wood_tones,
 )
 from anyhome.assets.registry import register
-from anyhome.floorplan.stairs import WELL_GAP_M, dogleg_in_box, is_dogleg_box
+from anyhome.floorplan.stairs import (
+    LADDER_RISER_MAX_M,
+    LADDER_TOP_M,
+    WELL_GAP_M,
+    dogleg_in_box,
+    is_dogleg_box,
+)
 
 BRASS = tint("#c9a54a", "metal")
 BULB = tint("#fff1c4", "light")
@@ -291,6 +297,47 @@ def build_spiral_staircase(p):
     return b.mesh(p.size)
 
 
+# ----------------------------------------------------------------- ship's ladder
+def sample_ship_ladder(rng, size, style):
+    return make_params("ship_ladder", rng, size, style, wood_tones(style) + [BLACK, DARK_METAL],
+                       wood_tones(style), [BLACK, METAL] + wood_tones(style))
+
+
+def build_ship_ladder(p):
+    """A ship's ladder (alternating-tread stair): two steep stringers rising from the foot
+    at +x toward -x to the floor at the top end (the last ``LADDER_TOP_M`` of the box
+    stays open: the floor above), half-width treads alternating left and right, and a
+    handrail on each stringer as far as it stays inside the box."""
+    w, d, h = p.size
+    b = Builder()
+    run = max(0.3, w - LADDER_TOP_M)
+    x_foot, x_top = w / 2, w / 2 - run
+    n = max(3, int(np.ceil(h / LADDER_RISER_MAX_M - 1e-9)))
+    rise = h / n
+    s_t = 0.035  # stringer thickness
+    for sy in (-1, 1):
+        y = sy * (d / 2 - s_t / 2)
+        b.hull([(x_foot, y - s_t / 2, 0), (x_foot, y + s_t / 2, 0), (x_foot - 0.12, y - s_t / 2, 0),
+                (x_foot - 0.12, y + s_t / 2, 0), (x_top, y - s_t / 2, h), (x_top, y + s_t / 2, h),
+                (x_top + 0.12, y - s_t / 2, h), (x_top + 0.12, y + s_t / 2, h)], p.primary)
+    go = run / n
+    for k in range(n - 1):  # treads, alternating halves
+        z = (k + 1) * rise
+        x1 = x_foot - (k + 1) * go
+        y0, y1 = (-d / 2 + s_t, 0.0) if k % 2 == 0 else (0.0, d / 2 - s_t)
+        b.box((x1 - 0.02, y0, z - 0.035), (x1 + 0.2, y1, z), p.secondary if k % 2 else lighter(p.secondary, 0.05))
+    rail_h = min(0.85, 0.35 * h)
+    roof = h - 0.03
+    for sy in (-1, 1):  # a handrail above each stringer, cut where it would leave the box
+        y = sy * (d / 2 - s_t / 2)
+        frac = max(0.0, min(1.0, (roof - rail_h) / h))
+        a = (x_foot - 0.2, y, rail_h)
+        e = (x_foot - 0.2 - frac * run, y, rail_h + frac * h)
+        b.rod(a, (e[0], y, min(e[2], roof)), 0.018, p.accent, sections=8)
+        b.box((x_foot - 0.22, y - 0.015, 0.0), (x_foot - 0.18, y + 0.015, rail_h), p.accent)
+    return b.mesh(p.size)
+
+
 slot_roles("chandelier", "metal", {"": "fabric", "#c9a54a": "metal"}, "glass")
 register("chandelier", sample_chandelier, build_chandelier)
 slot_roles("ceiling_fan", "metal", "wood", "glass")
@@ -299,3 +346,5 @@ slot_roles("staircase", "wood", {"": "wood", METAL: "metal"}, {"": "paint", META
 register("staircase", sample_staircase, build_staircase)
 slot_roles("spiral_staircase", "metal", {"": "wood", "#9a9da3": "metal"}, "wood")
 register("spiral_staircase", sample_spiral_staircase, build_spiral_staircase)
+slot_roles("ship_ladder", {"": "wood", BLACK: "metal", DARK_METAL: "metal"}, "wood", {"": "wood", BLACK: "metal", METAL: "metal"})
+register("ship_ladder", sample_ship_ladder, build_ship_ladder)
