@@ -190,3 +190,17 @@ def test_an_indoor_swimming_pool_in_a_villa_is_a_room_with_its_pool():
     assert len(pool) == 1 and pool[0].area_m2 >= 30
     anchors = [g.anchor.name for g in pool[0].groups]
     assert "swimming pool" in anchors
+
+
+def test_a_master_bedroom_keeps_its_own_furnishing_when_it_takes_the_programs_bedroom():
+    """A named room the knowledge lists ("master bedroom") is furnished as itself, not as
+    the program's plain bedroom it takes the place of (a regression of the head-word
+    claim that gives "monks' cells" the monastery's cells)."""
+    import numpy as np
+
+    from anyhome.plan import get_planner
+
+    spec = get_planner("offline").plan("A Victorian house with a parlor, a library and a master bedroom.",
+                                       np.random.default_rng(0))
+    room = next(r for r in spec.rooms if r.name == "master bedroom")
+    assert "king bed" in [g.anchor.name for g in room.groups]

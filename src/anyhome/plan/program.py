@@ -293,9 +293,10 @@ def _claim_mentions(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], fixed:
         for _ in range(n):
             by_key = [s for s in slots if s.mention is None and s.key and s.key == word]
             same_name = [s for s in slots if s.mention is None and s.name in (proto.name, m.key)]
-            # "twelve monks' cells" in a monastery: the program's cells, as it furnishes them
-            same_head = [s for s in slots if s.mention is None and s.key and len(proto.name.split()) > 1
-                         and s.name == proto.name.split()[-1]]
+            # "twelve monks' cells" in a monastery (a name the knowledge does not list): the
+            # program's cells, as it furnishes them
+            same_head = [s for s in slots if s.mention is None and s.key and not m.key
+                         and len(proto.name.split()) > 1 and s.name == proto.name.split()[-1]]
             # rooms of the catch-all type "other" are too unlike to stand in for each other
             same_type = [s for s in slots if s.mention is None and s.type == proto.type != "other"]
             same_set = [s for s in slots if s.mention is None and s.furnish == proto.furnish != "other"]
