@@ -607,6 +607,9 @@ def connect(kb: KnowledgeBase, slots: list[Slot], entrance_types: list[str]) -> 
     degree[root.id] = 1
     edges: list[tuple[str, str]] = []
     placed = [root]
+    beds = sum(s.type == "bedroom" for s in slots)
+    en_suite = beds >= ENSUITE_MIN_BEDROOMS and sum(s.type == "bathroom" for s in slots) >= beds
+    bathed: set[str] = set()  # bedrooms with a bathroom of their own
     order = sorted((s for s in slots if s is not root), key=lambda s: (types.get(s.type, types["other"])["tier"], slots.index(s)))
     for s in order:
         attach = _type_info(kb, s.type).get("attach", [])
@@ -616,6 +619,8 @@ def connect(kb: KnowledgeBase, slots: list[Slot], entrance_types: list[str]) -> 
 
         free = [p for p in placed if degree[p.id] < cap(p)]
         ranked = [p for t in attach for p in free if p.type == t]
+        if s.type == "bathroom" and en_suite:  # "each with its own bathroom": off a bedroom without one
+            ranked = [p for p in free if p.type == "bedroom" and p.id not in bathed] + ranked
         if s.key == CORRIDOR_KEY:  # an added corridor carries on from the hallway it relieves
             ranked = [p for p in reversed(free) if p.type == "hallway"] + ranked  # the last one: a chain
         if _type_info(kb, s.type).get("habitable"):  # rooms open onto the courtyard they wrap
@@ -629,6 +634,8 @@ def connect(kb: KnowledgeBase, slots: list[Slot], entrance_types: list[str]) -> 
             or by_degree
         )[0]
         edges.append((parent.id, s.id))
+        if s.type == "bathroom":
+            bathed.add(parent.id)
         degree[parent.id] += 1
         degree[s.id] += 1
         placed.append(s)
@@ -906,6 +913,10 @@ def _landing(kb: KnowledgeBase, slots: list[Slot], level: int, doors: int) -> Sl
 CORRIDOR_KEY = "corridor"
 """Program key of a hallway added because the rooms that open off a hallway outnumber
 what the hallways hold (:func:`connect_corridors`); it opens off the hallway before it."""
+ENSUITE_MIN_BEDROOMS = 6
+"""From this many bedrooms on, a storey with a bathroom for every bedroom ("fourteen
+guest rooms, each with its own bathroom") gives each bedroom its own, rather than
+lining the bathrooms up along a corridor."""
 CORRIDORS_MAX = 4
 """Most hallways a house may have once corridors are added for its rooms (a hotel floor
 of fourteen rooms, each with its bathroom, needs four)."""
@@ -924,8 +935,9 @@ def _overflow(kb: KnowledgeBase, on: list[Slot], edges: list[tuple[str, str]]) -
             continue
         parent, child = by_id[a], by_id[b]
         attach = _type_info(kb, child.type).get("attach", [])
-        if attach[:1] == ["hallway"] and parent.type != "hallway" and _type_info(kb, parent.type).get("hub"):
-            n += 1
+        info = _type_info(kb, parent.type)
+        if attach[:1] == ["hallway"] and parent.type != "hallway" and info.get("hub") and not info.get("enclosed"):
+            n += 1  # (rooms that open onto the courtyard they wrap are where they belong)
     return n
 
 
@@ -937,6 +949,8 @@ def connect_corridors(kb: KnowledgeBase, slots: list[Slot], on: list[Slot],
     hallways (or the hallway type's ``max``, if more) and ``MAX_ROOMS`` rooms in all."""
     edges = connect(kb, on, entrance_types)
     cap = max(int(_type_info(kb, "hallway").get("max", 2)), CORRIDORS_MAX)
+    first = _overflow(kb, on, edges)
+    added: list[Slot] = []
     while (_overflow(kb, on, edges) >= OVERFLOW_MIN and any(s.type == "hallway" for s in on)
            and sum(s.type == "hallway" for s in slots) < cap and len(slots) < MAX_ROOMS):
         s = _slot_from_entry(kb, {"type": "hallway", "name": "corridor", "key": CORRIDOR_KEY})
@@ -949,6 +963,13 @@ def connect_corridors(kb: KnowledgeBase, slots: list[Slot], on: list[Slot],
         slots.append(s)
         if on is not slots:
             on.append(s)
+        added.append(s)
+        edges = connect(kb, on, entrance_types)
+    if added and _overflow(kb, on, edges) >= first:  # the corridors relieved nothing: none planned
+        for s in added:
+            slots.remove(s)
+            if on is not slots:
+                on.remove(s)
         edges = connect(kb, on, entrance_types)
     return edges
 
