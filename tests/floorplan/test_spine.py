@@ -3,8 +3,27 @@
 import numpy as np
 import pytest
 
+from anyhome.floorplan.options import FloorplanOptions
+from anyhome.floorplan.program import Program
 from anyhome.floorplan.solver import solve_floorplan
+from anyhome.floorplan.spine import spine_owner
 from anyhome.plan import get_planner
+from anyhome.plan.spec import HouseSpec, RoomSpec
+
+
+def _program(rooms, conns, opts=None):
+    """The floorplan program of rooms ``(id, type, m2)`` joined by ``conns``."""
+    spec = HouseSpec(prompt="a house", rooms=[RoomSpec(id=i, name=i, type=t, area_m2=a) for i, t, a in rooms],
+                     connections=conns)
+    return Program.from_spec(spec, opts or FloorplanOptions())
+
+
+def _lays_out_every_room(prog, seeds=range(4)):
+    for seed in seeds:
+        owner = spine_owner(prog, np.random.default_rng(seed))
+        assert not isinstance(owner, str), owner
+        assert set(np.unique(owner).tolist()) >= set(range(prog.n))
+
 
 THEATRE = "A community theatre with a stage, 80 seats in rows facing it, two dressing rooms and a box office."
 
@@ -25,23 +44,12 @@ def test_a_room_with_many_sub_rooms_down_a_passage_joins_the_spine():
     """An entry -> landing -> upper hall with four rooms off it (a house of two storeys
     laid out on one floor): the upper hall cannot sit in a block beside the spine, so the
     spine runs through the landing to it."""
-    from anyhome.floorplan.options import FloorplanOptions
-    from anyhome.floorplan.program import Program
-    from anyhome.floorplan.spine import spine_owner
-    from anyhome.plan.spec import HouseSpec, RoomSpec
-
     rooms = [("entry", "entry", 6.0), ("living", "living_room", 20.0), ("kitchen", "kitchen", 10.0),
              ("landing", "hallway", 5.0), ("hall", "hallway", 7.0), ("bed1", "bedroom", 12.0),
              ("bed2", "bedroom", 11.0), ("bed3", "bedroom", 10.0), ("bath", "bathroom", 5.0)]
     conns = [("entry", "outside"), ("entry", "living"), ("entry", "kitchen"), ("entry", "landing"),
              ("landing", "hall"), ("hall", "bed1"), ("hall", "bed2"), ("hall", "bed3"), ("hall", "bath")]
-    spec = HouseSpec(prompt="a house", rooms=[RoomSpec(id=i, name=i, type=t, area_m2=a) for i, t, a in rooms],
-                     connections=conns)
-    prog = Program.from_spec(spec, FloorplanOptions())
-    for seed in range(4):
-        owner = spine_owner(prog, np.random.default_rng(seed))
-        assert not isinstance(owner, str), owner
-        assert set(np.unique(owner).tolist()) >= set(range(prog.n))
+    _lays_out_every_room(_program(rooms, conns))
 
 
 def test_a_stairwell_on_the_spine_is_laid_out_as_long_as_its_stair_needs():
@@ -50,19 +58,12 @@ def test_a_stairwell_on_the_spine_is_laid_out_as_long_as_its_stair_needs():
     layouts of a storey failed the length check after they were built)."""
     import dataclasses
 
-    from anyhome.floorplan.options import FloorplanOptions
-    from anyhome.floorplan.program import Program
-    from anyhome.floorplan.spine import spine_owner
-    from anyhome.plan.spec import HouseSpec, RoomSpec
-
     rooms = [("stairwell", "stairwell", 8.5), ("landing", "hallway", 5.0), ("bed1", "bedroom", 12.0),
              ("bed2", "bedroom", 11.0), ("bath", "bathroom", 5.0)]
     conns = [("stairwell", "outside"), ("stairwell", "landing"), ("landing", "bed1"), ("landing", "bed2"),
              ("landing", "bath")]
-    spec = HouseSpec(prompt="a house", rooms=[RoomSpec(id=i, name=i, type=t, area_m2=a) for i, t, a in rooms],
-                     connections=conns)
     opts = FloorplanOptions()
-    prog = Program.from_spec(spec, opts)
+    prog = _program(rooms, conns, opts)
     prog = dataclasses.replace(prog, min_length_m=tuple(3.9 if i == "stairwell" else 0.0 for i in prog.ids))
     k = prog.ids.index("stairwell")
     for seed in range(8):
@@ -77,11 +78,6 @@ def test_a_hallway_with_a_corridor_and_a_busy_living_room_behind_it_roots_the_sp
     and a drawing room of four rooms (a manor): a spine from the entrance can hold only
     one of them, so the spine is built from the hallway and the entrance sits in a block.
     Before, every spine layout failed ("room ... has more than two sub-rooms")."""
-    from anyhome.floorplan.options import FloorplanOptions
-    from anyhome.floorplan.program import Program
-    from anyhome.floorplan.spine import spine_owner
-    from anyhome.plan.spec import HouseSpec, RoomSpec
-
     rooms = [("ballroom", "hall", 45.0), ("hallway", "hallway", 9.0), ("corridor", "hallway", 8.0),
              ("drawing", "living_room", 30.0), ("dining", "dining_room", 20.0), ("kitchen", "kitchen", 14.0),
              ("library", "library", 20.0), ("study", "study", 12.0), ("music", "studio", 18.0),
@@ -91,10 +87,4 @@ def test_a_hallway_with_a_corridor_and_a_busy_living_room_behind_it_roots_the_sp
              ("drawing", "library"), ("drawing", "music"), ("drawing", "study"),
              ("corridor", "bed2"), ("corridor", "bed3"), ("corridor", "bed4"), ("corridor", "bed5"),
              ("corridor", "bath")]
-    spec = HouseSpec(prompt="a manor", rooms=[RoomSpec(id=i, name=i, type=t, area_m2=a) for i, t, a in rooms],
-                     connections=conns)
-    prog = Program.from_spec(spec, FloorplanOptions())
-    for seed in range(4):
-        owner = spine_owner(prog, np.random.default_rng(seed))
-        assert not isinstance(owner, str), owner
-        assert set(np.unique(owner).tolist()) >= set(range(prog.n))
+    _lays_out_every_room(_program(rooms, conns))

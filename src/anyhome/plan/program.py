@@ -127,7 +127,7 @@ def choose_program(kb: KnowledgeBase, parsed: Parsed) -> tuple[str | None, list[
             return None, []
         return b["program"], list(b.get("styles", []))
     if any(not m.negated for m in parsed.rooms):
-        types = {_slot_from_mention(kb, m, i).type for i, m in enumerate(parsed.rooms) if not m.negated}
+        types = _named_types(kb, parsed)
         if parsed.bedrooms or parsed.people or (len(types) >= 3 and types & HOME_TYPES):
             return DEFAULT_PROGRAM, []
         return None, []
@@ -146,9 +146,13 @@ def _guessed_home(kb: KnowledgeBase, parsed: Parsed, program: str) -> bool:
     (:data:`HOME_TYPES`): then only the named rooms are planned, no bedrooms."""
     if parsed.building_score >= GUESSED_HOME_MAX or program not in set(_sizes(kb).get("homes", [])):
         return False
-    named = [m for m in parsed.rooms if not m.negated]
-    types = {_slot_from_mention(kb, m, i).type for i, m in enumerate(parsed.rooms) if not m.negated}
-    return len(named) >= 2 and not (types & HOME_TYPES) and not parsed.bedrooms and not parsed.people
+    named = sum(not m.negated for m in parsed.rooms)
+    return named >= 2 and not (_named_types(kb, parsed) & HOME_TYPES) and not parsed.bedrooms and not parsed.people
+
+
+def _named_types(kb: KnowledgeBase, parsed: Parsed) -> set[str]:
+    """Room types of the rooms the text names (not those it rules out)."""
+    return {_slot_from_mention(kb, m, i).type for i, m in enumerate(parsed.rooms) if not m.negated}
 
 
 def plan_rooms(kb: KnowledgeBase, parsed: Parsed, program: str | None, rng: np.random.Generator, warnings: list[str], sizing: Sizing | None = None) -> tuple[list[Slot], str | None]:
