@@ -207,3 +207,10 @@ def test_a_couple_of_things_is_no_couple_of_people():
     """"a couple of armchairs" in a hair salon planned a home for two (a bedroom)."""
     assert parse("A hair salon with four styling stations and a couple of armchairs by the window.").people is None
     assert parse("A flat for a young couple with a balcony.").people == 2
+
+
+def test_a_single_room_building_is_one_room():
+    """"a fire lookout cabin: a single room with a bunk" planned a whole family home."""
+    assert parse("A small fire lookout cabin: a single room with a bunk, a wood stove and a map table.").one_room
+    assert parse("A one-room fire lookout cabin with a bunk.").one_room
+    assert not parse("A cottage with a kitchen and a single room upstairs for guests and two bedrooms.").one_room

@@ -106,7 +106,11 @@ _BED_BATH = re.compile(
     r"\b(\d{1,3})\s*(?:b|br|bd|bed|beds|bdr|bdrm)\s*(?:,|and|\+)?\s*(\d{1,2}(?:\.5)?)\s*"
     r"(?:b|ba|bth|bath|baths)\b"
 )
-_ONE_ROOM = re.compile(r"\b(?:one|single|1) room (?:house|home|apartment|flat|cabin|cottage|studio|dwelling)\b")
+_ONE_ROOM_HOMES = r"(?:house|home|apartment|flat|cabin|cottage|studio|dwelling|hut|shack|bothy)"
+_ONE_ROOM = re.compile(
+    rf"\b(?:one|single|1) room (?:\w+ ){{0,2}}{_ONE_ROOM_HOMES}\b"  # "a one-room (fire lookout) cabin"
+    rf"|\b{_ONE_ROOM_HOMES}(?:\s*[:,-]\s*|\s+(?:with|of|is|has)\s+)(?:a single|just one|only one|one single) room\b"  # "a cabin: a single room"
+)
 _BED_BATH_WORDS = re.compile(r"\b(\w+) bed(?:room)?s?\s*(?:,|and|\+)?\s*(\w+) bath(?:room)?s?\b")
 _BR_ONLY = re.compile(r"\b(\d{1,3})\s*(?:br|bd|bdr|bdrm)\b")
 _PEOPLE = re.compile(
