@@ -204,3 +204,40 @@ def test_a_master_bedroom_keeps_its_own_furnishing_when_it_takes_the_programs_be
                                        np.random.default_rng(0))
     room = next(r for r in spec.rooms if r.name == "master bedroom")
     assert "king bed" in [g.anchor.name for g in room.groups]
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_a_ryokans_guest_rooms_sleep_on_futons_and_sit_on_the_floor(seed):
+    spec = plan_of("A traditional ryokan with four tatami guest rooms and a shared hot-spring bath.", seed)
+    guest = [r for r in spec.rooms if r.type == "bedroom"]
+    assert len(guest) == 4
+    for r in guest:
+        names = names_of(r)
+        assert "futon" in names and not any(n.endswith("bed") for n in names), names
+        assert not any(n in ("office chair", "nightstand", "wingback chair") for n in names), names
+        assert all(len(d.members) == 0 or d.anchor.size_m[2] <= 0.5
+                   for d in r.groups if any(m.name == "zabuton" for m in d.members))
+    bath = next(r for r in spec.rooms if "hot spring" in r.name or "hot-spring" in r.name)
+    assert {"hot spring pool", "soaking pool"} & set(names_of(bath)) and "toilet" not in names_of(bath)
+    # a reception desk stands: its chair is not swapped for a floor cushion
+    lobby = [n for r in spec.rooms if r.type == "reception" for n in names_of(r)]
+    assert "zabuton" not in lobby
+    # a Japanese-style bedroom the text furnishes with a bed keeps the bed
+    asked = plan_of("A Japanese bedroom with a king bed.", seed)
+    assert "king bed" in [n for r in asked.rooms for n in names_of(r)]
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_a_hotels_named_guest_rooms_are_furnished_as_the_hotel_furnishes_them(seed):
+    spec = plan_of("A boutique hotel with six guest rooms and a honeymoon suite.", seed)
+    names = [n for r in spec.rooms for n in names_of(r)]
+    assert "office chair" not in names, names
+    guest = [r for r in spec.rooms if r.name.startswith("guest room")]
+    assert len(guest) == 6
+    for r in guest:  # the hotel's set: a writing desk, when there is one, with an upholstered chair
+        desks = [g for g in r.groups if g.anchor.name in ("desk", "writing desk")]
+        assert all([m.name for m in g.members] == ["upholstered desk chair"] for g in desks), names_of(r)
+    suite = next(r for r in spec.rooms if "suite" in r.name)
+    assert suite.type == "bedroom" and any("bed" in n for n in names_of(suite))
+    # an office keeps its office chairs
+    assert "office chair" in [n for r in plan_of("A small office with two desks.", seed).rooms for n in names_of(r)]

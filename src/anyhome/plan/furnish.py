@@ -342,6 +342,18 @@ def apply_mention(kb: KnowledgeBase, m: Mention, groups: list[Group], ornaments:
     _fit_table(g)
 
 
+LOW_TABLE_MAX_H_M = 0.5
+"""A table at most this high is sat at from the floor: only there does a period look
+(``eastern``) swap a chair for a floor seat."""
+FLOOR_SEAT_MAX_H_M = 0.3
+"""A seat prototype at most this high is a floor seat (a zabuton, a floor chair)."""
+
+
+def _floor_seat(proto: dict[str, Any]) -> bool:
+    size = proto.get("size") or (1.0, 1.0, 1.0)
+    return "seat" in (proto.get("tags") or []) and float(size[2]) <= FLOOR_SEAT_MAX_H_M
+
+
 def period_rules(kb: KnowledgeBase, styles: list[str]) -> tuple[dict[str, Any], set[str]]:
     """The stand-ins and the names left out (styles.yaml ``period``) for the look led by
     ``styles``: those of every trait of its asset class (the class the assets are drawn in)."""
@@ -358,11 +370,13 @@ def period_rules(kb: KnowledgeBase, styles: list[str]) -> tuple[dict[str, Any], 
 
 
 def apply_period(kb: KnowledgeBase, groups: list[Group], ornaments: list[Item], styles: list[str],
-                 asked: set[str]) -> None:
+                 asked: set[str], building_swap: dict[str, Any] | None = None) -> None:
     """A period look keeps period objects: a modern item the text did not ask for
     (``asked``: the names and keys of the text's objects) takes its stand-in (an office
-    chair at a Victorian desk is a side chair) or is left out (a monitor, a TV)."""
+    chair at a Victorian desk is a side chair) or is left out (a monitor, a TV). The
+    building's own stand-ins (programs.yaml ``swap``: a hotel's desk chair) come first."""
     swap, drop = period_rules(kb, styles)
+    swap = {**swap, **(building_swap or {})}
     if not swap and not drop:
         return
 
@@ -375,6 +389,8 @@ def apply_period(kb: KnowledgeBase, groups: list[Group], ornaments: list[Item], 
             if new is None or it["name"] in asked:
                 continue
             proto = _proto(kb, new["use"])
+            if it is not g["anchor"] and _floor_seat(proto) and g["anchor"]["size_m"][2] > LOW_TABLE_MAX_H_M:
+                continue  # a zabuton at a standing reception desk: the chair stays
             it["name"], it["category"] = new["name"], proto.get("category", it["category"])
             w, d, h = proto.get("size", it["size_m"])
             it["size_m"] = (float(w), float(d), float(h))

@@ -89,6 +89,13 @@ class ProgramRoom(_Model):
     _r = field_validator("area", "count")(classmethod(lambda cls, v: _ordered(v)))
 
 
+class PeriodSwap(_Model):
+    """A modern object's stand-in in a period look: an objects.yaml prototype and the name it takes."""
+
+    use: str
+    name: Word
+
+
 class Program(_Model):
     building: Word
     main: str
@@ -101,6 +108,9 @@ class Program(_Model):
     one_room: bool = Field(default=False, description=(
         "its rooms are all it has: it gains no rooms to reach a total, and a size word scales "
         "its rooms ('a small studio') instead of setting a home's total"))
+    swap: dict[str, PeriodSwap] = Field(default_factory=dict, description=(
+        "item name -> the stand-in the building uses instead, unless the text asks for the item "
+        "(a hotel's desk chair is upholstered, not a mesh office chair)"))
 
     @model_validator(mode="after")
     def _keys(self) -> Program:
@@ -423,13 +433,6 @@ class AssetClass(_Model):
     legs: list[Literal["straight", "tapered", "turned", "metal"]] = Field(min_length=1)
     woods: list[HexColour] = Field(min_length=1)
     fabrics: list[HexColour] = Field(min_length=1)
-
-
-class PeriodSwap(_Model):
-    """A modern object's stand-in in a period look: an objects.yaml prototype and the name it takes."""
-
-    use: str
-    name: Word
 
 
 class PeriodRules(_Model):
@@ -780,6 +783,9 @@ class KnowledgeBase:
             for room, gs in p.extra.items():
                 for g in gs:
                     need(g in groups, "programs", ("programs", key, "extra", room), lambda: known(g, groups, "group"))
+            for item, sw in p.swap.items():
+                need(sw.use in objects, "programs", ("programs", key, "swap", item, "use"),
+                     lambda: known(sw.use, objects, "object prototype"))
         # rooms.yaml
         for t, rt in self.rooms.types.items():
             need(t in types, "rooms", ("types", t),

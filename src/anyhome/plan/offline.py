@@ -151,7 +151,7 @@ class OfflinePlanner:
         look = choose_look(kb, parsed, implied, building, rng)
         asked = {w for m in parsed.objects if not m.negated for w in (m.name, m.key) if w}
         for groups, ornaments in rooms:
-            fu.apply_period(kb, groups, ornaments, look.styles, asked)
+            fu.apply_period(kb, groups, ornaments, look.styles, asked, prog.get("swap"))
         building = parsed.building_word or building
         heights = room_heights(kb, parsed, [s.type for s in slots], [s.mention for s in slots])
         specs = [_room_spec(kb, s, g, o, look, rng, h) for s, (g, o), h in zip(slots, rooms, heights)]

@@ -291,6 +291,7 @@ def _claim_mentions(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], fixed:
         n = min(n, MAX_COUNT)
         first: Slot | None = None  # more rooms than the program has copy the first one's furnishing
         headed = False  # the mention claimed the program's rooms by their head word
+        own = False  # ... or by their very name: the rest are the building's rooms of that name too
         # "three practice rooms" in a music school: the program's practice rooms, as the
         # building reads them, not the word's own reading (a yoga room)
         word = _room_word(m.key)
@@ -310,7 +311,9 @@ def _claim_mentions(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], fixed:
                 target = Slot(proto.name, like.type, like.furnish, like.area_range, key=like.key)
                 slots.append(target)
             headed = headed or target in same_head  # the rest copy the program's cells too
-            in_context = bool(target.key) and (target.key == word or headed)
+            # "six guest rooms" in a hotel: the hotel's guest rooms, furnished as it furnishes them
+            own = own or (target in same_name and target.name == m.key)
+            in_context = bool(target.key) and (target.key == word or headed or own)
             target.mention = i
             target.size = proto.size
             target.optional = False
@@ -346,9 +349,12 @@ type ("two guest bedrooms" keeps the master bedroom)."""
 
 def _drop_replaced(parsed: Parsed, slots: list[Slot]) -> None:
     """"Three massage rooms" in a spa: the text fixed how many treatment rooms there are,
-    so the program's unclaimed rooms of that type go."""
+    so the program's unclaimed rooms of that type go; so do those of the very name
+    counted ("four guest rooms" in a hotel), whatever their type."""
     counted = {s.type for s in slots if s.mention is not None and parsed.rooms[s.mention].count}
-    for s in [s for s in slots if s.mention is None and s.type in counted - COUNTED_KEEPS]:
+    # "four guest rooms" in a hotel: the count is that of the hotel's own guest rooms
+    named = {parsed.rooms[s.mention].key for s in slots if s.mention is not None and parsed.rooms[s.mention].count}
+    for s in [s for s in slots if s.mention is None and (s.type in counted - COUNTED_KEEPS or s.name in named)]:
         slots.remove(s)
 
 

@@ -1,4 +1,4 @@
-"""Beds: bed, bunk_bed, crib."""
+"""Beds: bed, floor_futon, bunk_bed, crib."""
 
 from __future__ import annotations
 
@@ -76,6 +76,26 @@ def build_bed(p: Params) -> trimesh.Trimesh:
     return b.mesh(p.size)
 
 
+def sample_floor_futon(rng: np.random.Generator, size: Size, style: Style) -> Params:
+    return make_params("floor_futon", rng, size, style, ["#efe8da", "#e6dccb", "#f2efe8"], TEXTILE_WHITE,
+                       BEDDING + fabric_tones(style), fold=float(rng.uniform(0.0, 0.25)))
+
+
+def build_floor_futon(p: Params) -> trimesh.Trimesh:
+    """A Japanese futon laid on the floor: a thin mattress (shikibuton), a quilt
+    (kakebuton) over most of it, turned back by ``fold``, and one small pillow."""
+    w, d, h = p.size
+    h = min(max(h, 0.08), 0.25)
+    b = Builder()
+    mat = h * 0.55
+    b.box((-w / 2, -d / 2, 0), (w / 2, d / 2, mat), p.primary)
+    quilt_y0 = -d / 2 + 0.3 * d + p.fold * d * 0.5
+    b.box((-w / 2 - 0.01, quilt_y0, mat), (w / 2 + 0.01, d / 2 + 0.005, h * 0.85), p.accent)
+    b.box((-w / 2 - 0.011, quilt_y0, h * 0.8), (w / 2 + 0.011, quilt_y0 + 0.1, h), lighter(p.accent, 0.25))
+    b.sphere((0, -d / 2 + 0.17, mat + 0.04), (min(0.25, w * 0.3), 0.11, 0.05), lighter(p.secondary, 0.2))
+    return b.mesh(p.size)
+
+
 def sample_bunk_bed(rng: np.random.Generator, size: Size, style: Style) -> Params:
     return make_params("bunk_bed", rng, size, style, wood_tones(style) + ["#e8e6e0", "#3a3b3e"],
                        TEXTILE_WHITE, BEDDING, ladder_right=bool(rng.random() < 0.5))
@@ -133,6 +153,8 @@ def build_crib(p: Params) -> trimesh.Trimesh:
 
 slot_roles("bed", "wood", "fabric", "fabric")
 register("bed", sample_bed, build_bed)
+slot_roles("floor_futon", "fabric", "fabric", "fabric")
+register("floor_futon", sample_floor_futon, build_floor_futon)
 slot_roles("bunk_bed", "wood", "fabric", "fabric")
 register("bunk_bed", sample_bunk_bed, build_bunk_bed)
 slot_roles("crib", "wood", "fabric", "fabric")
