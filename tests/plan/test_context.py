@@ -241,3 +241,52 @@ def test_a_hotels_named_guest_rooms_are_furnished_as_the_hotel_furnishes_them(se
     assert suite.type == "bedroom" and any("bed" in n for n in names_of(suite))
     # an office keeps its office chairs
     assert "office chair" in [n for r in plan_of("A small office with two desks.", seed).rooms for n in names_of(r)]
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_two_named_things_of_one_kind_are_two_things(seed):
+    """A blanket chest and a steamer trunk are both boxes: both are placed, in both rooms."""
+    spec = plan_of("Seaside cottage with two bedrooms; both get a pair of single beds, a painted blanket chest, "
+                   "and an old steamer trunk.", seed)
+    for r in [r for r in spec.rooms if r.type == "bedroom"]:
+        names = names_of(r)
+        assert names.count("single bed") == 2 and "painted blanket chest" in names and "old steamer trunk" in names, names
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_a_schools_hall_and_gym_are_its_sports_hall(seed):
+    spec = plan_of("A village primary school: four classrooms with about twenty pupil desks in each, "
+                   "a hall that doubles as the gym, and a staff room.", seed)
+    halls = [r for r in spec.rooms if r.name in ("hall", "gym")]
+    assert halls and all(r.type in ("hall", "gym") for r in halls)
+    names = [n for r in halls for n in names_of(r)]
+    assert not {"treadmill", "exercise bike", "weight rack", "dumbbell rack"} & set(names), names
+    assert sum(names_of(r).count("pupil desk") for r in spec.rooms if r.type == "classroom") == 80
+    # a gym of its own stays a fitness gym
+    gym = plan_of("A house with a gym and a sauna.", seed)
+    assert any(r.type == "gym" and {"treadmill", "exercise bike", "weight bench", "dumbbell rack", "weight rack"} & set(names_of(r))
+               for r in gym.rooms)
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_an_orchestra_pit_is_a_room_of_music_stands_not_a_fire_pit(seed):
+    spec = plan_of("A small opera house with an auditorium, an orchestra pit in front of the stage and dressing rooms.", seed)
+    pit = next(r for r in spec.rooms if r.name == "orchestra pit")
+    names = names_of(pit)
+    assert names.count("music stand") >= 6 and not any("fire" in n for r in spec.rooms for n in names_of(r))
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_a_room_set_in_a_building_gets_what_the_text_lists(seed):
+    """"A collector's study in an old townhouse: ...": the cabinet, the armchairs and the
+    globe are the study's, and its antique look keeps the office chair and monitor out."""
+    spec = plan_of("A collector's study in an old townhouse: a glass-fronted curiosity cabinet full of fossils, "
+                   "two leather armchairs, and an antique globe beside the fireplace.", seed)
+    study = next(r for r in spec.rooms if r.name == "study")
+    names = names_of(study)
+    assert "antique globe" in names and names.count("leather armchair") == 2 and any("curiosity cabinet" in n for n in names)
+    everywhere = [n for r in spec.rooms for n in names_of(r)]
+    assert not {"office chair", "monitor", "filing cabinet"} & set(everywhere)
+    # a building that opens the text keeps its rooms' objects where the text puts them
+    spec = plan_of("A townhouse with a study and a kitchen with a range cooker.", seed)
+    assert "range cooker" in [n for r in spec.rooms if r.type == "kitchen" for n in names_of(r)]

@@ -214,3 +214,49 @@ def test_a_single_room_building_is_one_room():
     assert parse("A small fire lookout cabin: a single room with a bunk, a wood stove and a map table.").one_room
     assert parse("A one-room fire lookout cabin with a bunk.").one_room
     assert not parse("A cottage with a kitchen and a single room upstairs for guests and two bedrooms.").one_room
+
+
+def test_a_hedged_count_is_read_as_given():
+    """"about twenty pupil desks": twenty (before: an object called "about")."""
+    p = parse("A classroom with about twenty pupil desks and roughly 3 whiteboards.")
+    assert {m.name: m.count for m in p.objects} == {"pupil desk": 20, "whiteboard": 3}
+
+
+def test_a_count_per_room_after_the_object_gives_every_room_that_many():
+    """"four classrooms with twenty desks each / in each": twenty in every room, where
+    "two bathrooms with four sinks" shares the four out."""
+    for text in ("A school with four classrooms with twenty desks each.",
+                 "A school with four classrooms with twenty desks in each."):
+        (desk,) = parse(text).objects
+        assert (desk.count, desk.each) == (20, True), text
+    (sink,) = parse("A gym with two bathrooms with four sinks.").objects
+    assert (sink.count, sink.each) == (2, True)
+
+
+def test_both_after_two_rooms_gives_each_of_them_what_follows():
+    p = parse("Seaside cottage with two bedrooms; both get a pair of single beds and a blanket chest.")
+    assert {m.name: (m.count, m.each) for m in p.objects} == {"single bed": (2, True), "blanket chest": (1, True)}
+
+
+def test_mens_and_womens_rooms_are_two_rooms():
+    p = parse("A squash club with three courts and separate men's and women's changing rooms.")
+    assert {m.key: m.count for m in p.rooms}.get("changing room") == 2
+    assert parse("A gym with changing rooms.").rooms[0].count is None
+
+
+def test_where_words_are_not_objects():
+    """"a juice bar right by the front door", "the roastery visible behind a glass wall"."""
+    p = parse("A gym with a little juice bar right by the front door and a roastery visible behind a glass wall.")
+    assert not {"right", "visible"} & {m.name for m in p.objects}
+    assert {"juice bar", "roastery"} <= {m.key for m in p.rooms}
+
+
+def test_an_en_suite_shower_is_one_per_en_suite_and_a_suites_own_things_are_its_own():
+    p = parse("A hotel: six guest rooms, each with an en-suite shower, and one honeymoon suite "
+              "with its own sitting area and a freestanding tub.")
+    objs = {m.name: m for m in p.objects}
+    assert objs["shower"].each and p.rooms[objs["shower"].room].count == 6
+    assert p.rooms[objs["freestanding tub"].room].name == "honeymoon suite"
+    # a room named after a list of another room's things is not their room
+    p = parse("A kitchen with an island, a dining room and a sofa.")
+    assert {m.name: m.room for m in p.objects}["sofa"] is None

@@ -197,3 +197,20 @@ def test_in_process_error_is_knowledge_error(tmp_path, monkeypatch):
         load("objects")  # any file: every file is validated before one is handed out
     monkeypatch.delenv(ENV_VAR)
     assert load("objects")
+
+
+def test_a_room_words_reading_within_an_unknown_building_is_refused(tmp_path, monkeypatch):
+    """rooms.yaml ``within`` names programs; a misspelt one is a one-line KnowledgeError."""
+    kdir = _folder(tmp_path / "kb", {"rooms.yaml": "names:\n  gym: {type: gym, within: {schol: {type: gym}}}\n"})
+    monkeypatch.setenv(ENV_VAR, str(kdir))
+    with pytest.raises(KnowledgeError, match=r"rooms\.yaml: names\.gym: within\.schol: unknown program .schol. \(did you mean .school."):
+        load("rooms")
+    monkeypatch.delenv(ENV_VAR)
+
+
+def test_a_buildings_swap_must_name_a_prototype(tmp_path, monkeypatch):
+    kdir = _folder(tmp_path / "kb", {"programs.yaml": "programs:\n  hotel:\n    swap: {office chair: {use: cheir, name: desk chair}}\n"})
+    monkeypatch.setenv(ENV_VAR, str(kdir))
+    with pytest.raises(KnowledgeError, match=r"programs\.yaml: programs\.hotel: swap\.office chair\.use: unknown object prototype .cheir."):
+        load("programs")
+    monkeypatch.delenv(ENV_VAR)

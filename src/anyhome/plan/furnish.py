@@ -39,6 +39,10 @@ ZONE_PRIORITY = 7
 Item = dict[str, Any]
 Group = dict[str, Any]
 
+MENTIONED = "_mentioned"
+"""Key of an item named by a text mention (the name it was given): another named
+mention of the same kind gets an item of its own. Not a field of ``ItemSpec``."""
+
 
 def _proto(kb: KnowledgeBase, use: str | None) -> dict[str, Any]:
     return kb.raw("objects").get(use, {}) if use else {}
@@ -300,6 +304,8 @@ def apply_mention(kb: KnowledgeBase, m: Mention, groups: list[Group], ornaments:
     if (g is not None and item is not None and named_group not in (None, g["name"])
             and m.name.split()[-1] not in _words(item["name"])):
         g = None  # "an island": the template named so, not the kitchen run's counter
+    if item is not None and named and item.get(MENTIONED, m.name) != m.name:
+        g = None  # "a blanket chest and a steamer trunk": two boxes, not one renamed twice
     if g is None:
         d = next((u for u in unused if _matches(u_anchor(kb, u), category, head)), None)
         if d is None and named_group is not None:
@@ -321,6 +327,7 @@ def apply_mention(kb: KnowledgeBase, m: Mention, groups: list[Group], ornaments:
     g["priority"] = min(g["priority"], 0)
     if named:
         item["name"] = m.name
+        item[MENTIONED] = m.name
     if m.words and vocabulary(kb).material_regex.search(" ".join(m.words)):  # "an orange tartan sofa"
         item["material"] = " ".join(m.words)
     if m.size != 1.0:

@@ -262,6 +262,8 @@ class RoomName(_Model):
     furnish: str | None = None
     area: AreaRange | None = None
     at_home: HomeSense | None = Field(None, description="the word's reading in a dwelling (a program of sizes.homes)")
+    within: dict[str, HomeSense] = Field(default_factory=dict, description=(
+        "program -> the word's reading in that building (a gym in a school is its sports hall)"))
 
     _r = field_validator("area")(classmethod(lambda cls, v: _ordered(v)))
 
@@ -798,7 +800,11 @@ class KnowledgeBase:
                  f"{rt.min_area_m2} m2 is less than a square of its min_width_m ({rt.min_width_m ** 2:.2f} m2)")
             need(rt.area[0] >= rt.min_area_m2, "rooms", ("types", t, "area"), f"starts below min_area_m2 ({rt.min_area_m2} m2)")
         for n, rn in self.rooms.names.items():
-            for where, sense in (((), rn), (("at_home",), rn.at_home)):
+            for prog_key in rn.within:
+                need(prog_key in programs, "rooms", ("names", n, "within", prog_key),
+                     lambda: known(prog_key, programs, "program"))
+            senses = [((), rn), (("at_home",), rn.at_home), *((("within", k), v) for k, v in rn.within.items())]
+            for where, sense in senses:
                 if sense is None:
                     continue
                 need(sense.type in types, "rooms", ("names", n, *where, "type"), lambda: known(sense.type, types, "room type"))

@@ -523,6 +523,7 @@ def _room_spec(kb: KnowledgeBase, s: Slot, groups: list[fu.Group], ornaments: li
 
 def _item(kb: KnowledgeBase, it: fu.Item, look: Look, furniture: str, rng: np.random.Generator) -> ItemSpec:
     data = dict(it)
+    data.pop(fu.MENTIONED, None)
     if not data.get("material"):
         data["material"] = item_material(data["category"], look, furniture, rng, kb)
     return ItemSpec.model_validate(data, context=kb_context(kb))

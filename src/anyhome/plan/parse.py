@@ -46,7 +46,7 @@ MANY_WORDS = frozenset({"several", "many", "some", "few", "multiple", "lots", "p
 FULL_WORDS = (
     "full of", "filled with", "lined with", "packed with", "lots of", "rows of", "row of", "wall of", "walls of",
     "shelves of", "racks of", "dozens of", "scores of", "hundreds of", "thousands of", "millions of", "billions of",
-    "tons of", "loads of",
+    "tons of", "loads of", "bank of", "banks of",
 )  # fmt: skip
 """Phrases asking for the generous end of a plural's range."""
 
@@ -64,12 +64,13 @@ STOP_WORDS = frozenset(
 )
 """Words that end the look-back from a mention towards its count and adjectives."""
 
-EACH_OPENER = re.compile(r"^\s*(?:,\s*)?(?:(?:that|which)\s+)?(?:each|every one|all)(?: of them)?\s*(?:,\s*)?(?=with|has|have|having|featuring|containing|equipped|furnished)")
+EACH_OPENER = re.compile(r"^\s*(?:[,;:]\s*)?(?:(?:that|which)\s+)?(?:each|every one|all|both)(?: of them)?\s*(?:,\s*)?(?=with|has|have|having|gets?|featuring|containing|equipped|furnished)")
 """Text right after a plural room mention that gives every one of those rooms what follows."""
 
 CONTEXT_OPENERS = re.compile(
     r"^\s*(?:,\s*)?(?:(?:(?:that|which)\s+)?(?:each|every one|all)(?: of them)?\s*(?:,\s*)?)?(?:with|without|full of|filled with|lined with|packed with|featuring|containing|"
     r"that has|which has|has|have|having|where|equipped with|furnished with|holding|housing|that holds|which holds|that houses|which houses)\b"
+    r"|^\s*[,;:]\s*(?:each|every one|all|both)(?: of them)?\s*(?:,\s*)?(?:with|has|have|having|gets?|featuring|containing)\b"
 )
 """Text right after a room mention that makes the following objects belong to it."""
 
@@ -331,11 +332,18 @@ def _figures_value(mt: re.Match[str]) -> int:
     return -n if mt.group("neg") else n
 
 
+_APPROX = re.compile(r"\b(?:about|around|approximately|roughly|nearly|almost|circa|at least|up to)\s+(?=(?:\d|(?:"
+                     + "|".join(sorted(NUMBER_WORDS, key=len, reverse=True)) + r")\b))")
+"""A word that hedges the count after it ("about twenty desks"): the count is read as given."""
+
+
 def rewrite_numbers(text: str) -> str:
     """``text`` (normalised) with every count written as one token: figures with
     separators, decimals, powers and exponents ("1,000", "10^9", "1e9", "-3") and number
     phrases ("two hundred and fifty", "a million", "3 dozen") become ``parse_number``'s
-    forms. Single words ("a", "twelve", "no") are left as they are."""
+    forms; a hedge before a count ("about twenty") goes. Single words ("a", "twelve",
+    "no") are left as they are."""
+    text = _APPROX.sub("", text)
     text = _NUM_EXPR.sub(lambda mt: _canonical(_figures_value(mt)), text)
     out, pos = [], 0
     for mt in _WORD_RUN.finditer(text):
@@ -796,7 +804,10 @@ def _assign_rooms(text: str, mentions: list[Mention]) -> None:
                 m.count, m.plural = each.count, True  # "six guest rooms, each with its own bathroom" / "an en-suite"
                 continue
             tail = text[m.end : m.end + 40]
+            outer = context
             context = room_idx[id(m)] if CONTEXT_OPENERS.match(tail) else None
+            if context is None and outer is not None and OWN_PART.search(text[rooms[outer].end : m.start]):
+                context = outer  # "a suite with its own sitting area and a tub": the tub is the suite's
             plural_room = (m.count or 0) > 1 or m.plural
             each = m if plural_room and m.count and EACH_OPENER.match(tail) else None
             continue
@@ -804,9 +815,12 @@ def _assign_rooms(text: str, mentions: list[Mention]) -> None:
             each = None
         if m.host is not None and id(m.host) in room_idx:
             m.room = room_idx[id(m.host)]
+            _spread(m, m.host)  # "six en-suite showers": one in each
             continue
         m.room = context
         m.each = each is not None and context == room_idx[id(each)]
+        if not m.each and context is not None and EACH_AFTER.match(text[m.end : m.end + 24]):
+            m.each = (rooms[context].count or 0) > 1 or rooms[context].plural  # "twenty desks in each"
         if not m.each and context is not None:
             _spread(m, rooms[context])
         nxt = next((x for x in mentions[i + 1 :] if x.kind == "room"), None)
@@ -817,6 +831,16 @@ def _assign_rooms(text: str, mentions: list[Mention]) -> None:
                 m.room = room_idx[id(nxt)]
 
 
+EACH_AFTER = re.compile(r"^\s*(?:each|apiece|(?:in|for) (?:each|every)(?: one| room| of them)?|per room|a room)\b")
+"""Words after an object that give its count per room ("four classrooms with twenty
+desks each", "... in each"): every room gets that many, rather than a share."""
+
+
+OWN_PART = re.compile(r"\b(?:its|their|his|her) own\b[^.;]*$")
+"""Text between a room and a room named as its part ("a suite with its own sitting
+area"): what the text lists after the part still belongs to the room."""
+
+
 def _spread(obj: Mention, room: Mention) -> None:
     """"Three bedrooms with bunk beds": objects in the plural after a counted plural room
     are shared out, one each (or the count split evenly: "two bathrooms with four
@@ -824,11 +848,43 @@ def _spread(obj: Mention, room: Mention) -> None:
     rooms = room.count or 0
     if rooms < 2 or obj.many:
         return
-    if obj.count is None and obj.plural:
-        obj.each, obj.plural = True, False
+    if obj.count is None and (obj.plural or (obj.start - room.end <= 1 and not obj.words)):
+        obj.each, obj.plural = True, False  # "six en-suite showers"/"en-suites with showers": one each
     elif obj.count is not None and obj.count >= rooms and obj.count % rooms == 0:
         obj.each, obj.count = True, obj.count // rooms
         obj.plural = obj.count > 1
+
+
+PAIRED_OWNERS = re.compile(r"\b[a-z]+(?:'s|s')\s+(?:and|&)\s+[a-z]+(?:'s|s')\s+(?:[a-z]+\s+)?$")
+"""Two owners before a room word in the plural: "men's and women's changing rooms"."""
+
+
+def _paired_rooms(text: str, mentions: list[Mention]) -> None:
+    """"Men's and women's changing rooms", "boys' and girls' toilets": one room each, two
+    in all, when the text gives no count of its own."""
+    for m in mentions:
+        if m.kind == "room" and m.count is None and m.plural and PAIRED_OWNERS.search(text[max(0, m.start - 40) : m.start]):
+            m.count = 2
+
+
+SUBJECT_ROOM = re.compile(r"^\s*(?:in|inside|within|of|at) (?:a|an|the|my|our|this)\b")
+"""Words after a text's opening room that make the building its setting ("a collector's
+study in an old townhouse: ...")."""
+SUBJECT_ROOM_START = 40
+"""The opening room starts within this many characters of the text."""
+
+
+def _subject_room(text: str, p: Parsed, mentions: list[Mention]) -> None:
+    """"A collector's study in an old townhouse: a curiosity cabinet, two armchairs ...":
+    the text is about its one room, set in a building; what it lists with no room of its
+    own goes there, not to the building's main room."""
+    rooms = [m for m in mentions if m.kind == "room"]
+    if (p.building is None or len(rooms) != 1 or rooms[0].negated or rooms[0].start > SUBJECT_ROOM_START
+            or not SUBJECT_ROOM.match(text[rooms[0].end : rooms[0].end + 12])):
+        return
+    for m in mentions:
+        if m.kind == "object" and m.room is None and m.host is None:
+            m.room = 0
 
 
 def _strip_lookback(text: str, m: Mention) -> int:
@@ -1193,11 +1249,13 @@ def parse(text: str, kb: KnowledgeBase | None = None) -> Parsed:
             m.name = " ".join(m.words + [m.name])
     mentions = _open_vocabulary(kb, norm, p, taken, mentions, tokens)
     _apply_negation(norm, mentions, kb)
+    _paired_rooms(norm, mentions)
     _check_counts(p, mentions)
     _total_rooms(norm, p, mentions)
     if _ONE_ROOM.search(norm):
         p.one_room = True
     _assign_rooms(norm, mentions)
+    _subject_room(norm, p, mentions)
     _apply_arrangements(norm, mentions)
     p.rooms = [m for m in mentions if m.kind == "room"]
     for end, value in p.room_areas:  # "a 12 m2 bedroom": the next room word's own area

@@ -86,13 +86,14 @@ def _concept_info(kb: KnowledgeBase, furnish: str) -> dict:
     return {"type": furnish_type(furnish, kb), "furnish": furnish}
 
 
-def _slot_from_mention(kb: KnowledgeBase, m: Mention, idx: int, home: bool = False) -> Slot:
+def _slot_from_mention(kb: KnowledgeBase, m: Mention, idx: int, home: bool = False, program: str | None = None) -> Slot:
     """The room a mention names, read as a dwelling reads it when ``home`` (rooms.yaml
-    ``at_home``: "a salon" in a riad is a sitting room)."""
+    ``at_home``: "a salon" in a riad is a sitting room) and as the building ``program``
+    reads it (``within``: "the gym" of a school is its sports hall)."""
     info = kb.raw("rooms")["names"].get(m.key) if m.key else None
-    if info is not None and "at_home" in info:
-        sense = info["at_home"] if home else {}
-        info = {**{k: v for k, v in info.items() if k != "at_home"}, **sense}
+    if info is not None and ("at_home" in info or "within" in info):
+        sense = (info.get("within") or {}).get(program or "") or (info.get("at_home") if home else None) or {}
+        info = {**{k: v for k, v in info.items() if k not in ("at_home", "within")}, **sense}
     if m.concept:
         info = {**_concept_info(kb, m.concept), **({"name": info["name"]} if info and "name" in info else {})}
     if info is None:
@@ -173,7 +174,8 @@ def plan_rooms(kb: KnowledgeBase, parsed: Parsed, program: str | None, rng: np.r
                 s.optional = opt is not None
                 slots.append(s)
     fixed = _fixed_counts(kb, parsed)
-    _claim_mentions(kb, parsed, slots, fixed, home=program in set(_sizes(kb).get("homes", [])), prog=prog)
+    _claim_mentions(kb, parsed, slots, fixed, home=program in set(_sizes(kb).get("homes", [])), prog=prog,
+                    program=program)
     _drop_replaced(parsed, slots)
     totals = frozenset(t for t, n in (("bedroom", parsed.bedrooms), ("bathroom", parsed.bathrooms)) if n is not None)
     _apply_fixed(kb, slots, fixed, prog, totals)
@@ -270,14 +272,14 @@ def _fixed_counts(kb: KnowledgeBase, parsed: Parsed) -> dict[str, int]:
 
 
 def _claim_mentions(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], fixed: dict[str, int], home: bool = False,
-                    prog: dict | None = None) -> None:
+                    prog: dict | None = None, program: str | None = None) -> None:
     names = kb.raw("rooms")["names"]
     main = next((s for s in slots if prog and s.key == prog.get("main")), None)
     held, taken = set((prog or {}).get("holds", [])), set[str]()
     for i, m in enumerate(parsed.rooms):
         if m.count == 0:
             continue
-        proto = _slot_from_mention(kb, m, i, home)
+        proto = _slot_from_mention(kb, m, i, home, program)
         if main is not None and _taken_in(m, proto, held, taken):
             main.parts.append(i)
             taken.add(proto.type)

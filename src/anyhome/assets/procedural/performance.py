@@ -1,4 +1,4 @@
-"""Music and stage: microphone, speaker, drum_kit, guitar, stage_platform."""
+"""Music and stage: microphone, speaker, drum_kit, guitar, music_stand, stage_platform."""
 
 from __future__ import annotations
 
@@ -279,6 +279,32 @@ def build_guitar(p):
     return b.mesh(p.size)
 
 
+# ----------------------------------------------------------------- music stand
+def sample_music_stand(rng, size, style):
+    return make_params("music_stand", rng, size, style, [BLACK, DARK_METAL, BLACK, METAL] + wood_tones(style)[:1],
+                       [BLACK], ["#f4f1e8"], tilt=float(rng.uniform(0.25, 0.45)), sheet=bool(rng.random() < 0.6))
+
+
+def build_music_stand(p):
+    """A music stand facing +y (its front): a tripod of thin legs, a pole and a desk tilted back with
+    a ledge for the music along its bottom edge (a sheet on it, sometimes)."""
+    w, d, h = p.size
+    b = Builder()
+    foot = min(w, d) * 0.45
+    for a in (np.pi / 2, np.pi / 2 + 2 * np.pi / 3, np.pi / 2 + 4 * np.pi / 3):
+        b.rod((0, 0, 0.22 * h), (foot * np.cos(a), foot * np.sin(a), 0.0), 0.008, p.primary, sections=6)
+    desk_h = min(0.36, 0.3 * h)
+    z0 = h - desk_h * np.cos(p.tilt)
+    b.rod((0, 0, 0.0), (0, 0, z0 + 0.02), 0.011, p.primary, sections=8)
+    tilt = move((0, 0, z0)) @ rot_x(p.tilt)  # the desk leans back, away from the player at +y
+    dw = min(w, 0.5)
+    b.box((-dw / 2, -0.006, 0.0), (dw / 2, 0.006, desk_h), p.primary, transform=tilt)
+    b.box((-dw / 2, 0.0, -0.01), (dw / 2, 0.05, 0.012), p.primary, transform=tilt)  # the ledge
+    if p.sheet:
+        b.box((-dw * 0.42, 0.006, 0.012), (dw * 0.42, 0.012, desk_h * 0.92), p.accent, transform=tilt)
+    return b.mesh(p.size)
+
+
 # ----------------------------------------------------------------- stage platform
 def sample_stage_platform(rng, size, style):
     return make_params("stage_platform", rng, size, style,
@@ -328,5 +354,7 @@ slot_roles("drum_kit", "paint", "plastic", "metal")
 register("drum_kit", sample_drum_kit, build_drum_kit)
 slot_roles("guitar", "wood", "wood", "metal")
 register("guitar", sample_guitar, build_guitar)
+slot_roles("music_stand", "metal", "metal", "paper")
+register("music_stand", sample_music_stand, build_music_stand)
 slot_roles("stage_platform", "wood", "fabric", "metal")
 register("stage_platform", sample_stage_platform, build_stage_platform)
