@@ -260,3 +260,14 @@ def test_an_en_suite_shower_is_one_per_en_suite_and_a_suites_own_things_are_its_
     # a room named after a list of another room's things is not their room
     p = parse("A kitchen with an island, a dining room and a sofa.")
     assert {m.name: m.room for m in p.objects}["sofa"] is None
+
+
+def test_a_word_that_is_also_an_adjective_names_a_room_only_as_a_noun():
+    """rooms.yaml ``noun_only``: "a cosy snug," and "a buttery" are rooms; "a snug
+    bedroom", "feels snug", "solar panels" and "buttery leather" are not."""
+    rooms = lambda t: [m.key for m in parse(t).rooms]  # noqa: E731
+    assert rooms("A pub with a long bar, a cosy snug, and a beer garden.") == ["snug", "beer garden"]
+    assert rooms("A manor with a great hall, the lord's solar above it and a buttery.") == ["great hall", "lord's solar", "buttery"]
+    assert rooms("A snug bedroom with a bed.") == ["bedroom"]
+    assert rooms("The living room feels snug and warm.") == ["living room"]
+    assert rooms("A cabin with solar panels and a buttery leather sofa.") == []

@@ -264,6 +264,9 @@ class RoomName(_Model):
     at_home: HomeSense | None = Field(None, description="the word's reading in a dwelling (a program of sizes.homes)")
     within: dict[str, HomeSense] = Field(default_factory=dict, description=(
         "program -> the word's reading in that building (a gym in a school is its sports hall)"))
+    noun_only: bool = Field(False, description=(
+        "the word is also an adjective: it names a room only where no word of a name follows it "
+        "('a cosy snug,' is a room; 'a snug bedroom', 'solar panels' are not)"))
 
     _r = field_validator("area")(classmethod(lambda cls, v: _ordered(v)))
 

@@ -1194,6 +1194,36 @@ def _mask_height_words(kb: KnowledgeBase, norm: str) -> str:
     return rx.sub(lambda m: " " * len(m.group()), norm)
 
 
+AFTER_A_NOUN = frozenset(
+    "and or with without for where that which who above below beside behind under over off on in at of to by "
+    "from near next upstairs downstairs overlooking facing opposite as plus".split())
+"""Words that may follow a room word standing as a noun ("a snug with a fire", "the
+lord's solar above the hall")."""
+
+
+BEFORE_AN_ADJECTIVE = frozenset(
+    "feel feels felt is are was were be being look looks seem seems stay stays keep keeps remain remains "
+    "very so too quite really rather extra and but yet".split())
+"""Words before a ``noun_only`` room word that make it an adjective ("feels snug")."""
+
+
+def _nouns_only(kb: KnowledgeBase, text: str, mentions: list[Mention]) -> list[Mention]:
+    """``mentions`` less the rooms named by a word that is here an adjective (rooms.yaml
+    ``noun_only``): "a snug bedroom", "solar panels", "buttery leather"."""
+    names = kb.raw("rooms")["names"]
+    keep = []
+    for m in mentions:
+        if m.kind == "room" and (names.get(m.key) or {}).get("noun_only"):
+            nxt = re.match(r"\s*([a-z][a-z'-]*)", text[m.end :])
+            if nxt is not None and nxt.group(1) not in AFTER_A_NOUN:
+                continue
+            before = re.search(r"([a-z]+)\s*$", text[: m.end - len(m.key or "")])
+            if before is not None and before.group(1) in BEFORE_AN_ADJECTIVE:
+                continue  # "the room feels snug and warm"
+        keep.append(m)
+    return keep
+
+
 def _joined_room_words(kb: KnowledgeBase, text: str, mentions: list[Mention]) -> list[Mention]:
     """``mentions`` with two room words of one type written side by side taken as one
     room, named by the second ("an entry foyer": a foyer, not an entry and a foyer)."""
@@ -1233,7 +1263,7 @@ def parse(text: str, kb: KnowledgeBase | None = None) -> Parsed:
     span = _parse_building(kb, norm, p, taken)
     if span:
         taken.append(span)
-    mentions = _joined_room_words(kb, norm, _find_mentions(kb, norm, p, taken))
+    mentions = _nouns_only(kb, norm, _joined_room_words(kb, norm, _find_mentions(kb, norm, p, taken)))
     tokens = _tokens(norm)
     spans = taken + [(m.start, m.end) for m in mentions]
     for m in mentions:
