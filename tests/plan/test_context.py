@@ -290,3 +290,22 @@ def test_a_room_set_in_a_building_gets_what_the_text_lists(seed):
     # a building that opens the text keeps its rooms' objects where the text puts them
     spec = plan_of("A townhouse with a study and a kitchen with a range cooker.", seed)
     assert "range cooker" in [n for r in spec.rooms if r.type == "kitchen" for n in names_of(r)]
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_a_recording_studios_rooms_hold_a_band_a_singer_and_the_desk(seed):
+    spec = plan_of("A small recording studio for bands: a live room for a drum kit, a vocal booth, and a control room "
+                   "with a mixing desk.", seed)
+    by_name = {r.name: names_of(r) for r in spec.rooms}
+    assert "drum kit" in by_name["live room"] and by_name["live room"].count("microphone stand") >= 2
+    assert "microphone stand" in by_name["vocal booth"] and "music stand" in by_name["vocal booth"]
+    assert not {"easel", "work table", "workbench"} & {n for names in by_name.values() for n in names}
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_a_pub_pulls_beer_and_a_wine_bar_does_not(seed):
+    def everything(text):
+        return [n for r in plan_of(text, seed).rooms for n in names_of(r)]
+
+    assert "beer tap" in everything("A traditional English pub with a long oak bar and a beer garden.")
+    assert "beer tap" not in everything("A wine bar with a tasting counter.")
