@@ -271,3 +271,9 @@ def test_a_word_that_is_also_an_adjective_names_a_room_only_as_a_noun():
     assert rooms("A snug bedroom with a bed.") == ["bedroom"]
     assert rooms("The living room feels snug and warm.") == ["living room"]
     assert rooms("A cabin with solar panels and a buttery leather sofa.") == []
+
+
+def test_what_people_do_in_a_room_is_no_room_and_no_object():
+    p = parse("Tiny studio flat: a single main room where I sleep and live, a kitchenette against one wall, "
+              "and a compact unit bathroom.")
+    assert not any(m.name in ("live", "sleep") for m in [*p.rooms, *p.objects])
