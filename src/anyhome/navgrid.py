@@ -313,7 +313,7 @@ class NavGrid:
             if split or not self._door_by_near or (self._door_mask[sh.window] & lost).any():
                 self._door_stale = self._door_a_stale = True
             if self.walk_a is None:
-                self._forget(sh, split)
+                self._forget(Patch(sh.i0, sh.j0, lost), split)
         sa = obs.reach_shadow
         if self.walk_a is not None and sa is not None:
             lost = self.walk_a[sa.window] & sa.mask
@@ -322,15 +322,16 @@ class NavGrid:
                 self._labels_a, split = _cut(self._labels_a, self.walk_a, Patch(sa.i0, sa.j0, lost))
                 if split or (self._door_mask[sa.window] & lost).any():
                     self._door_a_stale = True
-                self._forget(sa, split)
+                self._forget(Patch(sa.i0, sa.j0, lost), split)
 
-    def _forget(self, p: Patch, split: bool) -> None:
-        """Objects reached from cells in ``p``'s window are no longer known to be reached
-        (``split``: a component split, none is)."""
+    def _forget(self, lost: Patch, split: bool) -> None:
+        """Objects with a reach cell among the cells ``lost`` are no longer known to be reached
+        (``split``: a component split, none is); the others keep a reach cell in the same
+        component (:func:`_cut`)."""
         if split:
             self._known = set()
         elif self._known:
-            self._known = {o for o in self._known if o.reach is None or not _meet(o.reach, p)}
+            self._known = {o for o in self._known if o.reach is None or not _overlap(o.reach, lost)}
 
     def set_blocked(self, placed: list[Placed]) -> None:
         """Start again from the empty room with the obstacles of ``placed``."""
@@ -420,27 +421,28 @@ class NavGrid:
         if door is None:
             return False
         labels, walk, door = self._reach_labels(door)
-        cells = self._reach_cells(obs)
-        sh = obs.reach_shadow if self.walk_a is not None else obs.shadow
-        lab = _at(labels, walk, cells)
-        on = _in(lab, door)
-        if sh is not None and sh.mask.size and on.any():
-            rows, cols = np.divmod(cells[on], walk.shape[1])
-            h, w = sh.mask.shape
-            r, c = rows - sh.i0, cols - sh.j0
-            inside = (r >= 0) & (r < h) & (c >= 0) & (c < w)
-            shaded = np.zeros(len(r), dtype=bool)
-            shaded[inside] = sh.mask[r[inside], c[inside]]
-            return bool(np.all(shaded))
-        return not on.any()
+        lab = _at(labels, walk, self._reach_cells(obs))  # its reach cells outside its own shadow
+        return not _in(lab, door).any()
 
     def _reach_cells(self, o: Obstacle) -> np.ndarray:
-        """Flat raster indices of the cells ``o`` is reached from (cached per obstacle)."""
+        """Flat raster indices of the cells ``o`` is reached from (cached per obstacle), less
+        those of its own shadow on the raster it is reached on: these are never walkable while
+        it stands."""
         got = self._cells.get(o)
         if got is None:
             assert o.reach is not None
-            rows, cols = np.nonzero(o.reach.mask)
-            got = (rows + o.reach.i0) * self.walk.shape[1] + cols + o.reach.j0
+            r = o.reach
+            sh = o.reach_shadow if self.walk_a is not None else o.shadow
+            mask = r.mask
+            if sh is not None and sh.mask.size:
+                (h, w), (hs, ws) = r.mask.shape, sh.mask.shape
+                i0, i1 = max(r.i0, sh.i0), min(r.i0 + h, sh.i0 + hs)
+                j0, j1 = max(r.j0, sh.j0), min(r.j0 + w, sh.j0 + ws)
+                if i0 < i1 and j0 < j1:
+                    mask = mask.copy()
+                    mask[i0 - r.i0:i1 - r.i0, j0 - r.j0:j1 - r.j0] &= ~sh.mask[i0 - sh.i0:i1 - sh.i0, j0 - sh.j0:j1 - sh.j0]
+            rows, cols = np.nonzero(mask)
+            got = (rows + r.i0) * self.walk.shape[1] + cols + r.j0
             self._cells[o] = got
         return got
 
@@ -524,6 +526,16 @@ def _meet(a: Patch, b: Patch) -> bool:
     """Whether the windows of ``a`` and ``b`` share a cell."""
     (ha, wa), (hb, wb) = a.mask.shape, b.mask.shape
     return a.i0 < b.i0 + hb and b.i0 < a.i0 + ha and a.j0 < b.j0 + wb and b.j0 < a.j0 + wa
+
+
+def _overlap(a: Patch, b: Patch) -> bool:
+    """Whether ``a`` and ``b`` share a cell."""
+    if not _meet(a, b):
+        return False
+    (ha, wa), (hb, wb) = a.mask.shape, b.mask.shape
+    i0, i1 = max(a.i0, b.i0), min(a.i0 + ha, b.i0 + hb)
+    j0, j1 = max(a.j0, b.j0), min(a.j0 + wa, b.j0 + wb)
+    return bool((a.mask[i0 - a.i0:i1 - a.i0, j0 - a.j0:j1 - a.j0] & b.mask[i0 - b.i0:i1 - b.i0, j0 - b.j0:j1 - b.j0]).any())
 
 
 def _cut(labels: np.ndarray | None, walk: np.ndarray, lost: Patch) -> tuple[np.ndarray | None, bool]:

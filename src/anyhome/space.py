@@ -214,17 +214,26 @@ def overlap_above(a: np.ndarray, b: np.ndarray, thr: float, inclusive: bool = Fa
     return out
 
 
-def _box_in(lo: np.ndarray, hi: np.ndarray, box: tuple[float, float, float, float], e: float
-            ) -> tuple[np.ndarray, np.ndarray]:
-    """Whether all corners of footprints of bounds ``lo``, ``hi`` (2, n) lie in ``box`` (x0,
-    y0, x1, y1) shrunk by ``e``, and whether they lie in it grown by ``e`` (n,) each."""
+def _box_in(lo: np.ndarray, hi: np.ndarray, box: tuple[float, float, float, float], e: float, outer: bool = True
+            ) -> tuple[np.ndarray, np.ndarray | None]:
+    """Whether all corners of footprints of bounds ``lo``, ``hi`` (2, n), or points (``lo`` is
+    ``hi``), lie in ``box`` (x0, y0, x1, y1) shrunk by ``e``, and (``outer``, else None) whether
+    they lie in it grown by ``e``, (n,) each; the one test of a box in this module."""
     x0, y0, x1, y1 = box
-    inner = (lo[0] > x0 + e) & (hi[0] < x1 - e) & (lo[1] > y0 + e) & (hi[1] < y1 - e)
-    outer = (lo[0] > x0 - e) & (hi[0] < x1 + e) & (lo[1] > y0 - e) & (hi[1] < y1 + e)
-    return inner, outer
+    inner = lo[0] > x0 + e
+    inner &= hi[0] < x1 - e
+    inner &= lo[1] > y0 + e
+    inner &= hi[1] < y1 - e
+    if not outer:
+        return inner, None
+    out = lo[0] > x0 - e
+    out &= hi[0] < x1 + e
+    out &= lo[1] > y0 - e
+    out &= hi[1] < y1 + e
+    return inner, out
 
 
-_ZONE, _SIGHTLINE, _PLACED = 0, 1, 2
+_ZONE_KIND, _SIGHTLINE, _PLACED = 0, 1, 2
 """Kinds of what a pose may not overlap (:meth:`RoomSpace._blockers`)."""
 _PAIR_MARGIN_M = 0.01
 """Bounds further apart than the cap plus this are not compared in :meth:`RoomSpace.clearance` (m)."""
@@ -232,26 +241,28 @@ _PAIR_SLACK_M = 1e-6
 """Rounding allowed for when pairs are found by their bounds (:func:`_any_overlap`, m)."""
 
 
-def _any_overlap(a: np.ndarray, alo: np.ndarray, ahi: np.ndarray, idx: np.ndarray, b: np.ndarray,
-                 bmin: np.ndarray, bmax: np.ndarray, b_aligned: np.ndarray, thr: np.ndarray, inclusive: np.ndarray,
+def _any_overlap(a: np.ndarray, alo: np.ndarray, ahi: np.ndarray, idx: np.ndarray, tab: tuple[np.ndarray, ...],
                  pairs: Callable[[np.ndarray, np.ndarray], np.ndarray] | None = None) -> np.ndarray:
-    """Whether each pose ``a[idx]`` overlaps some ``b[j]`` by more than ``thr[j]`` (or as much,
-    ``inclusive[j]``) as :func:`overlap_above` tests it, (len(idx),) bool, computed on the pairs
-    whose bounds overlap by ``thr`` less :data:`_PAIR_SLACK_M` or more along x and y only (no
-    other overlaps by ``thr``).
+    """Whether each pose ``a[idx]`` overlaps some row ``j`` of ``tab`` by more than its ``thr[j]``
+    (or as much, ``inclusive[j]``) as :func:`overlap_above` tests it, (len(idx),) bool, computed
+    on the pairs whose bounds overlap by ``thr`` less :data:`_PAIR_SLACK_M` or more along x and
+    y only (no other overlaps by ``thr``).
 
     Parameters
     ----------
     a : (n, 4, 2) float, alo, ahi : (2, n) float, its bounds (:func:`_bounds_t`); idx : (k,) int, the
         rows of ``a`` tested
-    b : (m, 4, 2) float, bmin, bmax : (m, 2) float, b_aligned : (m,) bool (:func:`_aligned`)
-    pairs : (rows of ``idx``, rows of ``b``) -> bool, the pairs that may overlap at all
+    tab : the rows tested against (:func:`_table`)
+    pairs : (rows of ``idx``, rows of ``tab``) -> bool, the pairs that may overlap at all
     """
-    g = _PAIR_SLACK_M - thr  # a pair overlapping by thr along x (y) has its bounds this close
+    b, bmin, bmax, b_aligned, thr, inclusive = tab[:6]
+    nxlo, nxhi, nylo, nyhi = tab[_NEAR:]
     lox, loy, hix, hiy = alo[0, idx], alo[1, idx], ahi[0, idx], ahi[1, idx]
-    near = ((lox[None] < (bmax[:, 0] + g)[:, None]) & (hix[None] > (bmin[:, 0] - g)[:, None])
-            & (loy[None] < (bmax[:, 1] + g)[:, None]) & (hiy[None] > (bmin[:, 1] - g)[:, None]))
-    j, i = np.nonzero(near)  # (m, k): a row of poses per footprint, contiguous
+    near = lox < nxhi  # (m, k): a row of poses per footprint, contiguous
+    near &= hix > nxlo
+    near &= loy < nyhi
+    near &= hiy > nylo
+    j, i = np.nonzero(near)
     if pairs is not None and len(i):
         keep = pairs(i, j)
         i, j = i[keep], j[keep]
@@ -304,14 +315,34 @@ def _blocker_rows(objs: list[Placed]) -> tuple[np.ndarray, ...]:
     return tuple(np.concatenate(col) for col in zip(*(p.rows() for p in objs), strict=True))
 
 
-def _own_rows(p: Placed) -> tuple[np.ndarray, ...]:
-    """The row of one placed object as :meth:`RoomSpace._blockers` stacks it (read-only)."""
-    c = p.corners[None]
-    out = (c, _cmin(c), _cmax(c), _aligned(c), np.full(1, EPS_COLLIDE_M), np.zeros(1, dtype=bool),
-           np.full(1, _PLACED), np.array([p.z0]), np.array([p.z1]))
+_ZONE, _SIGHT, _Z0, _Z1, _NEAR = 6, 7, 8, 9, 10
+"""Columns of a table of rows (:func:`_table`): door zone, sightline, bottom, top, and from
+``_NEAR`` on the bounds (x lower, x upper, y lower, y upper) a pose's bounds must cross to
+come near enough to overlap."""
+
+
+def _table(c: np.ndarray, thr: float, inclusive: bool, kind: int, z0: np.ndarray, z1: np.ndarray
+           ) -> tuple[np.ndarray, ...]:
+    """Rows of what a pose may not overlap (read-only), one per footprint of ``c`` (m, 4, 2):
+    corners, lower and upper bounds (m, 2), square to the axes (m,) bool, the overlap ``thr``
+    each may have, whether it may have that much (``inclusive``), whether it is a door zone,
+    a sightline (``kind``), its bottom and top ``z0``, ``z1`` (m,) (NaN: at any height), then
+    the bounds a pose must cross to come within ``thr`` (:data:`_NEAR`, (m, 1) each)."""
+    m = len(c)
+    lo, hi = _cmin(c), _cmax(c)
+    t = np.full(m, thr)
+    g = _PAIR_SLACK_M - t  # a pair overlapping by thr along x (y) has its bounds this close
+    out = (c, lo, hi, _aligned(c), t, np.full(m, inclusive), np.full(m, kind == _ZONE_KIND),
+           np.full(m, kind == _SIGHTLINE), z0, z1, (lo[:, 0] - g)[:, None], (hi[:, 0] + g)[:, None],
+           (lo[:, 1] - g)[:, None], (hi[:, 1] + g)[:, None])
     for a in out[1:]:
         a.flags.writeable = False
     return out
+
+
+def _own_rows(p: Placed) -> tuple[np.ndarray, ...]:
+    """The row of one placed object as :meth:`RoomSpace._blockers` stacks it (read-only)."""
+    return _table(p.corners[None], EPS_COLLIDE_M, False, _PLACED, np.array([p.z0]), np.array([p.z1]))
 
 
 def _cmin(c: np.ndarray) -> np.ndarray:
@@ -419,6 +450,9 @@ class RoomSpace:
         self.bmax = self.vertices.max(0)
         self._bounds = (self.bmin - INSIDE_TOL_M, self.bmax + INSIDE_TOL_M)
         """What :meth:`valid` keeps footprints within (the bounding box grown by the tolerance)."""
+        self._bounds_in_buf = self.buf_box is not None and bool(
+            np.all(np.abs(np.concatenate(self._bounds) - np.asarray(self.buf_box)) < _BOX_EDGE_M / 2))
+        """Footprints within ``_bounds`` lie within ``buf_box`` grown by :data:`_BOX_EDGE_M`."""
         self.height = float(self.room.height)
         self.area = float(self.poly.area)
         c = self.poly.centroid
@@ -444,10 +478,13 @@ class RoomSpace:
         self.door_zones = np.asarray(zones).reshape(-1, 4, 2)
         self.zone_lo, self.zone_hi = self.door_zones.min(1), self.door_zones.max(1)
         self.zone_aligned = _aligned(self.door_zones)
-        nz, nan = len(self.door_zones), np.full(len(self.door_zones), np.nan)
-        self._zone_rows = (self.door_zones, self.zone_lo, self.zone_hi, self.zone_aligned, np.full(nz, -DOOR_MARGIN_M),
-                           np.ones(nz, dtype=bool), np.full(nz, _ZONE), nan, nan)
+        nan = np.full(len(self.door_zones), np.nan)
+        self._zone_rows = _table(self.door_zones, -DOOR_MARGIN_M, True, _ZONE_KIND, nan, nan)
         """The door zones as :meth:`_blockers` stacks them, first."""
+        self._kc: tuple[list[np.ndarray], tuple[np.ndarray, ...]] = ([], ())
+        """The sightlines whose rows :meth:`_blockers` made last, and those rows."""
+        self._joined: tuple[tuple[np.ndarray, ...], tuple[np.ndarray, ...], tuple[np.ndarray, ...]] | None = None
+        """The last table and sightline rows :meth:`_blockers` joined, and the table joined."""
         self.zone_polys = [Polygon(z) for z in zones]
         wzones = []
         for w in self.floorplan.windows:
@@ -506,18 +543,21 @@ class RoomSpace:
         """Mask of poses that are in bounds, collision-free and (floor/wall) clear of doors;
         ``layer``: a rug laid under furniture, tested against the other layers only."""
         n = len(corners)
-        ok = np.ones(n, dtype=bool)
         if n == 0:
-            return ok
+            return np.ones(0, dtype=bool)
         z0, z1 = _per_pose(z0, n), _per_pose(z1, n)
         lo, hi = _bounds_t(corners)
         (bx0, by0), (bx1, by1) = self._bounds
-        ok &= (lo[0] >= bx0) & (lo[1] >= by0) & (hi[0] <= bx1) & (hi[1] <= by1)
+        ok = lo[0] >= bx0
+        ok &= lo[1] >= by0
+        ok &= hi[0] <= bx1
+        ok &= hi[1] <= by1
         limit = self.height if floor else self.height - CEILING_GAP_M
         ok &= z1 <= limit + 1e-9
         if self.buf_box is not None and self.convex:  # a rectangle: most settled by their bounds
-            inner, outer = _box_in(lo, hi, self.buf_box, _BOX_EDGE_M)
-            ok &= outer  # a corner outside: out
+            inner, outer = _box_in(lo, hi, self.buf_box, _BOX_EDGE_M, outer=not self._bounds_in_buf)
+            if outer is not None:
+                ok &= outer  # a corner outside: out
             idx = np.nonzero(ok & ~inner)[0]  # a corner a hair from the outline: as below
         else:
             idx = np.nonzero(ok)[0]
@@ -537,49 +577,49 @@ class RoomSpace:
         if idx.size:
             tall = z1 > VIEW_CLEAR_M
             sightlines = bool(floor and not layer and tall[idx].any())
-            b, bmin, bmax, bal, thr, incl, kind, bz0, bz1 = self._blockers(layer, doors, sightlines)
+            tab = self._blockers(layer, doors, sightlines)
+            zone, sight, bz0, bz1 = tab[_ZONE], tab[_SIGHT], tab[_Z0], tab[_Z1]
 
             def may_meet(i: np.ndarray, j: np.ndarray) -> np.ndarray:
-                """Door zones meet any pose, sightlines tall ones, objects those overlapping them in z."""
-                ii, k = idx[i], kind[j]
-                return (k == _ZONE) | ((k == _SIGHTLINE) & tall[ii]) | (
-                    (k == _PLACED) & (np.minimum(z1[ii], bz1[j]) - np.maximum(z0[ii], bz0[j]) > EPS_COLLIDE_M))
+                """Door zones meet any pose, sightlines tall ones, objects those overlapping them in z
+                (the others' heights are NaN: no overlap)."""
+                ii = idx[i]
+                return zone[j] | (sight[j] & tall[ii]) | (
+                    np.minimum(z1[ii], bz1[j]) - np.maximum(z0[ii], bz0[j]) > EPS_COLLIDE_M)
 
-            if len(b):
-                ok[idx[_any_overlap(corners, lo, hi, idx, b, bmin, bmax, bal, thr, incl, pairs=may_meet)]] = False
+            if len(tab[0]):
+                ok[idx[_any_overlap(corners, lo, hi, idx, tab, pairs=may_meet)]] = False
         return ok
 
     def _blockers(self, layer: bool, doors: bool, sightlines: bool) -> tuple[np.ndarray, ...]:
-        """What a pose may not overlap, stacked: the door zones (``doors``), the sightlines
-        (``sightlines``) and the placed objects (``layer``: the layers, else all but them).
-
-        Returns
-        -------
-        corners (m, 4, 2), lower and upper bounds (m, 2), square to the axes (m,) bool, the
-        overlap (m,) m each may have, whether it may have that much (m,) bool, its kind (m,)
-        int (:data:`_ZONE`, :data:`_SIGHTLINE`, :data:`_PLACED`), bottoms and tops (m,)
-        """
+        """What a pose may not overlap, stacked (:func:`_table`): the door zones (``doors``), the
+        sightlines (``sightlines``) and the placed objects (``layer``: the layers, else all but them)."""
         got = self._rows(layer, [p for p in self.placed if p.layer == layer], self._zone_rows, _blocker_rows)
         if not doors:
             got = tuple(a[len(self.door_zones):] for a in got)
         if not sightlines or not self.keep_clear:
             return got
-        kc = np.stack(self.keep_clear)
-        nan = np.full(len(kc), np.nan)
-        more = (kc, _cmin(kc), _cmax(kc), _aligned(kc), np.full(len(kc), EPS_COLLIDE_M), np.zeros(len(kc), dtype=bool),
-                np.full(len(kc), _SIGHTLINE), nan, nan)
-        return tuple(np.concatenate([a, m]) for a, m in zip(got, more, strict=True))
+        held, more = self._kc
+        if len(held) != len(self.keep_clear) or not all(map(operator.is_, held, self.keep_clear)):
+            kc = np.stack(self.keep_clear)
+            nan = np.full(len(kc), np.nan)
+            more = _table(kc, EPS_COLLIDE_M, False, _SIGHTLINE, nan, nan)
+            self._kc = (list(self.keep_clear), more)
+        j = self._joined
+        if j is None or j[1] is not more or len(j[0]) != len(got) or not all(map(operator.is_, j[0], got)):
+            j = (got, more, tuple(np.concatenate([a, m]) for a, m in zip(got, more, strict=True)))
+            self._joined = j
+        return j[2]
 
     def _in_buf(self, x: np.ndarray, y: np.ndarray) -> np.ndarray:
         """``shapely.contains_xy(self.buf, x, y)``; for an axis-aligned rectangle by comparing
         coordinates, shapely asked only about points within a hair of its outline."""
         if self.buf_box is None:
             return shapely.contains_xy(self.buf, x, y)
-        x0, y0, x1, y1 = self.buf_box
-        out = (x > x0) & (x < x1) & (y > y0) & (y < y1)
-        e = _BOX_EDGE_M
-        edge = (x > x0 - e) & (x < x1 + e) & (y > y0 - e) & (y < y1 + e) & ~(
-            (x > x0 + e) & (x < x1 - e) & (y > y0 + e) & (y < y1 - e))
+        pts = np.stack((x, y))
+        out, near = _box_in(pts, pts, self.buf_box, _BOX_EDGE_M)
+        assert near is not None
+        edge = near & ~out
         if edge.any():
             out[edge] = shapely.contains_xy(self.buf, x[edge], y[edge])
         return out
@@ -589,13 +629,10 @@ class RoomSpace:
         coordinates for an axis-aligned rectangular room; None: ask shapely."""
         if self.outline_box is None:
             return None
-        x0, y0, x1, y1 = self.outline_box
-        e = _BOX_EDGE_M
-        if lo[0] > x0 + e and lo[1] > y0 + e and hi[0] < x1 - e and hi[1] < y1 - e:
+        inner, outer = _box_in(lo, hi, self.outline_box, _BOX_EDGE_M)
+        if inner:
             return True
-        if lo[0] < x0 - e or lo[1] < y0 - e or hi[0] > x1 + e or hi[1] > y1 + e:
-            return False
-        return None
+        return False if not outer else None
 
     def _vertex_inside(self, c: np.ndarray) -> np.ndarray:
         centre = c.mean(1)
