@@ -238,9 +238,9 @@ class NavGrid:
         if i0 >= i1 or j0 >= j1:
             return Patch(0, 0, np.zeros((0, 0), dtype=bool))
         mx, my = (ax + bx + cx + dx) / 4, (ay + by + cy + dy) / 4  # as corners.mean(0) sums them
-        ex, ey = corners[1] - corners[0], corners[3] - corners[0]
-        hw, hd = math.sqrt(ex.dot(ex)) / 2, math.sqrt(ey.dot(ey)) / 2  # as np.linalg.norm
-        (ex0, ex1), (ey0, ey1) = (ex / (2 * hw)).tolist(), (ey / (2 * hd)).tolist()
+        ex0, ex1, ey0, ey1 = bx - ax, by - ay, dx - ax, dy - ay  # the edges, on floats as numpy has them
+        hw, hd = math.sqrt(ex0 * ex0 + ex1 * ex1) / 2, math.sqrt(ey0 * ey0 + ey1 * ey1) / 2  # as np.linalg.norm
+        ex0, ex1, ey0, ey1 = ex0 / (2 * hw), ex1 / (2 * hw), ey0 / (2 * hd), ey1 / (2 * hd)
         px = self.xs[j0:j1] - mx
         py = self.ys[i0:i1] - my
         if ex1 == 0.0 and ey0 == 0.0:  # square to the raster: a product of a row and a column
@@ -275,14 +275,14 @@ class NavGrid:
     def _shadow(self, cells: Patch, disc: np.ndarray, radius: float) -> Patch:
         """``cells`` dilated by ``disc`` (the cells within ``radius``), clipped to the raster;
         a full block of cells (an object square to the raster) by the distance to it."""
-        if self.radius is None or not cells.mask.any():
+        if self.radius is None or not np.count_nonzero(cells.mask):
             return Patch(0, 0, np.zeros((0, 0), dtype=bool))
         k = disc.shape[0] // 2
         h, w = cells.mask.shape
         ny, nx = self.base_free.shape
         i0, j0 = max(0, cells.i0 - k), max(0, cells.j0 - k)
         i1, j1 = min(ny, cells.i0 + h + k), min(nx, cells.j0 + w + k)
-        if cells.mask.all():
+        if np.count_nonzero(cells.mask) == cells.mask.size:
             block = self._blocks.get((h, w, k, radius))
             if block is None:
                 d = np.arange(-k, max(h, w) + k, dtype=float)  # rows (columns) from the block's first
@@ -307,20 +307,20 @@ class NavGrid:
         self.obstacles.append(obs)
         sh = obs.shadow
         lost = self.walk[sh.window] & sh.mask
-        if lost.any():
+        if np.count_nonzero(lost):
             self.walk[sh.window] &= ~sh.mask
             self._labels, split = _cut(self._labels, self.walk, Patch(sh.i0, sh.j0, lost))
-            if split or not self._door_by_near or (self._door_mask[sh.window] & lost).any():
+            if split or not self._door_by_near or np.count_nonzero(self._door_mask[sh.window] & lost):
                 self._door_stale = self._door_a_stale = True
             if self.walk_a is None:
                 self._forget(Patch(sh.i0, sh.j0, lost), split)
         sa = obs.reach_shadow
         if self.walk_a is not None and sa is not None:
             lost = self.walk_a[sa.window] & sa.mask
-            if lost.any():
+            if np.count_nonzero(lost):
                 self.walk_a[sa.window] &= ~sa.mask
                 self._labels_a, split = _cut(self._labels_a, self.walk_a, Patch(sa.i0, sa.j0, lost))
-                if split or (self._door_mask[sa.window] & lost).any():
+                if split or np.count_nonzero(self._door_mask[sa.window] & lost):
                     self._door_a_stale = True
                 self._forget(Patch(sa.i0, sa.j0, lost), split)
 
@@ -390,14 +390,14 @@ class NavGrid:
         if len(todo) == 1:  # most often the object placed last alone
             o = todo[0]
             lab = _at(labels, walk, self._reach_cells(o))
-            if len(lab) and bool(np.any(_in(lab, door))):
+            if np.count_nonzero(_in(lab, door)):
                 known.add(o)
                 return []
             return [o]
         cells = [self._reach_cells(o) for o in todo]
         n = np.array([len(c) for c in cells])
         reached = np.zeros(len(todo), dtype=bool)
-        some = np.flatnonzero(n)  # an obstacle with no reach cells is not reached
+        some = n.nonzero()[0]  # an obstacle with no reach cells is not reached
         if some.size:
             lab = _at(labels, walk, np.concatenate([cells[i] for i in some]))
             hit = _in(lab, door)
@@ -422,7 +422,7 @@ class NavGrid:
             return False
         labels, walk, door = self._reach_labels(door)
         lab = _at(labels, walk, self._reach_cells(obs))  # its reach cells outside its own shadow
-        return not _in(lab, door).any()
+        return not np.count_nonzero(_in(lab, door))
 
     def _reach_cells(self, o: Obstacle) -> np.ndarray:
         """Flat raster indices of the cells ``o`` is reached from (cached per obstacle), less
@@ -535,7 +535,7 @@ def _overlap(a: Patch, b: Patch) -> bool:
     (ha, wa), (hb, wb) = a.mask.shape, b.mask.shape
     i0, i1 = max(a.i0, b.i0), min(a.i0 + ha, b.i0 + hb)
     j0, j1 = max(a.j0, b.j0), min(a.j0 + wa, b.j0 + wb)
-    return bool((a.mask[i0 - a.i0:i1 - a.i0, j0 - a.j0:j1 - a.j0] & b.mask[i0 - b.i0:i1 - b.i0, j0 - b.j0:j1 - b.j0]).any())
+    return bool(np.count_nonzero(a.mask[i0 - a.i0:i1 - a.i0, j0 - a.j0:j1 - a.j0] & b.mask[i0 - b.i0:i1 - b.i0, j0 - b.j0:j1 - b.j0]))
 
 
 def _cut(labels: np.ndarray | None, walk: np.ndarray, lost: Patch) -> tuple[np.ndarray | None, bool]:

@@ -85,8 +85,11 @@ def rect_corners(xy: npt.ArrayLike, wd: npt.ArrayLike, yaw: npt.ArrayLike) -> np
     yaw_a = np.asarray(yaw, dtype=float).reshape(-1)
     if len(yaw_a) != n:
         yaw_a = np.broadcast_to(yaw_a, (n,))
-    wd_a = np.asarray(wd, dtype=float)
-    if wd_a.ndim == 1:  # one size: the same arithmetic on scalars
+    if isinstance(wd, (tuple, list)) and len(wd) == 2:  # one size: the same arithmetic on floats
+        hw, hd = float(wd[0]) / 2.0, float(wd[1]) / 2.0
+        lx = np.array([[-hw], [hw], [hw], [-hw]])  # a sign flip is exact
+        ly = np.array([[-hd], [-hd], [hd], [hd]])
+    elif (wd_a := np.asarray(wd, dtype=float)).ndim == 1:
         lx = ((wd_a[0] / 2.0) * _SIGN_X)[:, None]  # -hw, hw, hw, -hw (a sign flip is exact)
         ly = ((wd_a[1] / 2.0) * _SIGN_Y)[:, None]
     else:
@@ -150,8 +153,8 @@ def sat_overlap(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     out = np.minimum(ox, oy)
     al_a, al_b = _aligned(a), _aligned(b)
     need = ~(al_a[:, None] & al_b[None]) & (out > -0.05)
-    if need.any():
-        i, j = np.nonzero(need)
+    if np.count_nonzero(need):
+        i, j = need.nonzero()
         out[i, j] = _sat_pairs(a[i], b[j])
     return out
 
@@ -207,8 +210,8 @@ def overlap_above(a: np.ndarray, b: np.ndarray, thr: float, inclusive: bool = Fa
         maybe &= pairs
     al_a, al_b = _aligned(a), _aligned(b)
     need = maybe & ~(al_a[:, None] & al_b[None]) & (bb > -0.05)
-    if need.any():
-        i, j = np.nonzero(need)
+    if np.count_nonzero(need):
+        i, j = need.nonzero()
         ov = _sat_pairs(a[i], b[j])
         out[i, j] = ov >= thr if inclusive else ov > thr
     return out
@@ -262,7 +265,7 @@ def _any_overlap(a: np.ndarray, alo: np.ndarray, ahi: np.ndarray, idx: np.ndarra
     near &= hix > nxlo
     near &= loy < nyhi
     near &= hiy > nylo
-    j, i = np.nonzero(near)
+    j, i = near.nonzero()
     if pairs is not None and len(i):
         keep = pairs(i, j)
         i, j = i[keep], j[keep]
@@ -274,7 +277,7 @@ def _any_overlap(a: np.ndarray, alo: np.ndarray, ahi: np.ndarray, idx: np.ndarra
     bb = np.minimum(ox, oy)
     t, inc = thr[j], inclusive[j]
     hit = np.where(inc, bb >= t, bb > t)
-    k = np.nonzero((bb >= t - _SAT_SLACK_M) & (bb > -0.05))[0]  # as overlap_above, the axes of these
+    k = ((bb >= t - _SAT_SLACK_M) & (bb > -0.05)).nonzero()[0]  # as overlap_above, the axes of these
     if k.size:
         ai = a[idx[i[k]]]
         rot = ~(_aligned(ai) & b_aligned[j[k]])
@@ -287,10 +290,12 @@ def _any_overlap(a: np.ndarray, alo: np.ndarray, ahi: np.ndarray, idx: np.ndarra
 
 
 def _per_pose(z: np.ndarray | float, n: int) -> np.ndarray:
-    """``z`` (one value, or one per pose) as (n,) float (``np.full`` is cheaper than ``np.broadcast_to``)."""
+    """``z`` (one value, or one per pose) as (n,) float (an array filled is cheaper than ``np.broadcast_to``)."""
     a = np.asarray(z, dtype=float)
     if a.ndim == 0:
-        return np.full(n, float(a))
+        out = np.empty(n)
+        out.fill(float(a))
+        return out
     return a if a.shape == (n,) else np.broadcast_to(a, (n,))
 
 
@@ -533,7 +538,7 @@ class RoomSpace:
             return []
         cmin, cmax = self._rows("near", self.placed, (np.zeros((0, 2)), np.zeros((0, 2))), _bounds_of)
         keep = (cmin[:, 0] <= hi[0]) & (cmin[:, 1] <= hi[1]) & (cmax[:, 0] >= lo[0]) & (cmax[:, 1] >= lo[1])
-        return [self.placed[i] for i in np.flatnonzero(keep)]
+        return [self.placed[i] for i in keep.nonzero()[0].tolist()]
 
     # ------------------------------------------------------------ validity
     def valid(
@@ -558,9 +563,9 @@ class RoomSpace:
             inner, outer = _box_in(lo, hi, self.buf_box, _BOX_EDGE_M, outer=not self._bounds_in_buf)
             if outer is not None:
                 ok &= outer  # a corner outside: out
-            idx = np.nonzero(ok & ~inner)[0]  # a corner a hair from the outline: as below
+            idx = (ok & ~inner).nonzero()[0]  # a corner a hair from the outline: as below
         else:
-            idx = np.nonzero(ok)[0]
+            idx = ok.nonzero()[0]
         if idx.size:
             c = corners[idx]
             pin = self._in_buf(c[..., 0].ravel(), c[..., 1].ravel()).reshape(-1, 4)
@@ -568,15 +573,15 @@ class RoomSpace:
             if self.convex:
                 inner = pin
             else:
-                sub = np.nonzero(pin)[0]
+                sub = pin.nonzero()[0]
                 inner = np.zeros(len(idx), dtype=bool)
                 if sub.size:
                     inner[sub] = ~self._vertex_inside(c[sub])
             ok[idx] = inner
-        idx = np.nonzero(ok)[0]
+        idx = ok.nonzero()[0]
         if idx.size:
             tall = z1 > VIEW_CLEAR_M
-            sightlines = bool(floor and not layer and tall[idx].any())
+            sightlines = bool(floor and not layer and np.count_nonzero(tall[idx]))
             tab = self._blockers(layer, doors, sightlines)
             zone, sight, bz0, bz1 = tab[_ZONE], tab[_SIGHT], tab[_Z0], tab[_Z1]
 
@@ -620,7 +625,7 @@ class RoomSpace:
         out, near = _box_in(pts, pts, self.buf_box, _BOX_EDGE_M)
         assert near is not None
         edge = near & ~out
-        if edge.any():
+        if np.count_nonzero(edge):
             out[edge] = shapely.contains_xy(self.buf, x[edge], y[edge])
         return out
 

@@ -214,7 +214,7 @@ def footprint_gaps(xy: np.ndarray, size: Sequence[float], yaw: np.ndarray, ref: 
     rq = round(ref.yaw / HALF_PI)
     if abs(ref.yaw - rq * HALF_PI) >= 1e-6:
         aligned[:] = False
-    if aligned.any():
+    if np.count_nonzero(aligned):
         odd = (quarter[aligned].astype(int) % 2) == 1
         hx = np.where(odd, size[1], size[0]) / 2
         hy = np.where(odd, size[0], size[1]) / 2
@@ -223,7 +223,7 @@ def footprint_gaps(xy: np.ndarray, size: Sequence[float], yaw: np.ndarray, ref: 
         dy = np.maximum(0.0, np.abs(xy[aligned, 1] - ref.position[1]) - hy - ry / 2)
         out[aligned] = np.hypot(dx, dy)
     rest = ~aligned
-    if rest.any():
+    if np.count_nonzero(rest):
         polys = shapely.polygons(rect_corners(xy[rest], size[:2], np.asarray(yaw)[rest]))
         out[rest] = shapely.distance(polys, footprint_polygon(ref.position, ref.size, ref.yaw))
     return out
