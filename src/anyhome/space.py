@@ -258,8 +258,9 @@ def _any_overlap(a: np.ndarray, alo: np.ndarray, ahi: np.ndarray, idx: np.ndarra
     tab : the rows tested against (:func:`_table`)
     pairs : (rows of ``idx``, rows of ``tab``) -> bool, the pairs that may overlap at all
     """
-    b, bmin, bmax, b_aligned, thr, inclusive = tab[:6]
-    nxlo, nxhi, nylo, nyhi = tab[_NEAR:]
+    b, f, flags = tab
+    bmin, bmax, thr, b_aligned, inclusive = f[:, _LO:_LO + 2], f[:, _HI:_HI + 2], f[:, _THR], flags[:, _ALIGNED], flags[:, _INCL]
+    nxlo, nxhi, nylo, nyhi = (f[:, k:k + 1] for k in range(_NEAR, _NEAR + 4))
     lox, loy, hix, hiy = alo[0, idx], alo[1, idx], ahi[0, idx], ahi[1, idx]
     near = lox < nxhi  # (m, k): a row of poses per footprint, contiguous
     near &= hix > nxlo
@@ -306,13 +307,6 @@ def _bounds_t(c: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
             np.maximum(np.maximum(t[:, 0], t[:, 1]), np.maximum(t[:, 2], t[:, 3])))
 
 
-def _bounds_of(objs: list[Placed]) -> tuple[np.ndarray, ...]:
-    """Lower and upper bounds (m, 2) of the objects' footprints."""
-    if len(objs) == 1:
-        return objs[0].rows()[1:3]
-    return tuple(np.concatenate(col) for col in zip(*(p.rows()[1:3] for p in objs), strict=True))
-
-
 def _blocker_rows(objs: list[Placed]) -> tuple[np.ndarray, ...]:
     """Rows of placed objects as :meth:`RoomSpace._blockers` stacks them."""
     if len(objs) == 1:  # most often: the object placed last
@@ -320,34 +314,47 @@ def _blocker_rows(objs: list[Placed]) -> tuple[np.ndarray, ...]:
     return tuple(np.concatenate(col) for col in zip(*(p.rows() for p in objs), strict=True))
 
 
-_ZONE, _SIGHT, _Z0, _Z1, _NEAR = 6, 7, 8, 9, 10
-"""Columns of a table of rows (:func:`_table`): door zone, sightline, bottom, top, and from
-``_NEAR`` on the bounds (x lower, x upper, y lower, y upper) a pose's bounds must cross to
-come near enough to overlap."""
+_LO, _HI, _THR, _Z0, _Z1, _NEAR = 0, 2, 4, 5, 6, 7
+"""Float columns of a table of rows (:func:`_table`): lower bounds (x, y), upper bounds
+(x, y), the overlap allowed, bottom, top, and from ``_NEAR`` on the bounds (x lower, x upper,
+y lower, y upper) a pose's bounds must cross to come near enough to overlap."""
+_ALIGNED, _INCL, _ZONE, _SIGHT = 0, 1, 2, 3
+"""Flag columns of a table of rows: square to the axes, the overlap allowed may be reached,
+a door zone, a sightline."""
 
 
-def _table(c: np.ndarray, thr: float, inclusive: bool, kind: int, z0: np.ndarray, z1: np.ndarray
-           ) -> tuple[np.ndarray, ...]:
+def _table(c: np.ndarray, thr: float, inclusive: bool, kind: int, z0: np.ndarray | float, z1: np.ndarray | float
+           ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Rows of what a pose may not overlap (read-only), one per footprint of ``c`` (m, 4, 2):
-    corners, lower and upper bounds (m, 2), square to the axes (m,) bool, the overlap ``thr``
-    each may have, whether it may have that much (``inclusive``), whether it is a door zone,
-    a sightline (``kind``), its bottom and top ``z0``, ``z1`` (m,) (NaN: at any height), then
-    the bounds a pose must cross to come within ``thr`` (:data:`_NEAR`, (m, 1) each)."""
+    the corners, floats (m, 11) (:data:`_LO` ...: bounds, the overlap ``thr`` each may have,
+    bottom ``z0`` and top ``z1``, NaN: at any height, the bounds a pose must cross to come
+    within ``thr``) and flags (m, 4) (:data:`_ALIGNED` ...: square to the axes, ``inclusive``:
+    it may have that much, a door zone or a sightline by ``kind``)."""
     m = len(c)
     lo, hi = _cmin(c), _cmax(c)
-    t = np.full(m, thr)
-    g = _PAIR_SLACK_M - t  # a pair overlapping by thr along x (y) has its bounds this close
-    out = (c, lo, hi, _aligned(c), t, np.full(m, inclusive), np.full(m, kind == _ZONE_KIND),
-           np.full(m, kind == _SIGHTLINE), z0, z1, (lo[:, 0] - g)[:, None], (hi[:, 0] + g)[:, None],
-           (lo[:, 1] - g)[:, None], (hi[:, 1] + g)[:, None])
-    for a in out[1:]:
-        a.flags.writeable = False
-    return out
+    g = _PAIR_SLACK_M - thr  # a pair overlapping by thr along x (y) has its bounds this close
+    f = np.empty((m, 11))
+    f[:, _LO:_LO + 2] = lo
+    f[:, _HI:_HI + 2] = hi
+    f[:, _THR] = thr
+    f[:, _Z0] = z0
+    f[:, _Z1] = z1
+    f[:, _NEAR] = lo[:, 0] - g
+    f[:, _NEAR + 1] = hi[:, 0] + g
+    f[:, _NEAR + 2] = lo[:, 1] - g
+    f[:, _NEAR + 3] = hi[:, 1] + g
+    flags = np.empty((m, 4), dtype=bool)
+    flags[:, _ALIGNED] = _aligned(c)
+    flags[:, _INCL] = inclusive
+    flags[:, _ZONE] = kind == _ZONE_KIND
+    flags[:, _SIGHT] = kind == _SIGHTLINE
+    f.flags.writeable = flags.flags.writeable = False
+    return c, f, flags
 
 
 def _own_rows(p: Placed) -> tuple[np.ndarray, ...]:
     """The row of one placed object as :meth:`RoomSpace._blockers` stacks it (read-only)."""
-    return _table(p.corners[None], EPS_COLLIDE_M, False, _PLACED, np.array([p.z0]), np.array([p.z1]))
+    return _table(p.corners[None], EPS_COLLIDE_M, False, _PLACED, p.z0, p.z1)
 
 
 def _cmin(c: np.ndarray) -> np.ndarray:
@@ -362,6 +369,10 @@ def _cmax(c: np.ndarray) -> np.ndarray:
 def _aligned(c: np.ndarray) -> np.ndarray:
     e = c[:, 1] - c[:, 0]
     return (np.abs(e[:, 0]) < 1e-9) | (np.abs(e[:, 1]) < 1e-9)
+
+
+_NO_ROWS = _table(np.zeros((0, 4, 2)), 0.0, False, _PLACED, 0.0, 0.0)
+"""A table of no rows."""
 
 
 def _sat_pairs(a: np.ndarray, b: np.ndarray) -> np.ndarray:
@@ -483,8 +494,7 @@ class RoomSpace:
         self.door_zones = np.asarray(zones).reshape(-1, 4, 2)
         self.zone_lo, self.zone_hi = self.door_zones.min(1), self.door_zones.max(1)
         self.zone_aligned = _aligned(self.door_zones)
-        nan = np.full(len(self.door_zones), np.nan)
-        self._zone_rows = _table(self.door_zones, -DOOR_MARGIN_M, True, _ZONE_KIND, nan, nan)
+        self._zone_rows = _table(self.door_zones, -DOOR_MARGIN_M, True, _ZONE_KIND, np.nan, np.nan)
         """The door zones as :meth:`_blockers` stacks them, first."""
         self._kc: tuple[list[np.ndarray], tuple[np.ndarray, ...]] = ([], ())
         """The sightlines whose rows :meth:`_blockers` made last, and those rows."""
@@ -525,8 +535,9 @@ class RoomSpace:
         n, k = min(len(held), len(objs)), 0
         while k < n and held[k] is objs[k]:
             k += 1
-        top = len(head[0]) + k
-        tab = tuple(a[:top] for a in tab)
+        if k < len(held):  # objects taken away
+            top = len(head[0]) + k
+            tab = tuple(a[:top] for a in tab)
         if k < len(objs):
             tab = tuple(np.concatenate([a, r]) for a, r in zip(tab, make(objs[k:]), strict=True))
         self._tables[key] = (list(objs), tab)
@@ -536,7 +547,8 @@ class RoomSpace:
         """Placed objects whose footprint's bounding box meets the box ``lo``-``hi`` (2,)."""
         if not self.placed:
             return []
-        cmin, cmax = self._rows("near", self.placed, (np.zeros((0, 2)), np.zeros((0, 2))), _bounds_of)
+        f = self._rows("near", self.placed, _NO_ROWS, _blocker_rows)[1]
+        cmin, cmax = f[:, _LO:_LO + 2], f[:, _HI:_HI + 2]
         keep = (cmin[:, 0] <= hi[0]) & (cmin[:, 1] <= hi[1]) & (cmax[:, 0] >= lo[0]) & (cmax[:, 1] >= lo[1])
         return [self.placed[i] for i in keep.nonzero()[0].tolist()]
 
@@ -583,7 +595,7 @@ class RoomSpace:
             tall = z1 > VIEW_CLEAR_M
             sightlines = bool(floor and not layer and np.count_nonzero(tall[idx]))
             tab = self._blockers(layer, doors, sightlines)
-            zone, sight, bz0, bz1 = tab[_ZONE], tab[_SIGHT], tab[_Z0], tab[_Z1]
+            zone, sight, bz0, bz1 = tab[2][:, _ZONE], tab[2][:, _SIGHT], tab[1][:, _Z0], tab[1][:, _Z1]
 
             def may_meet(i: np.ndarray, j: np.ndarray) -> np.ndarray:
                 """Door zones meet any pose, sightlines tall ones, objects those overlapping them in z
@@ -606,9 +618,7 @@ class RoomSpace:
             return got
         held, more = self._kc
         if len(held) != len(self.keep_clear) or not all(map(operator.is_, held, self.keep_clear)):
-            kc = np.stack(self.keep_clear)
-            nan = np.full(len(kc), np.nan)
-            more = _table(kc, EPS_COLLIDE_M, False, _SIGHTLINE, nan, nan)
+            more = _table(np.stack(self.keep_clear), EPS_COLLIDE_M, False, _SIGHTLINE, np.nan, np.nan)
             self._kc = (list(self.keep_clear), more)
         j = self._joined
         if j is None or j[1] is not more or len(j[0]) != len(got) or not all(map(operator.is_, j[0], got)):
