@@ -305,24 +305,32 @@ class NavGrid:
     def add(self, obs: Obstacle) -> None:
         """Block ``obs`` (a committed object)."""
         self.obstacles.append(obs)
-        sh = obs.shadow
+        sh, sa = obs.shadow, obs.reach_shadow
+        jobs = []
         lost = self.walk[sh.window] & sh.mask
         if np.count_nonzero(lost):
             self.walk[sh.window] &= ~sh.mask
-            self._labels, split = _cut(self._labels, self.walk, Patch(sh.i0, sh.j0, lost))
+            jobs.append((self._labels, self.walk, Patch(sh.i0, sh.j0, lost)))
+        lost_a = None
+        if self.walk_a is not None and sa is not None:
+            lost_a = self.walk_a[sa.window] & sa.mask
+            if np.count_nonzero(lost_a):
+                self.walk_a[sa.window] &= ~sa.mask
+                jobs.append((self._labels_a, self.walk_a, Patch(sa.i0, sa.j0, lost_a)))
+            else:
+                lost_a = None
+        got = _cuts(jobs)
+        if jobs and jobs[0][1] is self.walk:
+            self._labels, split = got[0]
             if split or not self._door_by_near or np.count_nonzero(self._door_mask[sh.window] & lost):
                 self._door_stale = self._door_a_stale = True
             if self.walk_a is None:
-                self._forget(Patch(sh.i0, sh.j0, lost), split)
-        sa = obs.reach_shadow
-        if self.walk_a is not None and sa is not None:
-            lost = self.walk_a[sa.window] & sa.mask
-            if np.count_nonzero(lost):
-                self.walk_a[sa.window] &= ~sa.mask
-                self._labels_a, split = _cut(self._labels_a, self.walk_a, Patch(sa.i0, sa.j0, lost))
-                if split or np.count_nonzero(self._door_mask[sa.window] & lost):
-                    self._door_a_stale = True
-                self._forget(Patch(sa.i0, sa.j0, lost), split)
+                self._forget(jobs[0][2], split)
+        if lost_a is not None and sa is not None:
+            self._labels_a, split = got[-1]
+            if split or np.count_nonzero(self._door_mask[sa.window] & lost_a):
+                self._door_a_stale = True
+            self._forget(jobs[-1][2], split)
 
     def _forget(self, lost: Patch, split: bool) -> None:
         """Objects with a reach cell among the cells ``lost`` are no longer known to be reached
@@ -550,22 +558,55 @@ def _cut(labels: np.ndarray | None, walk: np.ndarray, lost: Patch) -> tuple[np.n
     it gets a label of its own. When the rest of the ring that was in one component lies
     in one component of the window, every path that crossed the lost cells goes round them
     there, so the other components are the same as before less the lost cells."""
-    if labels is None:
-        return None, True
+    return _cuts([(labels, walk, lost)])[0]
+
+
+def _cuts(jobs: list[tuple[np.ndarray | None, np.ndarray, Patch]]) -> list[tuple[np.ndarray | None, bool]]:
+    """:func:`_cut` of each (labels, walk, lost) of ``jobs`` (two at most), their windows
+    labelled in one call: stacked with an empty row between them, the second's components
+    are its own, numbered on from the first's."""
+    out: list[tuple[np.ndarray | None, bool]] = [(None, True)] * len(jobs)
+    todo = [(k, labels, lost, walk[w], w) for k, (labels, walk, lost) in enumerate(jobs)
+            if labels is not None for w in [_window(walk, lost)]]
+    if len(todo) == 1:
+        k, labels, lost, win, w = todo[0]
+        lab, n = ndimage.label(win, structure=_CROSS)
+        out[k] = _settle(labels, lab, n, lost, w)
+    elif todo:
+        (ka, labels_a, lost_a, win_a, wa), (kb, labels_b, lost_b, win_b, wb) = todo
+        (ha, wda), (hb, wdb) = win_a.shape, win_b.shape
+        both = np.zeros((ha + 1 + hb, max(wda, wdb)), dtype=bool)
+        both[:ha, :wda] = win_a
+        both[ha + 1:, :wdb] = win_b
+        lab, n = ndimage.label(both, structure=_CROSS)  # the first's components first (scan order)
+        top = lab[:ha, :wda]
+        n_a = int(top.max())
+        out[ka] = _settle(labels_a, top, n_a, lost_a, wa)
+        out[kb] = _settle(labels_b, lab[ha + 1:, :wdb], n - n_a, lost_b, wb)
+    return out
+
+
+def _window(walk: np.ndarray, lost: Patch) -> tuple[slice, slice]:
+    """The window :func:`_cut` labels: ``lost``'s grown by :data:`LABEL_MARGIN_CELLS`, on the raster."""
     m = LABEL_MARGIN_CELLS
     h, w = lost.mask.shape
     ny, nx = walk.shape
-    i0, j0 = max(0, lost.i0 - m), max(0, lost.j0 - m)
-    i1, j1 = min(ny, lost.i0 + h + m), min(nx, lost.j0 + w + m)
-    lab, n = ndimage.label(walk[i0:i1, j0:j1], structure=_CROSS)
-    pockets = _pockets(labels[i0:i1, j0:j1], lab, Patch(lost.i0 - i0, lost.j0 - j0, lost.mask)) if n > 1 else []
+    return (slice(max(0, lost.i0 - m), min(ny, lost.i0 + h + m)),
+            slice(max(0, lost.j0 - m), min(nx, lost.j0 + w + m)))
+
+
+def _settle(labels: np.ndarray, lab: np.ndarray, n: int, lost: Patch, w: tuple[slice, slice]
+            ) -> tuple[np.ndarray | None, bool]:
+    """:func:`_cut`'s answer from the ``n`` components ``lab`` of its window ``w``."""
+    i0, j0 = w[0].start, w[1].start
+    pockets = _pockets(labels[w], lab, Patch(lost.i0 - i0, lost.j0 - j0, lost.mask)) if n > 1 else []
     if pockets is None:
         return None, True
     if not pockets:
         return labels, False  # the same components less the lost cells, which walk no longer holds
     out = labels.copy()
     top = int(out.max())
-    win = out[i0:i1, j0:j1]
+    win = out[w]
     for k, g in enumerate(pockets, 1):
         win[lab == g] = top + k
     return out, True

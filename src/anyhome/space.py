@@ -127,7 +127,7 @@ _SIGN_Y = np.array([-1.0, -1.0, 1.0, 1.0])
 
 def _axes(c: np.ndarray) -> np.ndarray:
     e = np.stack([c[:, 1] - c[:, 0], c[:, 3] - c[:, 0]], 1)
-    return e / np.maximum(np.linalg.norm(e, axis=-1, keepdims=True), 1e-12)
+    return e / np.maximum(np.sqrt(np.add.reduce(e * e, axis=-1, keepdims=True)), 1e-12)  # as np.linalg.norm
 
 
 def sat_overlap(a: np.ndarray, b: np.ndarray) -> np.ndarray:
@@ -652,8 +652,8 @@ class RoomSpace:
     def _vertex_inside(self, c: np.ndarray) -> np.ndarray:
         centre = c.mean(1)
         ex, ey = c[:, 1] - c[:, 0], c[:, 3] - c[:, 0]
-        hw = np.linalg.norm(ex, axis=1) / 2
-        hd = np.linalg.norm(ey, axis=1) / 2
+        hw = np.sqrt(np.add.reduce(ex * ex, axis=1)) / 2  # as np.linalg.norm
+        hd = np.sqrt(np.add.reduce(ey * ey, axis=1)) / 2
         ex = ex / (2 * hw[:, None])
         ey = ey / (2 * hd[:, None])
         d = self.vertices[None] - centre[:, None]
