@@ -80,6 +80,13 @@ class Cands:
             np.concatenate([self.pref, other.pref]),
         )
 
+    @staticmethod
+    def join(parts: list[Cands]) -> Cands:
+        """The candidates of ``parts`` in turn, as adding them to :meth:`empty` one by one does."""
+        every = [Cands.empty(), *parts]
+        return Cands(np.concatenate([c.xy for c in every]), np.concatenate([c.yaw for c in every]),
+                     np.concatenate([c.z for c in every]), np.concatenate([c.pref for c in every]))
+
     def shifted_pref(self, delta: float) -> Cands:
         return Cands(self.xy, self.yaw, self.z, self.pref + delta)
 
