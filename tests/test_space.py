@@ -119,15 +119,34 @@ def test_rect_corners_of_one_size_or_many_or_one_box_are_the_same_and_match_the_
 
 
 def test_a_placed_objects_table_row_is_made_once_and_stacks_as_the_objects_do():
-    from anyhome.space import _aligned, _blocker_rows, _bounds_of
+    from anyhome.space import (
+        _ALIGNED,
+        _HI,
+        _INCL,
+        _LO,
+        _NEAR,
+        _PAIR_SLACK_M,
+        _SIGHT,
+        _THR,
+        _Z0,
+        _Z1,
+        _ZONE,
+        EPS_COLLIDE_M,
+        _aligned,
+        _blocker_rows,
+    )
 
     a = _placed(rect_corners([(1.0, 1.0)], (0.5, 0.8), [0.0])[0], 0.0, 1.0)
     b = _placed(rect_corners([(3.0, 2.0)], (0.5, 0.8), [0.4])[0], 0.5, 1.5)
     assert a.rows() is a.rows()
     c = np.stack([a.corners, b.corners])
-    rows = _blocker_rows([a, b])
-    assert np.array_equal(rows[0], c) and np.array_equal(rows[1], c.min(1)) and np.array_equal(rows[2], c.max(1))
-    assert np.array_equal(rows[3], _aligned(c)) and rows[3].tolist() == [True, False]
-    assert rows[7].tolist() == [0.0, 0.5] and rows[8].tolist() == [1.0, 1.5]
-    assert all(np.array_equal(x, y) for x, y in zip(_bounds_of([a, b]), rows[1:3], strict=True))
-    assert all(np.array_equal(x, y[:1]) for x, y in zip(_blocker_rows([a]), rows, strict=True))
+    corners, f, flags = _blocker_rows([a, b])
+    assert np.array_equal(corners, c)
+    assert np.array_equal(f[:, _LO:_LO + 2], c.min(1)) and np.array_equal(f[:, _HI:_HI + 2], c.max(1))
+    assert np.array_equal(flags[:, _ALIGNED], _aligned(c)) and flags[:, _ALIGNED].tolist() == [True, False]
+    assert f[:, _Z0].tolist() == [0.0, 0.5] and f[:, _Z1].tolist() == [1.0, 1.5]
+    assert f[:, _THR].tolist() == [EPS_COLLIDE_M] * 2 and not flags[:, [_INCL, _ZONE, _SIGHT]].any()
+    g = _PAIR_SLACK_M - EPS_COLLIDE_M  # bounds this close overlap by the collision tolerance, less the slack
+    assert np.array_equal(f[:, _NEAR:], np.stack([c.min(1)[:, 0] - g, c.max(1)[:, 0] + g,
+                                                  c.min(1)[:, 1] - g, c.max(1)[:, 1] + g], 1))
+    assert all(np.array_equal(x, y[:1]) for x, y in zip(_blocker_rows([a]), (corners, f, flags), strict=True))

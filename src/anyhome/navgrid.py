@@ -238,9 +238,9 @@ class NavGrid:
         if i0 >= i1 or j0 >= j1:
             return Patch(0, 0, np.zeros((0, 0), dtype=bool))
         mx, my = (ax + bx + cx + dx) / 4, (ay + by + cy + dy) / 4  # as corners.mean(0) sums them
-        ex, ey = corners[1] - corners[0], corners[3] - corners[0]
-        hw, hd = math.sqrt(ex.dot(ex)) / 2, math.sqrt(ey.dot(ey)) / 2  # as np.linalg.norm
-        (ex0, ex1), (ey0, ey1) = (ex / (2 * hw)).tolist(), (ey / (2 * hd)).tolist()
+        ex0, ex1, ey0, ey1 = bx - ax, by - ay, dx - ax, dy - ay  # the edges, on floats as numpy has them
+        hw, hd = math.sqrt(ex0 * ex0 + ex1 * ex1) / 2, math.sqrt(ey0 * ey0 + ey1 * ey1) / 2  # as np.linalg.norm
+        ex0, ex1, ey0, ey1 = ex0 / (2 * hw), ex1 / (2 * hw), ey0 / (2 * hd), ey1 / (2 * hd)
         px = self.xs[j0:j1] - mx
         py = self.ys[i0:i1] - my
         if ex1 == 0.0 and ey0 == 0.0:  # square to the raster: a product of a row and a column
@@ -275,14 +275,14 @@ class NavGrid:
     def _shadow(self, cells: Patch, disc: np.ndarray, radius: float) -> Patch:
         """``cells`` dilated by ``disc`` (the cells within ``radius``), clipped to the raster;
         a full block of cells (an object square to the raster) by the distance to it."""
-        if self.radius is None or not cells.mask.any():
+        if self.radius is None or not np.count_nonzero(cells.mask):
             return Patch(0, 0, np.zeros((0, 0), dtype=bool))
         k = disc.shape[0] // 2
         h, w = cells.mask.shape
         ny, nx = self.base_free.shape
         i0, j0 = max(0, cells.i0 - k), max(0, cells.j0 - k)
         i1, j1 = min(ny, cells.i0 + h + k), min(nx, cells.j0 + w + k)
-        if cells.mask.all():
+        if np.count_nonzero(cells.mask) == cells.mask.size:
             block = self._blocks.get((h, w, k, radius))
             if block is None:
                 d = np.arange(-k, max(h, w) + k, dtype=float)  # rows (columns) from the block's first
@@ -305,32 +305,41 @@ class NavGrid:
     def add(self, obs: Obstacle) -> None:
         """Block ``obs`` (a committed object)."""
         self.obstacles.append(obs)
-        sh = obs.shadow
+        sh, sa = obs.shadow, obs.reach_shadow
+        jobs = []
         lost = self.walk[sh.window] & sh.mask
-        if lost.any():
+        if np.count_nonzero(lost):
             self.walk[sh.window] &= ~sh.mask
-            self._labels, split = _cut(self._labels, self.walk, Patch(sh.i0, sh.j0, lost))
-            if split or not self._door_by_near or (self._door_mask[sh.window] & lost).any():
+            jobs.append((self._labels, self.walk, Patch(sh.i0, sh.j0, lost)))
+        lost_a = None
+        if self.walk_a is not None and sa is not None:
+            lost_a = self.walk_a[sa.window] & sa.mask
+            if np.count_nonzero(lost_a):
+                self.walk_a[sa.window] &= ~sa.mask
+                jobs.append((self._labels_a, self.walk_a, Patch(sa.i0, sa.j0, lost_a)))
+            else:
+                lost_a = None
+        got = _cuts(jobs)
+        if jobs and jobs[0][1] is self.walk:
+            self._labels, split = got[0]
+            if split or not self._door_by_near or np.count_nonzero(self._door_mask[sh.window] & lost):
                 self._door_stale = self._door_a_stale = True
             if self.walk_a is None:
-                self._forget(sh, split)
-        sa = obs.reach_shadow
-        if self.walk_a is not None and sa is not None:
-            lost = self.walk_a[sa.window] & sa.mask
-            if lost.any():
-                self.walk_a[sa.window] &= ~sa.mask
-                self._labels_a, split = _cut(self._labels_a, self.walk_a, Patch(sa.i0, sa.j0, lost))
-                if split or (self._door_mask[sa.window] & lost).any():
-                    self._door_a_stale = True
-                self._forget(sa, split)
+                self._forget(jobs[0][2], split)
+        if lost_a is not None and sa is not None:
+            self._labels_a, split = got[-1]
+            if split or np.count_nonzero(self._door_mask[sa.window] & lost_a):
+                self._door_a_stale = True
+            self._forget(jobs[-1][2], split)
 
-    def _forget(self, p: Patch, split: bool) -> None:
-        """Objects reached from cells in ``p``'s window are no longer known to be reached
-        (``split``: a component split, none is)."""
+    def _forget(self, lost: Patch, split: bool) -> None:
+        """Objects with a reach cell among the cells ``lost`` are no longer known to be reached
+        (``split``: a component split, none is); the others keep a reach cell in the same
+        component (:func:`_cut`)."""
         if split:
             self._known = set()
         elif self._known:
-            self._known = {o for o in self._known if o.reach is None or not _meet(o.reach, p)}
+            self._known = {o for o in self._known if o.reach is None or not _overlap(o.reach, lost)}
 
     def set_blocked(self, placed: list[Placed]) -> None:
         """Start again from the empty room with the obstacles of ``placed``."""
@@ -389,14 +398,14 @@ class NavGrid:
         if len(todo) == 1:  # most often the object placed last alone
             o = todo[0]
             lab = _at(labels, walk, self._reach_cells(o))
-            if len(lab) and bool(np.any(_in(lab, door))):
+            if np.count_nonzero(_in(lab, door)):
                 known.add(o)
                 return []
             return [o]
         cells = [self._reach_cells(o) for o in todo]
         n = np.array([len(c) for c in cells])
         reached = np.zeros(len(todo), dtype=bool)
-        some = np.flatnonzero(n)  # an obstacle with no reach cells is not reached
+        some = n.nonzero()[0]  # an obstacle with no reach cells is not reached
         if some.size:
             lab = _at(labels, walk, np.concatenate([cells[i] for i in some]))
             hit = _in(lab, door)
@@ -420,27 +429,28 @@ class NavGrid:
         if door is None:
             return False
         labels, walk, door = self._reach_labels(door)
-        cells = self._reach_cells(obs)
-        sh = obs.reach_shadow if self.walk_a is not None else obs.shadow
-        lab = _at(labels, walk, cells)
-        on = _in(lab, door)
-        if sh is not None and sh.mask.size and on.any():
-            rows, cols = np.divmod(cells[on], walk.shape[1])
-            h, w = sh.mask.shape
-            r, c = rows - sh.i0, cols - sh.j0
-            inside = (r >= 0) & (r < h) & (c >= 0) & (c < w)
-            shaded = np.zeros(len(r), dtype=bool)
-            shaded[inside] = sh.mask[r[inside], c[inside]]
-            return bool(np.all(shaded))
-        return not on.any()
+        lab = _at(labels, walk, self._reach_cells(obs))  # its reach cells outside its own shadow
+        return not np.count_nonzero(_in(lab, door))
 
     def _reach_cells(self, o: Obstacle) -> np.ndarray:
-        """Flat raster indices of the cells ``o`` is reached from (cached per obstacle)."""
+        """Flat raster indices of the cells ``o`` is reached from (cached per obstacle), less
+        those of its own shadow on the raster it is reached on: these are never walkable while
+        it stands."""
         got = self._cells.get(o)
         if got is None:
             assert o.reach is not None
-            rows, cols = np.nonzero(o.reach.mask)
-            got = (rows + o.reach.i0) * self.walk.shape[1] + cols + o.reach.j0
+            r = o.reach
+            sh = o.reach_shadow if self.walk_a is not None else o.shadow
+            mask = r.mask
+            if sh is not None and sh.mask.size:
+                (h, w), (hs, ws) = r.mask.shape, sh.mask.shape
+                i0, i1 = max(r.i0, sh.i0), min(r.i0 + h, sh.i0 + hs)
+                j0, j1 = max(r.j0, sh.j0), min(r.j0 + w, sh.j0 + ws)
+                if i0 < i1 and j0 < j1:
+                    mask = mask.copy()
+                    mask[i0 - r.i0:i1 - r.i0, j0 - r.j0:j1 - r.j0] &= ~sh.mask[i0 - sh.i0:i1 - sh.i0, j0 - sh.j0:j1 - sh.j0]
+            rows, cols = np.nonzero(mask)
+            got = (rows + r.i0) * self.walk.shape[1] + cols + r.j0
             self._cells[o] = got
         return got
 
@@ -526,6 +536,16 @@ def _meet(a: Patch, b: Patch) -> bool:
     return a.i0 < b.i0 + hb and b.i0 < a.i0 + ha and a.j0 < b.j0 + wb and b.j0 < a.j0 + wa
 
 
+def _overlap(a: Patch, b: Patch) -> bool:
+    """Whether ``a`` and ``b`` share a cell."""
+    if not _meet(a, b):
+        return False
+    (ha, wa), (hb, wb) = a.mask.shape, b.mask.shape
+    i0, i1 = max(a.i0, b.i0), min(a.i0 + ha, b.i0 + hb)
+    j0, j1 = max(a.j0, b.j0), min(a.j0 + wa, b.j0 + wb)
+    return bool(np.count_nonzero(a.mask[i0 - a.i0:i1 - a.i0, j0 - a.j0:j1 - a.j0] & b.mask[i0 - b.i0:i1 - b.i0, j0 - b.j0:j1 - b.j0]))
+
+
 def _cut(labels: np.ndarray | None, walk: np.ndarray, lost: Patch) -> tuple[np.ndarray | None, bool]:
     """``labels``, the components of the walkable cells before the cells ``lost`` were taken
     away from ``walk`` (already without them; labels are read where ``walk`` holds cells
@@ -538,22 +558,55 @@ def _cut(labels: np.ndarray | None, walk: np.ndarray, lost: Patch) -> tuple[np.n
     it gets a label of its own. When the rest of the ring that was in one component lies
     in one component of the window, every path that crossed the lost cells goes round them
     there, so the other components are the same as before less the lost cells."""
-    if labels is None:
-        return None, True
+    return _cuts([(labels, walk, lost)])[0]
+
+
+def _cuts(jobs: list[tuple[np.ndarray | None, np.ndarray, Patch]]) -> list[tuple[np.ndarray | None, bool]]:
+    """:func:`_cut` of each (labels, walk, lost) of ``jobs`` (two at most), their windows
+    labelled in one call: stacked with an empty row between them, the second's components
+    are its own, numbered on from the first's."""
+    out: list[tuple[np.ndarray | None, bool]] = [(None, True)] * len(jobs)
+    todo = [(k, labels, lost, walk[w], w) for k, (labels, walk, lost) in enumerate(jobs)
+            if labels is not None for w in [_window(walk, lost)]]
+    if len(todo) == 1:
+        k, labels, lost, win, w = todo[0]
+        lab, n = ndimage.label(win, structure=_CROSS)
+        out[k] = _settle(labels, lab, n, lost, w)
+    elif todo:
+        (ka, labels_a, lost_a, win_a, wa), (kb, labels_b, lost_b, win_b, wb) = todo
+        (ha, wda), (hb, wdb) = win_a.shape, win_b.shape
+        both = np.zeros((ha + 1 + hb, max(wda, wdb)), dtype=bool)
+        both[:ha, :wda] = win_a
+        both[ha + 1:, :wdb] = win_b
+        lab, n = ndimage.label(both, structure=_CROSS)  # the first's components first (scan order)
+        top = lab[:ha, :wda]
+        n_a = int(top.max())
+        out[ka] = _settle(labels_a, top, n_a, lost_a, wa)
+        out[kb] = _settle(labels_b, lab[ha + 1:, :wdb], n - n_a, lost_b, wb)
+    return out
+
+
+def _window(walk: np.ndarray, lost: Patch) -> tuple[slice, slice]:
+    """The window :func:`_cut` labels: ``lost``'s grown by :data:`LABEL_MARGIN_CELLS`, on the raster."""
     m = LABEL_MARGIN_CELLS
     h, w = lost.mask.shape
     ny, nx = walk.shape
-    i0, j0 = max(0, lost.i0 - m), max(0, lost.j0 - m)
-    i1, j1 = min(ny, lost.i0 + h + m), min(nx, lost.j0 + w + m)
-    lab, n = ndimage.label(walk[i0:i1, j0:j1], structure=_CROSS)
-    pockets = _pockets(labels[i0:i1, j0:j1], lab, Patch(lost.i0 - i0, lost.j0 - j0, lost.mask)) if n > 1 else []
+    return (slice(max(0, lost.i0 - m), min(ny, lost.i0 + h + m)),
+            slice(max(0, lost.j0 - m), min(nx, lost.j0 + w + m)))
+
+
+def _settle(labels: np.ndarray, lab: np.ndarray, n: int, lost: Patch, w: tuple[slice, slice]
+            ) -> tuple[np.ndarray | None, bool]:
+    """:func:`_cut`'s answer from the ``n`` components ``lab`` of its window ``w``."""
+    i0, j0 = w[0].start, w[1].start
+    pockets = _pockets(labels[w], lab, Patch(lost.i0 - i0, lost.j0 - j0, lost.mask)) if n > 1 else []
     if pockets is None:
         return None, True
     if not pockets:
         return labels, False  # the same components less the lost cells, which walk no longer holds
     out = labels.copy()
     top = int(out.max())
-    win = out[i0:i1, j0:j1]
+    win = out[w]
     for k, g in enumerate(pockets, 1):
         win[lab == g] = top + k
     return out, True

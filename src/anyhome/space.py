@@ -85,8 +85,11 @@ def rect_corners(xy: npt.ArrayLike, wd: npt.ArrayLike, yaw: npt.ArrayLike) -> np
     yaw_a = np.asarray(yaw, dtype=float).reshape(-1)
     if len(yaw_a) != n:
         yaw_a = np.broadcast_to(yaw_a, (n,))
-    wd_a = np.asarray(wd, dtype=float)
-    if wd_a.ndim == 1:  # one size: the same arithmetic on scalars
+    if isinstance(wd, (tuple, list)) and len(wd) == 2:  # one size: the same arithmetic on floats
+        hw, hd = float(wd[0]) / 2.0, float(wd[1]) / 2.0
+        lx = np.array([[-hw], [hw], [hw], [-hw]])  # a sign flip is exact
+        ly = np.array([[-hd], [-hd], [hd], [hd]])
+    elif (wd_a := np.asarray(wd, dtype=float)).ndim == 1:
         lx = ((wd_a[0] / 2.0) * _SIGN_X)[:, None]  # -hw, hw, hw, -hw (a sign flip is exact)
         ly = ((wd_a[1] / 2.0) * _SIGN_Y)[:, None]
     else:
@@ -124,7 +127,7 @@ _SIGN_Y = np.array([-1.0, -1.0, 1.0, 1.0])
 
 def _axes(c: np.ndarray) -> np.ndarray:
     e = np.stack([c[:, 1] - c[:, 0], c[:, 3] - c[:, 0]], 1)
-    return e / np.maximum(np.linalg.norm(e, axis=-1, keepdims=True), 1e-12)
+    return e / np.maximum(np.sqrt(np.add.reduce(e * e, axis=-1, keepdims=True)), 1e-12)  # as np.linalg.norm
 
 
 def sat_overlap(a: np.ndarray, b: np.ndarray) -> np.ndarray:
@@ -150,8 +153,8 @@ def sat_overlap(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     out = np.minimum(ox, oy)
     al_a, al_b = _aligned(a), _aligned(b)
     need = ~(al_a[:, None] & al_b[None]) & (out > -0.05)
-    if need.any():
-        i, j = np.nonzero(need)
+    if np.count_nonzero(need):
+        i, j = need.nonzero()
         out[i, j] = _sat_pairs(a[i], b[j])
     return out
 
@@ -207,24 +210,33 @@ def overlap_above(a: np.ndarray, b: np.ndarray, thr: float, inclusive: bool = Fa
         maybe &= pairs
     al_a, al_b = _aligned(a), _aligned(b)
     need = maybe & ~(al_a[:, None] & al_b[None]) & (bb > -0.05)
-    if need.any():
-        i, j = np.nonzero(need)
+    if np.count_nonzero(need):
+        i, j = need.nonzero()
         ov = _sat_pairs(a[i], b[j])
         out[i, j] = ov >= thr if inclusive else ov > thr
     return out
 
 
-def _box_in(lo: np.ndarray, hi: np.ndarray, box: tuple[float, float, float, float], e: float
-            ) -> tuple[np.ndarray, np.ndarray]:
-    """Whether all corners of footprints of bounds ``lo``, ``hi`` (2, n) lie in ``box`` (x0,
-    y0, x1, y1) shrunk by ``e``, and whether they lie in it grown by ``e`` (n,) each."""
+def _box_in(lo: np.ndarray, hi: np.ndarray, box: tuple[float, float, float, float], e: float, outer: bool = True
+            ) -> tuple[np.ndarray, np.ndarray | None]:
+    """Whether all corners of footprints of bounds ``lo``, ``hi`` (2, n), or points (``lo`` is
+    ``hi``), lie in ``box`` (x0, y0, x1, y1) shrunk by ``e``, and (``outer``, else None) whether
+    they lie in it grown by ``e``, (n,) each; the one test of a box in this module."""
     x0, y0, x1, y1 = box
-    inner = (lo[0] > x0 + e) & (hi[0] < x1 - e) & (lo[1] > y0 + e) & (hi[1] < y1 - e)
-    outer = (lo[0] > x0 - e) & (hi[0] < x1 + e) & (lo[1] > y0 - e) & (hi[1] < y1 + e)
-    return inner, outer
+    inner = lo[0] > x0 + e
+    inner &= hi[0] < x1 - e
+    inner &= lo[1] > y0 + e
+    inner &= hi[1] < y1 - e
+    if not outer:
+        return inner, None
+    out = lo[0] > x0 - e
+    out &= hi[0] < x1 + e
+    out &= lo[1] > y0 - e
+    out &= hi[1] < y1 + e
+    return inner, out
 
 
-_ZONE, _SIGHTLINE, _PLACED = 0, 1, 2
+_ZONE_KIND, _SIGHTLINE, _PLACED = 0, 1, 2
 """Kinds of what a pose may not overlap (:meth:`RoomSpace._blockers`)."""
 _PAIR_MARGIN_M = 0.01
 """Bounds further apart than the cap plus this are not compared in :meth:`RoomSpace.clearance` (m)."""
@@ -232,26 +244,29 @@ _PAIR_SLACK_M = 1e-6
 """Rounding allowed for when pairs are found by their bounds (:func:`_any_overlap`, m)."""
 
 
-def _any_overlap(a: np.ndarray, alo: np.ndarray, ahi: np.ndarray, idx: np.ndarray, b: np.ndarray,
-                 bmin: np.ndarray, bmax: np.ndarray, b_aligned: np.ndarray, thr: np.ndarray, inclusive: np.ndarray,
+def _any_overlap(a: np.ndarray, alo: np.ndarray, ahi: np.ndarray, idx: np.ndarray, tab: tuple[np.ndarray, ...],
                  pairs: Callable[[np.ndarray, np.ndarray], np.ndarray] | None = None) -> np.ndarray:
-    """Whether each pose ``a[idx]`` overlaps some ``b[j]`` by more than ``thr[j]`` (or as much,
-    ``inclusive[j]``) as :func:`overlap_above` tests it, (len(idx),) bool, computed on the pairs
-    whose bounds overlap by ``thr`` less :data:`_PAIR_SLACK_M` or more along x and y only (no
-    other overlaps by ``thr``).
+    """Whether each pose ``a[idx]`` overlaps some row ``j`` of ``tab`` by more than its ``thr[j]``
+    (or as much, ``inclusive[j]``) as :func:`overlap_above` tests it, (len(idx),) bool, computed
+    on the pairs whose bounds overlap by ``thr`` less :data:`_PAIR_SLACK_M` or more along x and
+    y only (no other overlaps by ``thr``).
 
     Parameters
     ----------
     a : (n, 4, 2) float, alo, ahi : (2, n) float, its bounds (:func:`_bounds_t`); idx : (k,) int, the
         rows of ``a`` tested
-    b : (m, 4, 2) float, bmin, bmax : (m, 2) float, b_aligned : (m,) bool (:func:`_aligned`)
-    pairs : (rows of ``idx``, rows of ``b``) -> bool, the pairs that may overlap at all
+    tab : the rows tested against (:func:`_table`)
+    pairs : (rows of ``idx``, rows of ``tab``) -> bool, the pairs that may overlap at all
     """
-    g = _PAIR_SLACK_M - thr  # a pair overlapping by thr along x (y) has its bounds this close
+    b, f, flags = tab
+    bmin, bmax, thr, b_aligned, inclusive = f[:, _LO:_LO + 2], f[:, _HI:_HI + 2], f[:, _THR], flags[:, _ALIGNED], flags[:, _INCL]
+    nxlo, nxhi, nylo, nyhi = (f[:, k:k + 1] for k in range(_NEAR, _NEAR + 4))
     lox, loy, hix, hiy = alo[0, idx], alo[1, idx], ahi[0, idx], ahi[1, idx]
-    near = ((lox[None] < (bmax[:, 0] + g)[:, None]) & (hix[None] > (bmin[:, 0] - g)[:, None])
-            & (loy[None] < (bmax[:, 1] + g)[:, None]) & (hiy[None] > (bmin[:, 1] - g)[:, None]))
-    j, i = np.nonzero(near)  # (m, k): a row of poses per footprint, contiguous
+    near = lox < nxhi  # (m, k): a row of poses per footprint, contiguous
+    near &= hix > nxlo
+    near &= loy < nyhi
+    near &= hiy > nylo
+    j, i = near.nonzero()
     if pairs is not None and len(i):
         keep = pairs(i, j)
         i, j = i[keep], j[keep]
@@ -263,7 +278,7 @@ def _any_overlap(a: np.ndarray, alo: np.ndarray, ahi: np.ndarray, idx: np.ndarra
     bb = np.minimum(ox, oy)
     t, inc = thr[j], inclusive[j]
     hit = np.where(inc, bb >= t, bb > t)
-    k = np.nonzero((bb >= t - _SAT_SLACK_M) & (bb > -0.05))[0]  # as overlap_above, the axes of these
+    k = ((bb >= t - _SAT_SLACK_M) & (bb > -0.05)).nonzero()[0]  # as overlap_above, the axes of these
     if k.size:
         ai = a[idx[i[k]]]
         rot = ~(_aligned(ai) & b_aligned[j[k]])
@@ -276,10 +291,12 @@ def _any_overlap(a: np.ndarray, alo: np.ndarray, ahi: np.ndarray, idx: np.ndarra
 
 
 def _per_pose(z: np.ndarray | float, n: int) -> np.ndarray:
-    """``z`` (one value, or one per pose) as (n,) float (``np.full`` is cheaper than ``np.broadcast_to``)."""
+    """``z`` (one value, or one per pose) as (n,) float (an array filled is cheaper than ``np.broadcast_to``)."""
     a = np.asarray(z, dtype=float)
     if a.ndim == 0:
-        return np.full(n, float(a))
+        out = np.empty(n)
+        out.fill(float(a))
+        return out
     return a if a.shape == (n,) else np.broadcast_to(a, (n,))
 
 
@@ -290,13 +307,6 @@ def _bounds_t(c: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
             np.maximum(np.maximum(t[:, 0], t[:, 1]), np.maximum(t[:, 2], t[:, 3])))
 
 
-def _bounds_of(objs: list[Placed]) -> tuple[np.ndarray, ...]:
-    """Lower and upper bounds (m, 2) of the objects' footprints."""
-    if len(objs) == 1:
-        return objs[0].rows()[1:3]
-    return tuple(np.concatenate(col) for col in zip(*(p.rows()[1:3] for p in objs), strict=True))
-
-
 def _blocker_rows(objs: list[Placed]) -> tuple[np.ndarray, ...]:
     """Rows of placed objects as :meth:`RoomSpace._blockers` stacks them."""
     if len(objs) == 1:  # most often: the object placed last
@@ -304,14 +314,47 @@ def _blocker_rows(objs: list[Placed]) -> tuple[np.ndarray, ...]:
     return tuple(np.concatenate(col) for col in zip(*(p.rows() for p in objs), strict=True))
 
 
+_LO, _HI, _THR, _Z0, _Z1, _NEAR = 0, 2, 4, 5, 6, 7
+"""Float columns of a table of rows (:func:`_table`): lower bounds (x, y), upper bounds
+(x, y), the overlap allowed, bottom, top, and from ``_NEAR`` on the bounds (x lower, x upper,
+y lower, y upper) a pose's bounds must cross to come near enough to overlap."""
+_ALIGNED, _INCL, _ZONE, _SIGHT = 0, 1, 2, 3
+"""Flag columns of a table of rows: square to the axes, the overlap allowed may be reached,
+a door zone, a sightline."""
+
+
+def _table(c: np.ndarray, thr: float, inclusive: bool, kind: int, z0: np.ndarray | float, z1: np.ndarray | float
+           ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Rows of what a pose may not overlap (read-only), one per footprint of ``c`` (m, 4, 2):
+    the corners, floats (m, 11) (:data:`_LO` ...: bounds, the overlap ``thr`` each may have,
+    bottom ``z0`` and top ``z1``, NaN: at any height, the bounds a pose must cross to come
+    within ``thr``) and flags (m, 4) (:data:`_ALIGNED` ...: square to the axes, ``inclusive``:
+    it may have that much, a door zone or a sightline by ``kind``)."""
+    m = len(c)
+    lo, hi = _cmin(c), _cmax(c)
+    g = _PAIR_SLACK_M - thr  # a pair overlapping by thr along x (y) has its bounds this close
+    f = np.empty((m, 11))
+    f[:, _LO:_LO + 2] = lo
+    f[:, _HI:_HI + 2] = hi
+    f[:, _THR] = thr
+    f[:, _Z0] = z0
+    f[:, _Z1] = z1
+    f[:, _NEAR] = lo[:, 0] - g
+    f[:, _NEAR + 1] = hi[:, 0] + g
+    f[:, _NEAR + 2] = lo[:, 1] - g
+    f[:, _NEAR + 3] = hi[:, 1] + g
+    flags = np.empty((m, 4), dtype=bool)
+    flags[:, _ALIGNED] = _aligned(c)
+    flags[:, _INCL] = inclusive
+    flags[:, _ZONE] = kind == _ZONE_KIND
+    flags[:, _SIGHT] = kind == _SIGHTLINE
+    f.flags.writeable = flags.flags.writeable = False
+    return c, f, flags
+
+
 def _own_rows(p: Placed) -> tuple[np.ndarray, ...]:
     """The row of one placed object as :meth:`RoomSpace._blockers` stacks it (read-only)."""
-    c = p.corners[None]
-    out = (c, _cmin(c), _cmax(c), _aligned(c), np.full(1, EPS_COLLIDE_M), np.zeros(1, dtype=bool),
-           np.full(1, _PLACED), np.array([p.z0]), np.array([p.z1]))
-    for a in out[1:]:
-        a.flags.writeable = False
-    return out
+    return _table(p.corners[None], EPS_COLLIDE_M, False, _PLACED, p.z0, p.z1)
 
 
 def _cmin(c: np.ndarray) -> np.ndarray:
@@ -326,6 +369,10 @@ def _cmax(c: np.ndarray) -> np.ndarray:
 def _aligned(c: np.ndarray) -> np.ndarray:
     e = c[:, 1] - c[:, 0]
     return (np.abs(e[:, 0]) < 1e-9) | (np.abs(e[:, 1]) < 1e-9)
+
+
+_NO_ROWS = _table(np.zeros((0, 4, 2)), 0.0, False, _PLACED, 0.0, 0.0)
+"""A table of no rows."""
 
 
 def _sat_pairs(a: np.ndarray, b: np.ndarray) -> np.ndarray:
@@ -419,6 +466,9 @@ class RoomSpace:
         self.bmax = self.vertices.max(0)
         self._bounds = (self.bmin - INSIDE_TOL_M, self.bmax + INSIDE_TOL_M)
         """What :meth:`valid` keeps footprints within (the bounding box grown by the tolerance)."""
+        self._bounds_in_buf = self.buf_box is not None and bool(
+            np.all(np.abs(np.concatenate(self._bounds) - np.asarray(self.buf_box)) < _BOX_EDGE_M / 2))
+        """Footprints within ``_bounds`` lie within ``buf_box`` grown by :data:`_BOX_EDGE_M`."""
         self.height = float(self.room.height)
         self.area = float(self.poly.area)
         c = self.poly.centroid
@@ -444,10 +494,12 @@ class RoomSpace:
         self.door_zones = np.asarray(zones).reshape(-1, 4, 2)
         self.zone_lo, self.zone_hi = self.door_zones.min(1), self.door_zones.max(1)
         self.zone_aligned = _aligned(self.door_zones)
-        nz, nan = len(self.door_zones), np.full(len(self.door_zones), np.nan)
-        self._zone_rows = (self.door_zones, self.zone_lo, self.zone_hi, self.zone_aligned, np.full(nz, -DOOR_MARGIN_M),
-                           np.ones(nz, dtype=bool), np.full(nz, _ZONE), nan, nan)
+        self._zone_rows = _table(self.door_zones, -DOOR_MARGIN_M, True, _ZONE_KIND, np.nan, np.nan)
         """The door zones as :meth:`_blockers` stacks them, first."""
+        self._kc: tuple[list[np.ndarray], tuple[np.ndarray, ...]] = ([], ())
+        """The sightlines whose rows :meth:`_blockers` made last, and those rows."""
+        self._joined: tuple[tuple[np.ndarray, ...], tuple[np.ndarray, ...], tuple[np.ndarray, ...]] | None = None
+        """The last table and sightline rows :meth:`_blockers` joined, and the table joined."""
         self.zone_polys = [Polygon(z) for z in zones]
         wzones = []
         for w in self.floorplan.windows:
@@ -483,8 +535,9 @@ class RoomSpace:
         n, k = min(len(held), len(objs)), 0
         while k < n and held[k] is objs[k]:
             k += 1
-        top = len(head[0]) + k
-        tab = tuple(a[:top] for a in tab)
+        if k < len(held):  # objects taken away
+            top = len(head[0]) + k
+            tab = tuple(a[:top] for a in tab)
         if k < len(objs):
             tab = tuple(np.concatenate([a, r]) for a, r in zip(tab, make(objs[k:]), strict=True))
         self._tables[key] = (list(objs), tab)
@@ -494,9 +547,10 @@ class RoomSpace:
         """Placed objects whose footprint's bounding box meets the box ``lo``-``hi`` (2,)."""
         if not self.placed:
             return []
-        cmin, cmax = self._rows("near", self.placed, (np.zeros((0, 2)), np.zeros((0, 2))), _bounds_of)
+        f = self._rows("near", self.placed, _NO_ROWS, _blocker_rows)[1]
+        cmin, cmax = f[:, _LO:_LO + 2], f[:, _HI:_HI + 2]
         keep = (cmin[:, 0] <= hi[0]) & (cmin[:, 1] <= hi[1]) & (cmax[:, 0] >= lo[0]) & (cmax[:, 1] >= lo[1])
-        return [self.placed[i] for i in np.flatnonzero(keep)]
+        return [self.placed[i] for i in keep.nonzero()[0].tolist()]
 
     # ------------------------------------------------------------ validity
     def valid(
@@ -506,21 +560,24 @@ class RoomSpace:
         """Mask of poses that are in bounds, collision-free and (floor/wall) clear of doors;
         ``layer``: a rug laid under furniture, tested against the other layers only."""
         n = len(corners)
-        ok = np.ones(n, dtype=bool)
         if n == 0:
-            return ok
+            return np.ones(0, dtype=bool)
         z0, z1 = _per_pose(z0, n), _per_pose(z1, n)
         lo, hi = _bounds_t(corners)
         (bx0, by0), (bx1, by1) = self._bounds
-        ok &= (lo[0] >= bx0) & (lo[1] >= by0) & (hi[0] <= bx1) & (hi[1] <= by1)
+        ok = lo[0] >= bx0
+        ok &= lo[1] >= by0
+        ok &= hi[0] <= bx1
+        ok &= hi[1] <= by1
         limit = self.height if floor else self.height - CEILING_GAP_M
         ok &= z1 <= limit + 1e-9
         if self.buf_box is not None and self.convex:  # a rectangle: most settled by their bounds
-            inner, outer = _box_in(lo, hi, self.buf_box, _BOX_EDGE_M)
-            ok &= outer  # a corner outside: out
-            idx = np.nonzero(ok & ~inner)[0]  # a corner a hair from the outline: as below
+            inner, outer = _box_in(lo, hi, self.buf_box, _BOX_EDGE_M, outer=not self._bounds_in_buf)
+            if outer is not None:
+                ok &= outer  # a corner outside: out
+            idx = (ok & ~inner).nonzero()[0]  # a corner a hair from the outline: as below
         else:
-            idx = np.nonzero(ok)[0]
+            idx = ok.nonzero()[0]
         if idx.size:
             c = corners[idx]
             pin = self._in_buf(c[..., 0].ravel(), c[..., 1].ravel()).reshape(-1, 4)
@@ -528,59 +585,57 @@ class RoomSpace:
             if self.convex:
                 inner = pin
             else:
-                sub = np.nonzero(pin)[0]
+                sub = pin.nonzero()[0]
                 inner = np.zeros(len(idx), dtype=bool)
                 if sub.size:
                     inner[sub] = ~self._vertex_inside(c[sub])
             ok[idx] = inner
-        idx = np.nonzero(ok)[0]
+        idx = ok.nonzero()[0]
         if idx.size:
             tall = z1 > VIEW_CLEAR_M
-            sightlines = bool(floor and not layer and tall[idx].any())
-            b, bmin, bmax, bal, thr, incl, kind, bz0, bz1 = self._blockers(layer, doors, sightlines)
+            sightlines = bool(floor and not layer and np.count_nonzero(tall[idx]))
+            tab = self._blockers(layer, doors, sightlines)
+            zone, sight, bz0, bz1 = tab[2][:, _ZONE], tab[2][:, _SIGHT], tab[1][:, _Z0], tab[1][:, _Z1]
 
             def may_meet(i: np.ndarray, j: np.ndarray) -> np.ndarray:
-                """Door zones meet any pose, sightlines tall ones, objects those overlapping them in z."""
-                ii, k = idx[i], kind[j]
-                return (k == _ZONE) | ((k == _SIGHTLINE) & tall[ii]) | (
-                    (k == _PLACED) & (np.minimum(z1[ii], bz1[j]) - np.maximum(z0[ii], bz0[j]) > EPS_COLLIDE_M))
+                """Door zones meet any pose, sightlines tall ones, objects those overlapping them in z
+                (the others' heights are NaN: no overlap)."""
+                ii = idx[i]
+                return zone[j] | (sight[j] & tall[ii]) | (
+                    np.minimum(z1[ii], bz1[j]) - np.maximum(z0[ii], bz0[j]) > EPS_COLLIDE_M)
 
-            if len(b):
-                ok[idx[_any_overlap(corners, lo, hi, idx, b, bmin, bmax, bal, thr, incl, pairs=may_meet)]] = False
+            if len(tab[0]):
+                ok[idx[_any_overlap(corners, lo, hi, idx, tab, pairs=may_meet)]] = False
         return ok
 
     def _blockers(self, layer: bool, doors: bool, sightlines: bool) -> tuple[np.ndarray, ...]:
-        """What a pose may not overlap, stacked: the door zones (``doors``), the sightlines
-        (``sightlines``) and the placed objects (``layer``: the layers, else all but them).
-
-        Returns
-        -------
-        corners (m, 4, 2), lower and upper bounds (m, 2), square to the axes (m,) bool, the
-        overlap (m,) m each may have, whether it may have that much (m,) bool, its kind (m,)
-        int (:data:`_ZONE`, :data:`_SIGHTLINE`, :data:`_PLACED`), bottoms and tops (m,)
-        """
+        """What a pose may not overlap, stacked (:func:`_table`): the door zones (``doors``), the
+        sightlines (``sightlines``) and the placed objects (``layer``: the layers, else all but them)."""
         got = self._rows(layer, [p for p in self.placed if p.layer == layer], self._zone_rows, _blocker_rows)
         if not doors:
             got = tuple(a[len(self.door_zones):] for a in got)
         if not sightlines or not self.keep_clear:
             return got
-        kc = np.stack(self.keep_clear)
-        nan = np.full(len(kc), np.nan)
-        more = (kc, _cmin(kc), _cmax(kc), _aligned(kc), np.full(len(kc), EPS_COLLIDE_M), np.zeros(len(kc), dtype=bool),
-                np.full(len(kc), _SIGHTLINE), nan, nan)
-        return tuple(np.concatenate([a, m]) for a, m in zip(got, more, strict=True))
+        held, more = self._kc
+        if len(held) != len(self.keep_clear) or not all(map(operator.is_, held, self.keep_clear)):
+            more = _table(np.stack(self.keep_clear), EPS_COLLIDE_M, False, _SIGHTLINE, np.nan, np.nan)
+            self._kc = (list(self.keep_clear), more)
+        j = self._joined
+        if j is None or j[1] is not more or len(j[0]) != len(got) or not all(map(operator.is_, j[0], got)):
+            j = (got, more, tuple(np.concatenate([a, m]) for a, m in zip(got, more, strict=True)))
+            self._joined = j
+        return j[2]
 
     def _in_buf(self, x: np.ndarray, y: np.ndarray) -> np.ndarray:
         """``shapely.contains_xy(self.buf, x, y)``; for an axis-aligned rectangle by comparing
         coordinates, shapely asked only about points within a hair of its outline."""
         if self.buf_box is None:
             return shapely.contains_xy(self.buf, x, y)
-        x0, y0, x1, y1 = self.buf_box
-        out = (x > x0) & (x < x1) & (y > y0) & (y < y1)
-        e = _BOX_EDGE_M
-        edge = (x > x0 - e) & (x < x1 + e) & (y > y0 - e) & (y < y1 + e) & ~(
-            (x > x0 + e) & (x < x1 - e) & (y > y0 + e) & (y < y1 - e))
-        if edge.any():
+        pts = np.stack((x, y))
+        out, near = _box_in(pts, pts, self.buf_box, _BOX_EDGE_M)
+        assert near is not None
+        edge = near & ~out
+        if np.count_nonzero(edge):
             out[edge] = shapely.contains_xy(self.buf, x[edge], y[edge])
         return out
 
@@ -589,19 +644,16 @@ class RoomSpace:
         coordinates for an axis-aligned rectangular room; None: ask shapely."""
         if self.outline_box is None:
             return None
-        x0, y0, x1, y1 = self.outline_box
-        e = _BOX_EDGE_M
-        if lo[0] > x0 + e and lo[1] > y0 + e and hi[0] < x1 - e and hi[1] < y1 - e:
+        inner, outer = _box_in(lo, hi, self.outline_box, _BOX_EDGE_M)
+        if inner:
             return True
-        if lo[0] < x0 - e or lo[1] < y0 - e or hi[0] > x1 + e or hi[1] > y1 + e:
-            return False
-        return None
+        return False if not outer else None
 
     def _vertex_inside(self, c: np.ndarray) -> np.ndarray:
         centre = c.mean(1)
         ex, ey = c[:, 1] - c[:, 0], c[:, 3] - c[:, 0]
-        hw = np.linalg.norm(ex, axis=1) / 2
-        hd = np.linalg.norm(ey, axis=1) / 2
+        hw = np.sqrt(np.add.reduce(ex * ex, axis=1)) / 2  # as np.linalg.norm
+        hd = np.sqrt(np.add.reduce(ey * ey, axis=1)) / 2
         ex = ex / (2 * hw[:, None])
         ey = ey / (2 * hd[:, None])
         d = self.vertices[None] - centre[:, None]

@@ -43,9 +43,7 @@ def place_group_copy(st: RoomState, g: GroupSpec, copy: int, prev: HouseObject |
     tries = o.anchor_tries_required if g.required else o.anchor_tries
 
     def bonus(cands: Cands) -> Cands:  # room for the group and its run, asked of valid poses only
-        if g.members and len(cands):
-            cands = scoring.group_room_bonus(st, g, cands)
-        return scoring.run_room_bonus(st, g, cands, rule, prev is None)
+        return scoring.anchor_bonus(st, g, cands, rule, prev is None)
 
     run_on = prev is not None and REGISTRY[rule].continues  # the copy continues a run: no jump
     hangs = bool(anchored(g, "place_on_wall"))

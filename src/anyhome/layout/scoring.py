@@ -226,7 +226,7 @@ def exact_ok(st: RoomState, ch: Choice, size: Sequence[float], kind: str, suppor
             return False
     if kind != "top" and sp.zone_polys:
         meet = ~((sp.zone_lo > hi).any(1) | (sp.zone_hi < lo).any(1))  # bounding boxes apart: no intersection
-        for z in np.flatnonzero(meet):
+        for z in meet.nonzero()[0].tolist():
             zone = sp.zone_polys[z]
             fp = Polygon(corners) if fp is None else fp
             if fp.intersects(zone) and fp.intersection(zone).area > 1e-6:
@@ -283,16 +283,61 @@ def bonus_max(st: RoomState, g: GroupSpec, rule: str, first: bool) -> float:
 def group_room_bonus(st: RoomState, g: GroupSpec, c: Cands) -> Cands:
     """Prefer anchor poses where the whole group's extent (members included) is free
     (:func:`group_room_free`), and with free lanes beside it (:func:`beside_lanes_free`)."""
+    return anchor_bonus(st, g, c, None, False)
+
+
+def anchor_bonus(st: RoomState, g: GroupSpec, c: Cands, rule: str | None, first: bool) -> Cands:
+    """:func:`group_room_bonus` (when ``g`` has members) then, with ``rule``, :func:`run_room_bonus`
+    of the anchor poses ``c``, every box they test asked of :meth:`~anyhome.space.RoomSpace.valid`
+    at once."""
     o = st.options
-    ok = group_room_free(st, g, c)
-    if ok is None:
+    group = _group_boxes(st, g, c) if g.members and len(c) else None
+    run = _run_boxes(g, c, rule, first) if rule is not None else []
+    boxes = [*(group or []), *run]
+    if not boxes:
         return c
-    return Cands(c.xy, c.yaw, c.z, c.pref + o.group_room_bonus * ok + o.beside_lane_bonus * beside_lanes_free(st, g, c))
+    free = _free_each(st, g, boxes)
+    pref = c.pref
+    if group is not None:
+        pref = pref + o.group_room_bonus * free[0] + o.beside_lane_bonus * _all_of(free[1:len(group)], len(c))
+    if run:
+        pref = pref + o.group_room_bonus * (free[-2] | free[-1])
+    return Cands(c.xy, c.yaw, c.z, pref)
+
+
+def _free_each(st: RoomState, g: GroupSpec, boxes: list[np.ndarray]) -> list[np.ndarray]:
+    """Masks of the footprints of each of ``boxes`` (corners (n, 4, 2)) free up to the group's
+    height, asked at once (``valid`` tests each pose alone)."""
+    top = min(st.options.group_room_height_m, g.anchor.size_m[2])
+    ok = st.space.valid(np.concatenate(boxes) if len(boxes) > 1 else boxes[0], 0.0, top, floor=True)
+    return np.split(ok, np.cumsum([len(b) for b in boxes])[:-1])
+
+
+def _all_of(masks: list[np.ndarray], n: int) -> np.ndarray:
+    """Poses free in every one of ``masks`` (all True when there are none)."""
+    ok = np.ones(n, dtype=bool)
+    for m in masks:
+        ok &= m
+    return ok
+
+
+def _group_boxes(st: RoomState, g: GroupSpec, c: Cands) -> list[np.ndarray] | None:
+    """Footprints :func:`group_room_bonus` tests: the group's extent, then the lanes beside
+    the anchor (:func:`beside_lanes_free`); None when the members add nothing to the anchor's
+    own footprint."""
+    extent = _extent_box(st, g, c)
+    return None if extent is None else [extent, *_lane_boxes(st, g, c)]
 
 
 def group_room_free(st: RoomState, g: GroupSpec, c: Cands) -> np.ndarray | None:
     """Mask of anchor poses ``c`` where the whole group's extent (members included) is
     free; None when the members add nothing to the anchor's own footprint."""
+    box = _extent_box(st, g, c)
+    return None if box is None else _free_each(st, g, [box])[0]
+
+
+def _extent_box(st: RoomState, g: GroupSpec, c: Cands) -> np.ndarray | None:
+    """Footprints of the group's extent at the anchor poses ``c`` (:func:`group_room_free`)."""
     o = st.options
     x0, x1, y0, y1 = group_extent(g, near_m=o.near_m)
     w, d = g.anchor.size_m[0], g.anchor.size_m[1]
@@ -301,8 +346,7 @@ def group_room_free(st: RoomState, g: GroupSpec, c: Cands) -> np.ndarray | None:
     cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
     cos, sin = np.cos(c.yaw), np.sin(c.yaw)
     xy = c.xy + np.stack([cx * cos - cy * sin, cx * sin + cy * cos], 1)
-    corners = rect_corners(xy, (x1 - x0, y1 - y0), c.yaw)
-    return st.space.valid(corners, 0.0, min(o.group_room_height_m, g.anchor.size_m[2]), floor=True)
+    return rect_corners(xy, (x1 - x0, y1 - y0), c.yaw)
 
 
 def _beside_members(g: GroupSpec) -> list[tuple[float, ItemSpec]]:
@@ -317,17 +361,36 @@ def _beside_members(g: GroupSpec) -> list[tuple[float, ItemSpec]]:
     return out
 
 
+def _side_boxes(g: GroupSpec, c: Cands, boxes: dict[float, tuple[float, float, float, float]]) -> list[np.ndarray]:
+    """Footprints of every box (side sign -> width, depth, offset to the right of the
+    anchor's side, offset to the front) at the anchor poses ``c``."""
+    cos, sin = np.cos(c.yaw), np.sin(c.yaw)
+    right, front = np.stack([cos, sin], 1), np.stack([-sin, cos], 1)
+    out = []
+    for sgn, (bw, bd, out_m, fwd_m) in boxes.items():
+        xy = c.xy + right * (sgn * (g.anchor.size_m[0] / 2 + out_m + bw / 2)) + front * fwd_m
+        out.append(rect_corners(xy, (bw, bd), c.yaw))
+    return out
+
+
 def _free_boxes(st: RoomState, g: GroupSpec, c: Cands, boxes: dict[float, tuple[float, float, float, float]]) -> np.ndarray:
     """Mask of anchor poses ``c`` where every box (side sign -> width, depth, offset to the
     right of the anchor's side, offset to the front) is free up to the group's height."""
-    cos, sin = np.cos(c.yaw), np.sin(c.yaw)
-    right, front = np.stack([cos, sin], 1), np.stack([-sin, cos], 1)
-    top = min(st.options.group_room_height_m, g.anchor.size_m[2])
-    ok = np.ones(len(c), dtype=bool)
-    for sgn, (bw, bd, out_m, fwd_m) in boxes.items():
-        xy = c.xy + right * (sgn * (g.anchor.size_m[0] / 2 + out_m + bw / 2)) + front * fwd_m
-        ok &= st.space.valid(rect_corners(xy, (bw, bd), c.yaw), 0.0, top, floor=True)
-    return ok
+    sides = _side_boxes(g, c, boxes)
+    return _all_of(_free_each(st, g, sides) if sides else [], len(c))
+
+
+def _lane_boxes(st: RoomState, g: GroupSpec, c: Cands) -> list[np.ndarray]:
+    """Footprints of the lanes :func:`beside_lanes_free` tests (none when no member stands
+    beside the anchor)."""
+    o = st.options
+    widths: dict[float, float] = {}
+    for sgn, m in _beside_members(g):
+        widths[sgn] = max(widths.get(sgn, 0.0), o.beside_lane_m, m.size_m[0] + BESIDE_GAPS_M[0])
+    if not widths or not len(c):
+        return []
+    depth = g.anchor.size_m[1] + o.beside_lane_front_m
+    return _side_boxes(g, c, {sgn: (w, depth, 0.0, o.beside_lane_front_m / 2) for sgn, w in widths.items()})
 
 
 def beside_lanes_free(st: RoomState, g: GroupSpec, c: Cands) -> np.ndarray:
@@ -337,14 +400,8 @@ def beside_lanes_free(st: RoomState, g: GroupSpec, c: Cands) -> np.ndarray:
     :attr:`~.options.LayoutOptions.beside_lane_front_m` beyond its front, so that a
     nightstand or side table there is still walked up to once the anchor stands; all
     True when no member stands beside it."""
-    o = st.options
-    widths: dict[float, float] = {}
-    for sgn, m in _beside_members(g):
-        widths[sgn] = max(widths.get(sgn, 0.0), o.beside_lane_m, m.size_m[0] + BESIDE_GAPS_M[0])
-    if not widths or not len(c):
-        return np.ones(len(c), dtype=bool)
-    depth = g.anchor.size_m[1] + o.beside_lane_front_m
-    return _free_boxes(st, g, c, {sgn: (w, depth, 0.0, o.beside_lane_front_m / 2) for sgn, w in widths.items()})
+    lanes = _lane_boxes(st, g, c)
+    return _all_of(_free_each(st, g, lanes) if lanes else [], len(c))
 
 
 def beside_spots_free(st: RoomState, g: GroupSpec, c: Cands) -> np.ndarray | None:
@@ -379,17 +436,26 @@ def run_length(g: GroupSpec, rule: str, first: bool) -> tuple[float, float]:
 def run_room_bonus(st: RoomState, g: GroupSpec, c: Cands, rule: str, first: bool) -> Cands:
     """Prefer anchor poses with free wall beside them (on either side) for the run that
     follows (:func:`run_length`), so that it continues rather than jumps."""
+    run = _run_boxes(g, c, rule, first)
+    if not run:
+        return c
+    free = _free_each(st, g, run)
+    return Cands(c.xy, c.yaw, c.z, c.pref + st.options.group_room_bonus * (free[0] | free[1]))
+
+
+def _run_boxes(g: GroupSpec, c: Cands, rule: str, first: bool) -> list[np.ndarray]:
+    """Footprints :func:`run_room_bonus` tests: the run beside the anchor on its right, then
+    on its left (none when no run follows)."""
     length, depth = run_length(g, rule, first)
     if length <= 0 or not len(c):
-        return c
+        return []
     w, d = g.anchor.size_m[0], g.anchor.size_m[1]
     cos, sin = np.cos(c.yaw), np.sin(c.yaw)
     right = np.stack([cos, sin], 1)
     front = np.stack([-sin, cos], 1)
     back = c.xy - front * (d / 2)  # middle of the anchor's back, on the wall
-    ok = np.zeros(len(c), dtype=bool)
+    out = []
     for sgn in (1.0, -1.0):
         xy = back + right * (sgn * (w / 2 + length / 2)) + front * (depth / 2)
-        corners = rect_corners(xy, (length, depth), c.yaw)
-        ok |= st.space.valid(corners, 0.0, min(st.options.group_room_height_m, g.anchor.size_m[2]), floor=True)
-    return Cands(c.xy, c.yaw, c.z, c.pref + st.options.group_room_bonus * ok)
+        out.append(rect_corners(xy, (length, depth), c.yaw))
+    return out

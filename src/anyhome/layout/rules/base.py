@@ -80,6 +80,13 @@ class Cands:
             np.concatenate([self.pref, other.pref]),
         )
 
+    @staticmethod
+    def join(parts: list[Cands]) -> Cands:
+        """The candidates of ``parts`` in turn, as adding them to :meth:`empty` one by one does."""
+        every = [Cands.empty(), *parts]
+        return Cands(np.concatenate([c.xy for c in every]), np.concatenate([c.yaw for c in every]),
+                     np.concatenate([c.z for c in every]), np.concatenate([c.pref for c in every]))
+
     def shifted_pref(self, delta: float) -> Cands:
         return Cands(self.xy, self.yaw, self.z, self.pref + delta)
 
@@ -214,7 +221,7 @@ def footprint_gaps(xy: np.ndarray, size: Sequence[float], yaw: np.ndarray, ref: 
     rq = round(ref.yaw / HALF_PI)
     if abs(ref.yaw - rq * HALF_PI) >= 1e-6:
         aligned[:] = False
-    if aligned.any():
+    if np.count_nonzero(aligned):
         odd = (quarter[aligned].astype(int) % 2) == 1
         hx = np.where(odd, size[1], size[0]) / 2
         hy = np.where(odd, size[0], size[1]) / 2
@@ -223,7 +230,7 @@ def footprint_gaps(xy: np.ndarray, size: Sequence[float], yaw: np.ndarray, ref: 
         dy = np.maximum(0.0, np.abs(xy[aligned, 1] - ref.position[1]) - hy - ry / 2)
         out[aligned] = np.hypot(dx, dy)
     rest = ~aligned
-    if rest.any():
+    if np.count_nonzero(rest):
         polys = shapely.polygons(rect_corners(xy[rest], size[:2], np.asarray(yaw)[rest]))
         out[rest] = shapely.distance(polys, footprint_polygon(ref.position, ref.size, ref.yaw))
     return out

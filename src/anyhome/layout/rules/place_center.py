@@ -57,7 +57,7 @@ def _place_center(space: RoomSpace, size: Sequence[float], facing: str) -> Cands
     base = 1.0 - dist / diag
     extent = hi - lo
     long_x = extent[0] >= extent[1]
-    out = Cands.empty()
+    out: list[Cands] = []
     if facing == "door" and len(space.door_points):
         nearest = space.door_points[np.argmin(np.linalg.norm(xy[:, None] - space.door_points[None], axis=-1), 1)]
         v = nearest - xy
@@ -80,8 +80,8 @@ def _place_center(space: RoomSpace, size: Sequence[float], facing: str) -> Cands
     for yaw in (0.0, HALF_PI, np.pi, -HALF_PI):
         along_x = abs(np.cos(yaw)) > 0.5  # local width runs along world x
         aligned = (w >= d) == (along_x == long_x) or abs(w - d) < 0.05
-        out = out + Cands(xy, np.full(len(xy), yaw), np.zeros(len(xy)), base + (ALIGNED_PREF if aligned else 0.0))
-    return out
+        out.append(Cands(xy, np.full(len(xy), yaw), np.zeros(len(xy)), base + (ALIGNED_PREF if aligned else 0.0)))
+    return Cands.join(out)
 
 
 def candidates(ctx: RuleContext) -> tuple[Cands, Kind]:

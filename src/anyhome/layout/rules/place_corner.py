@@ -19,7 +19,7 @@ def _convex(space: RoomSpace, i: int, j: int) -> bool:
 
 def place_corner(space: RoomSpace, size: Sequence[float]) -> Cands:
     w, d = size[0], size[1]
-    out = Cands.empty()
+    out: list[Cands] = []
     k = len(space.walls)
     for i, wall in enumerate(space.walls):
         if wall.length < w - 1e-9:
@@ -31,8 +31,8 @@ def place_corner(space: RoomSpace, size: Sequence[float]) -> Cands:
             ts.append(wall.length - w / 2)
         if ts:
             t = np.asarray(ts)
-            out = out + Cands(on_wall(wall, t, d), np.full(len(t), wall.yaw), np.zeros(len(t)), np.ones(len(t)))
-    return out
+            out.append(Cands(on_wall(wall, t, d), np.full(len(t), wall.yaw), np.zeros(len(t)), np.ones(len(t))))
+    return Cands.join(out)
 
 
 def candidates(ctx: RuleContext) -> tuple[Cands, Kind]:

@@ -41,7 +41,7 @@ def place_next_wall(space: RoomSpace, size: Sequence[float], prev: HouseObject |
     pw, pd = prev.size[0], prev.size[1]
     pxy = np.asarray(prev.position[:2])
     back = pxy - front_dir(prev.yaw) * pd / 2
-    out = Cands.empty()
+    out: list[Cands] = []
     for wall in space.walls:
         t_prev = float((back - wall.a) @ wall.u)
         dist = abs(float((back - wall.a) @ wall.n))
@@ -51,8 +51,8 @@ def place_next_wall(space: RoomSpace, size: Sequence[float], prev: HouseObject |
             ts = np.concatenate([ts, ts + [-0.02, 0.02]])
             pref = np.array([1.0, 1.0, 0.9, 0.9])
             ok = (ts >= w / 2 - 1e-9) & (ts <= wall.length - w / 2 + 1e-9)  # on this wall, not past its end
-            out = out + Cands(on_wall(wall, ts[ok], d), np.full(int(ok.sum()), wall.yaw), np.zeros(int(ok.sum())),
-                              pref[ok])
+            out.append(Cands(on_wall(wall, ts[ok], d), np.full(int(ok.sum()), wall.yaw), np.zeros(int(ok.sum())),
+                              pref[ok]))
         else:
             # perpendicular wall: continue the run around a corner
             corners = footprint_corners(prev.position, prev.size, prev.yaw)
@@ -65,9 +65,9 @@ def place_next_wall(space: RoomSpace, size: Sequence[float], prev: HouseObject |
             ok = (ts >= w / 2 - 1e-9) & (ts <= wall.length - w / 2 + 1e-9)
             ts = ts[ok]
             if ts.size:
-                out = out + Cands(on_wall(wall, ts, d), np.full(len(ts), wall.yaw), np.zeros(len(ts)),
-                                  np.full(len(ts), 0.8))
-    return out
+                out.append(Cands(on_wall(wall, ts, d), np.full(len(ts), wall.yaw), np.zeros(len(ts)),
+                                  np.full(len(ts), 0.8)))
+    return Cands.join(out)
 
 
 def jumps(pieces: Sequence[HouseObject]) -> int:

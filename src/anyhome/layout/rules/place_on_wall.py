@@ -67,7 +67,7 @@ def wall_z(params: Params, size: Sequence[float], ref: HouseObject | None, heigh
 def place_on_wall(space: RoomSpace, size: Sequence[float], z: float, target: HouseObject | None = None) -> Cands:
     """Back on a wall at height ``z``; behind ``target`` when it stands against a wall."""
     w, d, h = size
-    out = Cands.empty()
+    out: list[Cands] = []
     tb = None
     if target is not None:
         tb = np.asarray(target.position[:2]) - front_dir(target.yaw) * target.size[1] / 2
@@ -89,8 +89,8 @@ def place_on_wall(space: RoomSpace, size: Sequence[float], z: float, target: Hou
             tt = float((tb - wall.a) @ wall.u)
             if dist < BEHIND_TARGET_M:
                 pref = pref + BEHIND_PREF - BEHIND_PER_M * np.abs(t - tt)
-        out = out + Cands(xy, np.full(len(t), wall.yaw), np.full(len(t), z), pref)
-    return out
+        out.append(Cands(xy, np.full(len(t), wall.yaw), np.full(len(t), z), pref))
+    return Cands.join(out)
 
 
 def candidates(ctx: RuleContext) -> tuple[Cands, Kind]:

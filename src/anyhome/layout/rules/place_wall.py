@@ -77,7 +77,7 @@ def place_wall(space: RoomSpace, size: Sequence[float], which: str = "any") -> C
 def _place_wall(space: RoomSpace, size: Sequence[float], which: str) -> Cands:
     w, d = size[0], size[1]
     longest = max((wl.length for wl in space.walls), default=0.0)
-    out = Cands.empty()
+    out: list[Cands] = []
     diag = float(np.linalg.norm(space.bmax - space.bmin)) or 1.0
     for wall in space.walls:
         t = wall_positions(wall, w)
@@ -91,8 +91,8 @@ def _place_wall(space: RoomSpace, size: Sequence[float], which: str) -> Cands:
         elif which == "opposite_door" and len(space.door_points):
             dist = np.min(np.linalg.norm(xy[:, None] - space.door_points[None], axis=-1), 1)
             pref = pref + AWAY_FROM_DOOR_PREF * dist / diag
-        out = out + Cands(xy, np.full(len(t), wall.yaw), np.zeros(len(t)), pref)
-    return out
+        out.append(Cands(xy, np.full(len(t), wall.yaw), np.zeros(len(t)), pref))
+    return Cands.join(out)
 
 
 def candidates(ctx: RuleContext) -> tuple[Cands, Kind]:
