@@ -277,3 +277,16 @@ def test_what_people_do_in_a_room_is_no_room_and_no_object():
     p = parse("Tiny studio flat: a single main room where I sleep and live, a kitchenette against one wall, "
               "and a compact unit bathroom.")
     assert not any(m.name in ("live", "sleep") for m in [*p.rooms, *p.objects])
+
+
+def test_a_hyphenated_number_before_a_noun_is_an_adjective_not_a_count():
+    """"a three-seater sofa" is one sofa (before: three); "a two-bedroom flat", "a two-car
+    garage", "a four-poster bed", "a one-room cabin" and "a 50-square-metre studio" keep
+    their numbers."""
+    counts = lambda t: [(m.key, m.count) for m in parse(t).objects]  # noqa: E731
+    assert counts("A living room with a three-seater sofa and a two-tier shelf.") == [("sofa", 1), ("shelf", 1)]
+    assert counts("A cafe with a two-group machine.") == [("espresso machine", 1)]
+    assert counts("A bedroom with a four-poster bed.") == [("bed", 1)]
+    assert counts("A house with a two-car garage.") == [("car", 2)]
+    assert [(m.key, m.count) for m in parse("A two-bedroom flat.").rooms] == [("bedroom", 2)]
+    assert parse("A one-room cabin.").one_room and parse("A 50-square-metre studio.").total_m2 == 50.0

@@ -1169,6 +1169,34 @@ def _total_rooms(text: str, p: Parsed, mentions: list[Mention]) -> None:
 _NO_COMPOUND = re.compile(r"\b([Nn]o)[-\u2010\u2011](?=[^\W\d_])")
 """A hyphenated "no-" adjective ("no-frills") is one word, not a negation."""
 
+COUNT_COMPOUNDS = frozenset(
+    "bedroom bedrooms bathroom bathrooms bed beds bath baths room rooms storey storeys story stories floor "
+    "floors level levels square sq metre metres meter meters m m2 foot feet ft sqft year years month months "
+    "person people family families bay bays stall stalls".split())
+"""Words that keep a hyphenated number before them a count ("a two-bedroom flat", "a
+50-square-metre studio"); before other words it is part of an adjective."""
+_NUMBER_COMPOUND = re.compile(
+    r"\b(\d{1,3}|one|two|three|four|five|six|seven|eight|nine|ten|twelve)[-\u2010\u2011]([a-z]+)(?=\s+[a-z])", re.I)
+"""A number hyphenated to a word before a noun: "a three-seater sofa", "a two-group machine"."""
+
+
+def _number_adjectives(text: str, kb: KnowledgeBase) -> str:
+    """"A three-seater sofa" is one sofa: a number hyphenated to a word that is no room,
+    unit or object word, before a noun, is written as one word ("threeseater"), as
+    "no-frills" is; "a two-bedroom flat", "a two-car garage" and "a four-poster bed" keep
+    their number."""
+    voc = vocabulary(kb)
+
+    def join(mt: re.Match[str]) -> str:
+        word = mt.group(2).lower()
+        known = f"{mt.group(1).lower()} {word}"
+        if word in COUNT_COMPOUNDS or word in voc.forms or any(f.startswith(known) for f in voc.forms):
+            return mt.group(0)
+        return mt.group(1) + mt.group(2)
+
+    return _NUMBER_COMPOUND.sub(join, text)
+
+
 _CAPITALISED = re.compile(r"\b[A-Z][a-z]+\b")
 
 
@@ -1248,6 +1276,7 @@ def parse(text: str, kb: KnowledgeBase | None = None) -> Parsed:
     one in force); never raises on odd input."""
     kb = resolve(kb)
     text = _NO_COMPOUND.sub(r"\1", clean_text(text))  # escape sequences never reach a name
+    text = _number_adjectives(text, kb)
     norm = normalize(text)
     p = Parsed(text=norm, proper_words=_proper_words(text))
     if len(norm) > MAX_PARSE_CHARS:
