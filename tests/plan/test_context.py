@@ -309,3 +309,84 @@ def test_a_pub_pulls_beer_and_a_wine_bar_does_not(seed):
 
     assert "beer tap" in everything("A traditional English pub with a long oak bar and a beer garden.")
     assert "beer tap" not in everything("A wine bar with a tasting counter.")
+
+
+def _rooms_with(plan, furnish_word):
+    return [r for r in plan.rooms if any(furnish_word in n for n in names_of(r))]
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_a_horse_barn_has_loose_boxes_off_a_wide_aisle_and_no_bathrooms(seed):
+    plan = plan_of("A riding stable with a tack room, a feed room and six horse stalls.", seed)
+    stalls = [r for r in plan.rooms if r.name.startswith("horse stall")]
+    assert len(stalls) == 6
+    for r in stalls:  # each box holds water and hay, nothing of a home
+        names = names_of(r)
+        assert any(n in ("water trough", "automatic waterer") for n in names), names
+        assert any(n in ("hay rack", "manger") for n in names), names
+    assert [r.type for r in plan.rooms if r.type in ("aisle", "hallway")] == ["aisle"]  # the circulation
+    tack = next(r for r in plan.rooms if r.name == "tack room")
+    assert sum(n == "saddle rack" for n in names_of(tack)) >= 3 and "bridle hooks" in names_of(tack)
+    every = [n for r in plan.rooms for n in names_of(r)]
+    assert not {"bathroom", "bedroom", "kitchen"} & {r.type for r in plan.rooms}
+    assert not {"toilet", "bed", "sofa", "couch"} & set(every)
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_counted_loose_box_stalls_are_the_barns_boxes_with_a_wash_bay_hose(seed):
+    plan = plan_of("Livery yard with ten loose-box stalls, a hay loft and a wash bay with a hose.", seed)
+    assert sum(r.name.startswith("loose box") for r in plan.rooms) == 10
+    loft = next(r for r in plan.rooms if r.name == "hay loft")
+    assert sum(n == "hay bale" for n in names_of(loft)) >= 4
+    wash = next(r for r in plan.rooms if r.name == "wash bay")
+    assert "hose" in names_of(wash)
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_a_plant_nursery_under_glass_is_a_greenhouse_not_a_babys_room(seed):
+    plan = plan_of("A garden centre with a plant nursery under glass and rows of potting benches.", seed)
+    every = [n for r in plan.rooms for n in names_of(r)]
+    assert not {"crib", "cot", "changing table", "toy box", "rocking chair", "bed"} & set(every)
+    nursery = next(r for r in plan.rooms if "nursery" in r.name)
+    assert nursery.type == "sunroom" and sum(n == "potting bench" for n in names_of(nursery)) >= 3
+    assert any(n in ("checkout counter", "cash register") for n in every)
+    yard = next(r for r in plan.rooms if r.type == "garden")
+    assert sum("tree" in n or "sapling" in n for n in names_of(yard)) >= 3
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_a_courthouse_has_a_courtroom_with_its_bench_stand_box_and_tables(seed):
+    plan = plan_of("A small magistrates' court with one courtroom and a jury room.", seed)
+    court = [r for r in plan.rooms if r.name == "courtroom"]
+    assert len(court) == 1
+    names = names_of(court[0])
+    for thing in ("judge's bench", "witness stand", "jury box"):
+        assert names.count(thing) == 1, (thing, names)
+    assert names.count("counsel table") == 2
+    assert sum(n in ("gallery bench", "public seating bench") for n in names) >= 3
+    jury = next(r for r in plan.rooms if r.name == "jury room")
+    assert sum("chair" in n for n in names_of(jury)) >= 12
+    lobby = [n for r in plan.rooms if r.type == "entry" for n in names_of(r)]
+    assert "security scanner" in lobby
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_a_boathouse_keeps_its_boats_in_wet_bays_not_in_a_home(seed):
+    plan = plan_of("An old stone boathouse with three boat bays, a workshop and a changing room.", seed)
+    bays = [r for r in plan.rooms if r.name.startswith("boat bay")]
+    craft = ("boat", "dinghy", "canoe", "kayak")
+    assert len(bays) == 3 and all(any(c in n for n in names_of(r) for c in craft) for r in bays)
+    shop = next(r for r in plan.rooms if r.name == "workshop")
+    assert any("bench" in n for n in names_of(shop))
+    assert not {"bedroom", "kitchen", "living_room"} & {r.type for r in plan.rooms}
+
+
+def test_a_barns_aisle_is_laid_out_wide_enough_to_lead_a_horse():
+    from shapely.geometry import Polygon
+
+    from anyhome.evaluate.plan_metrics import min_width_m
+    from anyhome.pipeline import generate
+
+    house = generate("Horse stables with a tack room and five loose boxes.", seed=0)
+    aisle = next(r for r in house.rooms if r.type == "aisle")
+    assert min_width_m(Polygon(aisle.polygon)) >= 3.0 - 1e-6

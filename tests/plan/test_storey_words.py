@@ -70,6 +70,15 @@ def test_rooms_in_the_basement_go_down_and_the_basement_is_no_room_of_its_own():
     assert "basement" not in levels
 
 
+@pytest.mark.parametrize("seed", range(3))
+def test_a_buildings_main_room_listed_before_basement_words_stays_on_the_entrance_storey(seed):
+    """"Two courtrooms, ... and a few holding cells in the basement": the cells go down, the
+    courthouse's courtrooms and the rooms listed with them do not."""
+    levels = _levels("A courthouse with two courtrooms, a jury room and a few holding cells in the basement.", seed)
+    assert levels["courtroom"] == levels["courtroom_2"] == levels["jury_room"] == 0
+    assert levels["holding_cell"] == -1
+
+
 def test_an_attic_named_alone_is_still_a_room():
     levels = _levels("A two-storey cottage with a kitchen, a living room, two bedrooms and an attic.")
     assert levels["attic"] == max(levels.values())

@@ -201,7 +201,10 @@ def plan_rooms(kb: KnowledgeBase, parsed: Parsed, program: str | None, rng: np.r
     if sizing is not None:
         apply_kind(kb, slots, sizing)
     _name_main_room(parsed, slots, prog)
-    assign_levels(kb, parsed, slots, warnings)
+    # a building's main room stays on its entrance storey (a dwelling's may go down: "a
+    # home cinema and a wine cellar in the basement")
+    venue_main = None if program in set(_sizes(kb).get("homes", [])) else (prog or {}).get("main")
+    assign_levels(kb, parsed, slots, warnings, venue_main)
     _name_and_number(slots)
     open_air_by_name(kb, slots)
     return slots, (prog or {}).get("main")
@@ -715,11 +718,13 @@ def planned_stair_kind(slots: list[Slot]) -> str:
     return stair_kind(sum(s.area for s in slots if s.key not in HELD_KEYS))
 
 
-def assign_levels(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], warnings: list[str]) -> None:
+def assign_levels(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], warnings: list[str],
+                  main: str | None = None) -> None:
     """Put rooms on storeys when the text asks for several ("a three-storey townhouse",
     "upstairs", "a basement", "an attic") and add one stairwell per storey. A one-storey
     text leaves every room on level 0 and adds nothing. Which rooms go up, down and
-    into an attic: programs.yaml ``storeys``."""
+    into an attic: programs.yaml ``storeys``. ``main``: the key of a building's (not a
+    dwelling's) main room, which a list's closing basement words do not take down."""
     if parsed.storeys <= 1 and not parsed.basement and not parsed.attic:
         return
     st = kb.programs.storeys
@@ -753,7 +758,7 @@ def assign_levels(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], warnings
         for s in down:
             s.level = -1
     _worded_levels(parsed, slots, top, set(st.up) | {"bathroom"})
-    _keep_a_ground_floor(parsed, slots)
+    _keep_a_ground_floor(parsed, slots, main)
     _fill_empty_storeys(kb, slots, top)  # one the words emptied
     levels = sorted({s.level for s in slots})
     while len(slots) + len(levels) > MAX_ROOMS:
@@ -772,11 +777,13 @@ def assign_levels(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], warnings
         slots.append(s)
 
 
-def _keep_a_ground_floor(parsed: Parsed, slots: list[Slot]) -> None:
+def _keep_a_ground_floor(parsed: Parsed, slots: list[Slot], main: str | None = None) -> None:
     """A list ending "... and a few holding cells in the basement" that sent every room
-    down: only the room named last before the words stays in the basement, the rest come
-    up to the ground floor (a building has an entrance storey)."""
-    if any(s.level == 0 for s in slots) or not any(s.level < 0 for s in slots):
+    down, or the building's main room (``main``: a courthouse's courtrooms, named first in
+    the list): only the room named last before the words stays in the basement, the rest
+    come up to the ground floor (a building has an entrance storey)."""
+    main_down = main is not None and any(s.key == main and s.level < 0 for s in slots)
+    if (any(s.level == 0 for s in slots) and not main_down) or not any(s.level < 0 for s in slots):
         return
     down = [(span[0], s) for s in slots if s.level < 0 and (span := _slot_span(s, parsed)) is not None]
     if not down:

@@ -1,4 +1,5 @@
-"""Things that move: kayak (also canoe and boat), car, bicycle (also motorcycle)."""
+"""Things that move: kayak (also canoe), boat (a rowing boat or a small motor boat), car,
+bicycle (also motorcycle)."""
 
 from __future__ import annotations
 
@@ -89,6 +90,43 @@ def _draw_kayak(b: Builder, L: float, B: float, H: float, p) -> None:
 
 def build_kayak(p):
     return lengthwise(p.size, lambda b, L, B, H: _draw_kayak(b, L, B, H, p))
+
+
+# ----------------------------------------------------------------- boat
+def sample_boat(rng, size, style):
+    return make_params("boat", rng, size, style, ["#f4f1ea", "#2d6fa8", "#b8322a", "#3f8a4a", "#1f3a5a"],
+                       wood_tones("rustic")[:3], ["#e8c53a", "#f4f1ea", "#b8322a"],
+                       kind=str(rng.choice(["rowing", "rowing", "motor"])), oars=bool(rng.random() < 0.7))
+
+
+def _draw_boat(b: Builder, L: float, B: float, H: float, p) -> None:
+    """A boat along x, its bow at +x: an open rowing boat (a wooden hull lining, a
+    transom at the stern, three thwarts, ``oars`` laid along it) or a small motor boat
+    (a cabin, a windscreen and an outboard on the transom)."""
+    hull_h = 0.7 * H if p.kind == "rowing" else 0.55 * H
+    _hull(b, L, B, hull_h, p.primary, p.secondary)
+    b.torus((0, 0, hull_h), 1.0, 0.025, p.accent, sections=40, minor_sections=4,
+            transform=np.diag([L / 2 * 0.99, B / 2 * 0.99, 1.0, 1.0]))  # gunwale stripe
+    r = float(np.sqrt(1 - 0.88**2.2))  # the hull's half-breadth (share) where the transom stands
+    b.box((-0.45 * L, -0.45 * r * B, (1 - 0.85 * r) * hull_h), (-0.43 * L, 0.45 * r * B, hull_h),
+          darker(p.primary, 0.1))  # transom
+    if p.kind == "motor":
+        b.box((-0.2 * L, -0.35 * B, hull_h - 0.05), (0.12 * L, 0.35 * B, 0.85 * H), tint("#e8e6e0", "paint"))
+        b.box((0.12 * L, -0.32 * B, 0.7 * H), (0.13 * L, 0.32 * B, H), tint("#4a6a80", "glass"), alpha=200)
+        b.box((-0.49 * L, -0.06 * B, 0.3 * hull_h), (-0.45 * L, 0.06 * B, hull_h + 0.15 * H), DARK_METAL)  # outboard
+        return
+    for x in (-0.25 * L, 0.0, 0.25 * L):  # thwarts
+        bw = B * 0.92 * np.sqrt(max(0.0, 1 - (2 * x / L) ** 2))
+        b.box((x - 0.07, -bw / 2, hull_h - 0.1 * H), (x + 0.07, bw / 2, hull_h - 0.05 * H), p.secondary)
+    if p.oars:
+        for sgn in (-1, 1):
+            y = sgn * 0.22 * B
+            b.rod((-0.35 * L, y, hull_h - 0.04 * H), (0.3 * L, y, hull_h - 0.02 * H), 0.02, p.secondary, sections=6)
+            b.cbox((0.34 * L, y, hull_h - 0.02 * H), (0.05 * L, 0.06, 0.01), p.secondary)  # blade
+
+
+def build_boat(p):
+    return lengthwise(p.size, lambda b, L, B, H: _draw_boat(b, L, B, H, p))
 
 
 # ----------------------------------------------------------------- car
@@ -215,6 +253,8 @@ def build_bicycle(p):
 
 slot_roles("kayak", "plastic", "wood", "plastic")
 register("kayak", sample_kayak, build_kayak)
+slot_roles("boat", {"": "paint"}, "wood", "paint")
+register("boat", sample_boat, build_boat)
 slot_roles("car", "paint", "glass", "metal")
 register("car", sample_car, build_car)
 slot_roles("bicycle", "paint", "rubber", "metal")
