@@ -631,3 +631,50 @@ def test_stack_box_door_test_at_once_matches_one_by_one():
         assert at_once.tolist() == one_by_one
         seen += one_by_one
     assert any(seen) and not all(seen)
+
+
+BASEMENT_HOUSE = "A two-storey farmhouse with a basement, a big kitchen, a parlour and three bedrooms."
+
+
+def test_a_basement_stairwell_opens_into_the_basement_room_it_serves():
+    """Seeds 0-2: a basement (the lowest storey) whose stairwell opens onto a cellar, a
+    laundry or a store room (``open_plan.yaml`` ``basement_stair``) has its stair rise from
+    that room in at least one house, with no landing of its own; no room below the ground
+    of another type takes a stair; the flight and its strip lie in the room, clear of
+    its furniture, the room's aspect stays under the plan metrics' 2, and the house is
+    valid with every room reachable."""
+    from anyhome.evaluate.plan_metrics import LONG_ASPECT
+    from anyhome.floorplan.merge import l_aspect, open_plan_data
+    from anyhome.floorplan.options import FloorplanOptions
+
+    assert FloorplanOptions().open_stair_max_aspect_ratio < LONG_ASPECT
+    opened = 0
+    for seed in (0, 1, 2):
+        h, _ = _valid_storeys(BASEMENT_HOUSE, seed)
+        assert min(h.level_numbers()) == -1
+        for r in (r for r in h.rooms if r.level < 0 and any("stair" in m for m in r.merged)):
+            assert r.type in open_plan_data().basement_stair, r.type
+            assert l_aspect(r.polygon) <= FloorplanOptions().open_stair_max_aspect_ratio + 1e-9
+            assert not [x for x in h.rooms if x.level < 0 and x.type == "stairwell"]
+            _assert_stairs_kept_clear(h, r)
+            opened += 1
+    assert opened >= 1
+
+
+def test_an_open_stair_takes_a_room_a_little_taller_than_its_stairwell_not_one_rising_through():
+    """A room may take its storey's stair when it is a little taller or lower than the
+    stairwell (a 2.45 m living room, a 2.4 m stairwell); a double-height room rising
+    through the storey above may not (the stairwell above would stand on its open ceiling)."""
+    from anyhome.floorplan.levels import _rises_through
+
+    h = generate(ONE_ROOM_TOPS[0], 0)  # a loft's double-height living space under its mezzanine
+    plan = h.floorplan
+    ground = next(lv for lv in plan.levels if lv.level == 0)
+    rooms = [r for r in plan.rooms if r.level == 0]
+    tall = max(rooms, key=lambda r: r.height)
+    assert tall.height > ground.height_m and _rises_through(plan, 0, tall)
+    ordinary = min(rooms, key=lambda r: r.height)
+    assert not _rises_through(plan, 0, ordinary)
+    a_little_taller = ordinary.model_copy(update={"height": ordinary.height + 0.05})
+    assert a_little_taller.height < ground.height_m - 0.2 + 1e-6
+    assert not _rises_through(plan, 0, a_little_taller)

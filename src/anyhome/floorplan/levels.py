@@ -16,8 +16,8 @@ clear of their doors (:func:`stack_box`): storey over storey, as in a real stair
 (the flight above runs a storey over the one below). Each flight is a ``stairs`` object
 in the lower storey's stairwell (:func:`stairs_objects`). The place of the stairs is
 recorded on the storeys (:attr:`~anyhome.house.Level.stairs_at`). A stairwell opening
-onto one room only, a living room, a dining room or a hall, or a top storey's one
-habitable room (a mezzanine or attic bedroom), is merged into that room, which the
+onto one room only, a living room, a dining room or a hall, a top storey's one
+habitable room (a mezzanine or attic bedroom), or a basement's cellar or laundry, is merged into that room, which the
 stair rises in or arrives in, with no landing of its own (:func:`stairs_opened`); the
 layout keeps the flights and the floor at their feet clear (:func:`stair_zones`). Storeys that will not stack
 are tried again with roomier stairwells, then laid out on one storey.
@@ -349,11 +349,11 @@ def stairs_opened(plan: Floorplan, opts: FloorplanOptions | None = None) -> Floo
     opts = opts or FloorplanOptions()
     numbers = sorted(lv.level for lv in plan.levels)
     for k in numbers if len(numbers) >= 2 else ():
-        plan = _stair_opened(plan, k, numbers[-1], opts)
+        plan = _stair_opened(plan, k, numbers[-1], opts, numbers[0])
     return plan
 
 
-def _stair_opened(plan: Floorplan, k: int, top: int, opts: FloorplanOptions) -> Floorplan:
+def _stair_opened(plan: Floorplan, k: int, top: int, opts: FloorplanOptions, bottom: int = 0) -> Floorplan:
     """``plan`` with storey ``k``'s stairwell merged into a room, so the stair rises in,
     or arrives in, that room instead of a landing of its own: a stairwell of one or two
     doors (none to the outside), into a room it opens onto or shares a wall with
@@ -364,16 +364,20 @@ def _stair_opened(plan: Floorplan, k: int, top: int, opts: FloorplanOptions) -> 
       stairwell's other door, if any, led to no bedroom (:data:`NOT_THROUGH`: it now
       opens off that room);
     - or, on the top storey ``top``, the storey's only room people stay in (a mezzanine
-      or attic bedroom; a bathroom or closet the stairwell opened onto opens off it).
+      or attic bedroom; a bathroom or closet the stairwell opened onto opens off it);
+    - or, on a basement that is the lowest storey ``bottom``, a room of a type its stair
+      may rise from in the open (``open_plan.yaml`` ``basement_stair``: a cellar, a
+      laundry, a playroom), the other door, if any, to no bedroom.
 
     The room keeps its name, type and ceiling and holds the stairwell
-    (:attr:`~anyhome.house.Room.merged`); on the top storey it takes the taller of the
-    two heights, below it the two must be as high (the stairwell above stands on it).
+    (:attr:`~anyhome.house.Room.merged`) and takes the taller of the two heights; below
+    the top storey a room rising through the storey above is refused
+    (:func:`_rises_through`: the stairwell above would stand on its open ceiling), a room
+    a little taller or lower than the stairwell is not.
     The floor over a flight stays open (:func:`anyhome.scene.stair_openings`) and the
     layout keeps every flight and the strip at its foot clear (:func:`stair_zones`).
     Refused where the room is open-air or merged already, and where
     :func:`_merged_well` refuses."""
-    from anyhome.floorplan.merge import open_plan_data
     from anyhome.house import is_habitable
 
     well = next((r for r in plan.rooms if r.level == k and is_stairwell(r)), None)
@@ -392,14 +396,31 @@ def _stair_opened(plan: Floorplan, k: int, top: int, opts: FloorplanOptions) -> 
         if k == top and is_habitable(room.type) and not any(
                 is_habitable(r.type) for r in plan.rooms if r.level == k and r.id not in (room.id, well.id)):
             pass  # a top storey's one room (its bathroom then opens off it)
-        elif room.type not in open_plan_data().open_stair or any(r.type in NOT_THROUGH for r in others):
+        elif room.type not in _open_stair_types(k, bottom) or any(r.type in NOT_THROUGH for r in others):
             continue
-        if k != top and abs(room.height - well.height) > 1e-6:
+        if k != top and _rises_through(plan, k, room):
             continue
         opened = _merged_well(plan, k, room, well, opts)
         if opened is not None:
             return opened
     return plan
+
+
+def _open_stair_types(k: int, bottom: int) -> frozenset[str]:
+    """Room types an open stair may rise in on storey ``k`` (``bottom``: the lowest):
+    ``open_plan.yaml`` ``open_stair``, and on a basement at the bottom ``basement_stair``."""
+    from anyhome.floorplan.merge import open_plan_data
+
+    data = open_plan_data()
+    return data.open_stair | data.basement_stair if k == bottom < 0 else data.open_stair
+
+
+def _rises_through(plan: Floorplan, k: int, room: Room) -> bool:
+    """Whether ``room`` of storey ``k`` is taller than its storey's ceiling (a room rising
+    through the storey above, :func:`through_rooms`): the stairwell above would stand on
+    its open ceiling. A room a little taller or lower than the stairwell is not."""
+    storey = next((lv for lv in plan.levels if lv.level == k), None)
+    return storey is not None and room.height > storey.height_m - SLAB_M + 1e-6
 
 
 NOT_THROUGH = frozenset({"bedroom"})
@@ -415,13 +436,13 @@ def _shared_wall_m(a: Room, b: Room) -> float:
 
 def _merged_well(plan: Floorplan, k: int, room: Room, well: Room, opts: FloorplanOptions) -> Floorplan | None:
     """``plan`` with ``well`` merged into ``room`` (:func:`_stair_opened`), or None where
-    their union is neither a rectangle nor an L within the habitable aspect limit, or a
+    their union is neither a rectangle nor an L within ``open_stair_max_aspect_ratio``, or a
     flight (at the place recorded on the storeys, :func:`_stairs_recorded`) would not
     stand in, or arrive in, the room."""
     from anyhome.floorplan.merge import l_aspect, merge_rooms, union_outline
 
     outline = union_outline(room.polygon, well.polygon)
-    if outline is None or l_aspect(outline) > opts.max_habitable_aspect_ratio + 1e-9:
+    if outline is None or l_aspect(outline) > opts.open_stair_max_aspect_ratio + 1e-9:
         return None
     opened = merge_rooms(plan, room.id, well.id, name=room.name, outline=outline)
     if well.height > room.height:  # the storey stays as high as its tallest room

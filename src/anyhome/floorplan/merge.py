@@ -69,6 +69,9 @@ class OpenPlan:
     open_stair: frozenset[str] = frozenset()
     """Room types an open stair may rise in (a stairwell opening onto one of them only
     merges into it: :func:`anyhome.floorplan.levels.stairs_opened`)."""
+    basement_stair: frozenset[str] = frozenset()
+    """Room types of a basement (the lowest storey, below the ground) that its stair may
+    rise from in the open: nobody passes through them to a storey further down."""
 
 
 @lru_cache(maxsize=1)
@@ -76,7 +79,8 @@ def open_plan_data(path: Path = OPEN_PLAN_FILE) -> OpenPlan:
     data = yaml.safe_load(path.read_text(encoding="utf-8"))
     return OpenPlan(tuple(str(w).lower() for w in data["words"]),
                     tuple((str(a), str(b)) for a, b in data["pairs"]),
-                    frozenset(str(t) for t in data.get("open_stair", ())))
+                    frozenset(str(t) for t in data.get("open_stair", ())),
+                    frozenset(str(t) for t in data.get("basement_stair", ())))
 
 
 def asks_open_plan(spec: HouseSpec, data: OpenPlan | None = None) -> bool:

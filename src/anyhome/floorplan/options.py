@@ -322,6 +322,8 @@ class FloorplanOptions:
     """The same chance when the prompt or style asks for open plan (``open_plan.yaml`` words)."""
     open_plan_max_rooms: int = _opt(1, 0, 100)
     """Most L rooms merged in one house (0: none, every room stays a rectangle)."""
+    open_stair_max_aspect_ratio: float = _opt(1.99, 1.0, 20.0)
+    """Longest side / widest disc of a room with its storey's stairwell merged in (an open stair, ``levels.stairs_opened``): the room itself keeps ``max_habitable_aspect_ratio``, the stair's end is floor kept clear; under the plan metrics' 2."""
 
     def __post_init__(self) -> None:
         for f in fields(self):
