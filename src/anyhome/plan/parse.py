@@ -70,9 +70,14 @@ EACH_OPENER = re.compile(r"^\s*(?:[,;:]\s*)?(?:(?:that|which)\s+)?(?:each|every 
 CONTEXT_OPENERS = re.compile(
     r"^\s*(?:,\s*)?(?:(?:(?:that|which)\s+)?(?:each|every one|all)(?: of them)?\s*(?:,\s*)?)?(?:with|without|full of|filled with|lined with|packed with|featuring|containing|"
     r"that has|which has|has|have|having|where|equipped with|furnished with|holding|housing|that holds|which holds|that houses|which houses)\b"
-    r"|^\s*[,;:]\s*(?:each|every one|all|both)(?: of them)?\s*(?:,\s*)?(?:with|has|have|having|gets?|featuring|containing)\b"
 )
 """Text right after a room mention that makes the following objects belong to it."""
+
+
+def _opens_context(tail: str) -> bool:
+    """Whether ``tail`` (text right after a room mention) makes the objects after it the
+    room's: a context opener, or an each opener ("two bedrooms; both get ...")."""
+    return bool(CONTEXT_OPENERS.match(tail) or EACH_OPENER.match(tail))
 
 IN_ROOM = re.compile(r"^\s*(?:in|inside|for|into|within|of|on|at)(?:\s+(?:the|a|an|my|our|each))?\s*$")
 """Text between an object and a room that puts the object in that room."""
@@ -805,7 +810,7 @@ def _assign_rooms(text: str, mentions: list[Mention]) -> None:
                 continue
             tail = text[m.end : m.end + 40]
             outer = context
-            context = room_idx[id(m)] if CONTEXT_OPENERS.match(tail) else None
+            context = room_idx[id(m)] if _opens_context(tail) else None
             if context is None and outer is not None and OWN_PART.search(text[rooms[outer].end : m.start]):
                 context = outer  # "a suite with its own sitting area and a tub": the tub is the suite's
             plural_room = (m.count or 0) > 1 or m.plural
@@ -965,7 +970,7 @@ def _find_materials(kb: KnowledgeBase, text: str, p: Parsed, rooms: list[Mention
             room = next((i for i, r in enumerate(rooms) if r.start - len(" ".join(r.words)) - 2 <= pos <= r.start + 1), None)
         if room is None:
             for i, r in enumerate(rooms):
-                if r.end <= mt.start() and CONTEXT_OPENERS.match(text[r.end : r.end + 40]) and "." not in text[r.end : mt.start()] and mt.start() - r.end < 60:
+                if r.end <= mt.start() and _opens_context(text[r.end : r.end + 40]) and "." not in text[r.end : mt.start()] and mt.start() - r.end < 60:
                     room = i
         p.materials.append(MaterialMention(phrase, material, surfaces, mt.start(), room, explicit))
     tokens = _tokens(text)
@@ -1092,7 +1097,7 @@ def _room_compounds(kb: KnowledgeBase, text: str, tokens: list[tuple[str, int, i
             continue
         word, s, e = tokens[k]
         after = tokens[k + 1][0] if k + 1 < len(tokens) else "."
-        if CONTEXT_OPENERS.match(text[m.end :]) or word in NOT_NOUNS:
+        if _opens_context(text[m.end :]) or word in NOT_NOUNS:
             continue
         known = next((x for x in mentions if x.kind == "object" and x.start == s), None)
         if known is not None:  # "a courtyard fountain", "a kitchen island"
@@ -1245,7 +1250,7 @@ def _nouns_only(kb: KnowledgeBase, text: str, mentions: list[Mention]) -> list[M
             nxt = re.match(r"\s*([a-z][a-z'-]*)", text[m.end :])
             if nxt is not None and nxt.group(1) not in AFTER_A_NOUN:
                 continue
-            before = re.search(r"([a-z]+)\s*$", text[: m.end - len(m.key or "")])
+            before = re.search(r"([a-z]+)\s*$", text[: m.start])
             if before is not None and before.group(1) in BEFORE_AN_ADJECTIVE:
                 continue  # "the room feels snug and warm"
         keep.append(m)

@@ -86,12 +86,13 @@ def _concept_info(kb: KnowledgeBase, furnish: str) -> dict:
     return {"type": furnish_type(furnish, kb), "furnish": furnish}
 
 
-def _slot_from_mention(kb: KnowledgeBase, m: Mention, idx: int, home: bool = False, program: str | None = None) -> Slot:
-    """The room a mention names, read as a dwelling reads it when ``home`` (rooms.yaml
-    ``at_home``: "a salon" in a riad is a sitting room) and as the building ``program``
-    reads it (``within``: "the gym" of a school is its sports hall)."""
+def _slot_from_mention(kb: KnowledgeBase, m: Mention, idx: int, program: str | None = None) -> Slot:
+    """The room a mention names, read as the building ``program`` reads it (rooms.yaml
+    ``within``: "the gym" of a school is its sports hall; ``at_home`` in a dwelling: "a
+    salon" in a riad is a sitting room)."""
     info = kb.raw("rooms")["names"].get(m.key) if m.key else None
     if info is not None and ("at_home" in info or "within" in info):
+        home = program in set(_sizes(kb).get("homes", []))
         sense = (info.get("within") or {}).get(program or "") or (info.get("at_home") if home else None) or {}
         info = {**{k: v for k, v in info.items() if k not in ("at_home", "within")}, **sense}
     if m.concept:
@@ -174,8 +175,7 @@ def plan_rooms(kb: KnowledgeBase, parsed: Parsed, program: str | None, rng: np.r
                 s.optional = opt is not None
                 slots.append(s)
     fixed = _fixed_counts(kb, parsed)
-    _claim_mentions(kb, parsed, slots, fixed, home=program in set(_sizes(kb).get("homes", [])), prog=prog,
-                    program=program)
+    _claim_mentions(kb, parsed, slots, fixed, prog, program)
     _drop_replaced(parsed, slots)
     totals = frozenset(t for t, n in (("bedroom", parsed.bedrooms), ("bathroom", parsed.bathrooms)) if n is not None)
     _apply_fixed(kb, slots, fixed, prog, totals)
@@ -274,7 +274,7 @@ def _fixed_counts(kb: KnowledgeBase, parsed: Parsed) -> dict[str, int]:
     return fixed
 
 
-def _claim_mentions(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], fixed: dict[str, int], home: bool = False,
+def _claim_mentions(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], fixed: dict[str, int],
                     prog: dict | None = None, program: str | None = None) -> None:
     names = kb.raw("rooms")["names"]
     main = next((s for s in slots if prog and s.key == prog.get("main")), None)
@@ -282,7 +282,7 @@ def _claim_mentions(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], fixed:
     for i, m in enumerate(parsed.rooms):
         if m.count == 0:
             continue
-        proto = _slot_from_mention(kb, m, i, home, program)
+        proto = _slot_from_mention(kb, m, i, program)
         if main is not None and _taken_in(m, proto, held, taken):
             main.parts.append(i)
             taken.add(proto.type)
