@@ -18,7 +18,9 @@ benchmarks/prompts/heldout_context.jsonl (40 prompts) was written by a helper wh
 not read the knowledge base, at the start of the session that built context reading;
 it is for measuring only, never for tuning. benchmarks/prompts/dev_context.jsonl (36
 prompts, same form) was written the same way at the start of the sixth session, as the
-set to find and fix causes on.
+set to find and fix causes on. dev_context2.jsonl and heldout_context2.jsonl (36 each)
+were written the same way at the start of the eighth session: the first to tune on, the
+second for measuring only.
 """
 
 from __future__ import annotations
@@ -42,6 +44,8 @@ SETS = {
     "public": HERE.parent.parent / "shared" / "eval" / "prompts.jsonl",
     "heldout_context": HERE / "prompts" / "heldout_context.jsonl",
     "dev_context": HERE / "prompts" / "dev_context.jsonl",
+    "dev_context2": HERE / "prompts" / "dev_context2.jsonl",
+    "heldout_context2": HERE / "prompts" / "heldout_context2.jsonl",
 }
 
 

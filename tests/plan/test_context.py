@@ -390,3 +390,105 @@ def test_a_barns_aisle_is_laid_out_wide_enough_to_lead_a_horse():
     house = generate("Horse stables with a tack room and five loose boxes.", seed=0)
     aisle = next(r for r in house.rooms if r.type == "aisle")
     assert min_width_m(Polygon(aisle.polygon)) >= 3.0 - 1e-6
+
+
+# ------------------------------------------------------------------ eighth session (dev_context2)
+def test_stalls_are_loose_boxes_only_in_a_stable():
+    """rooms.yaml ``only_within``: a riding stable's "ten stalls" are ten loose boxes; a
+    shower stall stays an object, and no other building reads "stalls" as rooms."""
+    from anyhome.plan.parse import parse
+
+    stable = plan_of("A riding stable with ten stalls, a tack room and a hay loft.", 0)
+    assert sum(r.name.startswith("loose box") for r in stable.rooms) == 10
+    assert not any("shower" in n for r in stable.rooms for n in names_of(r))
+    assert not any(m.key == "loose box" for m in parse("A covered market with twelve vendor stalls.").rooms)
+    assert [m.key for m in parse("A bathroom with a shower stall.").objects] == ["shower"]
+
+
+def test_tatami_rooms_of_an_inn_are_its_guest_rooms_and_its_dining_room_is_one():
+    spec = plan_of("A Japanese inn with five tatami rooms, a communal bath and a dining room.", 0)
+    tatami = [r for r in spec.rooms if r.name.startswith("tatami room")]
+    assert len(tatami) == 5 and all(r.type == "bedroom" for r in tatami)
+    assert not any(r.name.startswith("guest room") for r in spec.rooms)
+    assert sum("dining" in r.name for r in spec.rooms) == 1
+
+
+def test_a_pubs_games_room_has_pool_and_darts_not_a_gaming_desk():
+    spec = plan_of("A village pub with a bar, a games room and a beer garden.", 0)
+    games = next(r for r in spec.rooms if r.name == "games room")
+    names = names_of(games)
+    assert "pool table" in names and not any("gaming" in n or "toy" in n for n in names)
+
+
+def test_each_with_a_list_gives_each_room_its_own_parts_not_the_buildings_rooms():
+    from anyhome.plan.parse import parse
+
+    p = parse("A hotel floor with four junior suites, each with its own sitting area, a balcony and "
+              "a bathroom with a bathtub, plus a housekeeping store.")
+    assert [(m.key, m.count) for m in p.rooms[:4]] == [
+        ("junior suite", 4), ("sitting area", 4), ("balcony", 4), ("bathroom", 4)]
+    tub = next(m for m in p.objects if m.key == "bathtub")
+    assert tub.room == 3 and tub.each
+    p = parse("Three bedrooms each with its own bathroom, a kitchen and a study.")
+    assert [(m.key, m.count) for m in p.rooms] == [("bedroom", 3), ("bathroom", 3), ("kitchen", 1), ("study", 1)]
+
+
+def test_what_a_room_is_used_for_and_where_it_is_come_before_what_it_has():
+    from anyhome.plan.parse import parse
+
+    p = parse("A school with a main hall used for assemblies, PE and lunch, with a small stage "
+              "and stacked chairs; a kitchen servery; two classrooms.")
+    assert [m.key for m in p.rooms] == ["hall", "kitchen", "classroom"]
+    assert {m.key: m.room for m in p.objects if m.key in ("stage platform", "chair")} == {"stage platform": 0, "chair": 0}
+    assert not any("lunch" in m.name for m in [*p.rooms, *p.objects])
+    hall = next(r for r in plan_of("A primary school with a main hall used for assemblies and two classrooms.", 0).rooms
+                if r.name == "main hall")
+    assert hall.type == "hall"  # "main" says which hall, not a main bedroom
+    p = parse("A manor with a long gallery on the top floor hung with family portraits and a parlour.")
+    assert [m.room for m in p.objects if "portrait" in m.name] == [0]
+
+
+def test_a_building_in_a_basement_or_an_arcade_is_no_basement_storey_and_no_arcade():
+    from anyhome.plan.parse import parse
+
+    p = parse("Speakeasy-style cocktail bar in a basement: a long marble bar with eight stools and four booths.")
+    assert not p.basement and p.building_phrase == "cocktail bar" and not p.rooms
+    assert parse("A bar in a basement, with a wine cellar in the basement too.").basement
+    p = parse("Nail salon in a shopping arcade: six manicure tables and four pedicure chairs with foot spas.")
+    assert not any("arcade" in m.name for m in p.objects) and not p.rooms
+
+
+def test_a_room_for_an_activity_is_that_rooms_kind():
+    from anyhome.plan.parse import parse
+
+    assert [m.key for m in parse("A yoga studio with a practice room and a smaller room for meditation.").rooms] == [
+        "practice room", "meditation room"]
+    assert [m.key for m in parse("A flat with room for two and a room for everything.").rooms] == []
+
+
+@pytest.mark.parametrize("seed", range(2))
+def test_a_venues_seat_count_furnishes_its_main_room_and_sleeps_no_one(seed):
+    """"A restaurant for 40 guests" once planned eight kids' bedrooms; now its dining
+    room seats about forty, and a boardroom for sixteen has sixteen chairs."""
+    from anyhome.plan.furnish import group_seats
+
+    spec = plan_of("A restaurant for 40 guests.", seed)
+    assert not any(r.type == "bedroom" for r in spec.rooms)
+    main = next(r for r in spec.rooms if r.type == "restaurant")
+    seats = sum(group_seats(g.model_dump()) * g.repeat for g in main.groups)
+    assert 36 <= seats <= 48
+    office = plan_of("An office with a boardroom for sixteen and a kitchen.", seed)
+    board = next(r for r in office.rooms if r.name == "boardroom")
+    table = next(g for g in board.groups if g.anchor.category == "table" or "table" in g.anchor.name)
+    assert sum(m.count for m in table.members if "chair" in m.name) == 16
+    home = plan_of("A family home for 5 people.", seed)
+    assert sum(r.type == "bedroom" for r in home.rooms) >= 3  # a household, not seats
+
+
+def test_a_stand_of_an_unknown_kind_is_no_tv_stand():
+    from anyhome.plan import openvocab as ov
+
+    for phrase in ("shoeshine stand", "cake stand", "wheel truing stand"):
+        kind, match = ov.classify(phrase)
+        assert kind == "object" and (match is None or match.key != "tv stand")
+    assert ov.classify("solar panel")[0] == "object"  # a sibling's word still says "object"

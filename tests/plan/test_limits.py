@@ -95,8 +95,8 @@ def test_forty_hotel_rooms_fill_the_house_with_guest_rooms():
 
 
 def test_a_negative_count_warns_and_is_ignored():
-    h = plan("-3 bathrooms")
-    assert [r.type for r in h.rooms] == ["bathroom"]
+    h = plan("-3 bathrooms")  # as if no number was given: "bathrooms", two
+    assert [r.type for r in h.rooms] == ["bathroom", "bathroom"]
     assert any("-3" in w and "negative" in w for w in h.warnings)
 
 

@@ -274,6 +274,53 @@ def _fit_table(g: Group) -> None:
         g["anchor"]["size_m"] = (round(w, 3), d, h)
 
 
+SEAT_WIDTH_M = 0.6
+"""Width one sitter takes on a bench, a pew, a sofa or a banquette."""
+LONG_SEATS = frozenset({"bench", "pew", "sofa", "banquette", "booth_seating", "settle"})
+"""Seat categories that sit several side by side (seats: width / :data:`SEAT_WIDTH_M`)."""
+
+
+def item_seats(item: Item) -> int:
+    """People an item seats: 0 for no seat; a bench or a pew by its width."""
+    tags = item.get("tags") or []
+    if "seat" not in tags and item["category"] not in LONG_SEATS:
+        return 0
+    per = max(1, int(item["size_m"][0] / SEAT_WIDTH_M)) if item["category"] in LONG_SEATS else 1
+    return per * int(item.get("count", 1))
+
+
+def group_seats(g: Group) -> int:
+    """People one copy of a group seats."""
+    return item_seats(g["anchor"]) + sum(item_seats(m) for m in g["members"])
+
+
+def seat(groups: list[Group], n: int) -> None:
+    """Make a room's seating hold about ``n`` people ("a bistro for 40 covers", "a
+    boardroom for 16"): one table group alone gets that many chairs round a longer table;
+    otherwise every seating group's copies scale by the same factor (at least one each)."""
+    seating = [g for g in groups if group_seats(g) > 0]
+    if not seating or n < 1:
+        return
+    if len(seating) == 1 and seating[0]["repeat"] == 1 and n <= MAX_TABLE_SEATS:
+        g = seating[0]
+        chairs = [m for m in g["members"] if m["rule"] == "place_around" and item_seats(m)]
+        if chairs:
+            chairs[0]["count"] = max(1, n - (group_seats(g) - item_seats(chairs[0])))
+            _fit_table(g)
+            return
+    # the repeated groups (tables, pews, desks) take the count; a bar or a sofa stays one
+    scaled = [g for g in seating if g["repeat"] > 1] or [max(seating, key=group_seats)]
+    fixed = sum(group_seats(g) * g["repeat"] for g in seating if not any(g is x for x in scaled))
+    have = sum(group_seats(g) * g["repeat"] for g in scaled)
+    factor = max(n - fixed, 1) / have
+    for g in scaled:
+        g["repeat"] = max(1, min(MAX_COUNT, round(g["repeat"] * factor)))
+
+
+MAX_TABLE_SEATS = 24
+"""Most people one table seats when a room's count goes to its one table."""
+
+
 def mention_count(m: Mention, proto: dict[str, Any], rng: np.random.Generator) -> int | None:
     """Copies the text asks for: its number, a plural's range, or None if unsaid."""
     if m.count is not None:

@@ -267,6 +267,9 @@ class RoomName(_Model):
     noun_only: bool = Field(False, description=(
         "the word is also an adjective: it names a room only where no word of a name follows it "
         "('a cosy snug,' is a room; 'a snug bedroom', 'solar panels' are not)"))
+    only_within: list[str] = Field(default_factory=list, description=(
+        "programs in which alone the word names a room (a riding stable's 'stalls' are its loose "
+        "boxes; a market's 'vendor stalls' are no rooms); empty: every building"))
 
     _r = field_validator("area")(classmethod(lambda cls, v: _ordered(v)))
 
@@ -288,9 +291,15 @@ class RoomsFile(_Model):
         description="a room name's last word that makes it a small room, and its area range "
                     "(a 'meditation nook' read as a meditation room is a nook's size)",
     )
+    own_parts: list[str] = Field(default_factory=list, description=(
+        "room types a room of several may each have as its own part, listed after the first "
+        "('four suites, each with its own sitting area, a balcony and a bathroom')"))
 
     @model_validator(mode="after")
     def _open_air_types(self) -> RoomsFile:
+        for t in self.own_parts:
+            if t not in self.types:
+                raise ValueError(f"own_parts names {t!r}, not a room type")
         for word, t in (self.open_air.words.items() if self.open_air else ()):
             if t not in self.types or not self.types[t].open_air:
                 raise ValueError(f"open_air word {word!r} names {t!r}, not an open_air room type")
@@ -803,7 +812,7 @@ class KnowledgeBase:
                  f"{rt.min_area_m2} m2 is less than a square of its min_width_m ({rt.min_width_m ** 2:.2f} m2)")
             need(rt.area[0] >= rt.min_area_m2, "rooms", ("types", t, "area"), f"starts below min_area_m2 ({rt.min_area_m2} m2)")
         for n, rn in self.rooms.names.items():
-            for prog_key in rn.within:
+            for prog_key in [*rn.within, *rn.only_within]:
                 need(prog_key in programs, "rooms", ("names", n, "within", prog_key),
                      lambda: known(prog_key, programs, "program"))
             senses = [((), rn), (("at_home",), rn.at_home), *((("within", k), v) for k, v in rn.within.items())]

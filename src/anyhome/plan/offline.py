@@ -256,6 +256,26 @@ def _furnished_need(kb: KnowledgeBase) -> Any:
     return need
 
 
+def _seated(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], main_key: str | None) -> list[tuple[int, int]]:
+    """(slot index, people) for each seat count of the text: the room it follows, else
+    the building's main room; a dwelling's "for 4 people" is its household, not seats."""
+    out = []
+    homes = set((kb.raw("programs").get("sizes") or {}).get("homes", []))
+    for room, n in parsed.seats:
+        if room is not None:
+            idx = next((i for i, s in enumerate(slots) if s.mention == room), None)
+        else:
+            main = next((i for i, s in enumerate(slots) if main_key and s.key == main_key), None)
+            idx = None if main is None or slots[main].type == "bedroom" or _dwelling(kb, parsed, homes) else main
+        if idx is not None:
+            out.append((idx, n))
+    return out
+
+
+def _dwelling(kb: KnowledgeBase, parsed: Parsed, homes: set[str]) -> bool:
+    return parsed.building is None or kb.raw("programs")["buildings"][parsed.building]["program"] in homes
+
+
 def _mostly_latin(text: str) -> bool:
     letters = [c for c in text if c.isalpha()]
     return not letters or sum(c.isascii() for c in letters) >= len(letters) / 2
@@ -280,6 +300,8 @@ def _furnish(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], main_key: str
             fu.apply_mention(kb, m, groups, ornaments, unused, slots[i].area, rng)
     for groups, _, _ in built:
         fu.drop_unasked_beds(groups)
+    for i, n in _seated(kb, parsed, slots, main_key):  # "a bistro for 40 covers"
+        fu.seat(built[i][0], n)
     for m in parsed.objects:  # "a bedroom without a tv", "no rug": after what the text adds
         if not m.negated:
             continue

@@ -151,12 +151,17 @@ def classify(phrase: str, kb: KnowledgeBase | None = None, room_ok: bool = True)
     mo = _best(nearest("objects", phrase, with_score=True, kb=kb), None)
     mr = _best(nearest("rooms", phrase, with_score=True, kb=kb), None)
     head = phrase.split()[-1]
+    objectness = mo  # how much the phrase reads as an object, a sibling's word included
     if head != phrase and head not in GENERIC_HEADS:  # "front porch": the head decides too
         hr = nearest("rooms", head, with_score=True, kb=kb)
         ho = nearest("objects", head, with_score=True, kb=kb)
         mr = _best(mr, hr)
-        mo = _best(mo, ho)
-    if room_ok and mr is not None and mr.score >= max(threshold("rooms", kb=kb), LIST_ROOM_MIN) and (mo is None or mr.score > mo.score + ROOM_MARGIN):
+        objectness = _best(mo, ho)
+        if ho is not None and _head_match(ho, head) is None and mo is not None and mo.score < SIBLING_MIN:
+            mo = None  # "a shoeshine stand": no tv stand, and nothing else is near: the user's own
+        mo = _best(mo, _head_match(ho, head))
+    if (room_ok and mr is not None and mr.score >= max(threshold("rooms", kb=kb), LIST_ROOM_MIN)
+            and (objectness is None or mr.score > objectness.score + ROOM_MARGIN)):
         return "room", mr
     if room_ok and _room_compound(head):  # "two courtrooms": a room; its concept only when close
         return "room", mr if mr is not None and mr.score >= LIST_ROOM_MIN else None
@@ -176,6 +181,21 @@ def _room_compound(word: str) -> bool:
     return word.endswith("room") and len(word) >= ROOM_COMPOUND_MIN_CHARS and word not in NOT_ROOM_COMPOUNDS
 
 
+SIBLING_MIN = 0.65
+"""Where a phrase's head matched only a sibling ("tv stand" for "truing stand"), the whole
+phrase's match must reach this score to stand; else the object keeps the user's name."""
+
+
+def _head_match(m: Match | None, head: str) -> Match | None:
+    """A head word's own match, or None where it matched a sibling of the phrase: a
+    concept with the same head and another modifier ("tv stand" for the head of "wheel
+    truing stand", "shoeshine stand") says what the head is not, not what it is."""
+    if m is None:
+        return None
+    words = m.key.split()
+    return None if len(words) > 1 and words[-1] in (head, head + "s") else m
+
+
 def _best(a: Match | None, b: Match | None) -> Match | None:
     if a is None or (b is not None and b.score > a.score):
         return b
@@ -187,8 +207,16 @@ def map_room(phrase: str, kb: KnowledgeBase | None = None) -> Match | None:
     return nearest("rooms", phrase, kb=kb)
 
 
+PLACE_WORDS = frozenset(
+    "main principal central big large small little old new front back rear upper lower "
+    "first second third top ground side inner outer middle far near".split())
+"""Modifiers that say which room or where, not what for: "the main hall" of a school is
+its hall, not a main bedroom."""
+
+
 def map_modified_room(head: str, words: list[str], kb: KnowledgeBase | None = None) -> Match | None:
     """A better furnishing for a known generic head with unknown modifiers ("recital hall")."""
+    words = [w for w in words if w not in PLACE_WORDS]
     if head not in GENERIC_HEADS or not words:  # "eucalyptus steam room" stays a steam room
         return None
     return nearest("rooms", " ".join([*words, head]), kb=kb)

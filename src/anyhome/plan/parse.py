@@ -69,14 +69,32 @@ EACH_OPENER = re.compile(r"^\s*(?:[,;:]\s*)?(?:(?:that|which)\s+)?(?:each|every 
 
 CONTEXT_OPENERS = re.compile(
     r"^\s*(?:,\s*)?(?:(?:(?:that|which)\s+)?(?:each|every one|all)(?: of them)?\s*(?:,\s*)?)?(?:with|without|full of|filled with|lined with|packed with|featuring|containing|"
-    r"that has|which has|has|have|having|where|equipped with|furnished with|holding|housing|that holds|which holds|that houses|which houses)\b"
+    r"that has|which has|has|have|having|where|equipped with|furnished with|holding|housing|that holds|which holds|that houses|which houses|"
+    r"hung with|decorated with|adorned with|dressed with)\b"
 )
 """Text right after a room mention that makes the following objects belong to it."""
 
 
+USED_AS = re.compile(r"^\s*(?:,\s*)?used (?:for|as)\b[^.;:]*?,(?=\s*(?:with|featuring|containing|equipped|furnished)\b)")
+"""What a room is used for, before what it has: "a main hall used for assemblies, PE and
+lunch, with a small stage"."""
+
+
+WHERE_FIRST = re.compile(
+    r"^\s*(?:,\s*)?(?:(?:on|in|at|under|up in|down in) the (?:[\w-]+ ){0,2}(?:floor|storey|story|level|attic|basement|"
+    r"loft|eaves|back|front|rear|top|end|corner)|upstairs|downstairs)\s*,?")
+"""Where a room is, said before what it has: "a long gallery on the top floor hung with
+portraits"."""
+
+
 def _opens_context(tail: str) -> bool:
     """Whether ``tail`` (text right after a room mention) makes the objects after it the
-    room's: a context opener, or an each opener ("two bedrooms; both get ...")."""
+    room's: a context opener, or an each opener ("two bedrooms; both get ..."), after
+    what the room is used for or where it is, if said."""
+    if used := USED_AS.match(tail):
+        tail = tail[used.end() :]
+    if where := WHERE_FIRST.match(tail):
+        tail = tail[where.end() :]
     return bool(CONTEXT_OPENERS.match(tail) or EACH_OPENER.match(tail))
 
 IN_ROOM = re.compile(r"^\s*(?:in|inside|for|into|within|of|on|at)(?:\s+(?:the|a|an|my|our|each))?\s*$")
@@ -123,6 +141,39 @@ _PEOPLE = re.compile(
     r"\b(?:family|household|group) of (\w+)\b|\bfor (\w+) (?:people|persons|adults|kids|children|guests)\b"
     r"|\bsleep(?:s|ing)? (?:up to )?(\w+)\b"
 )
+SEATS = re.compile(
+    r"\b(?:for|seating(?: for)?|seats|sits|holding|with room for|with seating for|capacity(?: of)?)\s+"
+    r"(?:up to\s+|about\s+|around\s+)?([\w-]+)(?:\s+(covers|diners|guests|people|persons|worshippers|pupils|students|children|kids|"
+    r"seats|visitors|customers|patrons|members|delegates|spectators|congregants|drinkers|audience))?\b")
+"""How many a room or a venue seats: "a bistro for 40 covers", "a dining room seating
+12", "a boardroom for 16", "a church that seats 200"."""
+SEAT_GAP_TOKENS = 3
+"""A seat count belongs to the room named at most this many words before it ("a dining
+room seating 12", "a boardroom for 16")."""
+
+
+def _find_seats(text: str, p: Parsed, mentions: list[Mention]) -> None:
+    """``p.seats``: (room mention index or None for the building, people) for each seat
+    count; a table's ("a table for six") is its own, read where tables are sized."""
+    for mt in SEATS.finditer(text):
+        n = parse_number(mt.group(1))
+        if n is None or n < 2:
+            continue
+        last = max((m for m in mentions if m.end <= mt.start()), key=lambda m: m.end, default=None)
+        gap = text[last.end : mt.start()] if last is not None else ""
+        near = last is not None and len(_tokens(gap)) <= SEAT_GAP_TOKENS and not re.search(r"[.;:,]", gap)
+        if near and last is not None and last.kind == "object":
+            continue
+        if near and last is not None and last.kind == "room":
+            p.seats.append((next(i for i, r in enumerate(p.rooms) if r is last), n))
+        elif mt.group(2) or last is None:  # "a bistro for 40 covers", "a church that seats 200"
+            p.seats.append((None, n))
+        else:
+            continue
+        # "seats 200", "seating for 35": the verb is no seat object
+        p.objects = [o for o in p.objects if not (o.start < mt.start(1) and mt.start() < o.end)]
+
+
 _COUPLE = re.compile(r"\b(?:couple(?! of\b)|newlyweds|two people)\b")  # "a couple of armchairs" counts chairs
 _MEMBERS = re.compile(
     r"\b(?!an?\b)(\w+) (parents|adults|grandparents|roommates|flatmates|friends|kids|children|toddlers|babies|"
@@ -214,6 +265,7 @@ class Parsed:
     bedrooms: int | None = None  # from "3B2B" / "3br"
     bathrooms: int | None = None
     people: int | None = None
+    seats: list[tuple[int | None, int]] = field(default_factory=list)  # (room mention or None: the building, people)
     one_room: bool = False  # "a one-room house"
     total_rooms: int | None = None  # "a hotel with 40 rooms": rooms asked for in all
     storeys: int = 1  # "a three-storey townhouse", "two floors": storeys above ground, ground included
@@ -576,10 +628,15 @@ def _building_modifiers(kb: KnowledgeBase, text: str, start: int, p: Parsed, kee
 def _find_mentions(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[int, int]]) -> list[Mention]:
     voc = vocabulary(kb)
     found: list[Mention] = []
+    names = kb.raw("rooms")["names"]
+    program = kb.raw("programs")["buildings"][p.building]["program"] if p.building is not None else None
     for mt in voc.regex.finditer(text):
         if any(a < mt.end() and mt.start() < b for a, b in taken):
             continue
         entry, plural = voc.forms[mt.group()]
+        only = names.get(entry.key, {}).get("only_within") if entry.kind == "room" else None
+        if only and program not in only:  # "vendor stalls" of a market: no rooms
+            continue
         found.append(Mention(entry.kind, entry.key, entry.phrase, mt.start(), mt.end(), plural=plural))
     found = _merge_adjacent(text, found)
     spans = taken + [(m.start, m.end) for m in found]
@@ -709,6 +766,20 @@ def _apply_codes(text: str, p: Parsed, taken: list[tuple[int, int]]) -> None:
 _STOREYS = re.compile(
     r"\b(\w+)[- ](?:storey|story|storeyed|storied|level|floor)s?\b(?! plan)|\b(\w+) (?:storeys|stories|floors|levels)\b")
 _UPSTAIRS = re.compile(r"\b(?:upstairs|downstairs|upper floor|upper storey|up the stairs)\b")
+STYLE_SUFFIX = re.compile(r"\b(?!(?:classroom|theatre|theater|cabaret|banquet|boardroom|dorm|dormitory|family|buffet)-)([A-Za-z]+)-style\b")
+"""A word made a style by "-style" ("Speakeasy-style", "Shaker-style") reads as the word;
+seating layouts ("classroom-style") keep theirs."""
+IN_A_BASEMENT = re.compile(r"\s*(?:,\s*)?(?:set |tucked away |hidden )?(?:in|into) (?:a|an|the) (?:[\w-]+ )?(?:basement|cellar|vault)s?\b")
+"""Right after the building: the building itself is below ground ("a speakeasy in a
+basement"), one storey, no basement storey under it."""
+IN_A_PLACE = re.compile(
+    r"\s*(?:,\s*)?(?:(?:set|tucked away|hidden|located|housed|built)\s+)?(?:in|inside|within|on|at|under|beneath|above|beside|by|behind|off) "
+    r"(?:a|an|the) (?:[\w'-]+ ){0,2}?(?:shopping arcade|arcade|shopping mall|mall|shopping cent(?:re|er)|market hall|market|"
+    r"railway arch(?:es)?|arch(?:es)?|high street|main street|street|square|tower block|office block|block|terminal|airport|"
+    r"harbou?r|marina|quay|canal|river|village|town|city|suburb|medina|old town|quarter|district|neighbou?rhood|campus|"
+    r"industrial estate|business park|retail park|estate)\b")
+"""Right after the building: where it stands ("a nail salon in a shopping arcade", "a
+boxing gym under a railway arch"); the place's words name no rooms or objects."""
 _BASEMENT = re.compile(r"\b(?:basement|lower ground floor|underground level)s?\b")
 _ATTIC = re.compile(r"\b(?:attic|loft conversion|garret)s?\b")
 _MEZZANINE = re.compile(r"\bmezzanines?\b")
@@ -795,20 +866,37 @@ def _find_tiers(text: str, p: Parsed) -> None:
                            + [(s, e, f"tier:{level[t]}") for s, e, t in found])
 
 
-def _assign_rooms(text: str, mentions: list[Mention]) -> None:
+def _own_part(m: Mention, kb: KnowledgeBase) -> bool:
+    """Whether a room named later in an "each with ..." list is each room's own (rooms.yaml
+    ``own_parts``: a balcony, a bathroom; a sitting area) rather than the building's."""
+    rooms = kb.raw("rooms")
+    info = rooms["names"].get(m.key) or {}
+    return info.get("type") in rooms.get("own_parts", []) or m.name.split()[-1] in ("area", "corner", "nook")
+
+
+def _assign_rooms(text: str, mentions: list[Mention], kb: KnowledgeBase) -> None:
     """Attach each object mention to the room mention that governs it, if any."""
     context: int | None = None
     each: Mention | None = None
     rooms = [x for x in mentions if x.kind == "room"]
     room_idx = {id(m): i for i, m in enumerate(rooms)}
+    spread: list[Mention] = []  # rooms and objects each of the rooms got, in a row
     for i, m in enumerate(mentions):
         if m.kind == "room":
-            right_after = i > 0 and mentions[i - 1] is each  # "each with an en-suite", not "..., and a kitchen"
+            prev = mentions[i - 1] if i > 0 else None
+            # "each with an en-suite", not "..., and a kitchen"; "each with its own sitting
+            # area, a balcony and a bathroom": the list goes on
+            right_after = prev is not None and (prev is each or (
+                any(prev is x for x in spread) and EACH_LIST.match(text[prev.end : m.start]) is not None
+                and _own_part(m, kb)))
             if (each is not None and (m.count is None or (m.count == 1 and not m.plural and right_after))
                     and "." not in text[each.end : m.start]):
                 m.count, m.plural = each.count, True  # "six guest rooms, each with its own bathroom" / "an en-suite"
+                spread.append(m)
+                if _opens_context(text[m.end : m.end + 120]):  # "... and a bathroom with a bathtub"
+                    context = room_idx[id(m)]
                 continue
-            tail = text[m.end : m.end + 40]
+            tail = text[m.end : m.end + 120]
             outer = context
             context = room_idx[id(m)] if _opens_context(tail) else None
             if context is None and outer is not None and OWN_PART.search(text[rooms[outer].end : m.start]):
@@ -823,7 +911,9 @@ def _assign_rooms(text: str, mentions: list[Mention]) -> None:
             _spread(m, m.host)  # "six en-suite showers": one in each
             continue
         m.room = context
-        m.each = each is not None and context == room_idx[id(each)]
+        m.each = each is not None and context is not None and any(rooms[context] is x for x in [each, *spread])
+        if m.each:
+            spread.append(m)
         if not m.each and context is not None and EACH_AFTER.match(text[m.end : m.end + 24]):
             m.each = (rooms[context].count or 0) > 1 or rooms[context].plural  # "twenty desks in each"
         if not m.each and context is not None:
@@ -835,6 +925,9 @@ def _assign_rooms(text: str, mentions: list[Mention]) -> None:
             if IN_ROOM.match(between[: len(between) - words_before]):
                 m.room = room_idx[id(nxt)]
 
+
+EACH_LIST = re.compile(r"^\s*(?:,\s*(?:and\s+)?|and\s+)(?:(?:a|an|its own|their own)\s+)?[^\W\d_]*\s*$")
+"""Text between two items of one "each with ..." list: ", a", " and a", ", and an"."""
 
 EACH_AFTER = re.compile(r"^\s*(?:each|apiece|(?:in|for) (?:each|every)(?: one| room| of them)?|per room|a room)\b")
 """Words after an object that give its count per room ("four classrooms with twenty
@@ -981,6 +1074,25 @@ def _find_materials(kb: KnowledgeBase, text: str, p: Parsed, rooms: list[Mention
             p.aged.setdefault(surface, []).append(tok)
 
 
+ROOM_FOR = re.compile(r"\b(rooms?) (?:used )?for ([a-z]+)\b")
+
+
+def _room_for(kb: KnowledgeBase, text: str) -> str:
+    """"A smaller room for meditation" reads as "a smaller meditation room" where the
+    knowledge names such a room (no "room for two", no "room for everything")."""
+    forms = vocabulary(kb).forms
+
+    def sub(mt: re.Match[str]) -> str:
+        word = _singular(mt.group(2))[0]
+        for w in (mt.group(2), word):
+            name = f"{w} {mt.group(1)}"
+            if forms.get(name) is not None and forms[name][0].kind == "room":
+                return name
+        return mt.group()
+
+    return ROOM_FOR.sub(sub, text)
+
+
 def _singular(word: str) -> tuple[str, bool]:
     if len(word) > 4 and word.endswith("ies"):
         return word[:-3] + "y", True
@@ -1047,11 +1159,17 @@ def _open_vocabulary(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[
         words = phrase.split()
         while words and (words[0] in size_factors(kb) or words[0] in NOT_NOUNS or words[0] in ADVERBS):
             words = words[1:]
-        if not words or words[-1] in ADVERBS:  # "downstairs just (a kitchenette)": no object
+        while words and words[-1] in NOT_NOUNS:  # "under the eaves full (of beanbags)"
+            words = words[:-1]
+        if not words or words[-1] in ADVERBS or words[-1] in ov.non_objects(kb):  # "downstairs just (a kitchenette)": no object
             continue
         head, plural = _singular(words[-1])
         name = " ".join([*words[:-1], head])
-        kind, mo = ov.classify(name, kb, room_ok=not _HELD_FOR.search(text[:s]))
+        if _USED_FOR.search(text[:s]):  # "used for assemblies, PE and lunch": what it is for
+            continue
+        before = max((x for x in mentions if x.end <= s), key=lambda x: x.end, default=None)
+        on_object = before is not None and before.kind == "object" and OBJECT_WITH.match(text[before.end : s]) is not None
+        kind, mo = ov.classify(name, kb, room_ok=not _HELD_FOR.search(text[:s]) and not on_object)
         if kind == "room":
             m = Mention("room", "", name, s, e, plural=plural, concept=mo.key if mo else None, open_vocab=True)
             _look_back(m, text, tokens, spans, keep_words=False, kb=kb)
@@ -1072,6 +1190,12 @@ def _open_vocabulary(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[
     return mentions
 
 
+_USED_FOR = re.compile(r"\bused (?:for|as)\s+(?:[\w'-]+(?:\s*,\s*|\s+))*$")
+"""What a room is used for lists activities, not rooms: "a main hall used for
+assemblies, PE and lunch"."""
+OBJECT_WITH = re.compile(r"^\s*(?:with|w/)\s+(?:(?:a|an|its|their|built-in|built in)\s+)?(?:[\w-]+\s+)?$")
+"""Between an object and a phrase: what the object comes with is no room ("four pedicure
+chairs with foot spas")."""
 _HELD_FOR = re.compile(r"\bfor (?:up to )?(?:\d+|a|an|one|two|three|four|five|six|seven|eight|nine|ten|twelve)(?: \w+)?\s*$")
 """Text before a phrase that makes it what a room holds, not a room: "an apparatus bay
 for two (fire) engines", "a garage for three cars"."""
@@ -1282,12 +1406,14 @@ def parse(text: str, kb: KnowledgeBase | None = None) -> Parsed:
     kb = resolve(kb)
     text = _NO_COMPOUND.sub(r"\1", clean_text(text))  # escape sequences never reach a name
     text = _number_adjectives(text, kb)
+    text = STYLE_SUFFIX.sub(r"\1", text)  # "a speakeasy-style cocktail bar": a speakeasy cocktail bar
     norm = normalize(text)
     p = Parsed(text=norm, proper_words=_proper_words(text))
     if len(norm) > MAX_PARSE_CHARS:
         p.warnings.append(f"text is {len(norm)} characters long; only the first {MAX_PARSE_CHARS} were read")
         norm = norm[:MAX_PARSE_CHARS]
     norm = rewrite_numbers(norm)
+    norm = _room_for(kb, norm)
     p.text = norm
     norm = _mask_height_words(kb, norm)  # read by anyhome.plan.heights from p.text
     taken: list[tuple[int, int]] = []
@@ -1297,6 +1423,11 @@ def parse(text: str, kb: KnowledgeBase | None = None) -> Parsed:
     span = _parse_building(kb, norm, p, taken)
     if span:
         taken.append(span)
+        if (down := IN_A_BASEMENT.match(norm, span[1])) is not None:  # "a cocktail bar in a basement"
+            taken.append(down.span())
+            p.basement = bool(_BASEMENT.search(norm[: down.start()] + " " + norm[down.end() :]))
+        elif (place := IN_A_PLACE.match(norm, span[1])) is not None:  # "... in a shopping arcade"
+            taken.append(place.span())
     mentions = _nouns_only(kb, norm, _joined_room_words(kb, norm, _find_mentions(kb, norm, p, taken)))
     tokens = _tokens(norm)
     spans = taken + [(m.start, m.end) for m in mentions]
@@ -1318,7 +1449,7 @@ def parse(text: str, kb: KnowledgeBase | None = None) -> Parsed:
     _total_rooms(norm, p, mentions)
     if _ONE_ROOM.search(norm):
         p.one_room = True
-    _assign_rooms(norm, mentions)
+    _assign_rooms(norm, mentions, kb)
     _subject_room(norm, p, mentions)
     _apply_arrangements(norm, mentions)
     p.rooms = [m for m in mentions if m.kind == "room"]
@@ -1327,6 +1458,7 @@ def parse(text: str, kb: KnowledgeBase | None = None) -> Parsed:
         if room is not None and value > 0:
             room.area_m2 = value
     p.objects = [m for m in mentions if m.kind == "object"]
+    _find_seats(norm, p, mentions)
     _find_styles(kb, norm, p)
     _find_materials(kb, norm, p, p.rooms)
     return p

@@ -179,7 +179,8 @@ def plan_rooms(kb: KnowledgeBase, parsed: Parsed, program: str | None, rng: np.r
     _drop_replaced(parsed, slots)
     totals = frozenset(t for t, n in (("bedroom", parsed.bedrooms), ("bathroom", parsed.bathrooms)) if n is not None)
     _apply_fixed(kb, slots, fixed, prog, totals)
-    _apply_people(kb, parsed, slots, fixed)
+    if program is None or program in set(_sizes(kb).get("homes", [])):  # "a restaurant for 40 guests" sleeps no one
+        _apply_people(kb, parsed, slots, fixed)
     _add_hallway(kb, slots, prog)
     if parsed.rooms and all(m.negated for m in parsed.rooms) and parsed.building is None and prog is not None:
         warnings.append(
@@ -292,7 +293,7 @@ def _claim_mentions(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], fixed:
                     del fixed[proto.type]
             continue
         generic = bool((names.get(m.key) or {}).get("generic"))
-        n = max(1, m.count or 1) if (generic or m.count) else (2 if m.plural else 1)  # "tatami rooms"
+        n = max(1, m.count) if m.count else (2 if m.plural else 1)  # "tatami rooms", "restrooms": two at least
         n = min(n, MAX_COUNT)
         first: Slot | None = None  # more rooms than the program has copy the first one's furnishing
         headed = False  # the mention claimed the program's rooms by their head word
@@ -330,6 +331,11 @@ def _claim_mentions(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], fixed:
                 target.area_range, target.area_from = proto.area_range, proto.area_from
             elif proto.area_from == "stated":  # "a 30 m2 living room"
                 target.area_range, target.area_from = proto.area_range, proto.area_from
+            if generic and target.type != proto.type and fixed.get(proto.type):
+                # "a dining room" of an inn is its breakfast room: the one counted
+                fixed[proto.type] -= 1
+                if not fixed[proto.type]:
+                    del fixed[proto.type]
             first = first or target
 
 
