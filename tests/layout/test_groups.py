@@ -299,3 +299,8 @@ def test_promising_first_moves_the_first_pose_bound_to_no_compromise_ahead():
     got = groups.promising_first(choices(), lambda k: 0 if k >= 2 else 1)
     assert next(got) == 2 and asked == [0, 1, 2]  # nothing after the promising one looked at yet
     assert list(got) == [0, 1, 3]
+
+
+def test_promising_first_takes_the_least_bound_first_when_none_is_bound_to_none():
+    got = groups.promising_first(iter(range(5)), lambda k: {0: 3, 1: 1, 2: 2, 3: 1, 4: 3}[k])
+    assert list(got) == [1, 3, 2, 0, 4]

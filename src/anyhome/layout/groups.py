@@ -76,7 +76,9 @@ def place_group_copy(st: RoomState, g: GroupSpec, copy: int, prev: HouseObject |
 def promising_first(choices: Iterator[Choice], bound: Callable[[Choice], int]) -> Iterator[Choice]:
     """``choices`` with the first where every member may stand where its rule asks
     (``bound``, :func:`least_compromises`, 0) moved ahead of those before it, the rest in
-    their order; each taken from ``choices`` with the room as it was (nothing is committed
+    their order; when none is bound to 0 (none can keep the whole group as its rules ask:
+    every one is tried), all of them by their bound, the least first (in their order among
+    equals). Each is taken from ``choices`` with the room as it was (nothing is committed
     while looking)."""
     held: list[Choice] = []
     for ch in choices:
@@ -84,6 +86,8 @@ def promising_first(choices: Iterator[Choice], bound: Callable[[Choice], int]) -
             yield ch
             break
         held.append(ch)
+    else:
+        held.sort(key=bound)
     yield from held
     yield from choices
 
@@ -133,10 +137,11 @@ def least_compromises(st: RoomState, g: GroupSpec, ch: Choice) -> int:
             p = front_rule.Params.model_validate(m.params)
             c = front_rule.front_to_wall_at(space, ch.xy, yaw, a.size_m[1], m.size_m, p.distance_m)
             straight = (-np.sin(c.yaw) * f[0] + np.cos(c.yaw) * f[1]) <= -0.99
-            c = Cands(c.xy[straight], c.yaw[straight], c.z[straight], c.pref[straight])
-            ok = space.valid(rect_corners(c.xy, (w, d), c.yaw), 0.0, h, floor=True) if len(c) else np.zeros(0, bool)
-            centred = np.abs((c.xy - ch.xy[None]) @ r) <= front_rule.CENTRED_TOL_M
-            bent += 0 if (ok & centred).any() else 1 if ok.any() else OFF_WALL_AHEAD_COST
+            centred = straight & (np.abs((c.xy - ch.xy[None]) @ r) <= front_rule.CENTRED_TOL_M)
+            for cost, mask in ((1, centred), (OFF_WALL_AHEAD_COST - 1, straight & ~centred)):  # the centred first
+                if mask.any() and space.valid(rect_corners(c.xy[mask], (w, d), c.yaw[mask]), 0.0, h, floor=True).any():
+                    break
+                bent += cost
     return bent
 
 
