@@ -150,6 +150,8 @@ class NavGrid:
                 if o.room == space.room.id:
                     free &= ~self._raster(footprint_polygon(o.position, o.size, o.yaw))
         self.base_free = free
+        self._free_dist: np.ndarray | None = None
+        """Distance (m) of each cell of ``base_free`` to the nearest cell outside it (made once)."""
         rows, cols = np.flatnonzero(free.any(1)), np.flatnonzero(free.any(0))
         self._live = (slice(int(rows[0]), int(rows[-1]) + 1), slice(int(cols[0]), int(cols[-1]) + 1)) if len(
             rows) else (slice(0, 0), slice(0, 0))
@@ -224,7 +226,9 @@ class NavGrid:
         return ~far[rows.min():rows.max() + 1, cols.min():cols.max() + 1]
 
     def _walkable(self, radius: float) -> np.ndarray:
-        return ndimage.distance_transform_edt(self.base_free) * self.cell > radius
+        if self._free_dist is None:  # one transform for every radius asked
+            self._free_dist = ndimage.distance_transform_edt(self.base_free) * self.cell
+        return self._free_dist > radius
 
     def _raster(self, geom) -> np.ndarray:
         return raster_mask(geom, self.xs, self.ys)

@@ -13,8 +13,10 @@ from anyhome.house import HouseObject
 from anyhome.layout import groups, scoring, solver
 from anyhome.layout.options import DEFAULT_OPTIONS
 from anyhome.layout.rules import Cands
+from anyhome.layout.rules.place_wall import place_wall
 from anyhome.layout.state import Choice, RoomState
 from anyhome.plan.spec import GroupSpec, RoomSpec
+from anyhome.space import rect_corners
 
 from .helpers import group, item, rect, single_room
 
@@ -192,3 +194,113 @@ def test_later_anchor_poses_are_not_asked_for_when_the_first_keeps_the_group():
     anchor = groups.try_choices(st, g, "bed-0", poses(), "floor", "place_wall")
     assert anchor is not None and anchor.position[:2] == (1.8, 2.5)
     assert len(asked) == 1 and [o.name for o in st.space.objects].count("nightstand") == 2
+
+
+SOFA = item("sofa", "sofa", (2.0, 0.9, 0.85), "place_wall")
+TV_STAND = item("tv stand", "tv_stand", (1.6, 0.45, 0.55), "place_front", params={"distance_m": 2.2, "to_wall": True})
+SIDE_TABLES = item("side table", "table", (0.5, 0.5, 0.55), "place_beside", count=2)
+BOX = item("box", "cabinet", (0.6, 0.6, 0.8), "place_center")
+
+
+def test_least_compromises_counts_taken_beside_spots_and_a_missing_wall_ahead():
+    st = _state(rect(0, 0, 6, 4), ((5.0, 0.0), (5.9, 0.0)), [])
+    g = group("lounge", SOFA, [TV_STAND, SIDE_TABLES])
+    ch = Choice(np.array([2.5, 0.45]), 0.0, 0.0)  # back on the south wall, facing the north wall 2.65 m ahead
+    assert groups.least_compromises(st, g, ch) == 0
+    _commit(st, BOX, (1.1, 0.5), 0.0, label="box-0")  # on the sofa's left side, every gap
+    assert groups.least_compromises(st, g, ch) == 1
+    _commit(st, BOX, (2.5, 3.6), 0.0, label="box-1")  # where the TV stand stands centred on the wall ahead
+    assert groups.least_compromises(st, g, ch) == 2
+    _commit(st, BOX, (1.7, 3.6), 0.0, label="box-2")
+    _commit(st, BOX, (3.3, 3.6), 0.0, label="box-3")
+    _commit(st, BOX, (0.8, 3.6), 0.0, label="box-4")
+    _commit(st, BOX, (4.2, 3.6), 0.0, label="box-5")
+    _commit(st, BOX, (5.0, 3.6), 0.0, label="box-6")
+    _commit(st, BOX, (5.6, 3.6), 0.0, label="box-7")
+    assert groups.least_compromises(st, g, ch) == 1 + groups.OFF_WALL_AHEAD_COST  # no pose on the wall ahead
+
+
+def test_least_compromises_never_exceeds_the_compromises_of_the_placed_copy():
+    # random boxes in a room, a sofa (TV stand, side tables) or a bed (nightstands) tried at
+    # random wall poses: whenever every member is placed, it breaks at least the bound
+    bounds = []
+    for seed in range(12):
+        bounds += _bounds_checked(seed)
+    assert len(bounds) >= 40 and sum(b > 0 for b in bounds) >= 10, bounds
+
+
+def _bounds_checked(seed: int) -> list[int]:
+    rng = np.random.default_rng(seed)
+    st = _state(rect(0, 0, 5.5, 4.5), ((0.0, 3.0), (0.0, 3.9)), [], seed)
+    for k in range(int(rng.integers(2, 6))):
+        xy = rng.uniform((0.4, 0.4), (5.1, 4.1))
+        if st.space.valid(geometry.footprint_corners((*xy, 0.0), BOX.size_m, 0.0)[None], 0.0, 0.8, floor=True)[0]:
+            _commit(st, BOX, xy, 0.0, label=f"box-{k}")
+    g = group("lounge", SOFA, [TV_STAND, SIDE_TABLES]) if seed % 2 else group("bed", BED, [NIGHTSTANDS])
+    a = g.anchor
+    c = place_wall(st.space, a.size_m)
+    idx = st.space.valid(rect_corners(c.xy, a.size_m[:2], c.yaw), 0.0, a.size_m[2], floor=True).nonzero()[0]
+    bounds = []
+    for i in rng.permutation(idx)[:8]:
+        ch = Choice(c.xy[i].copy(), float(c.yaw[i]), 0.0)
+        bound = groups.least_compromises(st, g, ch)
+        snap = st.snapshot()
+        got = st.commit_checked(a, a.size_m, ch, "floor", a.rule, "g-0", None)
+        if got is not None:
+            drops = groups.place_members(st, g, "g-0", got[0])
+            if not drops:
+                assert groups.compromises(st, g, "g-0", got[0]) >= bound, (seed, ch)
+                bounds.append(bound)
+        st.restore(snap)
+    return bounds
+
+
+def test_anchor_poses_that_cannot_beat_the_best_are_not_tried(monkeypatch):
+    # a sofa whose TV stand cannot stand on the wall ahead (boxes all along it) at either of
+    # two poses: the first places it on another wall (OFF_WALL_AHEAD_COST), the second's
+    # bound is as much, so it is not tried, and the copy ends where it ends without the bound
+    def run(bound: bool) -> tuple[tuple[float, ...], int]:
+        st = _state(rect(0, 0, 6, 4), ((0.0, 1.0), (0.0, 1.9)), [])
+        for k, x in enumerate(np.arange(0.3, 6.0, 0.6)):
+            _commit(st, BOX, (x, 3.7), 0.0, label=f"box-{k}")
+        g = group("lounge", SOFA, [TV_STAND])
+        tries = []
+        real = st.commit_checked
+
+        def counted(*a, **kw):
+            tries.append(a[2])
+            return real(*a, **kw)
+
+        monkeypatch.setattr(st, "commit_checked", counted)
+        choices = [Choice(np.array([2.0, 0.45]), 0.0, 0.0), Choice(np.array([4.5, 0.45]), 0.0, 0.0)]
+        assert [groups.least_compromises(st, g, ch) for ch in choices] == [groups.OFF_WALL_AHEAD_COST] * 2
+
+        def least(ch: Choice) -> int:
+            return groups.least_compromises(st, g, ch)
+
+        anchor = groups.try_choices(st, g, "lounge-0", iter(choices), "floor", "place_wall",
+                                    bound=least if bound else None)
+        assert anchor is not None
+        assert groups.compromises(st, g, "lounge-0", anchor) == groups.OFF_WALL_AHEAD_COST
+        return anchor.position, len(tries)
+
+    (kept, n), (kept_all, n_all) = run(True), run(False)
+    assert kept == kept_all and n == 1 and n_all == 2
+
+
+def test_promising_first_moves_the_first_pose_bound_to_no_compromise_ahead():
+    asked = []
+
+    def choices():
+        for k in range(4):
+            asked.append(k)
+            yield k
+
+    got = groups.promising_first(choices(), lambda k: 0 if k >= 2 else 1)
+    assert next(got) == 2 and asked == [0, 1, 2]  # nothing after the promising one looked at yet
+    assert list(got) == [0, 1, 3]
+
+
+def test_promising_first_takes_the_least_bound_first_when_none_is_bound_to_none():
+    got = groups.promising_first(iter(range(5)), lambda k: {0: 3, 1: 1, 2: 2, 3: 1, 4: 3}[k])
+    assert list(got) == [1, 3, 2, 0, 4]

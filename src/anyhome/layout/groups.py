@@ -3,7 +3,7 @@ relative to it; a few anchor poses are tried when members do not fit."""
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Iterator
 
 import numpy as np
 
@@ -51,19 +51,103 @@ def place_group_copy(st: RoomState, g: GroupSpec, copy: int, prev: HouseObject |
                          avoid_windows=hangs, bonus=bonus if kind == "floor" else None,
                          bonus_max=scoring.bonus_max(st, g, rule, prev is None))
     poses = scoring.Verifier(st, c, order, size, kind, None, min_sep_m=o.anchor_min_sep_m)
+    memo: dict[int, int] = {}
+
+    def bound(ch: Choice) -> int:  # with the room as it was: asked before a choice is tried
+        got = memo.get(id(ch))
+        if got is None:
+            got = memo[id(ch)] = least_compromises(st, g, ch)
+        return got
+
+    guess = _bounded(g)
     choices = poses.upto(tries)  # checked as tried: the first pose most often keeps the group
+    if guess:
+        choices = promising_first(choices, bound)
 
     def more() -> list[Choice]:
         return poses.list(tries + o.anchor_reach_retries)
 
-    anchor = try_choices(st, g, label, choices, kind, rule, more, nudge=kind == "floor")
+    anchor = try_choices(st, g, label, choices, kind, rule, more, nudge=kind == "floor", bound=bound if guess else None)
     if anchor is not None and ref is not None and rule == "place_front" and item.params.get("to_wall"):
         st.space.keep_clear.append(sightline(ref, anchor))  # a TV of its own, across from the sofa
     return anchor
 
 
+def promising_first(choices: Iterator[Choice], bound: Callable[[Choice], int]) -> Iterator[Choice]:
+    """``choices`` with the first where every member may stand where its rule asks
+    (``bound``, :func:`least_compromises`, 0) moved ahead of those before it, the rest in
+    their order; when none is bound to 0 (none can keep the whole group as its rules ask:
+    every one is tried), all of them by their bound, the least first (in their order among
+    equals). Each is taken from ``choices`` with the room as it was (nothing is committed
+    while looking)."""
+    held: list[Choice] = []
+    for ch in choices:
+        if not bound(ch):
+            yield ch
+            break
+        held.append(ch)
+    else:
+        held.sort(key=bound)
+    yield from held
+    yield from choices
+
+
+def _bounded(g: GroupSpec) -> bool:
+    """Whether :func:`least_compromises` looks at any member of ``g``."""
+    front = anchored(g, "place_front")
+    return bool(anchored(g, "place_beside")) or any(m.params.get("to_wall") for m in g.members if m.name in front)
+
+
+BESIDE_SPOT_GAPS_M = np.arange(-0.01, beside_rule.BESIDE_GAPS_M[-1] + 0.015, 0.01)
+"""Side gaps at which a spot beside an anchor is looked for by :func:`least_compromises`:
+every gap at which :func:`~.rules.place_beside.stands_beside` holds, 1 cm apart."""
+
+
+def least_compromises(st: RoomState, g: GroupSpec, ch: Choice) -> int:
+    """A lower bound, with the room as it is, on the compromises (:func:`compromises`) of a
+    copy of ``g`` with its anchor at ``ch`` once its members are placed (a member dropped
+    instead counts as a drop, which weighs more): for each member beside the anchor, its
+    copies beyond the sides it may take where a spot beside the anchor is free (one copy
+    stands beside each side at most); for each ``to_wall`` member (a TV stand),
+    :data:`OFF_WALL_AHEAD_COST` when none of its rule's poses facing the anchor straight is
+    free, else 1 when none of those centred on the anchor is. Poses taken now stay taken
+    as the copy is placed; the bound holds for the poses the rules offer (a beside spot is
+    looked for every 1 cm of gap)."""
+    a = g.anchor
+    yaw = ch.yaw
+    f, r = front_dir(yaw), right_dir(yaw)
+    space = st.space
+    bent = 0
+    for m in g.members:
+        if m.target not in (None, a.name):
+            continue
+        w, d, h = m.size_m
+        if m.rule == "place_beside":
+            side = beside_rule.Params.model_validate(m.params).side
+            sides = {"left": (-1.0,), "right": (1.0,)}.get(side, (-1.0, 1.0))
+            if m.count <= 0:
+                continue
+            lat = (a.size_m[0] + w) / 2 + BESIDE_SPOT_GAPS_M
+            offs = np.concatenate([sgn * lat for sgn in sides])
+            xy = ch.xy[None] + offs[:, None] * r[None] + f[None] * ((d - a.size_m[1]) / 2)
+            ok = space.valid(rect_corners(xy, (w, d), np.full(len(xy), yaw)), ch.z, ch.z + h, floor=True)
+            free = sum(bool(part.any()) for part in np.split(ok, len(sides)))
+            bent += max(0, m.count - free)
+        elif m.rule == "place_front" and m.params.get("to_wall") and m.count == 1:
+            p = front_rule.Params.model_validate(m.params)
+            c = front_rule.front_to_wall_at(space, ch.xy, yaw, a.size_m[1], m.size_m, p.distance_m)
+            straight = (-np.sin(c.yaw) * f[0] + np.cos(c.yaw) * f[1]) <= -0.99
+            centred = straight & (np.abs((c.xy - ch.xy[None]) @ r) <= front_rule.CENTRED_TOL_M)
+            for cost, mask in ((1, centred), (OFF_WALL_AHEAD_COST - 1, straight & ~centred)):  # the centred first
+                if mask.any() and space.valid(rect_corners(c.xy[mask], (w, d), c.yaw[mask]), 0.0, h, floor=True).any():
+                    break
+                bent += cost
+    return bent
+
+
 def try_choices(st: RoomState, g: GroupSpec, label: str, choices: Iterable[Choice], kind: str,
-                rule: str, more: Callable[[], list[Choice]] | None = None, nudge: bool = False) -> HouseObject | None:
+                rule: str, more: Callable[[], list[Choice]] | None = None, nudge: bool = False,
+                bound: Callable[[Choice], int] | None = None) -> HouseObject | None:
     """The anchor at the first of ``choices`` where every member fits and every object stays
     reachable, else where the fewest are dropped, then left out of reach, then the fewest
     members are placed by a fallback (:func:`compromises`); when the best so far leaves
@@ -71,7 +155,9 @@ def try_choices(st: RoomState, g: GroupSpec, label: str, choices: Iterable[Choic
     when it places some by a fallback and ``nudge`` is set, among the best pose shifted
     sideways too (:func:`nudged`: a bed moved off a door so that both nightstands fit);
     None (all dropped) when no choice keeps the walkways open. ``choices`` may be checked
-    lazily (:class:`~.scoring.Verifier`): each is taken with the room as it was."""
+    lazily (:class:`~.scoring.Verifier`): each is taken with the room as it was. ``bound``:
+    a lower bound on a choice's compromises (:func:`least_compromises`), asked with the room
+    as it was; a choice it shows cannot beat the best (no drops, all reached) is not tried."""
     item = g.anchor
     todo = iter(choices)
     first = next(todo, None)
@@ -83,10 +169,13 @@ def try_choices(st: RoomState, g: GroupSpec, label: str, choices: Iterable[Choic
     best: tuple[int, int, int, int] | None = None  # (drops, objects out of reach, compromises, choice index)
     kept: tuple[Outcome, HouseObject, list[Dropped]] | None = None  # the room with the best, come back to at the end
     pool = [first]
+    taken = 1  # choices taken from ``choices`` and ``more()`` (the rest of the pool: nudged poses)
+    nudged_at: set[int] = set()  # poses of the pool whose nudges were added
     k = 0
     while k < len(pool):  # grows while being walked
         ch = pool[k]
-        got = st.commit_checked(item, item.size_m, ch, support, rule, label, None, check=kind != "top")
+        skip = best is not None and bound is not None and not best[0] and not best[1] and bound(ch) >= best[2]
+        got = None if skip else st.commit_checked(item, item.size_m, ch, support, rule, label, None, check=kind != "top")
         if got is not None:  # else it closed a walkway (and was taken back)
             anchor = got[0]
             worse = None if best is None else _no_better(st, g, label, anchor, snap, best[:3])
@@ -100,14 +189,20 @@ def try_choices(st: RoomState, g: GroupSpec, label: str, choices: Iterable[Choic
                     best = (len(drops), unreached, bent, k)
                     kept = (st.outcome(), anchor, drops)
             st.restore(snap)
+        if best is not None and best[2] and best[3] == k and k not in nudged_at and nudge:  # first its nudges
+            nudged_at.add(k)
+            pool[k + 1:k + 1] = nudged(st, g, ch, kind)
         if k == len(pool) - 1:  # the next choice, checked with the room as it was
             pool += [ch for ch in [next(todo, None)] if ch is not None]
+            taken += len(pool) - k - 1
         if best is not None and k == len(pool) - 1 and more is not None and best[1]:
-            pool += more()[len(pool):]
+            extra = more()[taken:]
+            pool += extra
+            taken += len(extra)
             more = None
-        if best is not None and k == len(pool) - 1 and nudge and best[2]:
+        if best is not None and k == len(pool) - 1 and nudge and best[2] and best[3] not in nudged_at:
+            nudged_at.add(best[3])
             pool += nudged(st, g, pool[best[3]], kind)
-            nudge = False
         k += 1
     if best is None:
         drop_group(st, g, "would block a walkway or a door")

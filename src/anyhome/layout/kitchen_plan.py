@@ -13,6 +13,7 @@ run, the cooktop with counter on both sides and away from the window.
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -83,24 +84,24 @@ class Slot:
     t1: float
 
 
-def free_spans(space: RoomSpace, wall: Wall, depth: float, height: float) -> list[tuple[float, float]]:
-    """Stretches of ``wall`` where a floor piece ``depth`` deep and ``height`` tall fits
-    (in the room, clear of doors and of what is placed)."""
-    t = np.arange(PROBE_STEP_M / 2, wall.length, PROBE_STEP_M)
-    if not t.size:
-        return []
-    corners = rect_corners(on_wall(wall, t, depth), (PROBE_STEP_M, depth), np.full(len(t), wall.yaw))
-    ok = space.valid(corners, 0.0, height, floor=True)
-    spans = []
-    start = None
-    for i, good in enumerate(ok):
-        if good and start is None:
-            start = i
-        if start is not None and (not good or i == len(ok) - 1):
-            end = i if good else i - 1
-            spans.append((max(0.0, float(t[start] - PROBE_STEP_M / 2)), min(wall.length, float(t[end] + PROBE_STEP_M / 2))))
-            start = None
-    return spans
+def free_spans(space: RoomSpace, walls: Sequence[Wall], depth: float, height: float) -> list[list[tuple[float, float]]]:
+    """For each of ``walls``, the stretches where a floor piece ``depth`` deep and ``height``
+    tall fits (in the room, clear of doors and of what is placed), probed every
+    :data:`PROBE_STEP_M` (one ``valid`` call for every wall)."""
+    ts = [np.arange(PROBE_STEP_M / 2, w.length, PROBE_STEP_M) for w in walls]
+    probes = [rect_corners(on_wall(w, t, depth), (PROBE_STEP_M, depth), np.full(len(t), w.yaw))
+              for w, t in zip(walls, ts, strict=True) if t.size]
+    ok = space.valid(np.concatenate(probes), 0.0, height, floor=True) if probes else np.zeros(0, dtype=bool)
+    out: list[list[tuple[float, float]]] = []
+    at = 0
+    for w, t in zip(walls, ts, strict=True):
+        good = ok[at:at + len(t)]
+        at += len(t)
+        edges = np.diff(np.concatenate(([False], good, [False])).astype(np.int8))
+        starts, ends = np.flatnonzero(edges == 1), np.flatnonzero(edges == -1) - 1
+        out.append([(max(0.0, float(t[a] - PROBE_STEP_M / 2)), min(w.length, float(t[b] + PROBE_STEP_M / 2)))
+                    for a, b in zip(starts.tolist(), ends.tolist(), strict=True)])
+    return out
 
 
 def _convex(a: Wall, b: Wall) -> bool:
@@ -122,7 +123,7 @@ def run_shapes(space: RoomSpace, depth: float, deepest: float, height: float, ca
     kitchenette), no galley or U."""
     walls = space.walls
     k = len(walls)
-    spans = [free_spans(space, w, deepest, height) for w in walls]
+    spans = free_spans(space, walls, deepest, height)
     out: list[RunShape] = []
     for i, w in enumerate(walls):
         for a, b in spans[i]:

@@ -23,7 +23,7 @@ from anyhome.layout.rules.base import (
 )
 from anyhome.layout.rules.place_center import place_center
 from anyhome.layout.rules.place_wall import place_wall
-from anyhome.space import RoomSpace
+from anyhome.space import RoomSpace, Wall
 
 DISTANCE_FACTORS = (1.0, 0.8, 1.25, 0.6, 1.5, 0.4, 2.0, 0.2, 0.0)
 """Multiples of ``distance_m`` tried, the first preferred."""
@@ -103,19 +103,16 @@ def place_front(space: RoomSpace, target: HouseObject, size: Sequence[float], di
 
 def front_to_wall(space: RoomSpace, target: HouseObject, size: Sequence[float], distance_m: float) -> Cands:
     """Poses against the wall ahead of ``target`` (``to_wall``), else against another wall turned toward it."""
-    txy = np.asarray(target.position[:2])
-    f = front_dir(target.yaw)
+    return front_to_wall_at(space, np.asarray(target.position[:2]), target.yaw, target.size[1], size, distance_m)
+
+
+def front_to_wall_at(space: RoomSpace, txy: np.ndarray, yaw: float, depth_m: float, size: Sequence[float],
+                     distance_m: float) -> Cands:
+    """:func:`front_to_wall` of a target at ``txy`` turned ``yaw``, ``depth_m`` deep."""
     pts: list[np.ndarray] = []
     yaws: list[float] = []
     pref: list[float] = []
-    for wall in space.walls:
-        if float(f @ wall.n) > -0.999:
-            continue
-        rel = txy - wall.a
-        gap = float(rel @ wall.n) - target.size[1] / 2 - size[1]
-        t0 = float(rel @ wall.u)
-        if gap < MIN_TO_WALL_M or gap > 2.5 * max(distance_m, WALL_SNAP_MIN_M):
-            continue
+    for wall, gap, t0 in walls_ahead(space, txy, yaw, depth_m, size, distance_m):
         for lo in TO_WALL_SHIFTS_M:
             t = t0 + lo
             if size[0] / 2 <= t <= wall.length - size[0] / 2:
@@ -130,6 +127,24 @@ def front_to_wall(space: RoomSpace, target: HouseObject, size: Sequence[float], 
         cos = cos / np.maximum(np.linalg.norm(to_t, axis=1), 1e-6)
         keep = cos > 0.5
         out = out + Cands(others.xy[keep], others.yaw[keep], others.z[keep], OTHER_WALL_PREF * cos[keep])
+    return out
+
+
+def walls_ahead(space: RoomSpace, txy: np.ndarray, yaw: float, depth_m: float, size: Sequence[float],
+                distance_m: float) -> list[tuple[Wall, float, float]]:
+    """(wall, gap, t) of each wall straight ahead of a target at ``txy`` turned ``yaw``,
+    ``depth_m`` deep, that a ``to_wall`` object ``size`` may stand against: ``gap`` between
+    the target's front and the object's front, ``t`` the target's axis along the wall."""
+    f = front_dir(yaw)
+    out = []
+    for wall in space.walls:
+        if float(f @ wall.n) > -0.999:
+            continue
+        rel = txy - wall.a
+        gap = float(rel @ wall.n) - depth_m / 2 - size[1]
+        if gap < MIN_TO_WALL_M or gap > 2.5 * max(distance_m, WALL_SNAP_MIN_M):
+            continue
+        out.append((wall, gap, float(rel @ wall.u)))
     return out
 
 

@@ -42,6 +42,7 @@ def place_next_wall(space: RoomSpace, size: Sequence[float], prev: HouseObject |
     pxy = np.asarray(prev.position[:2])
     back = pxy - front_dir(prev.yaw) * pd / 2
     out: list[Cands] = []
+    corners = footprint_corners(prev.position, prev.size, prev.yaw)  # made once, for every wall
     for wall in space.walls:
         t_prev = float((back - wall.a) @ wall.u)
         dist = abs(float((back - wall.a) @ wall.n))
@@ -55,12 +56,12 @@ def place_next_wall(space: RoomSpace, size: Sequence[float], prev: HouseObject |
                               pref[ok]))
         else:
             # perpendicular wall: continue the run around a corner
-            corners = footprint_corners(prev.position, prev.size, prev.yaw)
-            tmin = min(float((c - wall.a) @ wall.u) for c in corners)
-            tmax = max(float((c - wall.a) @ wall.u) for c in corners)
-            dmin = min(float((c - wall.a) @ wall.n) for c in corners)
+            rel = list(corners - wall.a)  # each corner's dot products as a vector's (not a matrix product's)
+            dmin = min(float(r @ wall.n) for r in rel)
             if not -0.02 <= dmin <= d + CORNER_REACH_M:  # too far from this wall, or beyond its line
                 continue
+            along_t = [float(r @ wall.u) for r in rel]
+            tmin, tmax = min(along_t), max(along_t)
             ts = np.array([tmax + w / 2, tmin - w / 2])
             ok = (ts >= w / 2 - 1e-9) & (ts <= wall.length - w / 2 + 1e-9)
             ts = ts[ok]
