@@ -492,3 +492,27 @@ def test_a_stand_of_an_unknown_kind_is_no_tv_stand():
         kind, match = ov.classify(phrase)
         assert kind == "object" and (match is None or match.key != "tv stand")
     assert ov.classify("solar panel")[0] == "object"  # a sibling's word still says "object"
+
+
+def test_the_room_named_again_is_the_room_named_before():
+    """"The hall" after "a church hall" is that hall (before: a second, a hallway, that
+    took the stage and the toilets); "the church" is the building."""
+    from anyhome.plan.parse import parse
+
+    p = parse("Parish church with its church hall next door: the church has a nave of pews, a pulpit "
+              "and a vestry; the hall has a kitchen hatch, stacking tables and a small stage.")
+    assert [m.key for m in p.rooms] == ["church hall", "nave", "vestry"]
+    assert {m.key: m.room for m in p.objects} == {
+        "pew": 1, "pulpit": 1, "serving counter": 0, "table": 0, "stage platform": 0}
+    p = parse("A house with a kitchen and two bedrooms. The kitchen has an island.")
+    assert [(m.key, m.count) for m in p.rooms] == [("kitchen", 1), ("bedroom", 2)]
+    assert [m.room for m in p.objects] == [0]
+
+
+def test_a_buildings_own_reading_of_an_object_word():
+    """programs.yaml ``object_words``: a lab's workbenches are lab benches; a workshop's
+    stay woodworking benches."""
+    from anyhome.plan.parse import parse
+
+    assert [m.key for m in parse("A chemistry lab with six workbenches.").objects] == ["lab bench"]
+    assert [m.key for m in parse("A woodworking workshop with a workbench.").objects] == ["workbench"]

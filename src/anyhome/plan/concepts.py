@@ -62,7 +62,7 @@ def _room_phrases(kb: KnowledgeBase) -> dict[str, list[str]]:
     out: dict[str, list[str]] = {k: [k.replace("_", " ")] for k in sets if k != "other"}
     for name, info in kb.raw("rooms")["names"].items():
         furnish = info.get("furnish") or info.get("type")
-        if furnish in out:
+        if furnish in out and not info.get("only_within"):  # "stall" is a loose box in a stable alone
             out[furnish].append(normalize(name))
     return out
 

@@ -111,6 +111,9 @@ class Program(_Model):
     swap: dict[str, PeriodSwap] = Field(default_factory=dict, description=(
         "item name -> the stand-in the building uses instead, unless the text asks for the item "
         "(a hotel's desk chair is upholstered, not a mesh office chair)"))
+    object_words: dict[str, str] = Field(default_factory=dict, description=(
+        "object key -> the object key the building reads the word as (a lab's 'workbenches' "
+        "are lab benches, a workshop's are woodworking benches)"))
 
     @model_validator(mode="after")
     def _keys(self) -> Program:
@@ -797,6 +800,10 @@ class KnowledgeBase:
             for room, gs in p.extra.items():
                 for g in gs:
                     need(g in groups, "programs", ("programs", key, "extra", room), lambda: known(g, groups, "group"))
+            for word, obj in p.object_words.items():
+                for o in (word, obj):
+                    need(o in objects, "programs", ("programs", key, "object_words", word),
+                         lambda o=o: known(o, objects, "object"))
             for item, sw in p.swap.items():
                 need(sw.use in objects, "programs", ("programs", key, "swap", item, "use"),
                      lambda: known(sw.use, objects, "object prototype"))

@@ -95,7 +95,12 @@ def _opens_context(tail: str) -> bool:
         tail = tail[used.end() :]
     if where := WHERE_FIRST.match(tail):
         tail = tail[where.end() :]
-    return bool(CONTEXT_OPENERS.match(tail) or EACH_OPENER.match(tail))
+    return bool(CONTEXT_OPENERS.match(tail) or EACH_OPENER.match(tail) or OF_MANY.match(tail))
+
+
+OF_MANY = re.compile(r"^\s*of\s+(?!(?:the|a|an|his|her|its|their|my|our|your|one)\b)(?:[\w-]+\s+){0,3}?[\w-]+s\b(?!\s+(?:of|with)\b)")
+"""A room "of" many things holds them: "a nave of pews", "three galleries of glass
+display cases" (not "a suite of her own", "a kitchen of the 1950s")."""
 
 IN_ROOM = re.compile(r"^\s*(?:in|inside|for|into|within|of|on|at)(?:\s+(?:the|a|an|my|our|each))?\s*$")
 """Text between an object and a room that puts the object in that room."""
@@ -147,6 +152,38 @@ SEATS = re.compile(
     r"seats|visitors|customers|patrons|members|delegates|spectators|congregants|drinkers|audience))?\b")
 """How many a room or a venue seats: "a bistro for 40 covers", "a dining room seating
 12", "a boardroom for 16", "a church that seats 200"."""
+THE_BEFORE = re.compile(r"\bthe\s+$")
+
+
+def _corefer(text: str, p: Parsed, mentions: list[Mention]) -> list[Mention]:
+    """"The hall" after "a church hall", "the kitchen" after "a kitchen": the room named
+    before, not another one; "the church" of a parish church is the building (its main
+    room). What the later mention holds goes to the room it refers to."""
+    rooms = [m for m in mentions if m.kind == "room"]
+    head = (p.building_phrase or "").split()[-1:]
+    alias: dict[int, int | None] = {}
+    for j, m in enumerate(rooms):
+        if m.count is not None or m.plural or m.negated or not THE_BEFORE.search(text[: m.start]):
+            continue
+        earlier = next((i for i in range(j - 1, -1, -1)
+                        if i not in alias and (rooms[i].name == m.name or rooms[i].name.endswith(" " + m.name))), None)
+        if earlier is not None:
+            alias[j] = earlier
+        elif head and m.name == head[0] and not m.key:
+            alias[j] = None
+    if not alias:
+        return mentions
+    keep = {j: k for k, j in enumerate(j for j in range(len(rooms)) if j not in alias)}
+    for o in mentions:
+        if o.kind == "object" and o.room is not None:
+            r: int | None = o.room
+            while r is not None and r in alias:
+                r = alias[r]
+            o.room = None if r is None else keep[r]
+    gone = {id(rooms[j]) for j in alias}
+    return [m for m in mentions if id(m) not in gone]
+
+
 SEAT_GAP_TOKENS = 3
 """A seat count belongs to the room named at most this many words before it ("a dining
 room seating 12", "a boardroom for 16")."""
@@ -630,6 +667,7 @@ def _find_mentions(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[in
     found: list[Mention] = []
     names = kb.raw("rooms")["names"]
     program = kb.raw("programs")["buildings"][p.building]["program"] if p.building is not None else None
+    words = (kb.raw("programs")["programs"].get(program or "") or {}).get("object_words", {})
     for mt in voc.regex.finditer(text):
         if any(a < mt.end() and mt.start() < b for a, b in taken):
             continue
@@ -637,7 +675,8 @@ def _find_mentions(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[in
         only = names.get(entry.key, {}).get("only_within") if entry.kind == "room" else None
         if only and program not in only:  # "vendor stalls" of a market: no rooms
             continue
-        found.append(Mention(entry.kind, entry.key, entry.phrase, mt.start(), mt.end(), plural=plural))
+        key = words.get(entry.key, entry.key) if entry.kind == "object" else entry.key  # a lab's workbench
+        found.append(Mention(entry.kind, key, entry.phrase, mt.start(), mt.end(), plural=plural))
     found = _merge_adjacent(text, found)
     spans = taken + [(m.start, m.end) for m in found]
     for mt in _UNKNOWN_ROOM.finditer(text):
@@ -1451,6 +1490,7 @@ def parse(text: str, kb: KnowledgeBase | None = None) -> Parsed:
         p.one_room = True
     _assign_rooms(norm, mentions, kb)
     _subject_room(norm, p, mentions)
+    mentions = _corefer(norm, p, mentions)
     _apply_arrangements(norm, mentions)
     p.rooms = [m for m in mentions if m.kind == "room"]
     for end, value in p.room_areas:  # "a 12 m2 bedroom": the next room word's own area
