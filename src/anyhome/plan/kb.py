@@ -801,9 +801,9 @@ class KnowledgeBase:
                 for g in gs:
                     need(g in groups, "programs", ("programs", key, "extra", room), lambda: known(g, groups, "group"))
             for word, obj in p.object_words.items():
-                for o in (word, obj):
-                    need(o in objects, "programs", ("programs", key, "object_words", word),
-                         lambda o=o: known(o, objects, "object"))
+                for said in (word, obj):
+                    need(said in objects, "programs", ("programs", key, "object_words", word),
+                         f"unknown object {said!r} (object_words names objects.yaml keys)")
             for item, sw in p.swap.items():
                 need(sw.use in objects, "programs", ("programs", key, "swap", item, "use"),
                      lambda: known(sw.use, objects, "object prototype"))
