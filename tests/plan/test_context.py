@@ -516,3 +516,24 @@ def test_a_buildings_own_reading_of_an_object_word():
 
     assert [m.key for m in parse("A chemistry lab with six workbenches.").objects] == ["lab bench"]
     assert [m.key for m in parse("A woodworking workshop with a workbench.").objects] == ["workbench"]
+
+
+def test_things_each_of_several_objects_has_are_counted_for_each():
+    """"Six workbenches, each with its own sink and gas taps": six sinks; the list ends at
+    the next comma ("..., a row of fume hoods" is one row)."""
+    from anyhome.plan.parse import parse
+
+    p = parse("A chemistry lab: six workbenches, each with its own sink and gas taps, a row of fume hoods.")
+    assert [(m.key or m.name, m.count) for m in p.objects] == [
+        ("lab bench", 6), ("sink", 6), ("gas tap", 6), ("fume hood", None)]
+    p = parse("A classroom with twenty desks, each with a chair, and a whiteboard.")
+    assert [(m.key, m.count) for m in p.objects] == [("desk", 20), ("chair", 20), ("whiteboard", 1)]
+
+
+def test_a_spa_reads_a_table_as_a_massage_table_and_a_day_nursery_is_a_kindergarten():
+    spa = plan_of("Day spa: four treatment rooms each with a massage table, a couples' suite with two tables.", 0)
+    suite = next(r for r in spa.rooms if "couples" in r.name)
+    assert names_of(suite).count("massage table") == 2
+    nursery = plan_of("Day nursery for under-fives: a baby room with six cots and a nappy-changing area.", 0)
+    assert not any(r.name == "nursery" for r in nursery.rooms)
+    assert any("changing unit" in names_of(r) for r in nursery.rooms)

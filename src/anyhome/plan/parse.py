@@ -676,7 +676,8 @@ def _find_mentions(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[in
         if only and program not in only:  # "vendor stalls" of a market: no rooms
             continue
         key = words.get(entry.key, entry.key) if entry.kind == "object" else entry.key  # a lab's workbench
-        found.append(Mention(entry.kind, key, entry.phrase, mt.start(), mt.end(), plural=plural))
+        phrase = key if key != entry.key else entry.phrase  # ... is a lab bench, by name too
+        found.append(Mention(entry.kind, key, phrase, mt.start(), mt.end(), plural=plural))
     found = _merge_adjacent(text, found)
     spans = taken + [(m.start, m.end) for m in found]
     for mt in _UNKNOWN_ROOM.finditer(text):
@@ -920,7 +921,12 @@ def _assign_rooms(text: str, mentions: list[Mention], kb: KnowledgeBase) -> None
     rooms = [x for x in mentions if x.kind == "room"]
     room_idx = {id(m): i for i, m in enumerate(rooms)}
     spread: list[Mention] = []  # rooms and objects each of the rooms got, in a row
+    per: Mention | None = None  # "six workbenches, each with its own sink": objects each object has
+    last: Mention | None = None  # the last object given to each of them: a comma after it ends the list
     for i, m in enumerate(mentions):
+        if per is not None and (m.kind == "room" or re.search(r"[.;:]", text[per.end : m.start])
+                                or (last is not None and "," in text[last.end : m.start])):
+            per = None
         if m.kind == "room":
             prev = mentions[i - 1] if i > 0 else None
             # "each with an en-suite", not "..., and a kitchen"; "each with its own sitting
@@ -945,6 +951,13 @@ def _assign_rooms(text: str, mentions: list[Mention], kb: KnowledgeBase) -> None
             continue
         if each is not None and "." in text[each.end : m.start]:
             each = None
+        if per is not None:  # one for each of them, where they are
+            m.count = (m.count or 1) * (per.count or 1)
+            m.room, m.each = per.room, per.each
+            last = m
+            continue
+        if (m.count or 0) > 1 and EACH_OPENER.match(text[m.end : m.end + 60]):
+            per, last = m, None  # what follows, each of these has
         if m.host is not None and id(m.host) in room_idx:
             m.room = room_idx[id(m.host)]
             _spread(m, m.host)  # "six en-suite showers": one in each
