@@ -537,3 +537,16 @@ def test_a_spa_reads_a_table_as_a_massage_table_and_a_day_nursery_is_a_kindergar
     nursery = plan_of("Day nursery for under-fives: a baby room with six cots and a nappy-changing area.", 0)
     assert not any(r.name == "nursery" for r in nursery.rooms)
     assert any("changing unit" in names_of(r) for r in nursery.rooms)
+
+
+def test_toilets_for_people_are_rooms_and_a_bath_in_a_list_is_a_tub():
+    from anyhome.plan.parse import parse
+
+    p = parse("A bistro with a dining room, a kitchen and two customer toilets.")
+    assert [(m.key, m.count) for m in p.rooms] == [("dining room", 1), ("kitchen", 1), ("restroom", 2)]
+    assert [m.key for m in parse("A school with two classrooms and pupil toilets.").rooms] == ["classroom", "restroom"]
+    p = parse("A restroom with three toilets and two sinks.")
+    assert [m.key for m in p.rooms] == ["restroom"] and [(m.key, m.count) for m in p.objects][0] == ("toilet", 3)
+    p = parse("A bathroom with a toilet and a bath.")
+    assert [m.key for m in p.rooms] == ["bathroom"] and [m.key for m in p.objects] == ["toilet", "bathtub"]
+    assert [m.name for m in parse("A cottage with a kitchen, a bedroom and a bath.").rooms][-1] == "bath"

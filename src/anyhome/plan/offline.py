@@ -256,6 +256,10 @@ def _furnished_need(kb: KnowledgeBase) -> Any:
     return need
 
 
+WORK_OTHER = "other_at_work"
+"""The furnishing (and zones) of a room of no known kind in a building that is no home."""
+
+
 def _seated(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], main_key: str | None) -> list[tuple[int, int]]:
     """(slot index, people) for each seat count of the text: the room it follows, else
     the building's main room; a dwelling's "for 4 people" is its household, not seats."""
@@ -283,7 +287,10 @@ def _mostly_latin(text: str) -> bool:
 
 def _furnish(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], main_key: str | None, prog: dict[str, Any], rng: np.random.Generator, warnings: list[str]) -> list[tuple[list[fu.Group], list[fu.Item]]]:
     built = []
+    at_work = not _dwelling(kb, parsed, set((kb.raw("programs").get("sizes") or {}).get("homes", [])))
     for s in slots:
+        if at_work and s.furnish == "other":  # "a bulk tank room" of a dairy: no armchairs
+            s.furnish = WORK_OTHER
         groups, ornaments, unused = fu.furnish_room(kb, s.furnish, s.type, s.area, rng, beds=s.beds)
         for key in prog.get("extra", {}).get(s.key, []):
             d = fu.group_def(kb, {"group": key})
@@ -327,8 +334,11 @@ def _add_zones(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], rooms: list
     what the text rules out, within the per-room and per-house object caps."""
     total = sum(fu.object_count(g, o) for g, o in rooms)
     negated = [m for m in parsed.objects if m.negated]
+    zones = kb.raw("furniture").get("zones", {})
+    at_work = not _dwelling(kb, parsed, set((kb.raw("programs").get("sizes") or {}).get("homes", [])))
     for s, (groups, ornaments) in zip(slots, rooms):
-        fill = fu.zone_groups(kb, s.furnish, s.type, s.area, groups, rng)
+        furnish = WORK_OTHER if at_work and s.type == "other" and s.furnish not in zones else s.furnish
+        fill = fu.zone_groups(kb, furnish, s.type, s.area, groups, rng)
         for m in negated:
             if m.room is None or s.mention == m.room:
                 fu.remove_mention(kb, m, fill, [])

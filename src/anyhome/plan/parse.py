@@ -152,6 +152,39 @@ SEATS = re.compile(
     r"seats|visitors|customers|patrons|members|delegates|spectators|congregants|drinkers|audience))?\b")
 """How many a room or a venue seats: "a bistro for 40 covers", "a dining room seating
 12", "a boardroom for 16", "a church that seats 200"."""
+TOILET_ROOM_WORDS = frozenset(
+    "pupil pupils staff customer customers public guest guests visitor visitors disabled accessible men's "
+    "women's ladies gents unisex separate shared communal children's kids' boys' girls' patron patrons".split())
+"""Words before "toilets" that make them rooms (WCs) for people, not pans in a room."""
+WASH_TYPES = frozenset({"bathroom", "changing_room"})
+
+
+def _toilet_rooms(text: str, kb: KnowledgeBase, mentions: list[Mention]) -> None:
+    """"Pupil toilets", "two customer toilets", "a hall with a stage and toilets": rooms (a
+    restroom each), not toilet pans; "a restroom with three toilets" keeps its pans."""
+    names = kb.raw("rooms")["names"]
+    for i, m in enumerate(mentions):
+        if m.kind == "room" and not m.key and m.name in ("bath", "tub") and i > 0:
+            # "a couples' suite with two tables and a bath": a bathtub in the suite (a
+            # bedroom's "with a bath" stays its bathroom)
+            before = next((x for x in reversed(mentions[:i]) if x.kind == "room"), None)
+            gap = text[before.end : m.start] if before is not None else ""
+            if (before is not None and _opens_context(gap) and not re.search(r"[.;]", gap)
+                    and (names.get(before.key) or {}).get("type") != "bedroom"):
+                m.kind, m.key, m.concept = "object", "bathtub", None
+            continue
+        if m.kind != "object" or m.key != "toilet" or m.negated:
+            continue
+        people = any(w in TOILET_ROOM_WORDS for w in m.name.split()[:-1])
+        if not (people or m.plural):
+            continue
+        before = next((x for x in reversed(mentions[:i]) if x.kind == "room"), None)
+        if (not people and before is not None and not re.search(r"[.;]", text[before.end : m.start])
+                and (names.get(before.key) or {}).get("type") in WASH_TYPES):
+            continue
+        m.kind, m.key = "room", "restroom"
+
+
 THE_BEFORE = re.compile(r"\bthe\s+$")
 
 
@@ -1501,6 +1534,7 @@ def parse(text: str, kb: KnowledgeBase | None = None) -> Parsed:
     _total_rooms(norm, p, mentions)
     if _ONE_ROOM.search(norm):
         p.one_room = True
+    _toilet_rooms(norm, kb, mentions)
     _assign_rooms(norm, mentions, kb)
     _subject_room(norm, p, mentions)
     mentions = _corefer(norm, p, mentions)
