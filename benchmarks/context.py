@@ -42,6 +42,7 @@ SETS = {
     "public": HERE.parent.parent / "shared" / "eval" / "prompts.jsonl",
     "heldout_context": HERE / "prompts" / "heldout_context.jsonl",
     "dev_context": HERE / "prompts" / "dev_context.jsonl",
+    "dev_context2": HERE / "prompts" / "dev_context2.jsonl",
 }
 
 
