@@ -550,3 +550,10 @@ def test_toilets_for_people_are_rooms_and_a_bath_in_a_list_is_a_tub():
     p = parse("A bathroom with a toilet and a bath.")
     assert [m.key for m in p.rooms] == ["bathroom"] and [m.key for m in p.objects] == ["toilet", "bathtub"]
     assert [m.name for m in parse("A cottage with a kitchen, a bedroom and a bath.").rooms][-1] == "bath"
+
+
+def test_two_tops_and_four_tops_are_tables():
+    from anyhome.plan.parse import parse
+
+    p = parse("A bistro for forty covers: a dining room of two-tops and four-tops.")
+    assert [(m.key, m.room) for m in p.objects] == [("table", 0), ("table", 0)] and p.seats == [(None, 40)]

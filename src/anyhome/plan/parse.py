@@ -1394,6 +1394,10 @@ _NUMBER_COMPOUND = re.compile(
 """A number hyphenated to a word before a noun: "a three-seater sofa", "a two-group machine"."""
 
 
+TOPS = re.compile(r"\b(two|four|six|eight|ten|twelve|[2-9]|1[0-2])[-\u2010\u2011 ]tops?\b", re.I)
+"""Restaurant talk for tables by their seats: "two-tops and four-tops"."""
+
+
 def _number_adjectives(text: str, kb: KnowledgeBase) -> str:
     """"A three-seater sofa" is one sofa: a number hyphenated to a word that is no room,
     unit or object word, before a noun, is written as one word ("threeseater"), as
@@ -1408,6 +1412,7 @@ def _number_adjectives(text: str, kb: KnowledgeBase) -> str:
             return mt.group(0)
         return mt.group(1) + mt.group(2)
 
+    text = TOPS.sub(lambda mt: f"tables for {mt.group(1)}", text)  # "a dining room of two-tops"
     return _NUMBER_COMPOUND.sub(join, text)
 
 
