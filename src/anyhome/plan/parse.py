@@ -82,7 +82,8 @@ lunch, with a small stage"."""
 
 WHERE_FIRST = re.compile(
     r"^\s*(?:,\s*)?(?:(?:on|in|at|under|up in|down in) the (?:[\w-]+ ){0,2}(?:floor|storey|story|level|attic|basement|"
-    r"loft|eaves|back|front|rear|top|end|corner)|upstairs|downstairs)\s*,?")
+    r"loft|eaves|back|front|rear|top|end|corner)|upstairs|downstairs|below|above|beneath|underneath|next door|"
+    r"out back|behind it|alongside)\s*,?")
 """Where a room is, said before what it has: "a long gallery on the top floor hung with
 portraits"."""
 
@@ -1254,7 +1255,8 @@ def _open_vocabulary(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[
             continue
         before = max((x for x in mentions if x.end <= s), key=lambda x: x.end, default=None)
         on_object = before is not None and before.kind == "object" and OBJECT_WITH.match(text[before.end : s]) is not None
-        kind, mo = ov.classify(name, kb, room_ok=not _HELD_FOR.search(text[:s]) and not on_object)
+        room_ok = not _HELD_FOR.search(text[:s]) and not on_object and head not in THING_HEADS
+        kind, mo = ov.classify(name, kb, room_ok=room_ok)
         if kind == "room":
             m = Mention("room", "", name, s, e, plural=plural, concept=mo.key if mo else None, open_vocab=True)
             _look_back(m, text, tokens, spans, keep_words=False, kb=kb)
@@ -1278,6 +1280,8 @@ def _open_vocabulary(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[
 _USED_FOR = re.compile(r"\bused (?:for|as)\s+(?:[\w'-]+(?:\s*,\s*|\s+))*$")
 """What a room is used for lists activities, not rooms: "a main hall used for
 assemblies, PE and lunch"."""
+THING_HEADS = frozenset("gear equipment kit machinery machine machines apparatus unit units system systems".split())
+"""Heads that name things, whatever the words before them ("the cooling gear" is no cold room)."""
 OBJECT_WITH = re.compile(r"^\s*(?:with|w/)\s+(?:(?:a|an|its|their|built-in|built in)\s+)?(?:[\w-]+\s+)?$")
 """Between an object and a phrase: what the object comes with is no room ("four pedicure
 chairs with foot spas")."""
