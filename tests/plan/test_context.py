@@ -557,3 +557,11 @@ def test_two_tops_and_four_tops_are_tables():
 
     p = parse("A bistro for forty covers: a dining room of two-tops and four-tops.")
     assert [(m.key, m.room) for m in p.objects] == [("table", 0), ("table", 0)] and p.seats == [(None, 40)]
+
+
+def test_a_pubs_back_room_for_pool_and_its_beer_garden_of_picnic_tables():
+    spec = plan_of("A traditional English pub with a long oak bar, a back room for pool and darts, and a beer garden.", 0)
+    pool = next(r for r in spec.rooms if "pool" in r.name)
+    assert "pool table" in names_of(pool) and pool.type == "playroom"
+    garden = next(r for r in spec.rooms if r.name == "beer garden")
+    assert names_of(garden).count("garden bench") >= 4
