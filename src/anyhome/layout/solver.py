@@ -112,7 +112,8 @@ def _make_room(st: RoomState) -> None:
     # rack for the boot shelf)
     for scale, bare in [*((s, False) for s in (1.0, *SHRINK_SCALES)), (SHRINK_SCALES[-1], True)]:
         st.restore(start)
-        keep = {i for i in keys_first if groups[i].key and i not in missing} if bare else set()
+        # the members the text asked for ("a bar with eight stools") never make room
+        keep = {i for i in keys_first if groups[i].key and not groups[i].required and i not in missing} if bare else set()
         _furnish(st, keys_first, {i: scale for i in missing}, bare=keep)
         dropped_now = _key_dropped(st)
         missing += [i for i in dropped_now if i not in missing]  # shrink these too next time
