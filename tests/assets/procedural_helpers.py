@@ -65,3 +65,14 @@ def assert_maps(cases) -> None:
     """Every (category, name, family) resolves through ``family_for`` as listed."""
     wrong = [(c, n, family_for(c, n), f) for c, n, f in cases if family_for(c, n) != f]
     assert not wrong, f"(category, name, got, expected): {wrong}"
+
+
+def assert_closed_in_box(family: str, seed: int) -> None:
+    """The family's mesh at its typical size is closed, exactly fills its box (centred on
+    x and y, from the floor up) and is the same when built again from the same seed."""
+    size = typical_size(family)
+    mesh = fresh_mesh(family, seed, size)
+    assert mesh.is_watertight
+    np.testing.assert_allclose(mesh.bounds, [[-size[0] / 2, -size[1] / 2, 0.0], [size[0] / 2, size[1] / 2, size[2]]],
+                               atol=1e-6)
+    np.testing.assert_array_equal(mesh.vertices, fresh_mesh(family, seed, size).vertices)

@@ -3,11 +3,12 @@ change the mesh; every mesh is closed, fills its box and is the same for the sam
 
 from __future__ import annotations
 
-import numpy as np
 import pytest
-from procedural_helpers import assert_knob_changes_mesh, assert_maps, fresh_mesh
-
-from anyhome.assets.registry import typical_size
+from procedural_helpers import (
+    assert_closed_in_box,
+    assert_knob_changes_mesh,
+    assert_maps,
+)
 
 FAMILIES = ("dock_leveller", "roller_shutter", "battery_charger", "autoclave", "gas_tap")
 
@@ -32,12 +33,7 @@ def test_names_map_to_families() -> None:
 @pytest.mark.parametrize("family", FAMILIES)
 @pytest.mark.parametrize("seed", [0, 3])
 def test_closed_in_its_box_and_deterministic(family: str, seed: int) -> None:
-    size = typical_size(family)
-    mesh = fresh_mesh(family, seed, size)
-    assert mesh.is_watertight
-    np.testing.assert_allclose(mesh.bounds, [[-size[0] / 2, -size[1] / 2, 0.0], [size[0] / 2, size[1] / 2, size[2]]],
-                               atol=1e-6)
-    np.testing.assert_array_equal(mesh.vertices, fresh_mesh(family, seed, size).vertices)
+    assert_closed_in_box(family, seed)
 
 
 @pytest.mark.parametrize(
