@@ -23,18 +23,10 @@ from shapely.geometry import LineString, Polygon, box
 from shapely.geometry.polygon import orient
 
 from anyhome.floorplan.doors import DOOR_WIDTH_M
+from anyhome.floorplan.grid import SNAP_M
+from anyhome.floorplan.stairs import DOOR_CORNER_M
 from anyhome.house import Door, Floorplan, Room, Window
 from anyhome.plan.spec import HouseSpec, RoomSpec
-
-LEFT_M = 1.2
-"""Narrowest strip of the room left beside a stairwell carved along it (a passage)."""
-DOOR_END_M = 0.05
-SLIDE_M = 4.0
-"""Farthest a door of the room is slid along its wall, off the walls the stairwell takes."""
-SLIDE_STEP_M = 0.05
-NEAR_M = 0.1
-"""Least gap between a slid door and the other doors and windows."""
-"""Wall kept between the stairwell's door and the end of its wall."""
 
 
 def carve_room(spec: HouseSpec, well: str, open_types: frozenset[str]) -> str | None:
@@ -61,10 +53,11 @@ def carved_spec(sub: HouseSpec, well: str, room: str, well_m2: float) -> HouseSp
     return sub.model_copy(update={"rooms": rooms, "connections": links})
 
 
-def carved(plan: Floorplan, well: RoomSpec, room: str, long_m: float, short_m: float) -> Iterator[Floorplan]:
+def carved(plan: Floorplan, well: RoomSpec, room: str, long_m: float, short_m: float,
+           left_m: float) -> Iterator[Floorplan]:
     """``plan`` with the stairwell ``well`` (``long_m`` x ``short_m``) cut from a corner of
     the rectangle of ``room``, its long side along one of the room's walls: every corner
-    and both ways where the room is long enough and keeps :data:`LEFT_M` beside it; a
+    and both ways where the room is long enough and keeps ``left_m`` beside it (a passage); a
     door of the room on the walls it takes slid along its wall off them (none: the
     corner is refused), no window crossing their ends (those on them go to the
     stairwell). The stairwell's door
@@ -76,7 +69,7 @@ def carved(plan: Floorplan, well: RoomSpec, room: str, long_m: float, short_m: f
     x0, x1, y0, y1 = min(xs), max(xs), min(ys), max(ys)
     for along_x in (x1 - x0 >= y1 - y0, x1 - x0 < y1 - y0):  # the well's long side along the room's longer side first
         span, across = (x1 - x0, y1 - y0) if along_x else (y1 - y0, x1 - x0)
-        if span < long_m - 1e-6 or not (across >= short_m + LEFT_M - 1e-6):
+        if span < long_m - 1e-6 or not (across >= short_m + left_m - 1e-6):
             continue
         for cx in (0, 1):
             for cy in (0, 1):
@@ -127,11 +120,11 @@ def _cut(plan: Floorplan, well: RoomSpec, r: Room, cut, along_x: bool, cx: int, 
         windows.append(w)
     if along_x:  # the inner long wall, the door at its end away from the corner
         y = by if cy == 0 else ay
-        x = bx - DOOR_END_M if cx == 0 else ax + DOOR_END_M + DOOR_WIDTH_M
+        x = bx - DOOR_CORNER_M if cx == 0 else ax + DOOR_CORNER_M + DOOR_WIDTH_M
         seg = ((round(x - DOOR_WIDTH_M, 4), round(y, 4)), (round(x, 4), round(y, 4)))
     else:
         x = bx if cx == 0 else ax
-        y = by - DOOR_END_M if cy == 0 else ay + DOOR_END_M + DOOR_WIDTH_M
+        y = by - DOOR_CORNER_M if cy == 0 else ay + DOOR_CORNER_M + DOOR_WIDTH_M
         seg = ((round(x, 4), round(y - DOOR_WIDTH_M, 4)), (round(x, 4), round(y, 4)))
     if not rest_wall.contains(LineString(seg)):
         return None
@@ -151,22 +144,24 @@ def _cut(plan: Floorplan, well: RoomSpec, r: Room, cut, along_x: bool, cx: int, 
 
 def _slid(segment, walls, rest_wall, near: list, on, off) -> tuple | None:
     """``segment`` (a door of the room) moved along its own line to the nearest place
-    (:data:`SLIDE_STEP_M` steps, at most :data:`SLIDE_M`) off ``walls`` (those the
+    (:data:`SNAP_M` steps, at most :data:`~anyhome.floorplan.levels.DOOR_SLIDE_M`) off ``walls`` (those the
     stairwell takes), on ``rest_wall`` (what is left of the
-    room's outline), :data:`NEAR_M` from every segment of ``near``, on ``on`` (the other
+    room's outline), :data:`~anyhome.floorplan.stairs.DOOR_CORNER_M` twice from every segment of ``near``, on ``on`` (the other
     room's outline, buffered) or off ``off`` (an outside door: every other room's
     outline); None: no such place. Every place is tested at once (shapely's arrays)."""
     import shapely
 
+    from anyhome.floorplan.levels import DOOR_SLIDE_M
+
     (ax, ay), (bx, by) = segment
     ux, uy = (1.0, 0.0) if abs(ay - by) < 1e-6 else (0.0, 1.0)
-    shifts = [sign * i * SLIDE_STEP_M for i in range(1, int(SLIDE_M / SLIDE_STEP_M) + 1) for sign in (1, -1)]
+    shifts = [sign * i * SNAP_M for i in range(1, int(DOOR_SLIDE_M / SNAP_M) + 1) for sign in (1, -1)]
     segs = [((round(ax + ux * t, 4), round(ay + uy * t, 4)), (round(bx + ux * t, 4), round(by + uy * t, 4))) for t in shifts]
     ends = np.asarray(segs, dtype=float)
     lines = shapely.linestrings(ends)
     ok = shapely.contains(rest_wall, lines) & (shapely.length(shapely.intersection(lines, walls)) <= 1e-6)
     for e in near:
-        ok &= shapely.distance(shapely.linestrings(np.asarray(e, dtype=float)), lines) >= NEAR_M
+        ok &= shapely.distance(shapely.linestrings(np.asarray(e, dtype=float)), lines) >= 2 * DOOR_CORNER_M
     if on is not None:
         ok &= shapely.contains(on, lines)
     if off is not None:

@@ -276,10 +276,12 @@ def _stacked(spec: HouseSpec, numbers: list[int], rng: np.random.Generator, opti
     plan = _stairs_recorded(_under_above(_joined(spec, plans, levels), through_rooms(spec)), house_stair_kind(spec))
     kind = house_stair_kind(spec)
     wells = {k: stair_room(spec, k) for k in numbers}
-    plan = wells_trimmed(plan, _stairs_place(plan)[1], wells, opts, kind)
+    foot, ya, yaw = _stairs_place(plan)
+    lengths = {k: flight_length_m(heights, k, kind) for k in numbers}
+    boxes = {k: (foot - n, foot) if abs(yaw) < 0.1 else (foot, foot + n) for k, n in lengths.items()}
+    plan = wells_trimmed(plan, ya, wells, opts, kind, boxes if opts.well_end_trim else None)
     if opts.well_end_trim:
-        plan = wells_end_trimmed(plan, _stairs_place(plan), {k: flight_length_m(heights, k, kind) for k in numbers},
-                                 wells, opts)
+        plan = wells_end_trimmed(plan, (foot, ya, yaw), lengths, wells, opts)
     return stairs_opened(plan, opts)
 
 
@@ -438,20 +440,15 @@ def _shared_wall_m(a: Room, b: Room) -> float:
     return float(Polygon(a.polygon).boundary.intersection(Polygon(b.polygon).boundary).length)
 
 
-OPEN_STAIR_CORNERS = (4, 6, 8)
-"""Corners the outline of a room with its stairwell merged in may have: a rectangle, an L,
-or a T or Z (the stairwell an alcove off part of one wall, the stair rising from it)."""
-
-
 def _merged_well(plan: Floorplan, k: int, room: Room, well: Room, opts: FloorplanOptions) -> Floorplan | None:
     """``plan`` with ``well`` merged into ``room`` (:func:`_stair_opened`), or None where
-    their union is not one outline of :data:`OPEN_STAIR_CORNERS` within
+    their union is not one outline of at most ``open_stair_max_corners`` corners within
     ``open_stair_max_aspect_ratio`` (bounding box over widest disc), or a
     flight (at the place recorded on the storeys, :func:`_stairs_recorded`) would not
     stand in, or arrive in, the room."""
     from anyhome.floorplan.merge import l_aspect, merge_rooms, union_outline
 
-    outline = union_outline(room.polygon, well.polygon, OPEN_STAIR_CORNERS)
+    outline = union_outline(room.polygon, well.polygon, tuple(range(4, opts.open_stair_max_corners + 1, 2)))
     if outline is None or l_aspect(outline) > opts.open_stair_max_aspect_ratio + 1e-9:
         return None
     if len(outline) > 6 and _shared_wall_m(room, well) < opts.shared_wall_min_m - 1e-6:  # an alcove wide enough to walk into
@@ -717,7 +714,7 @@ def _carved_storey(spec: HouseSpec, k: int, sub: HouseSpec, rng: np.random.Gener
     carved_sub = carved_spec(sub, stair, room, round(long_m * short_m, 2))
 
     def fitted(plan: Floorplan) -> Floorplan | None:
-        for cand in carved(plan, well, room, long_m, short_m):
+        for cand in carved(plan, well, room, long_m, short_m, opts.stair_carve_left_m):
             out = _stair_fitted(cand, stair, k, heights, long_m, short_m, kind)
             if out is not None:
                 return out

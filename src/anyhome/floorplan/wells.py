@@ -31,6 +31,7 @@ from anyhome.floorplan.options import FloorplanOptions
 from anyhome.floorplan.stairs import (
     DOGLEG,
     PASSAGE_M,
+    STAIR_CLEAR_M,
     STRIP_M,
     is_stairwell,
     stair_width_m,
@@ -40,11 +41,13 @@ from anyhome.house import Floorplan, Room
 
 
 def wells_trimmed(plan: Floorplan, ya: float, wells: dict[int, str], opts: FloorplanOptions,
-                  kind: str = DOGLEG) -> Floorplan:
+                  kind: str = DOGLEG, boxes: dict[int, tuple[float, float]] | None = None) -> Floorplan:
     """``plan`` with each stairwell of ``wells`` (storey -> room id; rectangles whose long
     side runs east-west, their stair of ``kind`` on the strip ``ya`` to ``ya`` + the
     stair's width) trimmed on each long side to what its stair and doors need (see the
-    module doc; a ladder's well keeps its passage beside the ladder)."""
+    module doc; a ladder's well keeps its passage beside the ladder). ``boxes``: storey
+    -> the x span of its stair's box, where known: a door in a long wall clear of it
+    opens onto the strip at the stair's foot and needs no passage beside the stair."""
     width_m = stair_width_m(kind)
     from anyhome.house import is_habitable
 
@@ -59,7 +62,9 @@ def wells_trimmed(plan: Floorplan, ya: float, wells: dict[int, str], opts: Floor
             wall = LineString([(x0, edge), (x1, edge)])
             doors = [d for d in plan.doors if well_id in d.rooms]
             on_wall = [d for d in doors if _on(d.segment, wall)]
-            keep = max(well_width_m(kind), width_m + (PASSAGE_M if on_wall else 0.0))
+            span = (boxes or {}).get(k)
+            passage = [d for d in on_wall if span is None or _beside(d.segment, span)]
+            keep = max(well_width_m(kind), width_m + (PASSAGE_M if passage else 0.0))
             in_ends = [p[1] for d in doors if abs(d.segment[0][0] - d.segment[1][0]) < 1e-6 for p in d.segment]
             if north:  # the band from the stair (and the doors in the end walls) to the north wall
                 cut = _snap_out(max([ya + keep, *in_ends]), up=True)
@@ -79,6 +84,13 @@ def wells_trimmed(plan: Floorplan, ya: float, wells: dict[int, str], opts: Floor
             if outline is not None:
                 plan = _moved_wall(plan, well, other, outline, band, cut, edge, on_wall)
     return plan
+
+
+def _beside(segment, span: tuple[float, float]) -> bool:
+    """Whether a door in a long wall (``segment``) lies along the stair's box (its x
+    ``span``, grown by the stair's clearance from doors)."""
+    lo, hi = sorted(p[0] for p in segment)
+    return hi > span[0] - STAIR_CLEAR_M + 1e-6 and lo < span[1] + STAIR_CLEAR_M - 1e-6
 
 
 def wells_end_trimmed(plan: Floorplan, place: tuple[float, float, float], lengths: dict[int, float],
