@@ -74,9 +74,9 @@ def carved(plan: Floorplan, well: RoomSpec, room: str, long_m: float, short_m: f
         for cx in (0, 1):
             for cy in (0, 1):
                 w, h = (long_m, short_m) if along_x else (short_m, long_m)
-                ax = x0 if cx == 0 else x1 - w
-                ay = y0 if cy == 0 else y1 - h
-                cut = box(ax, ay, ax + w, ay + h)
+                ax, bx = (x0, round(x0 + w, 4)) if cx == 0 else (round(x1 - w, 4), x1)  # flush with the walls, exactly
+                ay, by = (y0, round(y0 + h, 4)) if cy == 0 else (round(y1 - h, 4), y1)
+                cut = box(ax, ay, bx, by)
                 out = _cut(plan, well, r, cut, along_x, cx, cy)
                 if out is not None:
                     yield out
@@ -128,9 +128,12 @@ def _cut(plan: Floorplan, well: RoomSpec, r: Room, cut, along_x: bool, cx: int, 
         seg = ((round(x, 4), round(y - DOOR_WIDTH_M, 4)), (round(x, 4), round(y, 4)))
     if not rest_wall.contains(LineString(seg)):
         return None
-    pts = [(round(x, 4), round(y, 4)) for x, y in orient(rest.simplify(0.0), 1.0).exterior.coords[:-1]]
-    start = pts.index(min(pts))
-    rest_pts = pts[start:] + pts[:start]
+    from anyhome.floorplan.merge import union_outline
+
+    pts = [(round(x, 4), round(y, 4)) for x, y in rest.exterior.coords[:-1]]
+    rest_pts = union_outline(pts, pts, (4, 6)) if Polygon(pts).is_valid else None  # corners tidied
+    if rest_pts is None:
+        return None  # not a clean rectangle or L (a sliver left by the cut)
     corners = [(round(x, 4), round(y, 4)) for x, y in orient(cut, 1.0).exterior.coords[:-1]]
     start = corners.index(min(corners))
     height = min(2.1, min(r.height, well.height_m) - 0.1)

@@ -446,8 +446,12 @@ def _merged_well(plan: Floorplan, k: int, room: Room, well: Room, opts: Floorpla
     ``open_stair_max_aspect_ratio`` (bounding box over widest disc), or a
     flight (at the place recorded on the storeys, :func:`_stairs_recorded`) would not
     stand in, or arrive in, the room."""
+    from shapely.geometry import Polygon
+
     from anyhome.floorplan.merge import l_aspect, merge_rooms, union_outline
 
+    if not (Polygon(room.polygon).is_valid and Polygon(well.polygon).is_valid):
+        return None
     outline = union_outline(room.polygon, well.polygon, tuple(range(4, opts.open_stair_max_corners + 1, 2)))
     if outline is None or l_aspect(outline) > opts.open_stair_max_aspect_ratio + 1e-9:
         return None
