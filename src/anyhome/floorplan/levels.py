@@ -455,7 +455,8 @@ def _merged_well(plan: Floorplan, k: int, room: Room, well: Room, opts: Floorpla
     outline = union_outline(room.polygon, well.polygon, tuple(range(4, opts.open_stair_max_corners + 1, 2)))
     if outline is None or l_aspect(outline) > opts.open_stair_max_aspect_ratio + 1e-9:
         return None
-    if len(outline) > 6 and _shared_wall_m(room, well) < opts.shared_wall_min_m - 1e-6:  # an alcove wide enough to walk into
+    if len(outline) > 6 and (_shared_wall_m(room, well) < opts.shared_wall_min_m - 1e-6  # an alcove wide enough to walk into
+                             or not _strip_off(plan, room)):
         return None
     opened = merge_rooms(plan, room.id, well.id, name=room.name, outline=outline)
     if well.height > room.height:  # the storey stays as high as its tallest room
@@ -469,6 +470,20 @@ def _merged_well(plan: Floorplan, k: int, room: Room, well: Room, opts: Floorpla
                 levels[o.room] == k - 1 and (link := stair_link(opened, o)) is not None and link[1] != room.id):
             return None
     return opened
+
+
+def _strip_off(plan: Floorplan, room: Room) -> bool:
+    """Whether ``room`` borders the strip of floor at the stairs' foot (recorded on the
+    storeys) over a door's width: a stairwell that is an alcove off part of its wall (a T
+    or Z) is walked into there, not past the flight (measured: a country house's snug
+    whose alcove met it beside the flight left the stair's foot reached only through the
+    boot room, and the furnished snug cut off three rooms)."""
+    from shapely.geometry import Polygon, box
+
+    foot, ya, yaw = _stairs_place(plan)
+    width = stair_width_m(plan_stair_kind(plan))
+    strip = box(foot, ya, foot + STRIP_M, ya + width) if yaw == 0.0 else box(foot - STRIP_M, ya, foot, ya + width)
+    return float(Polygon(room.polygon).boundary.intersection(strip.boundary).length) >= DOOR_WIDTH_M - 1e-6
 
 
 def _door_beside_flight(plan: Floorplan, room_id: str, k: int) -> bool:
