@@ -19,7 +19,10 @@ recorded on the storeys (:attr:`~anyhome.house.Level.stairs_at`). A stairwell op
 onto one room only, a living room, a dining room or a hall, a top storey's one
 habitable room (a mezzanine or attic bedroom), or a basement's cellar or laundry, is merged into that room, which the
 stair rises in or arrives in, with no landing of its own (:func:`stairs_opened`); the
-layout keeps the flights and the floor at their feet clear (:func:`stair_zones`). Storeys that will not stack
+layout keeps the flights and the floor at their feet clear (:func:`stair_zones`); a storey
+whose stairwell opens onto one such room only is searched with the stairwell carved from
+that room's corner (:mod:`anyhome.floorplan.carve`), so it merges back as the room's own
+rectangle. Storeys that will not stack
 are tried again with roomier stairwells, then laid out on one storey.
 
 Work is saved between tries: a storey's search asks each valid layout for its stair as
