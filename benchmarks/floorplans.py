@@ -61,8 +61,9 @@ SETS = {
     "heldout_storeys": HERE / "prompts" / "heldout_storeys.jsonl",
     "heldout_storeys2": HERE / "prompts" / "heldout_storeys2.jsonl",
     "dev_storeys": HERE / "prompts" / "dev_storeys.jsonl",
+    "dev_storeys2": HERE / "prompts" / "dev_storeys2.jsonl",
 }
-"""``dev`` and ``dev_storeys`` (multi-storey homes) are the sets to tune on; the held-out sets are for measuring only."""
+"""``dev``, ``dev_storeys`` and ``dev_storeys2`` (multi-storey homes) are the sets to tune on; the held-out sets are for measuring only."""
 OVERHANG_TOL_M2 = 1.0
 """An upper storey may hang over nothing by this much (wall thickness, rounding)."""
 SMALL_HOME_ROOMS = 8

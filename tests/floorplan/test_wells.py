@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from anyhome.floorplan.options import FloorplanOptions
-from anyhome.floorplan.wells import wells_trimmed
+from anyhome.floorplan.wells import wells_end_trimmed, wells_trimmed
 from anyhome.house import Door, Floorplan, Level, Room, Window
 
 
@@ -52,3 +52,34 @@ def test_a_band_on_an_outside_wall_goes_to_the_outside_with_its_door():
     out = wells_trimmed(plan, 0.0, {0: "stairwell"}, FloorplanOptions())
     assert max(p[1] for p in out.room("stairwell").polygon) == 2.65  # a landing before the door
     assert {p[1] for p in out.doors[0].segment} == {2.65}
+
+
+def test_a_door_onto_the_strip_at_the_stairs_foot_needs_no_landing_beside_the_stair():
+    # the box on x 0-2.6 (its foot at 2.6), the door at x 2.65-3.55 opens onto the strip
+    out = wells_trimmed(_plan(True), 0.0, {0: "stairwell"}, FloorplanOptions(), boxes={0: (0.0, 2.6)})
+    assert max(p[1] for p in out.room("stairwell").polygon) == 1.75
+    door = next(d for d in out.doors if d.id == "door-1")
+    assert {p[1] for p in door.segment} == {1.75}
+
+
+def test_the_end_beyond_the_strip_goes_to_the_room_across_the_end_wall():
+    well = Room(id="stairwell", name="stairwell", type="stairwell", polygon=[(0, 0), (4.8, 0), (4.8, 1.75), (0, 1.75)])
+    study = Room(id="study", name="study", type="study", polygon=[(4.8, 0), (7.8, 0), (7.8, 3.0), (4.8, 3.0)])
+    door = Door(id="door-0", rooms=("stairwell", "study"), segment=((4.8, 0.4), (4.8, 1.3)))
+    plan = Floorplan(rooms=[well, study], doors=[door], windows=[], connections=[("stairwell", "study")],
+                     levels=[Level(level=0, elevation_m=0.0, height_m=2.9), Level(level=1, elevation_m=2.9, height_m=2.9)])
+    # the foot at x 2.6 facing east: the box on x 0-2.6, the strip to 3.6
+    out = wells_end_trimmed(plan, (2.6, 0.0, 0.0), {0: 2.6}, {0: "stairwell"}, FloorplanOptions())
+    assert max(p[0] for p in out.room("stairwell").polygon) == 3.6
+    assert min(p[0] for p in out.room("study").polygon) == 3.6 and len(out.room("study").polygon) == 6
+    assert {p[0] for p in out.doors[0].segment} == {3.6}  # the door moved with its wall
+
+
+def test_the_end_behind_the_box_keeps_its_door():
+    well = Room(id="stairwell", name="stairwell", type="stairwell", polygon=[(0, 0), (4.8, 0), (4.8, 1.75), (0, 1.75)])
+    study = Room(id="study", name="study", type="study", polygon=[(-3.0, 0), (0, 0), (0, 3.0), (-3.0, 3.0)])
+    door = Door(id="door-0", rooms=("stairwell", "study"), segment=((0.0, 0.4), (0.0, 1.3)))
+    plan = Floorplan(rooms=[well, study], doors=[door], windows=[], connections=[("stairwell", "study")],
+                     levels=[Level(level=0, elevation_m=0.0, height_m=2.9), Level(level=1, elevation_m=2.9, height_m=2.9)])
+    out = wells_end_trimmed(plan, (3.8, 0.0, 0.0), {0: 2.6}, {0: "stairwell"}, FloorplanOptions())  # box 1.2-3.8
+    assert min(p[0] for p in out.room("stairwell").polygon) == 0.0

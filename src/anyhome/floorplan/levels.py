@@ -19,7 +19,10 @@ recorded on the storeys (:attr:`~anyhome.house.Level.stairs_at`). A stairwell op
 onto one room only, a living room, a dining room or a hall, a top storey's one
 habitable room (a mezzanine or attic bedroom), or a basement's cellar or laundry, is merged into that room, which the
 stair rises in or arrives in, with no landing of its own (:func:`stairs_opened`); the
-layout keeps the flights and the floor at their feet clear (:func:`stair_zones`). Storeys that will not stack
+layout keeps the flights and the floor at their feet clear (:func:`stair_zones`); a storey
+whose stairwell opens onto one such room only is searched with the stairwell carved from
+that room's corner (:mod:`anyhome.floorplan.carve`), so it merges back as the room's own
+rectangle. Storeys that will not stack
 are tried again with roomier stairwells, then laid out on one storey.
 
 Work is saved between tries: a storey's search asks each valid layout for its stair as
@@ -86,7 +89,7 @@ from anyhome.floorplan.stairs import (
     stair_width_m,
     well_width_m,
 )
-from anyhome.floorplan.wells import wells_trimmed
+from anyhome.floorplan.wells import wells_end_trimmed, wells_trimmed
 from anyhome.geometry import DOOR_CLEARANCE_M, opening_zone
 from anyhome.house import Door, Floorplan, HouseObject, Level, Room, Window
 from anyhome.plan.spec import HouseSpec
@@ -274,8 +277,14 @@ def _stacked(spec: HouseSpec, numbers: list[int], rng: np.random.Generator, opti
         elevation[k] = elevation[k + 1] - heights[k]
     levels = [Level(level=k, elevation_m=round(elevation[k], 4), height_m=round(heights[k], 4)) for k in numbers]
     plan = _stairs_recorded(_under_above(_joined(spec, plans, levels), through_rooms(spec)), house_stair_kind(spec))
-    plan = wells_trimmed(plan, _stairs_place(plan)[1], {k: stair_room(spec, k) for k in numbers}, opts,
-                         house_stair_kind(spec))
+    kind = house_stair_kind(spec)
+    wells = {k: stair_room(spec, k) for k in numbers}
+    foot, ya, yaw = _stairs_place(plan)
+    lengths = {k: flight_length_m(heights, k, kind) for k in numbers}
+    boxes = {k: (foot - n, foot) if abs(yaw) < 0.1 else (foot, foot + n) for k, n in lengths.items()}
+    plan = wells_trimmed(plan, ya, wells, opts, kind, boxes if opts.well_end_trim else None)
+    if opts.well_end_trim:
+        plan = wells_end_trimmed(plan, (foot, ya, yaw), lengths, wells, opts)
     return stairs_opened(plan, opts)
 
 
@@ -436,13 +445,21 @@ def _shared_wall_m(a: Room, b: Room) -> float:
 
 def _merged_well(plan: Floorplan, k: int, room: Room, well: Room, opts: FloorplanOptions) -> Floorplan | None:
     """``plan`` with ``well`` merged into ``room`` (:func:`_stair_opened`), or None where
-    their union is neither a rectangle nor an L within ``open_stair_max_aspect_ratio``, or a
+    their union is not one outline of at most ``open_stair_max_corners`` corners within
+    ``open_stair_max_aspect_ratio`` (bounding box over widest disc), or a
     flight (at the place recorded on the storeys, :func:`_stairs_recorded`) would not
     stand in, or arrive in, the room."""
+    from shapely.geometry import Polygon
+
     from anyhome.floorplan.merge import l_aspect, merge_rooms, union_outline
 
-    outline = union_outline(room.polygon, well.polygon)
+    if not (Polygon(room.polygon).is_valid and Polygon(well.polygon).is_valid):
+        return None
+    outline = union_outline(room.polygon, well.polygon, tuple(range(4, opts.open_stair_max_corners + 1, 2)))
     if outline is None or l_aspect(outline) > opts.open_stair_max_aspect_ratio + 1e-9:
+        return None
+    if len(outline) > 6 and (_shared_wall_m(room, well) < opts.shared_wall_min_m - 1e-6  # an alcove wide enough to walk into
+                             or not _strip_off(plan, room)):
         return None
     opened = merge_rooms(plan, room.id, well.id, name=room.name, outline=outline)
     if well.height > room.height:  # the storey stays as high as its tallest room
@@ -458,10 +475,25 @@ def _merged_well(plan: Floorplan, k: int, room: Room, well: Room, opts: Floorpla
     return opened
 
 
+def _strip_off(plan: Floorplan, room: Room) -> bool:
+    """Whether ``room`` borders the strip of floor at the stairs' foot (recorded on the
+    storeys) over a door's width: a stairwell that is an alcove off part of its wall (a T
+    or Z) is walked into there, not past the flight (measured: a country house's snug
+    whose alcove met it beside the flight left the stair's foot reached only through the
+    boot room, and the furnished snug cut off three rooms)."""
+    from shapely.geometry import Polygon, box
+
+    foot, ya, yaw = _stairs_place(plan)
+    width = stair_width_m(plan_stair_kind(plan))
+    strip = box(foot, ya, foot + STRIP_M, ya + width) if yaw == 0.0 else box(foot - STRIP_M, ya, foot, ya + width)
+    return float(Polygon(room.polygon).boundary.intersection(strip.boundary).length) >= DOOR_WIDTH_M - 1e-6
+
+
 def _door_beside_flight(plan: Floorplan, room_id: str, k: int) -> bool:
     """Whether a door of ``room_id`` (storey ``k``, the stair rising in it) opens beside
-    the stair, between a flight and the room's walls, where the passage it leads along
-    may be furnished shut (measured: a den's armchair cut a garage off)."""
+    the stair, between a flight and the room's walls behind it, where the passage it
+    leads along may be furnished shut (measured: a den's armchair cut a garage off); the
+    floor beyond the strip at the stair's foot, where the stair is come to, may hold doors."""
     from shapely.geometry import Polygon, box
 
     room = plan.room(room_id)
@@ -472,8 +504,8 @@ def _door_beside_flight(plan: Floorplan, room_id: str, k: int) -> bool:
     length_m = stair_length_m(kind, next(lv.height_m for lv in plan.levels if lv.level == k))  # the flight rising from it
     width = stair_width_m(kind)
     flight = flight_rect(foot, ya, length_m, width, yaw)
-    strip = box(foot, ya, foot + STRIP_M, ya + width) if yaw == 0.0 else box(foot - STRIP_M, ya, foot, ya + width)
-    beside = poly.intersection(box(x0, ya, x1, ya + width)).difference(flight.union(strip))
+    behind = box(x0, ya, foot, ya + width) if yaw == 0.0 else box(foot, ya, x1, ya + width)  # the flight's side of its foot
+    beside = poly.intersection(behind).difference(flight)
     return any(opening_zone(dr.segment).intersection(beside).area > 0.05 for dr in plan.doors if room_id in dr.rooms)
 
 
@@ -661,6 +693,9 @@ def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options: Fl
         refused[0] += out is None
         return out
 
+    carved_found = _carved_storey(spec, k, sub, rng, search, heights, long_m, short_m, kind, opts)
+    if carved_found is not None:
+        return carved_found
     for _ in range(attempts):
         refused[0] = 0
         try:
@@ -678,6 +713,43 @@ def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options: Fl
             continue
         return found[0]
     raise FloorplanError(f"could not lay out level {k} in {attempts} attempts ({why})")
+
+
+def _carved_storey(spec: HouseSpec, k: int, sub: HouseSpec, rng: np.random.Generator, search: FloorplanOptions,
+                   heights: dict[int, float], long_m: float, short_m: float, kind: str,
+                   opts: FloorplanOptions) -> Floorplan | None:
+    """Storey ``k`` laid out with its stairwell carved from a corner of the one room it
+    opens onto (:mod:`anyhome.floorplan.carve`), the stair fitted as :func:`_stair_fitted`
+    fits it; None where the storey's stairwell opens onto no such room, or
+    ``stair_carve_attempts`` searches found no layout that holds it (the caller then lays
+    the storey out with a stairwell of its own)."""
+    from anyhome.floorplan.carve import carve_room, carved, carved_spec
+
+    if opts.stair_carve_attempts == 0:
+        return None
+    stair = stair_room(spec, k)
+    bottom = min(r.level for r in spec.rooms)
+    room = carve_room(sub, stair, _open_stair_types(k, bottom))
+    if room is None or room in through_rooms(spec):
+        return None
+    well = next(r for r in spec.rooms if r.id == stair)
+    carved_sub = carved_spec(sub, stair, room, round(long_m * short_m, 2))
+
+    def fitted(plan: Floorplan) -> Floorplan | None:
+        for cand in carved(plan, well, room, long_m, short_m, opts.stair_carve_left_m):
+            out = _stair_fitted(cand, stair, k, heights, long_m, short_m, kind)
+            if out is not None:
+                return out
+        return None
+
+    search = dataclasses.replace(search, max_attempts=min(search.max_attempts, opts.stair_carve_max_attempts))
+    for _ in range(opts.stair_carve_attempts):
+        try:
+            return _candidates(carved_sub, rng, search, min_length_m={room: long_m}, accept=fitted,
+                               width_m=stair_width_m(kind))[0]
+        except FloorplanError:
+            continue
+    return None
 
 
 def _candidates(sub: HouseSpec, rng: np.random.Generator, options: FloorplanOptions | None,

@@ -296,6 +296,16 @@ class FloorplanOptions:
     """Score of a stairwell's door that leaves no place for its stair (a townhouse's ground floor took 10 tries without it)."""
     well_trim_min_m: float = _opt(0.3, 0.0, 10.0)
     """Narrowest band of a stairwell beyond its stair given to the room across (floorplan.wells), m."""
+    stair_carve_attempts: int = _opt(1, 0, 100)
+    """Searches of a storey with its stairwell carved from a corner of the one room it opens onto (floorplan.carve) before it is laid out with a stairwell of its own; 0: never carved."""
+    stair_carve_left_m: float = _opt(1.2, 0.5, 10.0)
+    """Narrowest strip of a room left beside a stairwell carved from its corner along it (a passage), m."""
+    open_stair_max_corners: int = _opt(8, 4, 8)
+    """Most corners of a room with its stairwell merged in: 4 a rectangle, 6 an L, 8 a T or Z (the stairwell an alcove off part of one wall)."""
+    stair_carve_max_attempts: int = _opt(12, 1, 10_000)
+    """Slicing attempts of one such search (``max_attempts`` at most)."""
+    well_end_trim: int = _opt(1, 0, 1)
+    """1: a stairwell's ends beyond its stair's box and foot strip go to the room across (floorplan.wells.wells_end_trimmed); 0: kept."""
     open_min_width_m: float = _opt(1.2, 0.5, 20.0)
     """Narrowest wall opening (kind "open"); below this an open pair gets a plain door."""
     open_max_width_m: float = _opt(1.8, 0.5, 20.0)

@@ -1,0 +1,72 @@
+"""A stairwell carved from a corner of the one room it opens onto (floorplan.carve)."""
+
+from __future__ import annotations
+
+from shapely.geometry import LineString, Polygon
+
+from anyhome.floorplan.carve import carve_room, carved, carved_spec
+from anyhome.floorplan.merge import union_outline
+from anyhome.house import Door, Floorplan, Room
+from anyhome.plan.spec import RoomSpec
+from tests.floorplan.test_options import _spec
+
+WELL = RoomSpec(id="stairwell", name="stairwell", type="stairwell", area_m2=6.3, height_m=2.7)
+LIVING = [(0.0, 0.0), (6.0, 0.0), (6.0, 4.5), (0.0, 4.5)]
+
+
+def _plan(doors: list[Door]) -> Floorplan:
+    living = Room(id="living_room", name="living room", type="living_room", polygon=LIVING)
+    kitchen = Room(id="kitchen", name="kitchen", type="kitchen", polygon=[(6.0, 0.0), (9.0, 0.0), (9.0, 4.5), (6.0, 4.5)])
+    return Floorplan(rooms=[living, kitchen], doors=doors, windows=[], connections=[("living_room", "kitchen")])
+
+
+def test_the_stairwell_takes_a_corner_and_opens_onto_the_rest():
+    plan = _plan([Door(id="door-0", rooms=("living_room", "kitchen"), segment=((6.0, 3.0), (6.0, 3.9)))])
+    cands = list(carved(plan, WELL, "living_room", 3.6, 1.75, 1.2))
+    assert cands
+    for out in cands:
+        well, rest = Polygon(out.room("stairwell").polygon), Polygon(out.room("living_room").polygon)
+        assert abs(well.area - 3.6 * 1.75) < 1e-6 and abs(well.area + rest.area - 6.0 * 4.5) < 1e-6
+        assert len(out.room("living_room").polygon) == 6  # an L: the stairwell flush with two walls
+        assert union_outline(out.room("living_room").polygon, out.room("stairwell").polygon) is not None
+        door = next(d for d in out.doors if "stairwell" in d.rooms)
+        assert set(door.rooms) == {"stairwell", "living_room"}
+        assert rest.exterior.buffer(1e-6).contains(LineString(door.segment))
+        for d in out.doors:  # every door of the room still on what is left of it
+            if "living_room" in d.rooms:
+                assert rest.exterior.buffer(1e-6).contains(LineString(d.segment))
+
+
+def test_a_door_on_the_walls_taken_slides_along_them():
+    door = Door(id="door-0", rooms=("living_room", "kitchen"), segment=((6.0, 0.3), (6.0, 1.2)))  # in the SE corner
+    outs = [o for o in carved(_plan([door]), WELL, "living_room", 3.6, 1.75, 1.2)
+            if max(p[0] for p in o.room("stairwell").polygon) == 6.0 and min(p[1] for p in o.room("stairwell").polygon) == 0.0]
+    assert outs  # the south-east corner is still carved, the door moved
+    for out in outs:
+        moved = next(d for d in out.doors if d.id == "door-0")
+        assert moved.segment != door.segment
+        assert LineString(moved.segment).intersection(Polygon(out.room("stairwell").polygon).exterior).length < 1e-6
+        assert Polygon(out.room("kitchen").polygon).exterior.buffer(1e-6).contains(LineString(moved.segment))
+
+
+def test_a_room_too_narrow_for_the_stairwell_and_a_passage_is_not_carved():
+    narrow = _plan([]).model_copy(update={"rooms": [
+        Room(id="living_room", name="living room", type="living_room", polygon=[(0, 0), (3.6, 0), (3.6, 2.5), (0, 2.5)])]})
+    assert list(carved(narrow, WELL, "living_room", 3.6, 1.75, 1.2)) == []
+
+
+def test_only_a_stairwell_with_one_door_onto_an_open_stair_room_is_carved():
+    spec = _spec("a two-storey cottage with a living room and a kitchen downstairs and two bedrooms upstairs")
+    wells = [r.id for r in spec.rooms if r.type == "stairwell"]
+    for well in wells:
+        links = [c for c in spec.connections if well in c]
+        room = carve_room(spec, well, frozenset({"living_room", "dining_room"}))
+        if room is not None:
+            assert len(links) == 1 and room in links[0]
+            sub = carved_spec(spec, well, room, 6.3)
+            assert well not in {r.id for r in sub.rooms} and not any(well in c for c in sub.connections)
+            grown = next(r for r in sub.rooms if r.id == room)
+            assert abs(grown.area_m2 - next(r for r in spec.rooms if r.id == room).area_m2 - 6.3) < 0.011
+        else:
+            assert len(links) != 1 or not any(
+                r.type in ("living_room", "dining_room") for r in spec.rooms if r.id in links[0] and r.id != well)
