@@ -565,3 +565,12 @@ def test_a_pubs_back_room_for_pool_and_its_beer_garden_of_picnic_tables():
     assert "pool table" in names_of(pool) and pool.type == "playroom"
     garden = next(r for r in spec.rooms if r.name == "beer garden")
     assert names_of(garden).count("garden bench") >= 4
+
+
+def test_a_room_seating_fewer_than_usual_holds_that_many():
+    from anyhome.plan.furnish import group_seats
+
+    few = plan_of("A veterinary clinic with a waiting room seating four and two consulting rooms.", 0)
+    room = next(r for r in few.rooms if r.name == "waiting room")
+    chairs = next(g for g in room.groups if g.name == "waiting_chairs")
+    assert group_seats(chairs.model_dump()) * chairs.repeat == 4

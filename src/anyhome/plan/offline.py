@@ -308,7 +308,13 @@ def _furnish(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], main_key: str
     for groups, _, _ in built:
         fu.drop_unasked_beds(groups)
     for i, n in _seated(kb, parsed, slots, main_key):  # "a bistro for 40 covers"
+        factor = _floor_use(kb, slots[i].type)
+        before = _need_m2(built[i][0], factor)
         fu.seat(built[i][0], n)
+        freed = before - _need_m2(built[i][0], factor)
+        if freed > 0:  # "a waiting area seating four": sized for four, not for the usual six
+            least = float(kb.raw("rooms")["types"].get(slots[i].type, {}).get("min_area_m2", 0.0))
+            slots[i].area = round(max(min(least, slots[i].area), slots[i].area - freed), 2)
     for m in parsed.objects:  # "a bedroom without a tv", "no rug": after what the text adds
         if not m.negated:
             continue
