@@ -35,6 +35,7 @@ from anyhome.plan.program import (
     connect_levels,
     fit_areas,
     fit_rooms,
+    is_dwelling,
     open_air_by_name,
     plan_rooms,
     renumber,
@@ -264,20 +265,20 @@ def _seated(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], main_key: str 
     """(slot index, people) for each seat count of the text: the room it follows, else
     the building's main room; a dwelling's "for 4 people" is its household, not seats."""
     out = []
-    homes = set((kb.raw("programs").get("sizes") or {}).get("homes", []))
     for room, n in parsed.seats:
         if room is not None:
             idx = next((i for i, s in enumerate(slots) if s.mention == room), None)
         else:
             main = next((i for i, s in enumerate(slots) if main_key and s.key == main_key), None)
-            idx = None if main is None or slots[main].type == "bedroom" or _dwelling(kb, parsed, homes) else main
+            idx = None if main is None or slots[main].type == "bedroom" or in_a_home(kb, parsed) else main
         if idx is not None:
             out.append((idx, n))
     return out
 
 
-def _dwelling(kb: KnowledgeBase, parsed: Parsed, homes: set[str]) -> bool:
-    return parsed.building is None or kb.raw("programs")["buildings"][parsed.building]["program"] in homes
+def in_a_home(kb: KnowledgeBase, parsed: Parsed) -> bool:
+    """Whether the text's building is one people live in (no building word: a home)."""
+    return parsed.building is None or is_dwelling(kb, kb.raw("programs")["buildings"][parsed.building]["program"])
 
 
 def _mostly_latin(text: str) -> bool:
@@ -287,7 +288,7 @@ def _mostly_latin(text: str) -> bool:
 
 def _furnish(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], main_key: str | None, prog: dict[str, Any], rng: np.random.Generator, warnings: list[str]) -> list[tuple[list[fu.Group], list[fu.Item]]]:
     built = []
-    at_work = not _dwelling(kb, parsed, set((kb.raw("programs").get("sizes") or {}).get("homes", [])))
+    at_work = not in_a_home(kb, parsed)
     for s in slots:
         if at_work and s.furnish == "other":  # "a bulk tank room" of a dairy: no armchairs
             s.furnish = WORK_OTHER
@@ -330,18 +331,18 @@ def _furnish(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], main_key: str
     for s, (groups, _) in zip(slots, out):
         _grow_area(s, groups, warnings, factor=_floor_use(kb, s.type))
     _cap_house_area(slots, warnings)
-    _add_zones(kb, parsed, slots, out, rng)
+    _add_zones(kb, parsed, slots, out, rng, at_work)
     return out
 
 
 def _add_zones(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], rooms: list[tuple[list[fu.Group], list[fu.Item]]],
-               rng: np.random.Generator) -> None:
+               rng: np.random.Generator, at_work: bool = False) -> None:
     """Each room's zones (:func:`anyhome.plan.furnish.zone_groups`) after its groups, less
-    what the text rules out, within the per-room and per-house object caps."""
+    what the text rules out, within the per-room and per-house object caps; ``at_work``
+    (the building is no home): a room of no known kind zones as :data:`WORK_OTHER`."""
     total = sum(fu.object_count(g, o) for g, o in rooms)
     negated = [m for m in parsed.objects if m.negated]
     zones = kb.raw("furniture").get("zones", {})
-    at_work = not _dwelling(kb, parsed, set((kb.raw("programs").get("sizes") or {}).get("homes", [])))
     for s, (groups, ornaments) in zip(slots, rooms):
         furnish = WORK_OTHER if at_work and s.type == "other" and s.furnish not in zones else s.furnish
         fill = fu.zone_groups(kb, furnish, s.type, s.area, groups, rng)

@@ -75,7 +75,9 @@ CONTEXT_OPENERS = re.compile(
 """Text right after a room mention that makes the following objects belong to it."""
 
 
-USED_AS = re.compile(r"^\s*(?:,\s*)?used (?:for|as)\b[^.;:]*?,(?=\s*(?:with|featuring|containing|equipped|furnished)\b)")
+USED = r"used (?:for|as)\b"
+"""What a room is used for: "a main hall used for assemblies, PE and lunch"."""
+USED_AS = re.compile(r"^\s*(?:,\s*)?" + USED + r"[^.;:]*?,(?=\s*(?:with|featuring|containing|equipped|furnished)\b)")
 """What a room is used for, before what it has: "a main hall used for assemblies, PE and
 lunch, with a small stage"."""
 
@@ -160,26 +162,39 @@ TOILET_ROOM_WORDS = frozenset(
 WASH_TYPES = frozenset({"bathroom", "changing_room"})
 
 
+def _room_before(mentions: list[Mention], i: int) -> Mention | None:
+    """The last room mention before ``mentions[i]``."""
+    return next((x for x in reversed(mentions[:i]) if x.kind == "room"), None)
+
+
+def _last_before(mentions: list[Mention], pos: int) -> Mention | None:
+    """The mention that ends last at or before ``pos``."""
+    return max((m for m in mentions if m.end <= pos), key=lambda m: m.end, default=None)
+
+
+def _bath_in_a_list(text: str, kb: KnowledgeBase, mentions: list[Mention]) -> None:
+    """"A couples' suite with two tables and a bath": a bathtub in the suite, not a room
+    (a bedroom's "with a bath" stays its bathroom)."""
+    names = kb.raw("rooms")["names"]
+    for i, m in enumerate(mentions):
+        if m.kind != "room" or m.key or m.name not in ("bath", "tub") or (before := _room_before(mentions, i)) is None:
+            continue
+        gap = text[before.end : m.start]
+        if _opens_context(gap) and not re.search(r"[.;]", gap) and (names.get(before.key) or {}).get("type") != "bedroom":
+            m.kind, m.key, m.concept = "object", "bathtub", None
+
+
 def _toilet_rooms(text: str, kb: KnowledgeBase, mentions: list[Mention]) -> None:
     """"Pupil toilets", "two customer toilets", "a hall with a stage and toilets": rooms (a
     restroom each), not toilet pans; "a restroom with three toilets" keeps its pans."""
     names = kb.raw("rooms")["names"]
     for i, m in enumerate(mentions):
-        if m.kind == "room" and not m.key and m.name in ("bath", "tub") and i > 0:
-            # "a couples' suite with two tables and a bath": a bathtub in the suite (a
-            # bedroom's "with a bath" stays its bathroom)
-            before = next((x for x in reversed(mentions[:i]) if x.kind == "room"), None)
-            gap = text[before.end : m.start] if before is not None else ""
-            if (before is not None and _opens_context(gap) and not re.search(r"[.;]", gap)
-                    and (names.get(before.key) or {}).get("type") != "bedroom"):
-                m.kind, m.key, m.concept = "object", "bathtub", None
-            continue
         if m.kind != "object" or m.key != "toilet" or m.negated:
             continue
         people = any(w in TOILET_ROOM_WORDS for w in m.name.split()[:-1])
         if not (people or m.plural):
             continue
-        before = next((x for x in reversed(mentions[:i]) if x.kind == "room"), None)
+        before = _room_before(mentions, i)
         if (not people and before is not None and not re.search(r"[.;]", text[before.end : m.start])
                 and (names.get(before.key) or {}).get("type") in WASH_TYPES):
             continue
@@ -230,7 +245,7 @@ def _find_seats(text: str, p: Parsed, mentions: list[Mention]) -> None:
         n = parse_number(mt.group(1))
         if n is None or n < 2:
             continue
-        last = max((m for m in mentions if m.end <= mt.start()), key=lambda m: m.end, default=None)
+        last = _last_before(mentions, mt.start())
         gap = text[last.end : mt.start()] if last is not None else ""
         near = last is not None and len(_tokens(gap)) <= SEAT_GAP_TOKENS and not re.search(r"[.;:,]", gap)
         if near and last is not None and last.kind == "object":
@@ -1253,7 +1268,7 @@ def _open_vocabulary(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[
         name = " ".join([*words[:-1], head])
         if _USED_FOR.search(text[:s]):  # "used for assemblies, PE and lunch": what it is for
             continue
-        before = max((x for x in mentions if x.end <= s), key=lambda x: x.end, default=None)
+        before = _last_before(mentions, s)
         on_object = before is not None and before.kind == "object" and OBJECT_WITH.match(text[before.end : s]) is not None
         room_ok = not _HELD_FOR.search(text[:s]) and not on_object and head not in THING_HEADS
         kind, mo = ov.classify(name, kb, room_ok=room_ok)
@@ -1277,9 +1292,8 @@ def _open_vocabulary(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[
     return mentions
 
 
-_USED_FOR = re.compile(r"\bused (?:for|as)\s+(?:[\w'-]+(?:\s*,\s*|\s+))*$")
-"""What a room is used for lists activities, not rooms: "a main hall used for
-assemblies, PE and lunch"."""
+_USED_FOR = re.compile(r"\b" + USED + r"\s+(?:[\w'-]+(?:\s*,\s*|\s+))*$")
+"""Text before a phrase that lists what a room is used for: activities, not rooms or objects."""
 THING_HEADS = frozenset("gear equipment kit machinery machine machines apparatus unit units system systems".split())
 """Heads that name things, whatever the words before them ("the cooling gear" is no cold room)."""
 OBJECT_WITH = re.compile(r"^\s*(?:with|w/)\s+(?:(?:a|an|its|their|built-in|built in)\s+)?(?:[\w-]+\s+)?$")
@@ -1543,6 +1557,7 @@ def parse(text: str, kb: KnowledgeBase | None = None) -> Parsed:
     _total_rooms(norm, p, mentions)
     if _ONE_ROOM.search(norm):
         p.one_room = True
+    _bath_in_a_list(norm, kb, mentions)
     _toilet_rooms(norm, kb, mentions)
     _assign_rooms(norm, mentions, kb)
     _subject_room(norm, p, mentions)

@@ -92,7 +92,7 @@ def _slot_from_mention(kb: KnowledgeBase, m: Mention, idx: int, program: str | N
     salon" in a riad is a sitting room)."""
     info = kb.raw("rooms")["names"].get(m.key) if m.key else None
     if info is not None and ("at_home" in info or "within" in info):
-        home = program in set(_sizes(kb).get("homes", []))
+        home = is_dwelling(kb, program)
         sense = (info.get("within") or {}).get(program or "") or (info.get("at_home") if home else None) or {}
         info = {**{k: v for k, v in info.items() if k not in ("at_home", "within")}, **sense}
     if m.concept:
@@ -146,7 +146,7 @@ def _guessed_home(kb: KnowledgeBase, parsed: Parsed, program: str) -> bool:
     """Whether the building is a weak guess at a dwelling ("a county courthouse" read as
     a courtyard house) while the text names rooms, none of them a home's
     (:data:`HOME_TYPES`): then only the named rooms are planned, no bedrooms."""
-    if parsed.building_score >= GUESSED_HOME_MAX or program not in set(_sizes(kb).get("homes", [])):
+    if parsed.building_score >= GUESSED_HOME_MAX or not is_dwelling(kb, program):
         return False
     named = sum(not m.negated for m in parsed.rooms)
     return named >= 2 and not (_named_types(kb, parsed) & HOME_TYPES) and not parsed.bedrooms and not parsed.people
@@ -179,7 +179,7 @@ def plan_rooms(kb: KnowledgeBase, parsed: Parsed, program: str | None, rng: np.r
     _drop_replaced(parsed, slots)
     totals = frozenset(t for t, n in (("bedroom", parsed.bedrooms), ("bathroom", parsed.bathrooms)) if n is not None)
     _apply_fixed(kb, slots, fixed, prog, totals)
-    if program is None or program in set(_sizes(kb).get("homes", [])):  # "a restaurant for 40 guests" sleeps no one
+    if program is None or is_dwelling(kb, program):  # "a restaurant for 40 guests" sleeps no one
         _apply_people(kb, parsed, slots, fixed)
     _add_hallway(kb, slots, prog)
     if parsed.rooms and all(m.negated for m in parsed.rooms) and parsed.building is None and prog is not None:
@@ -204,7 +204,7 @@ def plan_rooms(kb: KnowledgeBase, parsed: Parsed, program: str | None, rng: np.r
     _name_main_room(parsed, slots, prog)
     # a building's main room stays on its entrance storey (a dwelling's may go down: "a
     # home cinema and a wine cellar in the basement")
-    venue_main = None if program in set(_sizes(kb).get("homes", [])) else (prog or {}).get("main")
+    venue_main = None if is_dwelling(kb, program) else (prog or {}).get("main")
     assign_levels(kb, parsed, slots, warnings, venue_main)
     _name_and_number(slots)
     open_air_by_name(kb, slots)
@@ -1064,6 +1064,11 @@ class Sizing:
 
 def _sizes(kb: KnowledgeBase) -> dict:
     return kb.raw("programs").get("sizes") or {}
+
+
+def is_dwelling(kb: KnowledgeBase, program: str | None) -> bool:
+    """Whether ``program`` is one people live in (programs.yaml ``sizes.homes``)."""
+    return program in set(_sizes(kb).get("homes", []))
 
 
 def sizing(kb: KnowledgeBase, parsed: Parsed, program: str | None) -> Sizing:
