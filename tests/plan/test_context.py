@@ -574,3 +574,23 @@ def test_a_room_seating_fewer_than_usual_holds_that_many():
     room = next(r for r in few.rooms if r.name == "waiting room")
     chairs = next(g for g in room.groups if g.name == "waiting_chairs")
     assert group_seats(chairs.model_dump()) * chairs.repeat == 4
+
+
+def test_single_double_and_twin_say_a_rooms_kind_not_how_many():
+    """"A double bedroom" was two bedrooms and "six twin bedrooms" two; "twin sinks" are
+    still two sinks."""
+    from anyhome.plan.parse import parse
+
+    assert [(m.key, m.count) for m in parse("A flat with a double bedroom and a kitchen.").rooms] == [
+        ("bedroom", 1), ("kitchen", 1)]
+    assert [(m.key, m.count) for m in parse("A lodge with six twin bedrooms.").rooms] == [("bedroom", 6)]
+    assert [(m.key, m.count) for m in parse("A bathroom with twin sinks.").objects] == [("sink", 2)]
+
+
+def test_a_word_before_a_known_building_qualifies_it():
+    """"A village dentist's surgery" is a clinic, not a village hall."""
+    from anyhome.plan.parse import parse
+
+    spec = plan_of("A village dentist's surgery with two treatment rooms and a waiting room.", 0)
+    assert spec.building == "clinic" and not any(r.name == "village" for r in spec.rooms)
+    assert parse("A steakhouse with a long bar and a dining room.").building_phrase == "steakhouse"  # still its own

@@ -516,6 +516,10 @@ PAIR_OF = re.compile(r"\b(?:a|one)\s+(pair|couple|brace|trio)\s+of\s+$")
 """The words right before a mention's phrase that count it (:data:`PAIR_WORDS`)."""
 
 
+ROOM_NUMBER_ADJECTIVES = frozenset({"single", "double", "twin"})
+"""Number words that say what kind a room is, not how many ("a double bedroom")."""
+
+
 def _look_back(m: Mention, text: str, tokens: list[tuple[str, int, int]], taken: list[tuple[int, int]], keep_words: bool, kb: KnowledgeBase) -> None:
     """Fill count, size and adjectives of ``m`` from the words just before it."""
     sizes = size_factors(kb)
@@ -530,6 +534,12 @@ def _look_back(m: Mention, text: str, tokens: list[tuple[str, int, int]], taken:
         if any(a <= s < b for a, b in taken) or tok == "no":  # "no": see _apply_negation
             break
         n = parse_number(tok)
+        if n is not None and m.kind == "room" and tok in ROOM_NUMBER_ADJECTIVES:
+            n = None  # "a double bedroom" is one room, "six twin bedrooms" six
+            if keep_words:
+                words.insert(0, tok)
+            first = s
+            continue
         if n is not None:
             m.count = n
             break
@@ -613,8 +623,8 @@ def _opening_building(kb: KnowledgeBase, text: str, known_start: int, taken: lis
     building word only comes after it; None when the head maps to no building."""
     tokens = _tokens(text)
     fnp = ov.first_noun_phrase(text, tokens)
-    if fnp is None or fnp[2] > known_start:
-        return None
+    if fnp is None or fnp[2] > known_start or not text[fnp[2] : known_start].strip():
+        return None  # "a village dentist's surgery": the opening word qualifies the building
     head = fnp[0].split()[-1]
     s = fnp[2] - len(head)
     if any(a < fnp[2] and s < b for a, b in taken) or head in ov.non_objects(kb) or head in vocabulary(kb).forms:
