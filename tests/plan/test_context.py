@@ -583,7 +583,8 @@ def test_single_double_and_twin_say_a_rooms_kind_not_how_many():
 
     assert [(m.key, m.count) for m in parse("A flat with a double bedroom and a kitchen.").rooms] == [
         ("bedroom", 1), ("kitchen", 1)]
-    assert [(m.key, m.count) for m in parse("A lodge with six twin bedrooms.").rooms] == [("bedroom", 6)]
+    assert [(m.key, m.count) for m in parse("A lodge with six double bedrooms.").rooms] == [("bedroom", 6)]
+    assert [(m.key, m.count) for m in parse("A lodge with six twin bedrooms.").rooms] == [("twin bedroom", 6)]
     assert [(m.key, m.count) for m in parse("A bathroom with twin sinks.").objects] == [("sink", 2)]
 
 
@@ -594,3 +595,12 @@ def test_a_word_before_a_known_building_qualifies_it():
     spec = plan_of("A village dentist's surgery with two treatment rooms and a waiting room.", 0)
     assert spec.building == "clinic" and not any(r.name == "village" for r in spec.rooms)
     assert parse("A steakhouse with a long bar and a dining room.").building_phrase == "steakhouse"  # still its own
+
+
+def test_a_twin_bedroom_has_two_single_beds():
+    spec = plan_of("A lodge with a kitchen and two twin bedrooms.", 3)
+    twins = [r for r in spec.rooms if r.name.startswith("twin bedroom")]
+    assert len(twins) == 2
+    for r in twins:
+        beds = [n for n in names_of(r) if n.endswith("bed")]
+        assert len(beds) == 2 and all(n in ("single bed", "twin bed") for n in beds)
