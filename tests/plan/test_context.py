@@ -604,3 +604,10 @@ def test_a_twin_bedroom_has_two_single_beds():
     for r in twins:
         beds = [n for n in names_of(r) if n.endswith("bed")]
         assert len(beds) == 2 and all(n in ("single bed", "twin bed") for n in beds)
+
+
+def test_a_bookshop_is_lined_with_bookcases():
+    spec = plan_of("A small independent bookshop with a reading nook and a coffee counter.", 3)
+    floor = next(r for r in spec.rooms if r.type == "shop")
+    names = names_of(floor)
+    assert names.count("bookshelf") >= 4 and "gallery bench" not in names and "display case" not in names
