@@ -60,6 +60,7 @@ SETS = {
     "dev": HERE / "prompts" / "dev.jsonl",
     "heldout_storeys": HERE / "prompts" / "heldout_storeys.jsonl",
     "heldout_storeys2": HERE / "prompts" / "heldout_storeys2.jsonl",
+    "heldout_storeys3": HERE / "prompts" / "heldout_storeys3.jsonl",
     "dev_storeys": HERE / "prompts" / "dev_storeys.jsonl",
     "dev_storeys2": HERE / "prompts" / "dev_storeys2.jsonl",
 }
