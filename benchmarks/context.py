@@ -20,7 +20,8 @@ it is for measuring only, never for tuning. benchmarks/prompts/dev_context.jsonl
 prompts, same form) was written the same way at the start of the sixth session, as the
 set to find and fix causes on. dev_context2.jsonl and heldout_context2.jsonl (36 each)
 were written the same way at the start of the eighth session: the first to tune on, the
-second for measuring only.
+second for measuring only. dev_context3.jsonl (40) was written the same way at the start
+of the ninth session, to tune on.
 """
 
 from __future__ import annotations
@@ -45,6 +46,7 @@ SETS = {
     "heldout_context": HERE / "prompts" / "heldout_context.jsonl",
     "dev_context": HERE / "prompts" / "dev_context.jsonl",
     "dev_context2": HERE / "prompts" / "dev_context2.jsonl",
+    "dev_context3": HERE / "prompts" / "dev_context3.jsonl",
     "heldout_context2": HERE / "prompts" / "heldout_context2.jsonl",
 }
 
