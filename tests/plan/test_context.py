@@ -611,3 +611,34 @@ def test_a_bookshop_is_lined_with_bookcases():
     floor = next(r for r in spec.rooms if r.type == "shop")
     names = names_of(floor)
     assert names.count("bookshelf") >= 4 and "gallery bench" not in names and "display case" not in names
+
+
+def test_plural_possessives_name_the_same_rooms_as_the_singular():
+    spec = plan_of("Law firm on one floor: a reception with a sofa, six partners' offices and a boardroom.", 0)
+    offices = [r for r in spec.rooms if r.type == "office"]
+    assert len(offices) == 6 and all("partner" in r.name for r in offices)
+    assert all(r.area_m2 <= 24 for r in offices)  # private offices (rooms.yaml 14-22 m2), not open-plan floors
+
+
+def test_a_three_word_hyphenated_adjective_is_one_adjective():
+    from anyhome.plan.parse import parse
+
+    names = [m.name for m in parse("a library with floor-to-ceiling bookshelves and wall-to-wall carpet").objects]
+    assert "tall bookshelf" in names and "fitted carpet" in names
+
+
+@pytest.mark.parametrize("seed", range(2))
+def test_rooms_beyond_a_receptions_doors_open_off_a_corridor(seed):
+    spec = plan_of("An office with a reception, six private offices and a kitchenette.", seed)
+    reception = next(r for r in spec.rooms if r.type == "reception")
+    assert sum(reception.id in c for c in spec.connections) <= 4  # rooms.yaml doors_max, the entrance included
+    corridor = next(r for r in spec.rooms if r.type == "hallway")
+    assert (reception.id, corridor.id) in spec.connections or (corridor.id, reception.id) in spec.connections
+
+
+def test_a_practices_surgeries_are_its_treatment_rooms_and_a_vets_surgery_its_theatre():
+    dental = plan_of("A small dental practice with a waiting room, three surgeries and a staff room", 0)
+    surgeries = [r for r in dental.rooms if r.name.startswith("surgery")]
+    assert len(surgeries) == 3 and all("dental chair" in names_of(r) for r in surgeries)
+    vet = plan_of("A vet surgery with two consulting rooms and a surgery", 0)
+    assert any("operating table" in names_of(r) for r in vet.rooms if r.name == "surgery")

@@ -235,6 +235,9 @@ class RoomType(_Model):
     floor_use: Annotated[float, Field(ge=1, le=5)] | None = Field(
         default=None, description="room m2 per m2 of furniture footprint (default: the planner's FLOOR_USE_FACTOR)")
     circulation: bool = Field(default=False, description="a room for passing through (entry, hallway)")
+    doors_max: Annotated[int, Field(ge=2)] | None = Field(
+        default=None, description="a hub that is not a corridor (a reception): most connections it holds, the "
+        "entrance included; the rooms beyond open off a corridor planned for them")
     height_m: Annotated[float, Field(ge=2.1, le=12, description="floor-to-ceiling height (heights.yaml adjusts it)")]
     open_air: bool = Field(default=False, description="no roof: no ceiling, railings on its exterior sides")
     enclosed: bool = Field(default=False, description="open_air inside the footprint: rooms around it, not at the edge")

@@ -213,6 +213,9 @@ def _plural_forms(phrase: str) -> list[str]:
         forms.append(phrase + "s")
     else:
         forms.append(phrase + "s")
+    # "partners' offices", "teachers' lounges": the plural's possessive is the owners'
+    owners = re.compile(r"\b(\w+[^s\W])(?<!men)(?<!children)(?<!people)'s ")
+    forms += [owners.sub(r"\1s' ", f) for f in forms[1:] if owners.search(f)]
     return forms
 
 

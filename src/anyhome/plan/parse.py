@@ -516,6 +516,12 @@ PAIR_OF = re.compile(r"\b(?:a|one)\s+(pair|couple|brace|trio)\s+of\s+$")
 """The words right before a mention's phrase that count it (:data:`PAIR_WORDS`)."""
 
 
+COMPOUND_ADJECTIVES = {"floor to ceiling": "tall", "wall to wall": "fitted", "top of range": "premium"}
+"""Hyphenated adjectives of three words (hyphens read as spaces) -> the one word they
+mean; read as one adjective, not as their last word ("floor-to-ceiling bookshelves" are
+tall bookshelves, not "ceiling bookshelves")."""
+
+
 ROOM_NUMBER_ADJECTIVES = frozenset({"single", "double", "twin"})
 """Number words that say what kind a room is, not how many ("a double bedroom")."""
 
@@ -528,6 +534,8 @@ def _look_back(m: Mention, text: str, tokens: list[tuple[str, int, int]], taken:
         if before[i][0] == "plan" and before[i - 1][0] == "open" and i >= len(before) - 4:
             del before[i - 1:i + 1]
             break
+    if len(before) >= 3 and (phrase := COMPOUND_ADJECTIVES.get(" ".join(t[0] for t in before[-3:]))):
+        before[-3:] = [(phrase, before[-3][1], before[-1][2])]  # "floor-to-ceiling bookshelves": tall ones
     words: list[str] = []
     first = m.start  # where the phrase with its adjectives starts
     for tok, s, e in reversed(before[-4:]):

@@ -636,7 +636,7 @@ def connect(kb: KnowledgeBase, slots: list[Slot], entrance_types: list[str]) -> 
         attach = _type_info(kb, s.type).get("attach", [])
 
         def cap(p: Slot) -> int:
-            return HUB_MAX_DEGREE if is_hub(p) else ROOM_MAX_DEGREE
+            return min(HUB_MAX_DEGREE, _type_info(kb, p.type).get("doors_max") or HUB_MAX_DEGREE) if is_hub(p) else ROOM_MAX_DEGREE
 
         free = [p for p in placed if degree[p.id] < cap(p)]
         ranked = [p for t in attach for p in free if p.type == t]
@@ -966,17 +966,31 @@ def _overflow(kb: KnowledgeBase, on: list[Slot], edges: list[tuple[str, str]]) -
     return n
 
 
+def _hub_overflow(kb: KnowledgeBase, on: list[Slot], edges: list[tuple[str, str]]) -> int:
+    """Connections beyond the ``doors_max`` of the hubs that have one (a reception)."""
+    n = 0
+    for s in on:
+        most = _type_info(kb, s.type).get("doors_max")
+        if most:
+            n += max(0, sum(s.id in e for e in edges) - int(most))
+    return n
+
+
 def connect_corridors(kb: KnowledgeBase, slots: list[Slot], on: list[Slot],
                       entrance_types: list[str]) -> list[tuple[str, str]]:
     """:func:`connect` over the rooms ``on`` one storey, with one more hallway (added to
     ``slots`` and ``on``) while :data:`OVERFLOW_MIN` rooms or more that open off a
-    hallway would otherwise hang off a living room or a hall, up to :data:`CORRIDORS_MAX`
+    hallway would otherwise hang off a living room or a hall, or hang beyond a hub's
+    ``doors_max`` (a reception's: :func:`_hub_overflow`), up to :data:`CORRIDORS_MAX`
     hallways (or the hallway type's ``max``, if more) and ``MAX_ROOMS`` rooms in all."""
     edges = connect(kb, on, entrance_types)
     cap = max(int(_type_info(kb, "hallway").get("max", 2)), CORRIDORS_MAX)
-    first = _overflow(kb, on, edges)
+    def overflow() -> int:
+        return _overflow(kb, on, edges) + _hub_overflow(kb, on, edges)
+
+    first = overflow()
     added: list[Slot] = []
-    while (_overflow(kb, on, edges) >= OVERFLOW_MIN and any(s.type == "hallway" for s in on)
+    while (overflow() >= OVERFLOW_MIN and (any(s.type == "hallway" for s in on) or _hub_overflow(kb, on, edges))
            and sum(s.type == "hallway" for s in slots) < cap and len(slots) < MAX_ROOMS):
         s = _slot_from_entry(kb, {"type": "hallway", "name": "corridor", "key": CORRIDOR_KEY})
         s.level = on[0].level
@@ -990,7 +1004,7 @@ def connect_corridors(kb: KnowledgeBase, slots: list[Slot], on: list[Slot],
             on.append(s)
         added.append(s)
         edges = connect(kb, on, entrance_types)
-    if added and _overflow(kb, on, edges) >= first:  # the corridors relieved nothing: none planned
+    if added and overflow() >= first:  # the corridors relieved nothing: none planned
         for s in added:
             slots.remove(s)
             if on is not slots:
