@@ -642,3 +642,29 @@ def test_a_practices_surgeries_are_its_treatment_rooms_and_a_vets_surgery_its_th
     assert len(surgeries) == 3 and all("dental chair" in names_of(r) for r in surgeries)
     vet = plan_of("A vet surgery with two consulting rooms and a surgery", 0)
     assert any("operating table" in names_of(r) for r in vet.rooms if r.name == "surgery")
+
+
+def test_a_room_in_the_basement_alone_is_entered_down_a_stair_from_a_ground_floor_hall():
+    spec = plan_of("the kids' den in the basement: two beanbags, a toy chest and a pool table.", 0)
+    assert {r.level for r in spec.rooms} == {-1, 0}
+    den = next(r for r in spec.rooms if r.name == "den")
+    assert den.level == -1 and "pool table" in names_of(den) and "dining table" not in names_of(den)
+
+
+def test_single_before_a_room_the_knowledge_does_not_know_counts_it():
+    spec = plan_of("a single panelled room lined with wooden cabinets and a writing desk", 0)
+    assert not any(r.type == "bedroom" for r in spec.rooms)
+
+
+def test_a_linen_press_is_a_cupboard_and_a_beam_press_a_wine_press():
+    from anyhome.plan.parse import parse
+
+    keys = {m.name: m.key for m in parse("a linen press, and in the press house an old beam press").objects}
+    assert keys.get("linen press") == "wardrobe" and "wine press" in keys.values()
+
+
+@pytest.mark.parametrize("words", ["Korean hanok with a living room and two bedrooms", "a Kyoto machiya with a sitting room"])
+def test_korean_and_japanese_townhouses_sit_on_the_floor(words):
+    spec = plan_of(words, 0)
+    names = [n for r in spec.rooms for n in names_of(r)]
+    assert not any(n in ("sofa", "couch", "sectional sofa", "armchair") for n in names)

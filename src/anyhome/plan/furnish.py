@@ -354,7 +354,7 @@ def apply_mention(kb: KnowledgeBase, m: Mention, groups: list[Group], ornaments:
     if item is not None and named and item.get(MENTIONED, m.name) != m.name:
         g = None  # "a blanket chest and a steamer trunk": two boxes, not one renamed twice
     if g is None:
-        d = next((u for u in unused if _matches(u_anchor(kb, u), category, head)), None)
+        d = next((u for u in unused if _matches(u_anchor(kb, u), category, head) and _same_kind(kb, u, m)), None)
         if d is None and named_group is not None:
             d = group_def(kb, {"group": named_group})
         if d is None and proto.get("group"):
@@ -545,6 +545,16 @@ def cap_objects(rooms: list[tuple[list[Group], list[Item]]], budget: int) -> dic
         for o in ornaments:
             after[(i, o["name"])] = after.get((i, o["name"]), 0) + o["count"]
     return {k: (n, after.get(k, 0)) for k, n in before.items() if after.get(k, 0) < n}
+
+
+def _same_kind(kb: KnowledgeBase, d: dict[str, Any], m: Mention) -> bool:
+    """Whether a set's unused group ``d`` can hold mention ``m``: any group of its
+    category for a one-word key ("a table"), else a group of that very prototype (a den's
+    "pool table" is no dining table with chairs)."""
+    if not m.key or " " not in m.key:
+        return True
+    a = d.get("anchor", {})
+    return a.get("use") == m.key or m.key in _words(u_anchor(kb, d)["name"]) or m.key in u_anchor(kb, d)["name"]
 
 
 def u_anchor(kb: KnowledgeBase, d: dict[str, Any]) -> Item:

@@ -542,7 +542,10 @@ def _look_back(m: Mention, text: str, tokens: list[tuple[str, int, int]], taken:
         if any(a <= s < b for a, b in taken) or tok == "no":  # "no": see _apply_negation
             break
         n = parse_number(tok)
-        if n is not None and m.kind == "room" and tok in ROOM_NUMBER_ADJECTIVES:
+        if n is not None and m.kind == "room" and tok in ROOM_NUMBER_ADJECTIVES and not m.key:
+            if tok != "single":  # a room the knowledge does not know: "a single panelled room" is one
+                break
+        elif n is not None and m.kind == "room" and tok in ROOM_NUMBER_ADJECTIVES:
             n = None  # "a double bedroom" is one room, "six twin bedrooms" six
             if keep_words:
                 words.insert(0, tok)

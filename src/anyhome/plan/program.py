@@ -766,7 +766,7 @@ def assign_levels(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], warnings
     _worded_levels(parsed, slots, top, set(st.up) | {"bathroom"})
     _keep_a_ground_floor(parsed, slots, main)
     _fill_empty_storeys(kb, slots, top)  # one the words emptied
-    levels = sorted({s.level for s in slots})
+    levels = sorted({s.level for s in slots} | {0})  # "a den in the basement": entered down a stair from a hall
     while len(slots) + len(levels) > MAX_ROOMS:
         victim = next((s for s in reversed(slots) if s.mention is None and s.type not in ("hallway", "entry")), None)
         if victim is None:
