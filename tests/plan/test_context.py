@@ -668,3 +668,17 @@ def test_korean_and_japanese_townhouses_sit_on_the_floor(words):
     spec = plan_of(words, 0)
     names = [n for r in spec.rooms for n in names_of(r)]
     assert not any(n in ("sofa", "couch", "sectional sofa", "armchair") for n in names)
+
+
+def test_an_eastern_look_seats_the_floor_round_low_tables_and_a_low_desk():
+    spec = plan_of("Korean hanok: the sarangbang, with a low writing desk and a bookcase; a kitchen; two bedrooms.", 0)
+    names = [n for r in spec.rooms for n in names_of(r)]
+    assert "low writing desk" in names and "office chair" not in names and "desk" not in names
+    assert next(r for r in spec.rooms if r.name == "sarangbang").type == "study"
+
+
+def test_the_rooms_of_a_roman_domus_are_known():
+    spec = plan_of("A domus in Pompeii: the fauces, the atrium, the tablinum, the triclinium and two cubicula.", 0)
+    kinds = {r.name: r.type for r in spec.rooms}
+    assert kinds.get("fauces") == "entry" and kinds.get("triclinium") == "dining_room" and kinds.get("tablinum") == "study"
+    assert sum(n.startswith("cubiculum") for n in kinds) == 2

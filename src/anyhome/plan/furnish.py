@@ -396,6 +396,11 @@ def apply_mention(kb: KnowledgeBase, m: Mention, groups: list[Group], ornaments:
     _fit_table(g)
 
 
+SEATED_AT_RULES = frozenset({"place_around", "place_front"})
+"""Rules of a seat used at its group's table or desk (a dining chair, a desk chair)."""
+DESK_MIN_H_M = 0.65
+"""A table or desk this high or higher is sat at on a chair (a zabuton goes round a low
+table or a side table, not a dining table kept at its height)."""
 LOW_TABLE_MAX_H_M = 0.5
 """A table at most this high is sat at from the floor: only there does a period look
 (``eastern``) swap a chair for a floor seat."""
@@ -443,8 +448,9 @@ def apply_period(kb: KnowledgeBase, groups: list[Group], ornaments: list[Item], 
             if new is None or it["name"] in asked:
                 continue
             proto = _proto(kb, new["use"])
-            if it is not g["anchor"] and _floor_seat(proto) and g["anchor"]["size_m"][2] > LOW_TABLE_MAX_H_M:
-                continue  # a zabuton at a standing reception desk: the chair stays
+            if (it is not g["anchor"] and _floor_seat(proto) and it["rule"] in SEATED_AT_RULES
+                    and g["anchor"]["size_m"][2] >= DESK_MIN_H_M and "low" not in _words(g["anchor"]["name"])):
+                continue  # a zabuton at a standing reception desk: the chair stays (a lounge chair need not)
             it["name"], it["category"] = new["name"], proto.get("category", it["category"])
             w, d, h = proto.get("size", it["size_m"])
             it["size_m"] = (float(w), float(d), float(h))

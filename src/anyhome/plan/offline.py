@@ -150,7 +150,7 @@ class OfflinePlanner:
             _fit_furnished(kb, slots, rooms, sz, warnings)
         stairwells_sized(slots, connections)  # the kind of stairs the final areas call for (a tiny home's ladder)
         look = choose_look(kb, parsed, implied, building, rng)
-        asked = {w for m in parsed.objects if not m.negated for w in (m.name, m.key) if w}
+        asked = {m.name for m in parsed.objects if not m.negated}  # "a low writing desk": not every desk
         for groups, ornaments in rooms:
             fu.apply_period(kb, groups, ornaments, look.styles, asked, prog.get("swap"))
         building = parsed.building_word or building
