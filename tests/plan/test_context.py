@@ -682,3 +682,12 @@ def test_the_rooms_of_a_roman_domus_are_known():
     kinds = {r.name: r.type for r in spec.rooms}
     assert kinds.get("fauces") == "entry" and kinds.get("triclinium") == "dining_room" and kinds.get("tablinum") == "study"
     assert sum(n.startswith("cubiculum") for n in kinds) == 2
+
+
+def test_a_hospital_ward_has_bays_of_hospital_beds_and_a_nurses_station():
+    spec = plan_of("Surgical ward: one six-bed bay, the nurses' station, a side room, a sluice, and a day room.", 0)
+    assert spec.building == "hospital ward"
+    names = [n for r in spec.rooms for n in names_of(r)]
+    assert "dental chair" not in names and not any(n in ("queen bed", "double bed", "king bed") for n in names)
+    assert sum(n in ("hospital bed", "patient bed") for n in names) >= 6
+    assert any(r.name.startswith("sluice") for r in spec.rooms)

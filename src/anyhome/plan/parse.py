@@ -1482,9 +1482,10 @@ def _mask_height_words(kb: KnowledgeBase, norm: str) -> str:
 
 AFTER_A_NOUN = frozenset(
     "and or with without for where that which who above below beside behind under over off on in at of to by "
-    "from near next upstairs downstairs overlooking facing opposite as plus".split())
+    "from near next upstairs downstairs overlooking facing opposite as plus "
+    "has have had holds hold is was gets seats leads opens looks doubles".split())
 """Words that may follow a room word standing as a noun ("a snug with a fire", "the
-lord's solar above the hall")."""
+lord's solar above the hall", "the snug has a fireplace")."""
 
 
 BEFORE_AN_ADJECTIVE = frozenset(
