@@ -80,3 +80,28 @@ def test_programs():
         for r in p["rooms"]:
             assert r["type"] in ROOM_TYPES
             assert r.get("furnish", r["type"]) in SETS or r["type"] in SETS
+
+
+def test_no_knowledge_file_names_a_key_twice():
+    """YAML keeps the last of two equal keys silently: a phrase written twice loses one sense."""
+    from pathlib import Path
+
+    import yaml
+
+    import anyhome.plan.knowledge as knowledge_module
+
+    class Strict(yaml.SafeLoader):
+        pass
+
+    def mapping(loader, node):
+        keys = [loader.construct_object(k) for k, _ in node.value]
+        twice = {k for k in keys if keys.count(k) > 1}
+        assert not twice, f"line {node.start_mark.line + 1}: {sorted(map(str, twice))} twice"
+        return dict(loader.construct_pairs(node))
+
+    Strict.add_constructor(yaml.resolver.BaseResolver.DEFAULT_MAPPING_TAG, mapping)
+    folder = Path(knowledge_module.__file__).parent / "knowledge"
+    files = sorted(folder.glob("*.yaml"))
+    assert files
+    for f in files:
+        yaml.load(f.read_text(encoding="utf-8"), Loader=Strict)
