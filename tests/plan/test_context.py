@@ -691,3 +691,10 @@ def test_a_hospital_ward_has_bays_of_hospital_beds_and_a_nurses_station():
     assert "dental chair" not in names and not any(n in ("queen bed", "double bed", "king bed") for n in names)
     assert sum(n in ("hospital bed", "patient bed") for n in names) >= 6
     assert any(r.name.startswith("sluice") for r in spec.rooms)
+
+
+def test_things_for_one_person_each_counted_by_the_people_they_serve():
+    from anyhome.plan.parse import parse
+
+    counts = {m.name: m.count for m in parse("hot desks for forty, bunk beds for twelve and a table for six").objects}
+    assert counts["hot desk"] == 40 and counts["bunk bed"] == 6 and counts["table"] == 1

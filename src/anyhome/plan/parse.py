@@ -233,6 +233,10 @@ def _corefer(text: str, p: Parsed, mentions: list[Mention]) -> list[Mention]:
     return [m for m in mentions if id(m) not in gone]
 
 
+ONE_PERSON_HEADS = frozenset("desk desks workstation chair stool bed cot berth seat station locker".split())
+"""Heads of things one person uses each: "desks for forty" are forty desks (a table for
+six is one table)."""
+
 SEAT_GAP_TOKENS = 3
 """A seat count belongs to the room named at most this many words before it ("a dining
 room seating 12", "a boardroom for 16")."""
@@ -249,6 +253,10 @@ def _find_seats(text: str, p: Parsed, mentions: list[Mention]) -> None:
         gap = text[last.end : mt.start()] if last is not None else ""
         near = last is not None and len(_tokens(gap)) <= SEAT_GAP_TOKENS and not re.search(r"[.;:,]", gap)
         if near and last is not None and last.kind == "object":
+            if last.plural and last.count is None and (last.key or last.name).split()[-1] in ONE_PERSON_HEADS:
+                per = 2 if "bunk" in last.name.split() else 1  # "bunk beds for twelve": six
+                last.count = last.asked = -(-n // per)  # "hot desks for forty": forty desks
+                p.objects = [o for o in p.objects if not (o.start < mt.start(1) and mt.start() < o.end)]
             continue
         if near and last is not None and last.kind == "room":
             p.seats.append((next(i for i, r in enumerate(p.rooms) if r is last), n))
