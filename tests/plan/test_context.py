@@ -698,3 +698,12 @@ def test_things_for_one_person_each_counted_by_the_people_they_serve():
 
     counts = {m.name: m.count for m in parse("hot desks for forty, bunk beds for twelve and a table for six").objects}
     assert counts["hot desk"] == 40 and counts["bunk bed"] == 6 and counts["table"] == 1
+
+
+def test_a_persons_office_is_a_private_office_and_a_newsroom_a_room():
+    spec = plan_of("1950s small-town newspaper: the newsroom with ten desks; the editor's glass-walled office; a composing room.", 0)
+    names = {r.name: r for r in spec.rooms}
+    assert "newsroom" in names and spec.building == "office"
+    editor = next(r for n, r in names.items() if n.startswith("editor's"))
+    assert sum(n in ("desk", "executive desk", "large desk") for n in names_of(editor)) == 1
+    assert "midcentury" in spec.styles

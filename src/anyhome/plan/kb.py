@@ -273,6 +273,8 @@ class RoomName(_Model):
     noun_only: bool = Field(False, description=(
         "the word is also an adjective: it names a room only where no word of a name follows it "
         "('a cosy snug,' is a room; 'a snug bedroom', 'solar panels' are not)"))
+    owned: HomeSense | None = Field(None, description=(
+        "the word's reading after a person's possessive ('the editor's office' is a private office)"))
     only_within: list[str] = Field(default_factory=list, description=(
         "programs in which alone the word names a room (a riding stable's 'stalls' are its loose "
         "boxes; a market's 'vendor stalls' are no rooms); empty: every building"))

@@ -327,6 +327,7 @@ class Mention:
     asked: int | None = None  # the count as the text wrote it, before any cap
     host: Mention | None = None  # objects: the room word right before it ("a courtyard fountain")
     area_m2: float | None = None  # rooms: the area the text states for it ("a 12 m2 bedroom")
+    owner: str | None = None  # rooms: the possessive right before it ("the editor's office": "editor")
 
 
 @dataclass
@@ -569,6 +570,8 @@ def _look_back(m: Mention, text: str, tokens: list[tuple[str, int, int]], taken:
             m.size *= sizes[tok]
             first = s
             continue
+        if tok.endswith("'s") and m.kind == "room":
+            m.owner = tok[:-2]  # "the editor's office": a person's own room
         if tok in STOP_WORDS or not tok.isalpha() or tok.endswith("'s") or len(words) >= 2:
             break
         if keep_words:
