@@ -6,6 +6,8 @@ Usage::
     PYTHONPATH=src .venv/bin/python benchmarks/storey_cpu.py --sets dev_storeys,dev_storeys2 \\
         [--seeds 0,1,2] [--profile /tmp/storeys.prof] [--out /tmp/storeys.json]
 
+(``PYTHONPATH`` may point at an older checkout's src to time the code before a change.)
+
 Each house: its spec planned first (not timed), then ``solve_levels`` with the
 floorplan stage's own generator (``stage_rngs(seed)["floorplan"]``), timed alone; a
 line per house (ms, attempts, a hash of the floorplan), then per set the median, p90
@@ -24,7 +26,6 @@ import time
 from pathlib import Path
 
 from anyhome.errors import AnyHomeError
-from anyhome.floorplan import budget
 from anyhome.floorplan.levels import solve_levels
 from anyhome.plan import get_planner
 from anyhome.plan.knowledge import knowledge_base
@@ -43,13 +44,18 @@ def main(argv: list[str] | None = None) -> int:
     args = ap.parse_args(argv)
     planner = get_planner("offline", knowledge_base(), solve_levels)
     spent = [0]
-    real_spend = budget.AttemptBudget.spend
+    try:  # counted where the code has a whole-search budget (not before it: 0)
+        from anyhome.floorplan import budget
 
-    def counted(self: budget.AttemptBudget) -> None:
-        spent[0] += 1
-        real_spend(self)
+        real_spend = budget.AttemptBudget.spend
 
-    budget.AttemptBudget.spend = counted  # type: ignore[method-assign]
+        def counted(self: budget.AttemptBudget) -> None:
+            spent[0] += 1
+            real_spend(self)
+
+        budget.AttemptBudget.spend = counted  # type: ignore[method-assign]
+    except ImportError:
+        pass
     prof = cProfile.Profile() if args.profile else None
     res: dict[str, dict] = {}
     for name in args.sets.split(","):

@@ -74,7 +74,7 @@ def test_a_stairwell_entered_through_both_end_walls_is_deep_enough_for_a_door_be
     """The brownstone of dev_storeys2 (seed 1): its ground floor's stairwell lies on the
     spine between the reception and the family room, entered through both end walls. As
     deep as its planned area made it (2.2 m) no door ever cleared the stair, and 1280
-    spine layouts were refused (40 s); now the first layouts hold it."""
+    spine layouts were refused (45 s CPU); now the first layouts hold it."""
     from anyhome.plan import get_planner
     from anyhome.plan.knowledge import knowledge_base
     from anyhome.stages import stage_rngs

@@ -3,7 +3,7 @@
 :func:`anyhome.floorplan.levels.solve_levels` lays out a house of several storeys with
 many searches: each storey, its retries with roomier stairwells, the layouts a storey's
 stair or its stacking refuses, a fallback to one storey. Each search is bounded, but
-their product is large (one dev house spent about 40 s CPU on 1300 refused layouts).
+their product is large (one dev house spent 45 s CPU on 1280 refused layouts).
 While an :class:`AttemptBudget` is set (:data:`ATTEMPT_BUDGET`), every attempt of
 :func:`~anyhome.floorplan.solver.best_attempts` spends one; the attempt past the limit
 raises :class:`AttemptsSpent`, which no search's retry loop catches (it is no

@@ -488,7 +488,7 @@ def _beside_stair(prog: Program, k: int) -> int:
     door there room beside it (:data:`~anyhome.floorplan.stairs.STAIR_WIDTH`, the clearance,
     a door and its corner margin); 0 for any other room. (As deep as the planned area
     makes it, 2.2 m for a dog-leg, no such door ever cleared the stair: measured, a
-    brownstone's ground floor refused 1280 spine layouts, 40 s.)"""
+    brownstone's ground floor refused 1280 spine layouts, 45 s CPU.)"""
     if not _min_long(prog, k) or not prog.stair_m or prog.stair_m[k] <= 0:
         return 0
     from anyhome.floorplan.doors import DOOR_WIDTH_M
