@@ -33,7 +33,10 @@ overhang among the layouts of separate searches (one search's layouts differ too
 little: with them the storey houses' hallways grew); the sixteen places of a storey on the one below
 are ranked by overhang (one union of its floor, moved) and the stair, the costly test,
 is looked for in that order only until it fits; a stairwell's doors are slid clear of
-the stair, and the stair's box tested against the doors, at every place at once.
+the stair, and the stair's box tested against the doors, at every place at once. An
+upper storey placed as well as its floor allows (:func:`_least_hang_m2`) is not searched
+again, and every search of the house together makes at most ``levels_max_attempts``
+layout attempts (:mod:`anyhome.floorplan.budget`): past them, one FloorplanError line.
 
 The narrow interface (:func:`solve_levels`, :func:`stairs_objects`) is what the pipeline
 sees; a solver that takes a footprint and a fixed stairwell rectangle can replace the
@@ -52,13 +55,16 @@ placement keeps off it, the house is stacked as before (the storey above over it
 from __future__ import annotations
 
 import dataclasses
+import functools
 import math
 from collections.abc import Iterable
 from contextvars import ContextVar
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from anyhome.errors import FloorplanError
+from anyhome.floorplan.budget import ATTEMPT_BUDGET, AttemptBudget, AttemptsSpent
 from anyhome.floorplan.doors import DOOR_WIDTH_M, ENTRANCE_WIDTH_M
 from anyhome.floorplan.grid import SNAP_M
 from anyhome.floorplan.merge import merge_open_plan
@@ -93,6 +99,9 @@ from anyhome.floorplan.wells import wells_end_trimmed, wells_trimmed
 from anyhome.geometry import DOOR_CLEARANCE_M, opening_zone
 from anyhome.house import Door, Floorplan, HouseObject, Level, Room, Window
 from anyhome.plan.spec import HouseSpec
+
+if TYPE_CHECKING:
+    from shapely.geometry.base import BaseGeometry
 
 SLAB_M = 0.2
 """Floor structure between a storey's ceiling and the next storey's floor."""
@@ -228,9 +237,14 @@ def solve_levels(spec: HouseSpec, rng: np.random.Generator, options: FloorplanOp
     opts = options or FloorplanOptions()
     roomy = dataclasses.replace(opts, stairwell_spare_m=opts.stairwell_spare_m + opts.stairwell_roomy_m)
     token = _NARROW_HALLS.set(set())
+    spent = ATTEMPT_BUDGET.set(AttemptBudget(opts.levels_max_attempts))  # every search of the house, together
     try:
         return _levels_tried(spec, numbers, rng, opts, roomy, options)
+    except AttemptsSpent:
+        raise FloorplanError(f"could not lay out the {len(numbers)} storeys in {opts.levels_max_attempts} layout "
+                             f"attempts (FloorplanOptions.levels_max_attempts)") from None
     finally:
+        ATTEMPT_BUDGET.reset(spent)
         _NARROW_HALLS.reset(token)
 
 
@@ -317,9 +331,24 @@ def _placed_storey(spec: HouseSpec, plans: dict[int, Floorplan], k: int, ref: in
             continue
         if best is None or hang < best[0] - 1e-6:
             best = (hang, placed)
-        if hang <= opts.overhang_ok_m2:
+        if hang <= opts.overhang_ok_m2 + _least_hang_m2(spec, plans[ref], layout, k):
             break
     return best, why, blocked
+
+
+def _least_hang_m2(spec: HouseSpec, below: Floorplan, layout: Floorplan, k: int) -> float:
+    """The least any place of storey ``k`` (``layout``) on the storey ``below`` can hang
+    over nothing (m2): its floor less the floor that can hold it up (a room rising
+    through holds none up), where more. A layout placed within ``overhang_ok_m2`` of
+    that is kept without searching the storey again (another search's layout could
+    still be smaller; measured on dev_storeys and dev_storeys2, 9 of 108 plans changed,
+    dev_storeys2's CPU median 214 -> 195 ms)."""
+    from shapely.geometry import Polygon
+
+    through = through_rooms(spec) if k > 0 else set()
+    floor_m2 = sum(Polygon(r.polygon).area for r in layout.rooms)
+    held_m2 = sum(Polygon(r.polygon).area for r in below.rooms if r.id not in through)
+    return max(0.0, floor_m2 - held_m2)
 
 
 def _stairs_recorded(plan: Floorplan, kind: str = DOGLEG) -> Floorplan:
@@ -684,6 +713,7 @@ def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options: Fl
     why = f"its stairwell never came out as a rectangle of at least {long_m:g} x {short_m:g} m for the stair"
     attempts = opts.level_attempts
     search = dataclasses.replace(opts, wanted_candidates=min(opts.wanted_candidates, wanted or opts.storey_wanted_candidates))
+    search = _storey_search(search)
     narrow = _NARROW_HALLS.get()
     wide_m = short_m if narrow is not None and k in narrow else stair_hall_width_m(spec, k)
     refused = [0]
@@ -713,6 +743,14 @@ def _solve_storey(spec: HouseSpec, k: int, rng: np.random.Generator, options: Fl
             continue
         return found[0]
     raise FloorplanError(f"could not lay out level {k} in {attempts} attempts ({why})")
+
+
+def _storey_search(opts: FloorplanOptions) -> FloorplanOptions:
+    """``opts`` for a storey's search: the annealing and the force layout of the seeds
+    stop once they no longer progress (``storey_anneal_patience_frac``,
+    ``storey_seed_settled_cells``; one-storey houses keep the whole schedules)."""
+    return dataclasses.replace(opts, anneal_patience_frac=min(opts.anneal_patience_frac, opts.storey_anneal_patience_frac),
+                               seed_settled_cells=max(opts.seed_settled_cells, opts.storey_seed_settled_cells))
 
 
 def _carved_storey(spec: HouseSpec, k: int, sub: HouseSpec, rng: np.random.Generator, search: FloorplanOptions,
@@ -829,9 +867,7 @@ def _doors_cleared(plan: Floorplan, stair: str, length_m: float, width_m: float 
 
 
 def _meets(segment, stair_box) -> bool:
-    from shapely.geometry import LineString
-
-    return bool(opening_zone(segment).union(LineString(segment)).intersects(stair_box))
+    return bool(_door_zone(tuple(map(tuple, segment))).intersects(stair_box))
 
 
 DOOR_SLIDE_M = 3.0
@@ -937,7 +973,7 @@ def stack_box(plans: list[tuple[int, Floorplan]], heights: dict[int, float],
     y0, y1 = max(r[1] for r in rects.values()), min(r[1] + r[3] for r in rects.values())
     if y1 - y0 < width - 1e-6:
         return None
-    zones = {k: [opening_zone(dr.segment).union(LineString(dr.segment)) for dr in doors] for k, _, doors in wells}
+    zones = {k: [_door_zone(dr.segment) for dr in doors] for k, _, doors in wells}
     east_lo = max(r[0] + lengths[k] for k, r in rects.items())  # foot toward +x: the box west of it
     east_hi = min(r[0] + r[2] for r in rects.values()) - STRIP_M
     west_lo = max(r[0] for r in rects.values()) + STRIP_M  # foot toward -x: the box east of it
@@ -952,6 +988,16 @@ def stack_box(plans: list[tuple[int, Floorplan]], heights: dict[int, float],
                                 for k in rects):
                 return (round(foot, 6), round(ya, 6), yaw)
     return None
+
+
+@functools.lru_cache(maxsize=4096)
+def _door_zone(segment: tuple) -> BaseGeometry:
+    """A door's swing and its line (:func:`~anyhome.geometry.opening_zone`), as
+    :func:`stack_box` tests the stair's box against it: built once per door segment (the
+    storeys below are tested again at every place of the storey above)."""
+    from shapely.geometry import LineString
+
+    return opening_zone(segment).union(LineString(segment))
 
 
 def _clear_of_doors(tries: list[tuple[float, float]], ya: float, width: float, lengths: dict[int, float],

@@ -57,6 +57,12 @@ class FloorplanOptions:
     """Attempts before giving up with a FloorplanError."""
     level_attempts: int = _opt(8, 1, 1_000)
     """Solves per storey of a house of several storeys before a FloorplanError."""
+    levels_max_attempts: int = _opt(500, 1, 1_000_000)
+    """Layout attempts of all the searches of one house of several storeys together (every storey, retry and fallback): past it, a FloorplanError (floorplan.budget)."""
+    storey_anneal_patience_frac: float = _opt(0.25, 0.0, 1.0)
+    """``anneal_patience_frac`` of a storey's search (a house of several storeys); the smaller of the two applies."""
+    storey_seed_settled_cells: float = _opt(0.01, 0.0, 10.0)
+    """``seed_settled_cells`` of a storey's search (a house of several storeys); the larger of the two applies."""
     storey_candidates: int = _opt(3, 1, 100)
     """Layouts tried of each storey off the ground; the one hanging least over nothing is kept."""
     storey_wanted_candidates: int = _opt(1, 1, 1_000)
@@ -73,6 +79,8 @@ class FloorplanOptions:
     # fell back to it was built up to 30 % larger than planned ("a 500 sq ft apartment": 59.9 m2)
     slicing_attempts: int = _opt(15, 0, 10_000)
     """Slicing attempts before falling back to the constructive spine layout."""
+    slicing_short_give_up: int = _opt(5, 0, 10_000)
+    """The first this many slicing attempts all leaving a room short of its least length (a storey's stairwell, ``min_length_m``): the search goes on with the spine at once (measured on the dev storey sets: slicing that succeeded did so within four such; 0: never)."""
     wanted_candidates: int = _opt(3, 1, 1_000)
     """Valid layouts to collect before keeping the best one (lowest score)."""
 

@@ -72,8 +72,9 @@ def _attract(pos: np.ndarray, radius: np.ndarray, edges: list[tuple[int, int]], 
 
 def _to_edge(pos: np.ndarray, radius: np.ndarray, exterior: np.ndarray, border: np.ndarray, opts: FloorplanOptions) -> np.ndarray:
     move = np.zeros_like(pos)
-    for i in np.flatnonzero(exterior):
-        d = np.linalg.norm(border - pos[i], axis=1)
+    rooms = np.flatnonzero(exterior)
+    dists = np.linalg.norm(border[None, :, :] - pos[rooms][:, None, :], axis=2)  # every room at once, the same numbers
+    for i, d in zip(rooms, dists):
         k = int(np.argmin(d))
         reach = opts.seed_edge_reach_frac
         if d[k] > reach * radius[i]:

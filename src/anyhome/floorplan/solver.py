@@ -25,6 +25,7 @@ from scipy import ndimage
 
 from anyhome.errors import FloorplanError
 from anyhome.floorplan.anneal import anneal
+from anyhome.floorplan.budget import spend_attempt
 from anyhome.floorplan.court import court_owner
 from anyhome.floorplan.doors import PlacedDoor, door_kind, place_door
 from anyhome.floorplan.grid import FREE, OUTSIDE, Grid, make_footprint, min_side_cells
@@ -181,13 +182,20 @@ def _layouts(spec: HouseSpec, rng: np.random.Generator, options: FloorplanOption
     if ring is not None:
         return prog, [ring]
     slicing_attempts = opts.slicing_attempts if prog.n <= opts.slicing_max_rooms else 0
+    short = [0]  # slicing attempts so far, every one of which left a room too short
 
     def attempt(i: int) -> Layout | str:
-        if i < slicing_attempts:
-            return checked(_attempt(prog, rng, opts))
+        if i < slicing_attempts and not (opts.slicing_short_give_up and short[0] >= opts.slicing_short_give_up):
+            result = checked(_attempt(prog, rng, opts))
+            short[0] = short[0] + 1 if short[0] == i and isinstance(result, str) and result.endswith(TOO_SHORT) else 0
+            return result
         return checked(_constructed_attempt(prog, spine_owner(prog, rng), rng, opts, opts.spine_score_handicap))
 
     return prog, best_attempts(attempt, prog.n, opts)
+
+
+TOO_SHORT = "too short"
+"""The failure of a layout whose room falls short of its least length (``Program.min_length_m``)."""
 
 
 def _long_enough(prog: Program, lay: Layout | str) -> Layout | str:
@@ -199,7 +207,7 @@ def _long_enough(prog: Program, lay: Layout | str) -> Layout | str:
         if least > 0:
             xs, ys = np.nonzero(lay.owner == k)
             if len(xs) and max(xs.max() - xs.min() + 1, ys.max() - ys.min() + 1) * lay.cell_m < least - 1e-6:
-                return f"room {prog.ids[k]!r} too short"
+                return f"room {prog.ids[k]!r} {TOO_SHORT}"
     return lay
 
 
@@ -237,10 +245,12 @@ def best_attempts(attempt: Callable[[int], Layout | str], n_rooms: int, opts: Fl
                   where: str = "") -> list[Layout]:
     """The first ``opts.wanted_candidates`` valid layouts that ``attempt(i)`` gives in
     ``opts.max_attempts`` tries, best score first (ties in the order found); a
-    FloorplanError naming the commonest failure when none is valid."""
+    FloorplanError naming the commonest failure when none is valid. Each attempt spends
+    one of the whole search's budget, where one is set (:mod:`anyhome.floorplan.budget`)."""
     failures: Counter[str] = Counter()
     found: list[Layout] = []
     for i in range(opts.max_attempts):
+        spend_attempt()
         result = attempt(i)
         if isinstance(result, str):
             failures[result] += 1
@@ -446,14 +456,14 @@ def _stair_penalty(prog, a, b, owner, placed, cell_m):
     xs, ys = np.nonzero(owner == well)
     if not len(xs) or len(xs) != (xs.max() - xs.min() + 1) * (ys.max() - ys.min() + 1):
         return None
-    from anyhome.floorplan.stairs import stair_fits
+    from anyhome.floorplan.stairs import stair_fitter
 
     rect = ((xs.min() - 1) * cell_m, (ys.min() - 1) * cell_m, (xs.max() - xs.min() + 1) * cell_m, (ys.max() - ys.min() + 1) * cell_m)
     own = [d.opening.segment() for d in placed.values() if well in d.rooms]
-    length, cost = prog.stair_m[well], prog.options.door_stair_penalty
+    fits, cost = stair_fitter(rect, own, prog.stair_m[well]), prog.options.door_stair_penalty  # stair_fits(rect, [*own, opening])
 
     def penalty(opening) -> float:
-        return 0.0 if stair_fits(rect, [*own, opening.segment()], length) else cost
+        return 0.0 if fits([opening.segment()]) else cost
 
     return penalty
 

@@ -69,6 +69,8 @@ def spine_owner(prog: Program, rng: np.random.Generator) -> np.ndarray | str:
         if window_gap:  # both sides taken: leave an outside stretch for its windows
             seg_len = max(seg_len, max(lengths) + _cells(prog.options.spine_window_gap_m, prog))
         d = _hall_width(prog) if end else _spine_depth(prog, s, seg_len)
+        if s != spine[0] and (s != spine[-1] or end):  # entered through both end walls
+            d = max(d, _beside_stair(prog, s))
         y0 = -(d // 2)
         rects[s] = (x, y0, x + (own_len if end else seg_len), y0 + d)
         align_end = (rng.random() < 0.5 and not end) or bool(over)
@@ -478,6 +480,22 @@ def _min_long(prog: Program, k: int) -> int:
     that long at once instead of failing the length check after it is built."""
     least_m = prog.min_length_m[k] if prog.min_length_m else 0.0
     return int(np.ceil(least_m / prog.options.spine_cell_m - 1e-9)) if least_m > 0 else 0
+
+
+def _beside_stair(prog: Program, k: int) -> int:
+    """Cells deep a stairwell on the spine (room ``k``, ``Program.stair_m``) entered
+    through both its end walls must be: its stair's box against one end wall leaves the
+    door there room beside it (:data:`~anyhome.floorplan.stairs.STAIR_WIDTH`, the clearance,
+    a door and its corner margin); 0 for any other room. (As deep as the planned area
+    makes it, 2.2 m for a dog-leg, no such door ever cleared the stair: measured, a
+    brownstone's ground floor refused 1280 spine layouts, 45 s CPU.)"""
+    if not _min_long(prog, k) or not prog.stair_m or prog.stair_m[k] <= 0:
+        return 0
+    from anyhome.floorplan.doors import DOOR_WIDTH_M
+    from anyhome.floorplan.stairs import DOOR_CORNER_M, STAIR_CLEAR_M, STAIR_WIDTH
+
+    least_m = STAIR_WIDTH.get() + STAIR_CLEAR_M + DOOR_WIDTH_M + DOOR_CORNER_M
+    return int(np.ceil(least_m / prog.options.spine_cell_m - 1e-9))
 
 
 def _hall_width(prog: Program) -> int:

@@ -251,18 +251,46 @@ def stair_fits(rect: tuple[float, float, float, float], doors: list, length_m: f
     (segments ((x, y), (x, y)); each with its swing, :data:`STAIR_CLEAR_M` apart) and
     leaving them joined (:func:`doors_joined`): the one-storey form of
     :func:`anyhome.floorplan.levels.stack_box`, asked while its doors are placed."""
+    return stair_fitter(rect, doors, length_m)([])
+
+
+def stair_fitter(rect: tuple[float, float, float, float], doors: list, length_m: float):
+    """``extra`` (more door segments) -> ``stair_fits(rect, [*doors, *extra], length_m)``,
+    the same answer, with the work that does not depend on ``extra`` (the four places of
+    the box, the zones of ``doors``) done once: a stairwell's door is placed by asking
+    this of every opening along its walls."""
     from shapely.geometry import LineString
 
     from anyhome.geometry import opening_zone
 
     x0, y0, w, h = rect
-    if w < h:  # turned a quarter so the long side runs along x
+    turned = w < h
+    if turned:  # turned a quarter so the long side runs along x
         rect = (y0, x0, h, w)
         doors = [((a[1], a[0]), (b[1], b[0])) for a, b in doors]
         x0, y0, w, h = rect
     width_m = STAIR_WIDTH.get()
     if w < length_m + STRIP_M - 1e-6 or h < width_m - 1e-6:
-        return False
+        return lambda extra: False
+    zones = [opening_zone(d).union(LineString(d)) for d in doors]
+    lines = [LineString(d) for d in doors]
+    places = []  # (the box, grown by the clearance) where no door of ``doors`` is in the way
+    for ya in (y0, y0 + h - width_m):
+        for foot, yaw in ((x0 + length_m, 0.0), (x0 + w - length_m, math.pi)):  # the box against an end wall
+            box_ = flight_rect(foot, ya, length_m, width_m, yaw)
+            clear = box_.buffer(STAIR_CLEAR_M)
+            if not any(clear.intersects(z) for z in zones):
+                places.append((box_, clear))
+
+    def fits(extra: list) -> bool:
+        if turned:
+            extra = [((a[1], a[0]), (b[1], b[0])) for a, b in extra]
+        more = [opening_zone(d).union(LineString(d)) for d in extra]
+        all_lines = lines + [LineString(d) for d in extra]
+        return any(not any(clear.intersects(z) for z in more) and doors_joined(rect, box_, all_lines)
+                   for box_, clear in places)
+
+    return fits
     zones = [opening_zone(d).union(LineString(d)) for d in doors]
     lines = [LineString(d) for d in doors]
     for ya in (y0, y0 + h - width_m):

@@ -75,7 +75,10 @@ def run_segment(run: Run, t0: float, t1: float, cell_m: float) -> tuple[tuple[fl
 def room_outline(mask: np.ndarray, cell_m: float) -> list[tuple[float, float]]:
     """CCW rectilinear outline of a simply connected padded cell mask, in meters."""
     edges: dict[tuple[int, int], tuple[int, int]] = {}
-    xs, ys = np.nonzero(mask)
+    inner = mask[1:-1, 1:-1] & mask[:-2, 1:-1] & mask[2:, 1:-1] & mask[1:-1, :-2] & mask[1:-1, 2:]
+    edge_cells = mask.copy()
+    edge_cells[1:-1, 1:-1] &= ~inner  # cells with a side on the outline, in the same order
+    xs, ys = np.nonzero(edge_cells)
     for x, y in zip(xs.tolist(), ys.tolist()):
         x0, y0 = x - 1, y - 1  # unpadded corner
         if not mask[x, y - 1]:
