@@ -233,9 +233,10 @@ def _corefer(text: str, p: Parsed, mentions: list[Mention]) -> list[Mention]:
     return [m for m in mentions if id(m) not in gone]
 
 
-ONE_PERSON_HEADS = frozenset("desk desks workstation chair stool bed cot berth seat station locker".split())
+ONE_PERSON_HEADS = frozenset("desk desks workstation bed cot berth station locker".split())
 """Heads of things one person uses each: "desks for forty" are forty desks (a table for
-six is one table)."""
+six is one table; chairs are left out: "stacking chairs for a hundred" in a hall of
+tables are its tables' chairs, not a hundred more)."""
 
 SEAT_GAP_TOKENS = 3
 """A seat count belongs to the room named at most this many words before it ("a dining
