@@ -37,7 +37,7 @@ def test_a_small_office_in_a_clinic_has_a_small_offices_furniture():
     for seed in (0, 1, 2):
         office = next(r for r in plan(text, seed).rooms if r.type == "office")
         desks = sum(g.repeat for g in office.groups if g.name == "desk")
-        assert desks == 1, [(g.name, g.repeat) for g in office.groups]
+        assert desks <= 3, [(g.name, g.repeat) for g in office.groups]  # an office draws 2-6 desks; a small one keeps 64 %
         assert not any("meeting" in g.name for g in office.groups)
         assert office.area_m2 <= 30 * 0.8 + 0.5  # the office range's top, times "small"
 
@@ -46,4 +46,10 @@ def test_an_office_the_text_does_not_call_small_keeps_its_desks():
     text = "A dental clinic with a waiting room, two treatment rooms, a reception desk and an office."
     desks = [sum(g.repeat for g in r.groups if g.name == "desk")
              for seed in (0, 1, 2) for r in plan(text, seed).rooms if r.type == "office"]
-    assert max(desks) > 1
+    assert max(desks) > 2
+
+
+def test_a_small_room_keeps_copies_in_proportion_to_its_floor():
+    spec = plan("A primary school with a small classroom, a hall and a staff room.")
+    classroom = next(r for r in spec.rooms if r.type == "classroom")
+    assert max(g.repeat for g in classroom.groups) >= 4  # the pupils' desks shrink, they do not go

@@ -483,16 +483,17 @@ def _trim(kb: KnowledgeBase, s: Slot, groups: list[fu.Group], keep: int = ESSENT
 
 
 def _fit_small_room(kb: KnowledgeBase, s: Slot, groups: list[fu.Group]) -> None:
-    """A room the text sizes with a word ("a small office" in a clinic) is furnished as
-    the smallest of its kind: its groups past :data:`ESSENTIAL_PRIORITY` go and each group
-    the text did not ask for keeps one copy (four desks and a meeting table were a small
-    office's 34 m2); its area is the one drawn for it (before the furniture grew it), at
-    most the middle of its range times the word's factor, or what its furniture needs."""
+    """A room the text sizes with a word ("a small office" in a clinic) holds a smaller
+    room's furniture: its groups past :data:`ESSENTIAL_PRIORITY` go and the copies of each
+    group the text did not ask for shrink as its floor does, by the word's factor squared
+    (at least one; four desks and a meeting table were a small office's 34 m2, now two
+    desks); its area is the one drawn for it (before the furniture grew it), at most the
+    middle of its range times the word's factor, or what its furniture needs."""
     for g in [g for g in groups if not _essential(g)]:
         groups.remove(g)
     for g in groups:
         if not g["required"]:
-            g["repeat"] = 1
+            g["repeat"] = max(1, math.floor(g["repeat"] * s.size * s.size))
     need = min(_need_m2(groups, _floor_use(kb, s.type)), MAX_ROOM_AREA_M2)
     small = (s.area_range[0] + s.area_range[1]) / 2 * s.size
     s.area = round(max(min(s.drawn_area, small), need), 2)
