@@ -135,6 +135,9 @@ class SizeWord(_Model):
     factor: Annotated[float, Field(gt=0, le=3)] = Field(default=1.0, description="factor on a room's area or an object's size")
     total_m2: AreaRange | None = None
     scale: Annotated[float, Field(gt=0, le=3)] = Field(default=1.0, description="factor on every room's area range")
+    least: Annotated[float, Field(gt=0, le=1)] = Field(default=1.0, description=(
+        "factor on the room types' min_area_m2 in a home this word sizes, never below a square of the type's "
+        "min_width_m (a tiny home's sitting room is smaller than a family home's)"))
 
     _r = field_validator("total_m2")(classmethod(lambda cls, v: _ordered(v)))
 

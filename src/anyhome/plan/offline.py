@@ -36,6 +36,7 @@ from anyhome.plan.program import (
     fit_areas,
     fit_rooms,
     is_dwelling,
+    norm_area_m2,
     open_air_by_name,
     plan_rooms,
     renumber,
@@ -71,6 +72,12 @@ in proportion."""
 ESSENTIAL_PRIORITY = 1
 """Groups of this priority or a more urgent one (lower) stay in a room squeezed into a
 stated total or a size word's; the others may go."""
+
+TIGHT_PRIORITY = 0
+"""Groups of this priority or a more urgent one stay in a room whose house still passes
+the total a size word or a stated area sets once the groups past
+:data:`ESSENTIAL_PRIORITY` went (a tiny cottage's bedroom keeps its bed, not its
+reading chair)."""
 
 MAX_ROOM_OBJECTS = 160
 """Most objects one room's plan places: a 120-seat hall with its stage, screen and
@@ -132,6 +139,8 @@ class OfflinePlanner:
         prog = kb.raw("programs")["programs"].get(program or "", {})
         connections = connect_levels(kb, slots, prog.get("entrance", []))
         fit_areas(kb, slots, sz)
+        if sz.band is not None and _stairs_resized(slots, connections):  # a tiny home's ladder, not a dog-leg
+            fit_areas(kb, slots, sz)
         for s in slots:  # a stairwell holds its flight, a landing its doors, whatever the total
             if s.key in HELD_KEYS:
                 s.area = s.area_range[0]
@@ -213,13 +222,14 @@ def calibrate_total(kb: KnowledgeBase, spec: HouseSpec, slots: list[Slot], band:
     lo, hi = band
     best, best_err = spec, float("inf")
     keep = {s.id for s in slots if s.area_from == "stated" or s.key in HELD_KEYS}
+    norms = {s.id: norm_area_m2(kb, s) for s in slots}  # a tiny home's norms are its size word's
     types = kb.rooms.types
     for _ in range(CALIBRATION_ROUNDS):
         built = [built_area_m2(spec, rng, floorplan) for _ in range(CALIBRATION_PROBES)]
         if any(a is None for a in built):  # scaled too far for the solver: keep the last plan that laid out
             break
         mean = float(np.mean([a for a in built if a is not None]))
-        err = max(lo - mean, mean - hi, 0.0) / max(lo, 1e-6)
+        err = max(lo - mean, mean - hi, 0.0) / max(lo or hi, 1e-6)
         if err < best_err:
             best, best_err = spec, err
         if err == 0.0:
@@ -233,10 +243,19 @@ def calibrate_total(kb: KnowledgeBase, spec: HouseSpec, slots: list[Slot], band:
                 rooms.append(r)
                 continue
             rt = types.get(r.type, types["other"])
-            least = min(rt.min_area_m2, r.area_m2)
+            least = min(norms.get(r.id, rt.min_area_m2), r.area_m2)
             rooms.append(r.model_copy(update={"area_m2": round(float(np.clip(r.area_m2 * f, least, 400.0)), 2)}))
         spec = spec.model_copy(update={"rooms": rooms})
     return best
+
+
+def _stairs_resized(slots: list[Slot], edges: list[tuple[str, str]]) -> bool:
+    """Stairwells sized again for the stairs the fitted areas call for
+    (:func:`stairwells_sized`: a tiny home's ship's ladder, not the dog-leg its drawn
+    areas called for); whether any stairwell's area changed."""
+    before = [s.area_range for s in slots if s.key in HELD_KEYS]
+    stairwells_sized(slots, edges)
+    return before != [s.area_range for s in slots if s.key in HELD_KEYS]
 
 
 def _furnished_need(kb: KnowledgeBase) -> Any:
@@ -330,6 +349,8 @@ def _furnish(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], main_key: str
     _cap_objects(slots, out, warnings)
     for s, (groups, _) in zip(slots, out):
         _grow_area(s, groups, warnings, factor=_floor_use(kb, s.type))
+        if s.size < 1.0 and s.mention is not None:  # "a small office": its furniture fits the size asked for
+            _fit_small_room(kb, s, groups)
     _cap_house_area(slots, warnings)
     _add_zones(kb, parsed, slots, out, rng, at_work)
     return out
@@ -338,12 +359,15 @@ def _furnish(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], main_key: str
 def _add_zones(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], rooms: list[tuple[list[fu.Group], list[fu.Item]]],
                rng: np.random.Generator, at_work: bool = False) -> None:
     """Each room's zones (:func:`anyhome.plan.furnish.zone_groups`) after its groups, less
-    what the text rules out, within the per-room and per-house object caps; ``at_work``
+    what the text rules out, within the per-room and per-house object caps (none in a room
+    the text calls small: :func:`_fit_small_room`); ``at_work``
     (the building is no home): a room of no known kind zones as :data:`WORK_OTHER`."""
     total = sum(fu.object_count(g, o) for g, o in rooms)
     negated = [m for m in parsed.objects if m.negated]
     zones = kb.raw("furniture").get("zones", {})
     for s, (groups, ornaments) in zip(slots, rooms):
+        if s.size < 1.0 and s.mention is not None:  # "a small office": no more than its own furniture
+            continue
         furnish = WORK_OTHER if at_work and s.type == "other" and s.furnish not in zones else s.furnish
         fill = fu.zone_groups(kb, furnish, s.type, s.area, groups, rng)
         for m in negated:
@@ -438,27 +462,48 @@ def _fit_furnished(kb: KnowledgeBase, slots: list[Slot], rooms: list[tuple[list[
     area): rooms the furniture grew past the total lose the groups the text did not ask
     for (most grown room first, least important group first); the rest are scaled."""
     hi = sz.band[1] if sz.band is not None else MAX_HOUSE_AREA_M2
-    for s, (groups, _) in sorted(zip(slots, rooms), key=lambda x: x[0].drawn_area - x[0].area):
-        if sum(x.area for x in slots) <= hi:
-            break
-        _trim(kb, s, groups)
+    keeps = [ESSENTIAL_PRIORITY, TIGHT_PRIORITY] if sz.source in ("word", "stated") else [ESSENTIAL_PRIORITY]
+    for keep in keeps:  # a total the text sets: the lesser essentials go too ("a tiny cottage's bedroom": the bed)
+        for s, (groups, _) in sorted(zip(slots, rooms), key=lambda x: x[0].drawn_area - x[0].area):
+            if sum(x.area for x in slots) <= hi:
+                break
+            _trim(kb, s, groups, keep)
     grown = {id(s) for s in slots if s.area > s.drawn_area + 1e-6}  # the furniture's needs stay
     fit_areas(kb, slots, sz, warnings, pinned=grown)
 
 
-def _trim(kb: KnowledgeBase, s: Slot, groups: list[fu.Group]) -> None:
+def _trim(kb: KnowledgeBase, s: Slot, groups: list[fu.Group], keep: int = ESSENTIAL_PRIORITY) -> None:
     """Take the room's less important groups out (least important first) until it is back
-    to the area it was drawn with, or only its essential groups are left."""
-    optional = sorted((g for g in groups if not _essential(g)), key=lambda g: -g["priority"])
+    to the area it was drawn with, or only its essential groups (asked for, or of priority
+    ``keep`` or a more urgent one) are left."""
+    optional = sorted((g for g in groups if not _essential(g, keep)), key=lambda g: -g["priority"])
     while optional and s.area > s.drawn_area + 1e-6:
         groups.remove(optional.pop(0))
         s.area = round(max(s.drawn_area, min(_need_m2(groups, _floor_use(kb, s.type)), MAX_ROOM_AREA_M2)), 2)
 
 
-def _essential(g: fu.Group) -> bool:
+def _fit_small_room(kb: KnowledgeBase, s: Slot, groups: list[fu.Group]) -> None:
+    """A room the text sizes with a word ("a small office" in a clinic) holds a smaller
+    room's furniture: its groups past :data:`ESSENTIAL_PRIORITY` go and the copies of each
+    group the text did not ask for shrink as its floor does, by the word's factor squared
+    (at least one; four desks and a meeting table were a small office's 34 m2, now two
+    desks); its area is the one drawn for it (before the furniture grew it), at most the
+    middle of its range times the word's factor, or what its furniture needs."""
+    for g in [g for g in groups if not _essential(g)]:
+        groups.remove(g)
+    for g in groups:
+        if not g["required"]:
+            g["repeat"] = max(1, math.floor(g["repeat"] * s.size * s.size))
+    need = min(_need_m2(groups, _floor_use(kb, s.type)), MAX_ROOM_AREA_M2)
+    small = (s.area_range[0] + s.area_range[1]) / 2 * s.size
+    s.area = round(max(min(s.drawn_area, small), need), 2)
+
+
+def _essential(g: fu.Group, keep: int = ESSENTIAL_PRIORITY) -> bool:
     """A group a room keeps when its total is tight: asked for by the text, or what
-    makes the room what it is (a bed, a toilet, a kitchen run: priority 0 or 1)."""
-    return bool(g["required"]) or int(g["priority"]) <= ESSENTIAL_PRIORITY
+    makes the room what it is (a bed, a toilet, a kitchen run: priority 0 or 1; of
+    priority ``keep`` or a more urgent one)."""
+    return bool(g["required"]) or int(g["priority"]) <= keep
 
 
 def _floor_use(kb: KnowledgeBase, room_type: str) -> float:

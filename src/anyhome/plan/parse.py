@@ -838,12 +838,25 @@ def _prefixes(phrase: str) -> list[str]:
     return [" ".join(words[:n]) for n in range(len(words), 0, -1)]
 
 
+SIZE_WORD_SPAN = 4
+"""A size word sizes the building when it stands among this many words ending with the
+building word, not counting the words that give its storeys ("a tiny three storey tower
+house" is tiny)."""
+STOREY_WORDS = frozenset({"storey", "story", "storeys", "stories", "storeyed", "storied", "level", "levels", "floor", "floors"})
+
+
 def _size_words(kb: KnowledgeBase, text: str, start: int, p: Parsed) -> None:
     """Size words (programs.yaml sizes.words) among the few words before the building
-    word, within its clause ("a tiny off-grid cabin", "a grand old mansion")."""
+    word, within its clause ("a tiny off-grid cabin", "a grand old mansion"); the words
+    of a storey count ("three storey", "two-level") are skipped over."""
     words = ((kb.raw("programs").get("sizes") or {}).get("words")) or {}
-    for tok, _, _ in reversed(_tokens(text[:start])[-4:]):
-        if not tok.isalpha() or tok in ("with", "and", "or", "but", "of", "for"):
+    seen, storey = 0, False
+    for tok, _, _ in reversed(_tokens(text[:start])):
+        if seen and (tok in STOREY_WORDS or (storey and parse_number(tok) is not None)):  # "a tiny three-storey tower house"
+            storey = tok in STOREY_WORDS
+            continue
+        seen, storey = seen + 1, False
+        if seen > SIZE_WORD_SPAN or not tok.isalpha() or tok in ("with", "and", "or", "but", "of", "for"):
             break
         if (words.get(tok) or {}).get("total_m2") and tok not in p.size_words:
             p.size_words.append(tok)
@@ -915,6 +928,10 @@ _TIERS = re.compile(
     r"|\b(half a flight up|half a level up)\b")
 """Storeys named by their place among the others ("the lower level", "the middle level",
 "the main floor", "half a flight up" in a split-level; :func:`_find_tiers`)."""
+_BARE_TIERS = re.compile(r"\b(?:at|on)\s+the\s+(bottom|top)\b(?!\s+of)|\bin\s+the\s+(middle)\b(?!\s+of)")
+"""Places named without a storey word ("a kitchen at the bottom, a sitting room in the
+middle, a bedroom at the top"): storeys only in a text of several storeys that names two
+places or more this way (:func:`_find_tiers`)."""
 _TIER_OF = {"lowest": "low", "lower": "low", "bottom": "low", "middle": "mid", "main": "mid", "entry": "mid",
             "half a flight up": "mid", "half a level up": "mid", "upper": "high", "top": "high"}
 _ENTRANCE_WORDS = re.compile(r"\b(?:entry|entrance|foyer|front door|lobby|vestibule)\b")
@@ -962,6 +979,10 @@ def _find_tiers(text: str, p: Parsed) -> None:
     place becomes a floor word naming its level ("tier:-1", "tier:0", ...), in place of
     an ordinary floor word at the same words ("the top floor", "the upper level")."""
     named = [(mt.start(), mt.end(), next(g for g in mt.groups() if g)) for mt in _TIERS.finditer(text)]
+    bare = [(mt.start(), mt.end(), next(g for g in mt.groups() if g)) for mt in _BARE_TIERS.finditer(text)
+            if not any(s <= mt.start() < e for s, e, _ in named)]
+    if p.storeys >= 2 and len({_TIER_OF[w] for _, _, w in bare}) >= 2:  # "a three storey tower: a kitchen at the bottom, ..."
+        named = sorted(named + bare)
     found = [(s, e, _TIER_OF[w]) for s, e, w in named]
     tiers = [t for t in ("low", "mid", "high") if any(f[2] == t for f in found)]
     if tiers == ["low"] and p.storeys >= 2:  # "a duplex ... on the lower level": the ground floor

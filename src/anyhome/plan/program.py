@@ -63,6 +63,7 @@ class Slot:
     need: float = 0.0  # floor its furniture needs (set when a total is fitted)
     open_air: bool = False  # open to the sky whatever its type (its name says so)
     parts: list[int] = field(default_factory=list)  # Parsed.rooms it takes in (a studio's kitchenette)
+    least_scale: float = 1.0  # a size word's factor on its type's min_area_m2 ("tiny": Sizing.least_scale)
 
 
 def _type_info(kb: KnowledgeBase, room_type: str) -> dict:
@@ -1077,6 +1078,8 @@ class Sizing:
     add: list[dict] = field(default_factory=list)
     circulation_share: float = 1.0
     scale: float = 1.0  # the size word's factor on every room's range
+    least_scale: float = 1.0  # the size word's factor on the types' min_area_m2 (sizes.words ``least``)
+    word_factor: float = 1.0  # the size word's factor on a room's area (sizes.words ``factor``)
     source: str = ""  # what set the band: "stated" | "word" | "kind" ("" without one)
 
 
@@ -1109,9 +1112,15 @@ def sizing(kb: KnowledgeBase, parsed: Parsed, program: str | None) -> Sizing:
     for w in parsed.size_words:
         if one_room and sizes.get("words", {}).get(w):  # "a small studio": smaller rooms, not a home's total
             sz.scale = float(sizes["words"][w].get("factor", 1.0))
+            if sizes["words"][w].get("total_m2") and program in homes:  # "a tiny house": never more than its total
+                word_band = (0.0, float(sizes["words"][w]["total_m2"][1]))
+                sz.what = f"a {w} home"
+                sz.least_scale = float(sizes["words"][w].get("least", 1.0))
             break
         if sizes.get("words", {}).get(w, {}).get("total_m2"):
             word_band = tuple(sizes["words"][w]["total_m2"])
+            sz.word_factor = float(sizes["words"][w].get("factor", 1.0))
+            sz.least_scale = float(sizes["words"][w].get("least", 1.0)) if program in homes else 1.0
             sz.scale = float(sizes["words"][w].get("scale", 1.0)) if program in homes else 1.0
             sz.what = f"a {w} {'home' if program in homes else 'building'}"
             break
@@ -1124,7 +1133,7 @@ def sizing(kb: KnowledgeBase, parsed: Parsed, program: str | None) -> Sizing:
     elif program in homes and word_band is not None:
         kt = kind.get("total_m2")
         lo, hi = word_band
-        if kt and max(lo, kt[0]) <= min(hi, kt[1]):  # "a grand mansion": both hold
+        if kt and not one_room and max(lo, kt[0]) <= min(hi, kt[1]):  # "a grand mansion": both hold
             lo, hi = max(lo, kt[0]), min(hi, kt[1])
         sz.band = (float(lo), float(hi))
         sz.source = "word"
@@ -1144,14 +1153,26 @@ def sizing(kb: KnowledgeBase, parsed: Parsed, program: str | None) -> Sizing:
     return sz
 
 
+def norm_area_m2(kb: KnowledgeBase, s: Slot) -> float:
+    """The room type's least area (rooms.yaml ``min_area_m2``), times the size word's
+    ``least`` factor (:attr:`Slot.least_scale`: a tiny home's sitting room is smaller than
+    the norm of a family home's), never below a square of the type's ``min_width_m``."""
+    info = _type_info(kb, s.type)
+    norm = float(info["min_area_m2"])
+    if s.least_scale < 1.0:
+        width = float(info.get("min_width_m", 0.0))
+        norm = min(norm, max(norm * s.least_scale, width * width))
+    return norm
+
+
 def _least(kb: KnowledgeBase, s: Slot) -> float:
-    """Smallest area the room may shrink to: its type's norm, or its own smaller range
-    (a booth, a cubicle)."""
+    """Smallest area the room may shrink to: its type's norm (:func:`norm_area_m2`), or
+    its own smaller range (a booth, a cubicle)."""
     if s.area_from == "stated":  # "a 12 m2 bedroom" stays 12 m2
         return float(s.area_range[0])
     if s.key in HELD_KEYS:  # it holds its flight (its doors) whatever the total
         return float(s.area_range[0])
-    return float(max(min(float(_type_info(kb, s.type)["min_area_m2"]), s.area_range[0]), s.need))
+    return float(max(min(norm_area_m2(kb, s), s.area_range[0]), s.need))
 
 
 def _most(kb: KnowledgeBase, s: Slot, sz: Sizing) -> float:
@@ -1184,19 +1205,29 @@ def _mid(s: Slot) -> float:
     return max((s.area_range[0] + s.area_range[1]) / 2 * s.size, s.need)
 
 
+HOUSEHOLD_OVER = 1.15
+"""A household the text counts whose rooms, at the middle of their ranges, pass a size
+word's total by more than this factor no longer gets that total (:func:`fit_rooms`)."""
+
+
 def fit_rooms(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], sz: Sizing, prog: dict | None, need: Callable[[Slot], float]) -> None:
     """Drop or add rooms so that the total can reach ``sz.band``: optional rooms the text
     did not ask for go first when the rooms are too big for it, then repeated rooms it
     did not count; rooms of the kind's (then the homes') ``add`` list join when they are
     too few. ``need(slot)``: the floor its furniture needs. Rooms keep their names and
-    ids; call :func:`renumber` after."""
+    ids; call :func:`renumber` after. A household the text counts ("a cosy lodge for 12
+    guests") fixes the bedrooms: none goes for a size word's total, and when the rooms
+    left cannot fit in it the word no longer sets a total (``sz.band`` None) but scales
+    the rooms' ranges by its ``factor``."""
     if sz.band is None or not slots:
         return
     for s in slots:
         s.need = need(s)
+        s.least_scale = sz.least_scale
     lo, hi = sz.band
     main = (prog or {}).get("main")
     fixed = _fixed_counts(kb, parsed)
+    household = bool(parsed.people) and sz.source == "word"  # "a cosy lodge for 12 guests": the guests fix the bedrooms
 
     def keeps_storey(s: Slot) -> bool:
         """A stairwell, or the last room besides it on a storey above or below the ground."""
@@ -1213,7 +1244,15 @@ def fit_rooms(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], sz: Sizing, 
                 seen.add(s.type)
             out += list(reversed(extra))
             out += [s for s in slots if _type_info(kb, s.type).get("circulation") and s.mention is None and s not in out]
-        return [s for s in out if not keeps_storey(s)]
+        return [s for s in out if not keeps_storey(s) and not (household and s.type == "bedroom")]
+
+    if household and sum(_mid(s) for s in slots) > hi * HOUSEHOLD_OVER:  # the word cannot hold the guests' rooms: it scales them
+        for s in slots:
+            if s.area_from != "stated" and s.key not in HELD_KEYS and sz.word_factor != 1.0:
+                a, b = s.area_range
+                s.area_range = (max(a * sz.word_factor, min(a, _least(kb, s))), b * sz.word_factor)
+        sz.band, sz.source = None, ""
+        return
 
     while sum(_mid(s) for s in slots) > hi and (victims := droppable(False)):
         slots.remove(victims[0])
@@ -1238,6 +1277,7 @@ def fit_rooms(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], sz: Sizing, 
             continue
         apply_kind(kb, [new], sz)
         new.need = need(new)
+        new.least_scale = sz.least_scale
         slots.append(new)
 
 
