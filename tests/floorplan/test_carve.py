@@ -70,3 +70,32 @@ def test_only_a_stairwell_with_one_door_onto_an_open_stair_room_is_carved():
         else:
             assert len(links) != 1 or not any(
                 r.type in ("living_room", "dining_room") for r in spec.rooms if r.id in links[0] and r.id != well)
+
+
+def test_an_upper_storeys_stand_in_entrance_does_not_stop_the_carve():
+    spec = _spec("a two-storey cottage with a living room and a kitchen downstairs and two bedrooms upstairs")
+    well = next(r for r in spec.rooms if r.type == "stairwell")
+    room = next(r for r in spec.rooms if r.type == "living_room")
+    sub = spec.model_copy(update={"connections": [(well.id, room.id), (well.id, "outside")]})  # a storey's stand-in
+    types = frozenset({"living_room"})
+    assert carve_room(sub, well.id, types) is None  # a real door to the outside
+    assert carve_room(sub, well.id, types, stand_in=True) == room.id
+    carved_sub = carved_spec(sub, well.id, room.id, 6.3)
+    assert (room.id, "outside") in carved_sub.connections  # the stand-in goes to the room
+
+
+def test_a_stair_hall_is_planned_no_larger_than_the_stair_and_its_passage():
+    from anyhome.floorplan.levels import _carved_m2
+    from anyhome.floorplan.options import FloorplanOptions
+
+    spec = _spec("a two-storey cottage with a living room and a kitchen downstairs and two bedrooms upstairs")
+    room = next(r for r in spec.rooms if r.type == "living_room")
+    opts = FloorplanOptions()
+    assert abs(_carved_m2(spec, room.id, 3.6, 1.75, opts) - 3.6 * 1.75) < 0.011  # a living room: both
+    hall = room.model_copy(update={"type": "entry", "area_m2": 4.0})
+    sub = spec.model_copy(update={"rooms": [hall if r.id == room.id else r for r in spec.rooms]})
+    need = 3.6 * (1.75 + opts.stair_carve_left_m)  # the stair and the passage beside it
+    assert abs(_carved_m2(sub, room.id, 3.6, 1.75, opts) - (need - 4.0)) < 0.011
+    big = sub.model_copy(update={"rooms": [hall.model_copy(update={"area_m2": 14.0}) if r.id == room.id else r
+                                           for r in spec.rooms]})
+    assert _carved_m2(big, room.id, 3.6, 1.75, opts) == 0.0  # a hall that holds it already grows no larger

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from anyhome.floorplan.options import FloorplanOptions
-from anyhome.floorplan.wells import wells_end_trimmed, wells_trimmed
+from anyhome.floorplan.wells import wells_doors_to_strip, wells_end_trimmed, wells_trimmed
 from anyhome.house import Door, Floorplan, Level, Room, Window
 
 
@@ -83,3 +83,34 @@ def test_the_end_behind_the_box_keeps_its_door():
                      levels=[Level(level=0, elevation_m=0.0, height_m=2.9), Level(level=1, elevation_m=2.9, height_m=2.9)])
     out = wells_end_trimmed(plan, (3.8, 0.0, 0.0), {0: 2.6}, {0: "stairwell"}, FloorplanOptions())  # box 1.2-3.8
     assert min(p[0] for p in out.room("stairwell").polygon) == 0.0
+
+
+def _door_beside_the_stair(x0: float) -> Floorplan:
+    """The stair on x 0-2.6 (its foot at 2.6, the strip on 2.6-3.6), y 0-1.75; a door
+    onto the living room in the north wall at x ``x0``."""
+    plan = _plan(False)
+    door = Door(id="door-1", rooms=("stairwell", "living_room"), segment=((x0, 3.2), (x0 + 0.9, 3.2)))
+    return plan.model_copy(update={"doors": [*plan.doors, door]})
+
+
+def test_a_door_beside_the_stair_slides_onto_the_strip_and_the_landing_goes():
+    plan = wells_doors_to_strip(_door_beside_the_stair(0.8), (2.6, 0.0, 0.0), {0: "stairwell"})
+    door = next(d for d in plan.doors if d.id == "door-1")
+    xs = sorted(p[0] for p in door.segment)
+    assert xs[0] >= 2.6 + 0.03 - 1e-9 and xs[1] <= 3.6 + 1e-9  # on the strip, clear of the stair's box
+    assert {p[1] for p in door.segment} == {3.2}
+    out = wells_trimmed(plan, 0.0, {0: "stairwell"}, FloorplanOptions(), boxes={0: (0.0, 2.6)})
+    assert max(p[1] for p in out.room("stairwell").polygon) == 1.75  # no landing beside the stair
+    assert {p[1] for p in next(d for d in out.doors if d.id == "door-1").segment} == {1.75}
+
+
+def test_a_door_on_the_strip_and_an_outside_door_stay():
+    plan = _door_beside_the_stair(2.65)
+    assert wells_doors_to_strip(plan, (2.6, 0.0, 0.0), {0: "stairwell"}).doors == plan.doors
+
+
+def test_a_wall_whose_door_finds_no_place_on_the_strip_keeps_it():
+    plan = _door_beside_the_stair(0.8)
+    narrow = plan.room("living_room").model_copy(update={"polygon": [(0, 3.2), (2.4, 3.2), (2.4, 7.2), (0, 7.2)]})
+    plan = plan.model_copy(update={"rooms": [plan.room("stairwell"), narrow]})  # the living room ends before the strip
+    assert wells_doors_to_strip(plan, (2.6, 0.0, 0.0), {0: "stairwell"}).doors == plan.doors

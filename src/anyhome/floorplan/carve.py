@@ -29,10 +29,13 @@ from anyhome.house import Door, Floorplan, Room, Window
 from anyhome.plan.spec import HouseSpec, RoomSpec
 
 
-def carve_room(spec: HouseSpec, well: str, open_types: frozenset[str]) -> str | None:
+def carve_room(spec: HouseSpec, well: str, open_types: frozenset[str], stand_in: bool = False) -> str | None:
     """The id of the room the stairwell ``well`` of ``spec`` is carved from: its only
-    connection, when that room is of ``open_types`` and has a roof; None: none."""
-    links = [c for c in spec.connections if well in c]
+    connection, when that room is of ``open_types`` and has a roof; None: none.
+    ``stand_in``: ``spec`` is a storey above or below the ground, whose stairwell's link
+    to the outside is the stand-in entrance (:func:`carved_spec` gives it to the room),
+    not a door (before, every such storey was refused for it)."""
+    links = [c for c in spec.connections if well in c and not (stand_in and "outside" in c)]
     if len(links) != 1 or "outside" in links[0]:
         return None
     other = next(x for x in links[0] if x != well)

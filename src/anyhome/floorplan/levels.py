@@ -95,7 +95,7 @@ from anyhome.floorplan.stairs import (
     stair_width_m,
     well_width_m,
 )
-from anyhome.floorplan.wells import wells_end_trimmed, wells_trimmed
+from anyhome.floorplan.wells import wells_doors_to_strip, wells_end_trimmed, wells_trimmed
 from anyhome.geometry import DOOR_CLEARANCE_M, opening_zone
 from anyhome.house import Door, Floorplan, HouseObject, Level, Room, Window
 from anyhome.plan.spec import HouseSpec
@@ -296,10 +296,19 @@ def _stacked(spec: HouseSpec, numbers: list[int], rng: np.random.Generator, opti
     foot, ya, yaw = _stairs_place(plan)
     lengths = {k: flight_length_m(heights, k, kind) for k in numbers}
     boxes = {k: (foot - n, foot) if abs(yaw) < 0.1 else (foot, foot + n) for k, n in lengths.items()}
-    plan = wells_trimmed(plan, ya, wells, opts, kind, boxes if opts.well_end_trim else None)
-    if opts.well_end_trim:
-        plan = wells_end_trimmed(plan, (foot, ya, yaw), lengths, wells, opts)
-    return stairs_opened(plan, opts)
+
+    def trimmed_opened(slid: dict[int, str]) -> Floorplan:
+        out = wells_doors_to_strip(plan, (foot, ya, yaw), slid) if slid else plan
+        out = wells_trimmed(out, ya, wells, opts, kind, boxes if opts.well_end_trim else None)
+        if opts.well_end_trim:
+            out = wells_end_trimmed(out, (foot, ya, yaw), lengths, wells, opts)
+        return stairs_opened(out, opts)
+
+    opened = trimmed_opened({})
+    kept = {k: w for k, w in wells.items() if any(r.id == w for r in opened.rooms)}  # not merged into a room
+    if opts.well_doors_to_strip and kept:  # their doors onto the strip (a merge, where one is made, saves more)
+        opened = trimmed_opened(kept)
+    return opened
 
 
 def _placed_storey(spec: HouseSpec, plans: dict[int, Floorplan], k: int, ref: int, rng: np.random.Generator,
@@ -446,11 +455,13 @@ def _stair_opened(plan: Floorplan, k: int, top: int, opts: FloorplanOptions, bot
 
 def _open_stair_types(k: int, bottom: int) -> frozenset[str]:
     """Room types an open stair may rise in on storey ``k`` (``bottom``: the lowest):
-    ``open_plan.yaml`` ``open_stair``, and on a basement at the bottom ``basement_stair``."""
+    ``open_plan.yaml`` ``open_stair`` and ``stair_hall``, and on a basement at the bottom
+    ``basement_stair``."""
     from anyhome.floorplan.merge import open_plan_data
 
     data = open_plan_data()
-    return data.open_stair | data.basement_stair if k == bottom < 0 else data.open_stair
+    types = data.open_stair | data.stair_hall
+    return types | data.basement_stair if k == bottom < 0 else types
 
 
 def _rises_through(plan: Floorplan, k: int, room: Room) -> bool:
@@ -767,11 +778,11 @@ def _carved_storey(spec: HouseSpec, k: int, sub: HouseSpec, rng: np.random.Gener
         return None
     stair = stair_room(spec, k)
     bottom = min(r.level for r in spec.rooms)
-    room = carve_room(sub, stair, _open_stair_types(k, bottom))
+    room = carve_room(sub, stair, _open_stair_types(k, bottom), stand_in=k != 0)
     if room is None or room in through_rooms(spec):
         return None
     well = next(r for r in spec.rooms if r.id == stair)
-    carved_sub = carved_spec(sub, stair, room, round(long_m * short_m, 2))
+    carved_sub = carved_spec(sub, stair, room, _carved_m2(sub, room, long_m, short_m, opts))
 
     def fitted(plan: Floorplan) -> Floorplan | None:
         for cand in carved(plan, well, room, long_m, short_m, opts.stair_carve_left_m):
@@ -783,11 +794,27 @@ def _carved_storey(spec: HouseSpec, k: int, sub: HouseSpec, rng: np.random.Gener
     search = dataclasses.replace(search, max_attempts=min(search.max_attempts, opts.stair_carve_max_attempts))
     for _ in range(opts.stair_carve_attempts):
         try:
-            return _candidates(carved_sub, rng, search, min_length_m={room: long_m}, accept=fitted,
+            return _candidates(carved_sub, rng, search, min_length_m={room: long_m},
+                               min_side_m={room: short_m + opts.stair_carve_left_m}, accept=fitted,
                                width_m=stair_width_m(kind))[0]
         except FloorplanError:
             continue
     return None
+
+
+def _carved_m2(sub: HouseSpec, room: str, long_m: float, short_m: float, opts: FloorplanOptions) -> float:
+    """Floor the room ``room`` of the storey ``sub`` is planned larger by when its stairwell
+    (``long_m`` x ``short_m``) is carved from it: the stairwell's; for a stair hall
+    (``open_plan.yaml`` ``stair_hall``: an entry, a hallway) only what the stair and the
+    passage kept beside it (``stair_carve_left_m``) need beyond the room's own area, as
+    the hall doubles as the stairwell (measured: a maisonette's 11.7 m2 entrance hall
+    beside a 6.5-11.5 m2 stairwell that opened onto it alone)."""
+    from anyhome.floorplan.merge import open_plan_data
+
+    r = next(x for x in sub.rooms if x.id == room)
+    if r.type in open_plan_data().stair_hall:
+        return round(max(0.0, long_m * (short_m + opts.stair_carve_left_m) - r.area_m2), 2)
+    return round(long_m * short_m, 2)
 
 
 def _candidates(sub: HouseSpec, rng: np.random.Generator, options: FloorplanOptions | None,

@@ -72,6 +72,11 @@ class OpenPlan:
     basement_stair: frozenset[str] = frozenset()
     """Room types of a basement (the lowest storey, below the ground) that its stair may
     rise from in the open: nobody passes through them to a storey further down."""
+    stair_hall: frozenset[str] = frozenset()
+    """Circulation room types a stair may stand in as the storey's stair hall (an entry, a
+    hallway, a landing): it opens onto one of them only, it merges into it, and a storey
+    searched with it carved from that room plans the room no larger than the stair and a
+    passage beside it need (it doubles as the hall), not as large as both."""
 
 
 @lru_cache(maxsize=1)
@@ -80,7 +85,8 @@ def open_plan_data(path: Path = OPEN_PLAN_FILE) -> OpenPlan:
     return OpenPlan(tuple(str(w).lower() for w in data["words"]),
                     tuple((str(a), str(b)) for a, b in data["pairs"]),
                     frozenset(str(t) for t in data.get("open_stair", ())),
-                    frozenset(str(t) for t in data.get("basement_stair", ())))
+                    frozenset(str(t) for t in data.get("basement_stair", ())),
+                    frozenset(str(t) for t in data.get("stair_hall", ())))
 
 
 def asks_open_plan(spec: HouseSpec, data: OpenPlan | None = None) -> bool:

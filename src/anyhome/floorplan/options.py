@@ -314,6 +314,8 @@ class FloorplanOptions:
     """Slicing attempts of one such search (``max_attempts`` at most)."""
     well_end_trim: int = _opt(1, 0, 1)
     """1: a stairwell's ends beyond its stair's box and foot strip go to the room across (floorplan.wells.wells_end_trimmed); 0: kept."""
+    well_doors_to_strip: int = _opt(1, 0, 1)
+    """1: a stairwell's doors beside its stair slide onto the strip at its foot, so the passage beside the stair is trimmed (floorplan.wells.wells_doors_to_strip); 0: kept."""
     open_min_width_m: float = _opt(1.2, 0.5, 20.0)
     """Narrowest wall opening (kind "open"); below this an open pair gets a plain door."""
     open_max_width_m: float = _opt(1.8, 0.5, 20.0)

@@ -18,6 +18,10 @@ kept inside) goes the same way to the room across that end wall, or to the outsi
 nothing of the storey above stands on it; a well trimmed so may come out flush with a
 corner of the room its stair opens onto, which then takes it as an L
 (:func:`anyhome.floorplan.levels.stairs_opened`).
+
+Before both, where the well is not merged into a room, the doors in its long walls that
+open beside the stair's box or beyond the strip at its foot are slid onto the strip
+(:func:`wells_doors_to_strip`): a landing only as big as its doors need.
 """
 
 from __future__ import annotations
@@ -83,6 +87,53 @@ def wells_trimmed(plan: Floorplan, ya: float, wells: dict[int, str], opts: Floor
             outline = _grown(other, band, opts.max_habitable_aspect_ratio if is_habitable(other.type) else opts.max_room_aspect_ratio)
             if outline is not None:
                 plan = _moved_wall(plan, well, other, outline, band, cut, edge, on_wall)
+    return plan
+
+
+def wells_doors_to_strip(plan: Floorplan, place: tuple[float, float, float], wells: dict[int, str]) -> Floorplan:
+    """``plan`` with the doors in each long wall of each stairwell of ``wells`` (storey ->
+    room id; rectangles whose long side runs east-west) that open off the strip at the
+    foot of the stair of ``place`` ((foot_x, y0, yaw), :func:`anyhome.floorplan.levels.stack_box`),
+    beside the stair's box or beyond the strip, slid along their wall onto the strip
+    (:func:`anyhome.floorplan.levels._clear_spot`: the nearest place whose swing is clear
+    of the rest of the well, still on both rooms' walls, no door near), where every such
+    door of that wall finds one; a wall with one that does not keeps them all. The doors
+    then need no passage beside the stair and no floor beyond the strip, which go to the
+    room across (:func:`wells_trimmed`, :func:`wells_end_trimmed`), as a landing is only
+    as big as its doors need (measured: the stairwells of storeys whose bedrooms opened
+    beside the flight or past the strip stayed 2.1-2.7 m wide or 0.6 m long beyond
+    it, 7.4-9.7 m2 for 6.3)."""
+    from shapely.ops import unary_union
+
+    from anyhome.floorplan.levels import _clear_spot
+
+    foot, _, yaw = place
+    lo, hi = (foot, foot + STRIP_M) if abs(yaw) < 0.1 else (foot - STRIP_M, foot)
+    for k, well_id in wells.items():
+        well = plan.room(well_id)
+        if len(well.polygon) != 4:
+            continue
+        xs, ys = [p[0] for p in well.polygon], [p[1] for p in well.polygon]
+        x0, x1, y0, y1 = min(xs), max(xs), min(ys), max(ys)
+        if lo < x0 - 1e-6 or hi > x1 + 1e-6:
+            continue
+        rest = unary_union([box(x0 - 1.0, y0, lo, y1), box(hi, y0, x1 + 1.0, y1)]).buffer(STAIR_CLEAR_M)  # the well off the strip
+        outlines = {r.id: Polygon(r.polygon).exterior.buffer(1e-6) for r in plan.rooms if r.level == k}
+        for edge in (y0, y1):
+            wall = LineString([(x0, edge), (x1, edge)])
+            doors = list(plan.doors)
+            moving = [i for i, d in enumerate(doors) if well_id in d.rooms and "outside" not in d.rooms
+                      and _on(d.segment, wall) and LineString(d.segment).intersects(rest)]
+            for i in moving:
+                other = next(x for x in doors[i].rooms if x != well_id)
+                seg = _clear_spot(doors[i].segment, rest, (outlines[well_id], outlines.get(other)),
+                                  [e.segment for j, e in enumerate(doors) if j != i and e.rooms[0] in outlines])
+                if seg is None:
+                    break
+                doors[i] = doors[i].model_copy(update={"segment": seg})
+            else:
+                if moving:
+                    plan = plan.model_copy(update={"doors": doors})
     return plan
 
 
