@@ -45,7 +45,12 @@ import numpy as np
 from anyhome.errors import AnyHomeError
 from anyhome.evaluate import evaluate_house
 from anyhome.evaluate.footprint import INSIDE_MAX_SHARE, SHAPES
-from anyhome.evaluate.plan_metrics import PlanMetrics, signatures_share_most
+from anyhome.evaluate.plan_metrics import (
+    BLOAT_FACTOR,
+    BLOAT_MIN_M2,
+    PlanMetrics,
+    signatures_share_most,
+)
 from anyhome.floorplan import solve_floorplan
 from anyhome.floorplan.levels import solve_levels
 from anyhome.pipeline import generate
@@ -160,6 +165,8 @@ def summarise(name: str, rows: list[tuple[str, int, PlanMetrics, int]], fp_times
         "living_narrow": sum(p.n_living_rooms_narrow for p in plans),
         "below_type_norm": sum(p.n_below_type_min_width for p in plans),
         "oversized": sum(p.n_oversized for p in plans),
+        "bloated": sum(p.n_bloated for p in plans),
+        "worst_area_ratio": max((p.worst_area_ratio for p in plans), default=0.0),
         "planned": sum(p.n_planned for p in plans),
         "rooms": sum(p.n_rooms for p in plans),
         "open_air": sum(p.n_open_air for p in plans),
@@ -243,6 +250,8 @@ def table(results: list[dict[str, Any]], seeds: list[int]) -> str:
     row("living rooms narrower than 3.0 m", "0", lambda r: _frac(r["living_narrow"], r["living"]))
     row("rooms below their type's min_width_m", "", lambda r: _frac(r["below_type_norm"], r["rooms"]))
     row("rooms drawn at > 2x their planned area", "", lambda r: _frac(r["oversized"], r["planned"]))
+    row(f"rooms drawn at > {BLOAT_FACTOR:g}x their planned area and > {BLOAT_MIN_M2:g} m2 (worst ratio)", "",
+        lambda r: f"{_frac(r['bloated'], r['planned'])} ({r['worst_area_ratio']:.1f}x)")
     row("open-air rooms with a ceiling", "0", lambda r: _frac(r["open_air_with_ceiling"], r["open_air"]))
     row('"tiny" homes <= 45 m2 (met/asked)', "all", lambda r: _frac(*r["verdicts"]["tiny_ok"]))
     row("stated areas within 15 % (met/asked)", "all", lambda r: _frac(*r["verdicts"]["stated_area_ok"]))

@@ -299,3 +299,27 @@ def test_rooms_drawn_far_larger_than_planned_are_counted(kb) -> None:
     assert (m.n_oversized, m.n_planned) == (1, 3)
     h.plan = {"rooms": "not a list"}
     assert plan_metrics(h, kb).n_planned == 0
+
+
+def test_bloated_rooms_and_the_worst_ratio_are_counted(kb) -> None:
+    """A room over 2.5x its planned area AND over 30 m2 is bloated (a 27 m2 family room drawn
+    at 124 m2); a 4 m2 bathroom drawn at 12 m2 is 3x but small, so not; the worst ratio is
+    the largest drawn-over-planned area of any planned room."""
+    h = house_of([
+        Room(id="family", name="family room", type="living_room", polygon=box(0, 0, 15.5, 8)),
+        Room(id="bath", name="bathroom", type="bathroom", polygon=box(15.5, 0, 3, 4)),
+        Room(id="bed", name="bedroom", type="bedroom", polygon=box(15.5, 4, 3, 4)),
+        Room(id="extra", name="store", type="storage", polygon=box(0, 8, 20, 5)),
+    ])
+    h.plan = {"rooms": [{"id": "family", "area_m2": 27.0}, {"id": "bath", "area_m2": 4.0},
+                        {"id": "bed", "area_m2": 12.0}]}
+    m = plan_metrics(h, kb)
+    by = {r.id: r for r in m.rooms}
+    assert by["family"].bloated and by["family"].area_ratio == pytest.approx(124 / 27)
+    assert not by["bath"].bloated and by["bath"].area_ratio == pytest.approx(3.0)
+    assert not by["bed"].bloated and not by["extra"].bloated and by["extra"].area_ratio is None
+    assert m.n_bloated == 1 and m.worst_area_ratio == pytest.approx(124 / 27)
+    assert any("> 2.5x and > 30 m2: 1; worst 4.6x" in line for line in m.summary_lines())
+    h.plan = None
+    m = plan_metrics(h, kb)
+    assert (m.n_bloated, m.worst_area_ratio) == (0, 0.0)

@@ -88,3 +88,45 @@ def test_a_hallway_with_a_corridor_and_a_busy_living_room_behind_it_roots_the_sp
              ("corridor", "bed2"), ("corridor", "bed3"), ("corridor", "bed4"), ("corridor", "bed5"),
              ("corridor", "bath")]
     _lays_out_every_room(_program(rooms, conns))
+
+
+SUBURBAN = "A four-bedroom suburban house with a two-car garage, a family room and three bathrooms."
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_hubs_of_the_suburban_house_stay_near_their_planned_area(seed):
+    """The family room, a hub with a garage-kitchen-dining row beside it, was drawn as long
+    as that row and as deep as its aspect then needed (27 m2 planned, 124 m2 drawn, seed 1);
+    the kitchen beside the 7 m deep garage 3.6 m by 7 m. Every room now stays within 2.5x
+    of its planned area (the floorplan stage exactly as ``generate`` runs it)."""
+    from shapely.geometry import Polygon
+
+    from anyhome.stages import Stages, stage_rngs
+
+    stages = Stages()
+    planner = get_planner("offline", None, stages.floorplan)
+    spec = stages.plan(SUBURBAN, stage_rngs(seed)["plan"], planner)
+    fp = stages.floorplan(spec, stage_rngs(seed)["floorplan"])
+    planned = {r.id: r.area_m2 for r in spec.rooms}
+    for room in fp.rooms:
+        want = sum(planned[i] for i in [room.id, *room.merged])
+        assert Polygon(room.polygon).area <= 2.5 * want, (room.id, want, Polygon(room.polygon).area)
+
+
+def test_a_hub_at_the_spine_end_keeps_its_length_and_a_small_column_its_area():
+    """A family room at the end of the spine with a long row beside it (dining, kitchen,
+    garage) keeps about its own area, its row reaching out past its end; the kitchen and
+    dining room beside the deep garage are cut short of the outer edge, not drawn full depth."""
+    rooms = [("hall", "hallway", 9.0), ("family", "living_room", 27.0), ("dining", "dining_room", 12.6),
+             ("kitchen", "kitchen", 8.9), ("garage", "garage", 44.6), ("study", "study", 8.3),
+             ("bed1", "bedroom", 12.0), ("bed2", "bedroom", 12.0), ("bed3", "bedroom", 13.0)]
+    conns = [("hall", "outside"), ("hall", "family"), ("family", "dining"), ("dining", "kitchen"),
+             ("kitchen", "garage"), ("family", "study"), ("hall", "bed1"), ("hall", "bed2"), ("hall", "bed3")]
+    prog = _program(rooms, conns)
+    cell_m2 = prog.options.spine_cell_m ** 2
+    for seed in range(6):
+        owner = spine_owner(prog, np.random.default_rng(seed))
+        assert not isinstance(owner, str), owner
+        for k, (rid, _, area) in enumerate(rooms):
+            drawn = float((owner == k).sum()) * cell_m2
+            assert drawn <= 2.5 * max(area, 13.0), (seed, rid, area, drawn)  # 13 m2: a 3.6 m square

@@ -154,6 +154,13 @@ _AREA_RE = re.compile(
 OVERSIZE_FACTOR = 2.0
 """A room drawn at more than this many times its planned area is oversized (the solver
 stretched it to fill its footprint: a 10 m2 practice room drawn at 57 m2)."""
+BLOAT_FACTOR = 2.5
+"""A room drawn at more than this many times its planned area, and larger than
+:data:`BLOAT_MIN_M2`, is bloated (a hub of the spine floorplan that took the slack: a
+27 m2 family room drawn at 124 m2). A figure, not a validity violation."""
+BLOAT_MIN_M2 = 30.0
+"""Rooms no larger than this are never counted bloated (a 4 m2 bathroom drawn at 11 m2 is
+still a small room)."""
 
 
 @dataclass(frozen=True)
@@ -180,6 +187,20 @@ class RoomMetrics:
     def oversized(self) -> bool:
         """Drawn at more than :data:`OVERSIZE_FACTOR` times its planned area."""
         return self.planned_area_m2 is not None and self.area_m2 > OVERSIZE_FACTOR * self.planned_area_m2
+
+    @property
+    def area_ratio(self) -> float | None:
+        """Drawn area over planned area; None when the plan does not hold the room."""
+        if self.planned_area_m2 is None or self.planned_area_m2 <= 0:
+            return None
+        return self.area_m2 / self.planned_area_m2
+
+    @property
+    def bloated(self) -> bool:
+        """Drawn at more than :data:`BLOAT_FACTOR` times its planned area and over
+        :data:`BLOAT_MIN_M2`."""
+        ratio = self.area_ratio
+        return ratio is not None and ratio > BLOAT_FACTOR and self.area_m2 > BLOAT_MIN_M2
 
     @property
     def below_norm(self) -> bool:
@@ -237,6 +258,17 @@ class PlanMetrics:
         return sum(r.oversized for r in self.rooms)
 
     @property
+    def n_bloated(self) -> int:
+        """Rooms drawn at more than :data:`BLOAT_FACTOR` times their planned area and over
+        :data:`BLOAT_MIN_M2` (see :attr:`RoomMetrics.bloated`)."""
+        return sum(r.bloated for r in self.rooms)
+
+    @property
+    def worst_area_ratio(self) -> float:
+        """The largest drawn-over-planned area of a room; 0.0 when no room is planned."""
+        return max((r.area_ratio for r in self.rooms if r.area_ratio is not None), default=0.0)
+
+    @property
     def n_courtyards_inside(self) -> int:
         return sum(s < footprint.INSIDE_MAX_SHARE for s in self.courtyard_shares)
 
@@ -248,7 +280,8 @@ class PlanMetrics:
         d = asdict(self)
         d["size_words"] = list(self.size_words)
         d["signature"] = [list(s) for s in self.signature]
-        d["rooms"] = [{**asdict(r), "below_norm": r.below_norm, "oversized": r.oversized} for r in self.rooms]
+        d["rooms"] = [{**asdict(r), "below_norm": r.below_norm, "oversized": r.oversized,
+                      "bloated": r.bloated} for r in self.rooms]
         d["courtyard_shares"] = list(self.courtyard_shares)
         return d
 
@@ -267,7 +300,9 @@ class PlanMetrics:
             f"bedrooms < {NARROW_BEDROOM_M} m: {self.n_bedrooms_narrow}/{self.n_bedrooms}; "
             f"living rooms < {NARROW_LIVING_M} m: {self.n_living_rooms_narrow}/{self.n_living_rooms}; "
             f"rooms below their type's min width: {self.n_below_type_min_width}/{self.n_rooms}; "
-            f"drawn at > {OVERSIZE_FACTOR:g}x their planned area: {self.n_oversized}/{self.n_planned}",
+            f"drawn at > {OVERSIZE_FACTOR:g}x their planned area: {self.n_oversized}/{self.n_planned} "
+            f"(> {BLOAT_FACTOR:g}x and > {BLOAT_MIN_M2:g} m2: {self.n_bloated}; "
+            f"worst {self.worst_area_ratio:.1f}x)",
             f"  size words: {words}; stated area: {stated}; tiny {verdict(self.tiny_ok)}, "
             f"stated {verdict(self.stated_area_ok)}, mansion/grand {verdict(self.mansion_ok)}",
             f"  open-air rooms with a ceiling: {self.n_open_air_with_ceiling}/{self.n_open_air}; "

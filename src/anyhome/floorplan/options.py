@@ -262,6 +262,8 @@ class FloorplanOptions:
     """Splits of a hall's rooms between its two sides tried for the shortest hall (an end room closing it)."""
     spine_hall_split_max_blocks: int = _opt(8, 0, 30)
     """Halls with more blocks of rooms than this keep the drawn split (a long hall of a hotel floor: too many splits, little to gain)."""
+    spine_column_fill_max: float = _opt(2.0, 1.0, 1_000.0)
+    """A one-room block column the side's depth would make over this many times its room's area is cut short (a 9 m2 kitchen beside a 7 m deep garage)."""
     spine_aspect_min: float = _opt(1.0, 1.0, 20.0)
     """Least long/short side ratio of a spine room that has no blocks to size it."""
     spine_aspect_max: float = _opt(1.5, 1.0, 20.0)

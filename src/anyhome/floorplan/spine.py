@@ -55,9 +55,9 @@ def spine_owner(prog: Program, rng: np.random.Generator) -> np.ndarray | str:
         end = None
         if s == spine[-1]:
             end, sides, side_depth, widths = _shortest_hall(s, root, spine, blocks[s], sides, depth, children, prog, rng)
-        over = None
-        if s == spine[0] and len(spine) > 1 and not prog.habitable(s):
-            over = _overhang(s, sides, widths, children, prog, rng)
+        over, over_start = None, s == spine[0]
+        if not end and (over_start or s == spine[-1]):
+            over = _overhang(s, sides, widths, children, prog, rng, at_start=over_start)
             if over:
                 sides, widths = over[1], over[2]
         lengths = [sum(sum(bw) for bw in side) for side in widths]
@@ -65,7 +65,8 @@ def spine_owner(prog: Program, rng: np.random.Generator) -> np.ndarray | str:
         seg_len = own_len if over else max(own_len, *lengths)
         # a hall whose end wall is outside takes the entrance there: no stretch kept free
         entrance_end = s == root and not prog.habitable(s) and (s == spine[0] or (s == spine[-1] and not end))
-        window_gap = (prog.habitable(s) or (s == root and not entrance_end)) and all(lengths)
+        # a room whose blocks reach out past its free end has an outside wall there
+        window_gap = not over and (prog.habitable(s) or (s == root and not entrance_end)) and all(lengths)
         if window_gap:  # both sides taken: leave an outside stretch for its windows
             seg_len = max(seg_len, max(lengths) + _cells(prog.options.spine_window_gap_m, prog))
         d = _hall_width(prog) if end else _spine_depth(prog, s, seg_len)
@@ -73,7 +74,9 @@ def spine_owner(prog: Program, rng: np.random.Generator) -> np.ndarray | str:
             d = max(d, _beside_stair(prog, s))
         y0 = -(d // 2)
         rects[s] = (x, y0, x + (own_len if end else seg_len), y0 + d)
-        align_end = (rng.random() < 0.5 and not end) or bool(over)
+        align_end = (rng.random() < 0.5 and not end) or bool(over and over_start)
+        if over and not over_start:
+            align_end = False
         for side_i, (side, side_w) in enumerate(zip(sides, widths)):
             slack = seg_len - lengths[side_i]  # negative where the blocks reach out past its start
             if not window_gap and not end and not over:
@@ -309,19 +312,23 @@ def _packed(
 
 def _overhang(
     s: int, sides: Sides, widths: list[list[list[int]]], children: list[list[int]], prog: Program, rng,
+    at_start: bool = True,
 ) -> tuple[int, Sides, list[list[list[int]]]] | None:
     """The first spine room (nothing lies beyond its start) kept to its own length, its
     blocks reaching out past its start: (its length, sides, widths), each side's blocks
     ordered and mirrored so their doors on it come at its far end; None where that is
-    no shorter than the length its blocks would stretch it to."""
+    no shorter than the length its blocks would stretch it to. ``at_start`` False: the
+    last spine room, its blocks reaching out past its end, their doors at its start.
+    (A hub stretched to its blocks' length would be as deep as that length over its
+    greatest aspect: a 27 m2 family room drawn 15.5 m by 8 m.)"""
     need = _cells(prog.options.shared_wall_min_m, prog)
     out_sides: list[list[list[Column]]] = [[], []]
     out_widths: list[list[list[int]]] = [[], []]
     reach = need
     for i in (0, 1):
         blocks, bws, r = _packed(sides[i], widths[i], s, children, need)
-        out_sides[i] = [b[::-1] for b in reversed(blocks)]
-        out_widths[i] = [w[::-1] for w in reversed(bws)]
+        out_sides[i] = [b[::-1] for b in reversed(blocks)] if at_start else blocks
+        out_widths[i] = [w[::-1] for w in reversed(bws)] if at_start else bws
         reach = max(reach, r)
     natural = need if prog.types[s] in CORRIDOR_TYPES else _spine_length(prog, s, 0, rng)
     own = max(reach, natural)
@@ -517,7 +524,7 @@ def _spine_depth(prog: Program, s: int, length: int) -> int:
 
 def _place_column(col, w, cx, y0, d, depth, side, prog, rects) -> None:
     """Stack ``col``'s rooms outward from the spine, north (side 0) or south (side 1)."""
-    heights = _column_heights(col, depth, prog)
+    heights = _column_heights(col, depth, prog) if len(col) > 1 else [_column_depth(col[0], w, depth, prog)]
     offset = 0
     for k, h in zip(col, heights):
         if side == 0:
@@ -525,6 +532,21 @@ def _place_column(col, w, cx, y0, d, depth, side, prog, rects) -> None:
         else:
             rects[k] = (cx, y0 - offset - h, cx + w, y0 - offset)
         offset += h
+
+
+def _column_depth(k: int, w: int, depth: int, prog: Program) -> int:
+    """Depth of room ``k``'s one-room column of width ``w`` on a side ``depth`` deep: the
+    side's depth, or, where that would make the room more than ``spine_column_fill_max``
+    times its area, the depth that gives it its area (never below its least side, nor
+    twice ``shared_wall_min_m``, room for its doors on the columns beside it, nor past its
+    greatest aspect; a room with a least length, a stairwell, keeps the side's)."""
+    area_cells = prog.areas_m2[k] / prog.options.spine_cell_m**2
+    if w * depth <= prog.options.spine_column_fill_max * area_cells or (prog.min_length_m and prog.min_length_m[k] > 0):
+        return depth
+    short = max(int(np.ceil(area_cells / w)), _min_side(prog, k), 2 * _cells(prog.options.shared_wall_min_m, prog))
+    if np.isfinite(prog.max_aspect(k)):
+        short = max(short, int(np.ceil(w / prog.max_aspect(k))))
+    return min(depth, short)
 
 
 def rasterize(rects: dict[int, tuple[int, int, int, int]]) -> np.ndarray:
