@@ -707,3 +707,8 @@ def test_a_persons_office_is_a_private_office_and_a_newsroom_a_room():
     editor = next(r for n, r in names.items() if n.startswith("editor's"))
     assert sum(n in ("desk", "executive desk", "large desk") for n in names_of(editor)) == 1
     assert "midcentury" in spec.styles
+
+
+def test_a_plural_or_possessive_trade_word_makes_a_studio_a_workspace():
+    spec = plan_of("A small architects' studio: a reception, three partners' offices and a meeting room", 3)
+    assert spec.building != "home" and not any(r.type == "bedroom" for r in spec.rooms)

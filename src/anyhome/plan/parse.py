@@ -623,7 +623,7 @@ def _parse_building(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[i
 def _ruled_out_building(entry: dict, text: str) -> bool:
     """Whether the text holds one of the building entry's ``unless`` words ("a studio"
     with an easel is no studio apartment)."""
-    return any(re.search(rf"\b{re.escape(w.lower())}\b", text) for w in entry.get("unless", []))
+    return any(re.search(rf"\b{re.escape(w.lower())}(?:s|'s|s')?(?!\w)", text) for w in entry.get("unless", []))  # "architects'"
 
 
 def _with_modifier(kb: KnowledgeBase, text: str, start: int, phrase: str, taken: list[tuple[int, int]]) -> str:
