@@ -193,3 +193,10 @@ def test_a_lower_level_under_the_main_level_is_the_basement_and_no_room_of_its_o
     assert levels["family_room"] == levels["garage"] == -1
     assert levels["kitchen"] == levels["living_room"] == 0
     assert not any("basement" in k for k in levels)
+
+
+def test_street_level_is_the_ground_floor_and_the_first_floor_the_one_above():
+    from anyhome.plan.parse import parse
+
+    p = parse("a canal house: kitchen and dining room at street level, a living room on the first floor, bedrooms at the top")
+    assert [w for _, _, w in p.floor_words] == ["ground", "first"] and p.storeys >= 2

@@ -920,9 +920,13 @@ _ATTIC = re.compile(r"\b(?:attic|loft conversion|garret)s?\b")
 _MEZZANINE = re.compile(r"\bmezzanines?\b")
 _FLOOR_WORDS = re.compile(
     r"\b(?:on|in|at)\s+the\s+(ground|first|1st|second|2nd|third|3rd|top|upper)\s+(?:floor|storey|story|level)\b"
-    r"|\b(?:on|in)\s+the\s+(basement|attic)\b|\b(downstairs|upstairs)\b|\bup (?:the )?(stairs)\b")
+    r"|\b(?:on|in)\s+the\s+(basement|attic)\b|\b(downstairs|upstairs)\b|\bup (?:the )?(stairs)\b"
+    r"|\b(?:at|on)\s+(street|garden|ground)\s+(?:level|floor)\b")
 """Words that put the rooms named before them on a storey ("a kitchen on the ground
 floor", "three bedrooms upstairs"; :func:`anyhome.plan.program.assign_levels`)."""
+_FLOOR_WORD_OF = {"stairs": "upstairs", "street": "ground", "garden": "ground"}
+"""Floor words read as another ("at street level" is the ground floor: a "first floor"
+named with it is the one above, British usage)."""
 _TIERS = re.compile(
     r"\b(?:(?:on|in|at)\s+the\s+)?(lowest|lower|bottom|middle|main|entry|upper|top)\s+(?:level|floor|storey|story)\b"
     r"|\b(half a flight up|half a level up)\b")
@@ -957,7 +961,7 @@ def _find_levels(text: str, p: Parsed) -> None:
     for word, n in _SOME_STOREYS.items():
         if re.search(rf"\b{word}\b", text):
             p.storeys = max(p.storeys, n)
-    named = {mt.group(1) for mt in _FLOOR_WORDS.finditer(text) if mt.group(1)}
+    named = {_FLOOR_WORD_OF.get(g, g) for mt in _FLOOR_WORDS.finditer(text) for g in [next(g for g in mt.groups() if g)]}
     for word, n in ORDINAL_FLOORS.items():  # "bedrooms on the first floor" of a house with a ground floor: two
         if word in named:
             p.storeys = max(p.storeys, min(MAX_STOREYS, n + ("ground" in named)))
@@ -965,7 +969,7 @@ def _find_levels(text: str, p: Parsed) -> None:
         p.storeys = 2
     p.basement = bool(_BASEMENT.search(text))
     p.attic = bool(_ATTIC.search(text))
-    p.floor_words = [(mt.start(), mt.end(), {"stairs": "upstairs"}.get(g, g))
+    p.floor_words = [(mt.start(), mt.end(), _FLOOR_WORD_OF.get(g, g))
                      for mt in _FLOOR_WORDS.finditer(text) for g in [next(g for g in mt.groups() if g)]]
     _find_tiers(text, p)
 
