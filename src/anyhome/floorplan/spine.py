@@ -56,7 +56,11 @@ def spine_owner(prog: Program, rng: np.random.Generator) -> np.ndarray | str:
         if s == spine[-1]:
             end, sides, side_depth, widths = _shortest_hall(s, root, spine, blocks[s], sides, depth, children, prog, rng)
         over, over_start = None, s == spine[0]
-        if not end and (over_start or s == spine[-1]):
+        if prog.stacked:  # a storey keeps the spine its stairs and the storeys above were found with
+            use_over = over_start and len(spine) > 1 and not prog.habitable(s)
+        else:
+            use_over = not end and (over_start or s == spine[-1])
+        if use_over:
             over = _overhang(s, sides, widths, children, prog, rng, at_start=over_start)
             if over:
                 sides, widths = over[1], over[2]
@@ -524,7 +528,8 @@ def _spine_depth(prog: Program, s: int, length: int) -> int:
 
 def _place_column(col, w, cx, y0, d, depth, side, prog, rects) -> None:
     """Stack ``col``'s rooms outward from the spine, north (side 0) or south (side 1)."""
-    heights = _column_heights(col, depth, prog) if len(col) > 1 else [_column_depth(col[0], w, depth, prog)]
+    heights = (_column_heights(col, depth, prog) if len(col) > 1 or prog.stacked
+               else [_column_depth(col[0], w, depth, prog)])
     offset = 0
     for k, h in zip(col, heights):
         if side == 0:
