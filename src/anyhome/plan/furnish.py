@@ -559,8 +559,7 @@ def _same_kind(kb: KnowledgeBase, d: dict[str, Any], m: Mention) -> bool:
     "pool table" is no dining table with chairs)."""
     if not m.key or " " not in m.key:
         return True
-    a = d.get("anchor", {})
-    return a.get("use") == m.key or m.key in _words(u_anchor(kb, d)["name"]) or m.key in u_anchor(kb, d)["name"]
+    return d.get("anchor", {}).get("use") == m.key or m.key in u_anchor(kb, d)["name"]
 
 
 def u_anchor(kb: KnowledgeBase, d: dict[str, Any]) -> Item:

@@ -92,7 +92,8 @@ def _slot_from_mention(kb: KnowledgeBase, m: Mention, idx: int, program: str | N
     ``within``: "the gym" of a school is its sports hall; ``at_home`` in a dwelling: "a
     salon" in a riad is a sitting room)."""
     info = kb.raw("rooms")["names"].get(m.key) if m.key else None
-    if info is not None and m.owner and info.get("owned"):  # "the editor's office": a private office
+    owned = bool(info and m.owner and info.get("owned"))
+    if owned and info is not None:  # "the editor's office": a private office
         info = {**{k: v for k, v in info.items() if k != "owned"}, **info["owned"]}
     if info is not None and ("at_home" in info or "within" in info):
         home = is_dwelling(kb, program)
@@ -106,7 +107,7 @@ def _slot_from_mention(kb: KnowledgeBase, m: Mention, idx: int, program: str | N
     else:
         t = info["type"] if info["type"] in ROOM_TYPES else "other"
     name = m.name if m.words or m.concept or not info.get("name") else info["name"]
-    if m.owner and ((kb.raw("rooms")["names"].get(m.key) or {}).get("owned")) and m.owner not in name:
+    if owned and m.owner not in name:
         name = f"{m.owner}'s {name}"
     small = (kb.raw("rooms").get("small_heads") or {}).get(m.name.split()[-1] if m.name else "")
     if small is not None and "area" not in (kb.raw("rooms")["names"].get(m.key) or {}):
