@@ -21,7 +21,9 @@ prompts, same form) was written the same way at the start of the sixth session, 
 set to find and fix causes on. dev_context2.jsonl and heldout_context2.jsonl (36 each)
 were written the same way at the start of the eighth session: the first to tune on, the
 second for measuring only. dev_context3.jsonl (40) was written the same way at the start
-of the ninth session, to tune on.
+of the ninth session, to tune on. heldout_storeys4.jsonl (30, floorplans.py) and
+heldout_context3.jsonl (40) were written the same way at the start of the tenth session,
+for measuring only.
 """
 
 from __future__ import annotations
@@ -48,6 +50,7 @@ SETS = {
     "dev_context2": HERE / "prompts" / "dev_context2.jsonl",
     "dev_context3": HERE / "prompts" / "dev_context3.jsonl",
     "heldout_context2": HERE / "prompts" / "heldout_context2.jsonl",
+    "heldout_context3": HERE / "prompts" / "heldout_context3.jsonl",
 }
 
 

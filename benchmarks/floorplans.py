@@ -66,6 +66,7 @@ SETS = {
     "heldout_storeys": HERE / "prompts" / "heldout_storeys.jsonl",
     "heldout_storeys2": HERE / "prompts" / "heldout_storeys2.jsonl",
     "heldout_storeys3": HERE / "prompts" / "heldout_storeys3.jsonl",
+    "heldout_storeys4": HERE / "prompts" / "heldout_storeys4.jsonl",
     "dev_storeys": HERE / "prompts" / "dev_storeys.jsonl",
     "dev_storeys2": HERE / "prompts" / "dev_storeys2.jsonl",
 }
