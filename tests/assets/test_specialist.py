@@ -38,6 +38,8 @@ CASES = [
     ("", "ring light", "studio_light"),
     ("", "strobe", "studio_light"),
     ("", "tripod", "camera_tripod"),
+    ("well", "old stone well", "well"),
+    ("", "wellhead", "well"),
 ]
 
 REMOVED_STAND_INS = {
@@ -79,6 +81,8 @@ def test_former_stand_ins_are_drawn_by_their_own_family(word: str, family: str) 
     ("family", "knob", "a", "b"),
     [
         ("candle", "count", 1, 3),
+        ("well", "frame", "roof", "none"),
+        ("well", "bucket", True, False),
         ("candlestick", "turned", True, False),
         ("candelabra", "arms", 2, 4),
         ("lantern", "kind", "carriage", "hurricane"),

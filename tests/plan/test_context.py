@@ -712,3 +712,53 @@ def test_a_persons_office_is_a_private_office_and_a_newsroom_a_room():
 def test_a_plural_or_possessive_trade_word_makes_a_studio_a_workspace():
     spec = plan_of("A small architects' studio: a reception, three partners' offices and a meeting room", 3)
     assert spec.building != "home" and not any(r.type == "bedroom" for r in spec.rooms)
+
+
+@pytest.mark.parametrize("seed", range(2))
+def test_a_pair_of_words_before_plural_rooms_names_each_room(seed):
+    spec = plan_of("A house with his and hers bathrooms, a kitchen and a living room.", seed)
+    assert {"his bathroom", "hers bathroom"} <= {r.name for r in spec.rooms}
+    spec = plan_of("A school with boys' and girls' toilets and four classrooms.", seed)
+    assert {"boys' toilet", "girls' toilet"} <= {r.name for r in spec.rooms}
+    spec = plan_of("A courtyard house: east and west side rooms, each with a bed; a kitchen.", seed)
+    names = {r.name for r in spec.rooms}
+    assert {"east side room", "west side room"} <= names and "east" not in names
+    # a room of its own before "and" is no pair: "kitchen and dining rooms"
+    spec = plan_of("An apartment with a kitchen and dining rooms.", seed)
+    assert not any(r.name.startswith("kitchen dining") for r in spec.rooms)
+
+
+def test_a_set_only_one_kind_of_building_uses_is_no_reading_of_an_unknown_room_elsewhere():
+    # "side room" is a hospital ward's; a courtyard house's side rooms hold no patient beds
+    spec = plan_of("A courtyard house with east and west side rooms for the sons.", 0)
+    side = [r for r in spec.rooms if "side room" in r.name]
+    assert side and all(r.type != "treatment_room" for r in side)
+    assert not any("patient" in n or "hospital" in n for r in side for n in names_of(r))
+
+
+def test_whom_a_thing_is_for_is_no_object():
+    from anyhome.plan.parse import parse
+
+    p = parse("A hall with an altar table for the ancestors and a pair of armchairs.")
+    assert not any("ancestor" in o.name for o in p.objects)
+    assert any(o.name == "altar table" or o.key == "altar table" for o in p.objects)
+
+
+def test_a_word_for_the_place_is_no_style():
+    assert "southwestern" not in plan_of("Village fire station with two bays and a small gym.", 0).style.lower()
+    from anyhome.plan.openvocab import map_style
+
+    assert map_style("village") is None and map_style("town") is None
+
+
+@pytest.mark.parametrize("seed", range(2))
+def test_seats_that_come_with_a_table_replace_its_chairs(seed):
+    spec = plan_of("A refectory with a long oak table with benches down both sides.", seed)
+    g = next(g for r in spec.rooms for g in r.groups if g.anchor.name == "oak table")
+    benches = [m for m in g.members if "bench" in m.name]
+    assert benches and not any("chair" in m.name for m in g.members)
+    assert benches[0].rule == "place_around" and benches[0].size_m[0] >= 0.85 * g.anchor.size_m[0]
+    # at a bar-height table, benches lower it to a dining table's height
+    spec = plan_of("A beer hall with long tables with benches.", seed)
+    g = next(g for r in spec.rooms for g in r.groups if g.anchor.name == "long table")
+    assert g.anchor.size_m[2] <= 0.76 and any("bench" in m.name for m in g.members)

@@ -59,8 +59,13 @@ class Match:
 
 def _room_phrases(kb: KnowledgeBase) -> dict[str, list[str]]:
     sets = kb.raw("furniture")["sets"]
-    out: dict[str, list[str]] = {k: [k.replace("_", " ")] for k in sets if k != "other"}
-    for name, info in kb.raw("rooms")["names"].items():
+    names = kb.raw("rooms")["names"]
+    # a set only rooms of one kind of building use ("side_room" of a hospital ward) is no
+    # reading of an unknown room elsewhere: a siheyuan's "west side room" is no ward
+    free = {i.get("furnish") or i.get("type") for i in names.values() if not i.get("only_within")}
+    bound = {i.get("furnish") or i.get("type") for i in names.values() if i.get("only_within")} - free
+    out: dict[str, list[str]] = {k: [k.replace("_", " ")] for k in sets if k != "other" and k not in bound}
+    for name, info in names.items():
         furnish = info.get("furnish") or info.get("type")
         if furnish in out and not info.get("only_within"):  # "stall" is a loose box in a stable alone
             out[furnish].append(normalize(name))

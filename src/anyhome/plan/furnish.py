@@ -341,6 +341,8 @@ def apply_mention(kb: KnowledgeBase, m: Mention, groups: list[Group], ornaments:
         groups[:] = [g for g in groups if _matches(g["anchor"], category, head) < 2]
         ornaments[:] = [o for o in ornaments if o["category"] != category]
         return
+    if m.seat_of is not None and _seat_at_table(kb, m, proto, category, n, groups, rng):
+        return
     named = m.name != m.key
     if proto.get("ornament"):
         _apply_ornament(kb, m, proto, category, head, n, groups, ornaments, unused, area_m2, rng)
@@ -394,6 +396,51 @@ def apply_mention(kb: KnowledgeBase, m: Mention, groups: list[Group], ornaments:
             item["count"] = max(1, min(MAX_COUNT, math.ceil(n / g["repeat"])))
     _arrange(m, g, item)
     _fit_table(g)
+
+
+LONG_TABLE_MIN_M = 1.8
+"""A table with a bench down each side is at least this long."""
+BENCH_TABLE_MAX_H_M = 0.76
+"""... and no higher than a dining table (a bar-height "long table" is lowered)."""
+
+
+def _seat_at_table(kb: KnowledgeBase, m: Mention, proto: dict[str, Any], category: str, n: int | None,
+                   groups: list[Group], rng: np.random.Generator) -> bool:
+    """"A long oak table with benches down both sides": the seats round the table the text
+    named (``m.seat_of``) become these, in place of the chairs its group planned (benches
+    along its two long sides, as long as the table). False: the text's own table or its
+    seats are not found, or they are already of this kind (the usual path counts them)."""
+    table = m.seat_of
+    assert table is not None
+    g = next((g for g in groups if g["anchor"].get(MENTIONED) == table.name), None)
+    if g is None:
+        tproto = _proto(kb, table.key)
+        g, item = _find(groups, tproto.get("category", ""), (table.key or table.name).split()[-1], loose=False)
+        if g is None or item is not g["anchor"]:
+            return False
+    seats = [x for x in g["members"] if x["rule"] in SEATED_AT_RULES and item_seats(x)]
+    if not seats or any(x["category"] == category for x in seats):
+        return False
+    old = seats[0]
+    new = make_item(kb, {"use": m.key, "name": m.name}, rng)
+    long_seat = category in LONG_SEATS
+    new["rule"] = "place_around"
+    new["params"] = {"sides": "long"} if long_seat else old["params"]
+    if long_seat:  # a bench as long as the table, one each side, at a table sat at from a bench
+        w, d, h = g["anchor"]["size_m"]
+        w = max(w, LONG_TABLE_MIN_M)
+        g["anchor"]["size_m"] = (w, d, min(h, BENCH_TABLE_MAX_H_M))
+        new["size_m"] = (round(max(new["size_m"][0], 0.9 * w), 3), *new["size_m"][1:])
+        new["count"] = min(2, n or 2)
+    else:
+        new["count"] = max(1, min(MAX_COUNT, n or old["count"]))
+    new[MENTIONED] = m.name
+    g["members"] = [new if x is old else x for x in g["members"] if x is old or x not in seats]
+    g["required"] = True
+    g["priority"] = min(g["priority"], 0)
+    if not long_seat:
+        _fit_table(g)
+    return True
 
 
 SEATED_AT_RULES = frozenset({"place_around", "place_front"})

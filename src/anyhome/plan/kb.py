@@ -497,6 +497,8 @@ class ConceptsFile(_Model):
     objects: dict[str, list[Word]] = Field(default_factory=dict)
     buildings: dict[str, list[Word]] = Field(default_factory=dict)
     non_objects: list[Word] = Field(default_factory=list)
+    setting_words: list[Word] = Field(default_factory=list, description=(
+        "words before a building that say where it stands, never its style ('a village fire station')"))
     fallback_object: FallbackObject | None = None
 
 

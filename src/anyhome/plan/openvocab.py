@@ -230,7 +230,9 @@ def map_building(phrase: str, kb: KnowledgeBase | None = None) -> Match | None:
 def map_style(word: str, kb: KnowledgeBase | None = None) -> Match | None:
     """The style for an unknown style word before the building ("craftsman", "neon");
     words under ``MIN_STYLE_CHARS`` letters ("mid" of "mid-size") are not mapped."""
-    return nearest("styles", word, kb=kb) if len(word) >= MIN_STYLE_CHARS else None
+    if len(word) < MIN_STYLE_CHARS or word in resolve(kb).raw("concepts").get("setting_words", []):
+        return None
+    return nearest("styles", word, kb=kb)
 
 
 def fallback_object(kb: KnowledgeBase | None = None) -> dict:

@@ -329,6 +329,8 @@ class Mention:
     host: Mention | None = None  # objects: the room word right before it ("a courtyard fountain")
     area_m2: float | None = None  # rooms: the area the text states for it ("a 12 m2 bedroom")
     owner: str | None = None  # rooms: the possessive right before it ("the editor's office": "editor")
+    variants: list[str] = field(default_factory=list)  # rooms: a name per copy ("east and west side rooms")
+    seat_of: Mention | None = None  # objects: the table these seats come with ("a table with benches")
 
 
 @dataclass
@@ -1116,12 +1118,70 @@ PAIRED_OWNERS = re.compile(r"\b[a-z]+(?:'s|s')\s+(?:and|&)\s+[a-z]+(?:'s|s')\s+(
 """Two owners before a room word in the plural: "men's and women's changing rooms"."""
 
 
-def _paired_rooms(text: str, mentions: list[Mention]) -> None:
-    """"Men's and women's changing rooms", "boys' and girls' toilets": one room each, two
-    in all, when the text gives no count of its own."""
+PAIRED_WORDS = re.compile(r"(?:^|[\s,;:(])([a-z]+(?:'s|s'|')?)\s+(?:and|&)\s+([a-z]+(?:'s|s'|')?)\s+$")
+"""Two words before a plural room word, the second kept in its name: "east and west side
+rooms", "his and hers bathrooms", "men's and women's changing rooms"."""
+
+
+PAIRED_PRONOUNS = frozenset({"his", "her"})
+"""Stop words that still name one of a pair ("his and hers bathrooms")."""
+
+
+_SEATS_WITH = re.compile(r"^\s*(?:with|w/)\s+$")
+"""Between a table and its seats: "a long oak table with benches"."""
+
+
+def _table_seats(text: str, kb: KnowledgeBase, mentions: list[Mention]) -> None:
+    """"A refectory table with benches down both sides", "a kitchen table with stools":
+    those seats are the table's (``Mention.seat_of``), in place of its chairs."""
+    objects = kb.raw("objects")
     for m in mentions:
-        if m.kind == "room" and m.count is None and m.plural and PAIRED_OWNERS.search(text[max(0, m.start - 40) : m.start]):
+        proto = objects.get(m.key) or {} if m.kind == "object" else {}
+        if "seat" not in (proto.get("tags") or []) or m.negated:
+            continue
+        before = _last_before(mentions, m.start - _strip_lookback(text, m))
+        if before is None or before.kind != "object" or before.negated:
+            continue
+        table = objects.get(before.key) or {}
+        if "table" not in str(table.get("category", "")).split("_"):
+            continue
+        gap = text[before.end : m.start - _strip_lookback(text, m)]
+        gap = re.sub(r"\b(?:\d+|" + "|".join(NUMBER_WORDS) + r"|a|an|its|their|matching)\b", " ", gap)
+        if _SEATS_WITH.match(gap):
+            m.seat_of = before
+
+
+def _paired_rooms(text: str, mentions: list[Mention]) -> None:
+    """"Men's and women's changing rooms", "boys' and girls' toilets", "east and west side
+    rooms": one room each, two in all, when the text gives no count of its own; each room
+    named by its own word (``Mention.variants``), not two of the second."""
+    for m in list(mentions):
+        if m.kind != "room" or m.count is not None or not m.plural:
+            continue
+        if PAIRED_OWNERS.search(text[max(0, m.start - 40) : m.start]):
             m.count = 2
+        lo = max(0, m.start - 50)
+        mt = PAIRED_WORDS.search(text[lo : m.start])
+        if mt is None:
+            continue
+        a, b = mt.group(1), mt.group(2)
+        a_start = lo + mt.start(1)
+        if (a in STOP_WORDS and a not in PAIRED_PRONOUNS) or a in NUMBER_WORDS or parse_number(a) is not None:
+            continue
+        over = [x for x in mentions if x is not m and x.start <= a_start < x.end]
+        if any(x.key or x.name != a for x in over):
+            continue  # "kitchen and dining rooms": a room of its own
+        b_word = b.rstrip("'").removesuffix("'s")
+        if m.words and m.words[0] == b_word:  # "his and hers bathrooms": "hers bathroom"
+            rest = m.name.split(" ", 1)[1] if " " in m.name else m.name
+            m.variants = [f"{a} {rest}", f"{b} {rest}"]
+        elif b != b_word:  # "men's and women's changing rooms": the owners, as written
+            m.variants = [f"{a} {m.name}", f"{b} {m.name}"]
+        else:
+            continue
+        for x in over:  # "east" taken for a room or an object of its own
+            mentions.remove(x)
+        m.count = 2
 
 
 SUBJECT_ROOM = re.compile(r"^\s*(?:in|inside|within|of|at) (?:a|an|the|my|our|this)\b")
@@ -1335,6 +1395,8 @@ def _open_vocabulary(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[
             _look_back(m, text, tokens, spans, keep_words=False, kb=kb)
             mentions.append(m)
             continue
+        if mo is None and _FOR_WHOM.search(text[:s]):
+            continue
         m = Mention("object", mo.key if mo else "", name, s, e, plural=plural, open_vocab=True)
         _look_back(m, text, tokens, spans, keep_words=False, kb=kb)
         m.plural = m.plural or plural
@@ -1357,6 +1419,9 @@ THING_HEADS = frozenset("gear equipment kit machinery machine machines apparatus
 OBJECT_WITH = re.compile(r"^\s*(?:with|w/)\s+(?:(?:a|an|its|their|built-in|built in)\s+)?(?:[\w-]+\s+)?$")
 """Between an object and a phrase: what the object comes with is no room ("four pedicure
 chairs with foot spas")."""
+_FOR_WHOM = re.compile(r"\bfor (?:the |his |her |their |our |my |its |your )?$")
+"""Text before a phrase that says whom or what a thing is for: "an altar table for the
+ancestors": an unknown word there is no object of its own."""
 _HELD_FOR = re.compile(r"\bfor (?:up to )?(?:\d+|a|an|one|two|three|four|five|six|seven|eight|nine|ten|twelve)(?: \w+)?\s*$")
 """Text before a phrase that makes it what a room holds, not a room: "an apparatus bay
 for two (fire) engines", "a garage for three cars"."""
@@ -1364,7 +1429,7 @@ for two (fire) engines", "a garage for three cars"."""
 NOT_NOUNS = frozenset("full empty upstairs downstairs outside inside below above nearby too only alone together overlooking".split())
 """Words after a room word that are not a noun ("a studio full of easels", "a loft upstairs")."""
 
-ADVERBS = frozenset("just only also even then still simply merely mostly mainly".split())
+ADVERBS = frozenset("just only also even then still simply merely mostly mainly down up".split())
 """Words that are never an object's name nor lead one ("downstairs just a kitchenette")."""
 
 ROOM_SUFFIXES = frozenset("area corner bay zone space nook wing section suite end".split())
@@ -1618,8 +1683,10 @@ def parse(text: str, kb: KnowledgeBase | None = None) -> Parsed:
         p.one_room = True
     _bath_in_a_list(norm, kb, mentions)
     _toilet_rooms(norm, kb, mentions)
+    _paired_rooms(norm, mentions)  # "boys' and girls' toilets" are rooms now
     _assign_rooms(norm, mentions, kb)
     _subject_room(norm, p, mentions)
+    _table_seats(norm, kb, mentions)
     mentions = _corefer(norm, p, mentions)
     _apply_arrangements(norm, mentions)
     p.rooms = [m for m in mentions if m.kind == "room"]

@@ -307,7 +307,7 @@ def _claim_mentions(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], fixed:
         # "three practice rooms" in a music school: the program's practice rooms, as the
         # building reads them, not the word's own reading (a yoga room)
         word = _room_word(m.key)
-        for _ in range(n):
+        for k in range(n):
             by_key = [s for s in slots if s.mention is None and s.key and s.key == word]
             same_name = [s for s in slots if s.mention is None and s.name in (proto.name, m.key)]
             # "twelve monks' cells" in a monastery (a name the knowledge does not list): the
@@ -329,7 +329,7 @@ def _claim_mentions(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], fixed:
             target.mention = i
             target.size = proto.size
             target.optional = False
-            target.name = proto.name
+            target.name = m.variants[k] if k < len(m.variants) else proto.name
             target.generic_name = generic
             if not in_context and (not generic or target.type != proto.type):
                 # the word's own reading, unless the program gave it its building's

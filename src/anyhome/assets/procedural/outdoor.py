@@ -1,4 +1,4 @@
-"""Garden and patio things: fountain, hot_tub, fire_pit, grill, patio_umbrella, potted_tree."""
+"""Garden and patio things: fountain, well, hot_tub, fire_pit, grill, patio_umbrella, potted_tree."""
 
 from __future__ import annotations
 
@@ -86,6 +86,51 @@ def build_fountain(p):
         b.cyl(0, 0, z, z + 0.6 * (h - z), 0.03 * R + 0.02, p.primary, sections=12)
         b.sphere((0, 0, h - 0.4 * (h - z) / 2), (0.08 * R + 0.02, 0.08 * R + 0.02, 0.4 * (h - z) / 2),
                  p.primary)
+    return b.mesh(p.size)
+
+
+# ----------------------------------------------------------------- well
+def sample_well(rng, size, style):
+    return make_params("well", rng, size, style, STONES, wood_tones(style), ["#3a4a58", "#2e3d48"],
+                       frame=str(rng.choice(["posts", "roof", "none"], p=[0.45, 0.35, 0.2])),
+                       bucket=bool(rng.random() < 0.8))
+
+
+def build_well(p):
+    """A draw well: a round wall of stone courses round dark water, and, on most, two posts
+    with a winch beam (a little roof on some) and a bucket on the rim."""
+    w, d, h = p.size
+    b = Builder()
+    R = min(w, d) / 2
+    wall_h = min(0.85, 0.75 * h) if p.frame != "none" else h
+    t = min(0.16, 0.22 * R)
+    courses = 4
+    for i in range(courses):  # stone courses, each a little darker or lighter
+        z0, z1 = wall_h * i / courses, wall_h * (i + 1) / courses
+        col = darker(p.primary, 0.06) if i % 2 else p.primary
+        b.lathe([[R - t, z0], [R, z0], [R, z1], [R - t, z1]], col, sections=28)
+    b.lathe([[R - t - 0.01, wall_h], [R + 0.02, wall_h], [R + 0.02, wall_h + 0.05], [R - t - 0.01, wall_h + 0.05]],
+            lighter(p.primary, 0.15), sections=28)
+    b.cyl(0, 0, 0.02, wall_h - 0.35, R - t - 0.02, p.accent, sections=28)  # the water, well down the shaft
+    if p.frame != "none":
+        post = max(0.04, 0.05 * R + 0.02)
+        for sx in (-1, 1):
+            b.box((sx * (R - t / 2) - post, -post, wall_h), (sx * (R - t / 2) + post, post, h - 0.12 * h), p.secondary)
+        beam_z = h - 0.2 * h
+        b.rod((-(R - t / 2), 0, beam_z), (R - t / 2, 0, beam_z), post * 0.7, darker(p.secondary, 0.1), sections=10,
+              role="wood")
+        b.rod((0, 0, beam_z), (0, 0, wall_h + 0.3 * (beam_z - wall_h)), 0.006, DARK_METAL, sections=6)
+        if p.frame == "roof":
+            top, eave = h, h - 0.14 * h
+            for sy in (-1, 1):
+                b.hull([(-R - 0.05, 0, top), (R + 0.05, 0, top), (-R - 0.05, sy * (R * 0.8), eave),
+                        (R + 0.05, sy * (R * 0.8), eave), (-R - 0.05, sy * (R * 0.8), eave - 0.03),
+                        (R + 0.05, sy * (R * 0.8), eave - 0.03)], darker(p.secondary, 0.2))
+    if p.bucket:
+        br = min(0.13, 0.25 * R)
+        bx = R - t / 2
+        b.cyl(bx * 0.7, bx * 0.7, wall_h + 0.05, wall_h + 0.05 + 1.3 * br, br * 0.8, p.secondary, r_top=br,
+              sections=14)
     return b.mesh(p.size)
 
 
@@ -333,6 +378,8 @@ def build_potted_tree(p):
 
 slot_roles("fountain", "stone", "glass", "glass")
 register("fountain", sample_fountain, build_fountain)
+slot_roles("well", "stone", "wood", "glass")
+register("well", sample_well, build_well)
 slot_roles("hot_tub", "wood", "plastic", "glass")
 register("hot_tub", sample_hot_tub, build_hot_tub)
 slot_roles("fire_pit", {"": "stone", DARK_METAL: "metal"}, "wood", "light")
