@@ -40,6 +40,8 @@ CASES = [
     ("", "tripod", "camera_tripod"),
     ("well", "old stone well", "well"),
     ("", "wellhead", "well"),
+    ("archery_target", "straw target", "archery_target"),
+    ("", "target boss", "archery_target"),
 ]
 
 REMOVED_STAND_INS = {
@@ -83,6 +85,7 @@ def test_former_stand_ins_are_drawn_by_their_own_family(word: str, family: str) 
         ("candle", "count", 1, 3),
         ("well", "frame", "roof", "none"),
         ("well", "bucket", True, False),
+        ("archery_target", "arrows", 0, 3),
         ("candlestick", "turned", True, False),
         ("candelabra", "arms", 2, 4),
         ("lantern", "kind", "carriage", "hurricane"),

@@ -762,3 +762,29 @@ def test_seats_that_come_with_a_table_replace_its_chairs(seed):
     spec = plan_of("A beer hall with long tables with benches.", seed)
     g = next(g for r in spec.rooms for g in r.groups if g.anchor.name == "long table")
     assert g.anchor.size_m[2] <= 0.76 and any("bench" in m.name for m in g.members)
+
+
+def test_an_archery_club_has_a_range_of_targets_not_a_gym_nor_a_bosss_office():
+    spec = plan_of("Archery club, indoors: a long range with ten shooting positions and straw target "
+                   "bosses at the far end, a bow store with racks, and a changing room.", 0)
+    assert spec.building == "archery club"
+    assert not any(r.type == "office" for r in spec.rooms)
+    rng = next(r for r in spec.rooms if "range" in r.name)
+    names = names_of(rng)
+    assert sum("target" in n for n in names) >= 4 and names.count("shooting position") == 10
+    assert not any(n in ("treadmill", "exercise bike") or "milking" in n for n in names)
+
+
+def test_a_named_room_the_building_has_under_a_longer_name_is_that_room():
+    # "a long range" of an archery club is its archery range, furnished as the club's
+    spec = plan_of("Archery club with a long range and a bow store.", 0)
+    assert any(g.anchor.category == "archery_target" for r in spec.rooms for g in r.groups)
+
+
+def test_a_courtyard_well_and_tree_are_objects_not_rooms():
+    spec = plan_of("A courtyard house: a kitchen, two bedrooms, and an old stone well in the courtyard "
+                   "under a date tree.", 0)
+    assert not any("well" in r.name for r in spec.rooms)
+    court = next(r for r in spec.rooms if r.type == "courtyard")
+    names = names_of(court)
+    assert "old stone well" in names and "date tree" in names

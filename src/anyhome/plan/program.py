@@ -314,15 +314,17 @@ def _claim_mentions(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], fixed:
             # program's cells, as it furnishes them
             same_head = [s for s in slots if s.mention is None and s.key and not m.key
                          and len(proto.name.split()) > 1 and s.name == proto.name.split()[-1]]
+            # "a long range" of an archery club: its archery range, as the building furnishes it
+            same_tail = [s for s in slots if s.mention is None and s.key and s.name.endswith(" " + proto.name)]
             # rooms of the catch-all type "other" are too unlike to stand in for each other
             same_type = [s for s in slots if s.mention is None and s.type == proto.type != "other"]
             same_set = [s for s in slots if s.mention is None and s.furnish == proto.furnish != "other"]
-            target = next(iter(by_key or same_name or same_head or same_set or same_type), None)
+            target = next(iter(by_key or same_name or same_head or same_tail or same_set or same_type), None)
             if target is None:
                 like = first or proto
                 target = Slot(proto.name, like.type, like.furnish, like.area_range, key=like.key)
                 slots.append(target)
-            headed = headed or target in same_head  # the rest copy the program's cells too
+            headed = headed or target in same_head or target in same_tail  # the rest copy the program's cells too
             # "six guest rooms" in a hotel: the hotel's guest rooms, furnished as it furnishes them
             own = own or (target in same_name and target.name == m.key)
             in_context = bool(target.key) and (target.key == word or headed or own)

@@ -1,5 +1,5 @@
 """Exhibits, curiosities and wall features: plinth, model_ship, sarcophagus, rope_barrier,
-cannon, spinner_rack, mounted_antlers, barber_pole, dartboard."""
+cannon, spinner_rack, mounted_antlers, barber_pole, dartboard, archery_target."""
 
 from __future__ import annotations
 
@@ -516,5 +516,43 @@ slot_roles("mounted_antlers", "wood", "fabric", "stone")
 register("mounted_antlers", sample_mounted_antlers, build_mounted_antlers)
 slot_roles("barber_pole", "metal", "paint", "paint")
 register("barber_pole", sample_barber_pole, build_barber_pole)
+# ----------------------------------------------------------------- archery target
+TARGET_RINGS = ["#f2f0ea", "#1e1e20", "#2f7fc8", "#d8302c", "#f2c230"]
+"""Colours of an archery face from the outside in: white, black, blue, red, gold."""
+
+
+def sample_archery_target(rng, size, style):
+    return make_params("archery_target", rng, size, style, ["#d9c27a", "#cdb46a", "#e0cb88"], wood_tones(style),
+                       TARGET_RINGS[0], arrows=int(rng.integers(0, 5)))
+
+
+def build_archery_target(p):
+    """A straw boss on a three-legged wooden stand, the five-colour face on
+    its front (-y), arrows in some."""
+    w, d, h = p.size
+    b = Builder()
+    rng = np.random.default_rng(p.seed)
+    R = 0.5 * min(w, h * 0.75)
+    cz = h - R
+    thick = min(0.2, 0.3 * d)
+    face_y = d / 2 - 0.12 * d  # the face looks forward (+y); the stand's back leg reaches back
+    disc_y(b, 0, face_y - thick, face_y, cz, R, p.primary, sections=36)  # the straw boss
+    for i, col in enumerate(TARGET_RINGS):  # the paper face, ring on ring
+        disc_y(b, 0, face_y, face_y + 0.008 * (i + 1), cz, R * 0.92 * (1 - i / len(TARGET_RINGS)), tint(col, "paint"),
+               sections=36)
+    leg = max(0.02, 0.03 * R)
+    for sx in (-1, 1):  # two front legs and the back leg
+        b.rod((sx * 0.75 * R, face_y - thick / 2, 0), (sx * 0.45 * R, face_y - thick / 2, cz + 0.6 * R), leg,
+              p.secondary, sections=8, role="wood")
+    b.rod((0, -d / 2 + leg, 0), (0, face_y - thick, cz + 0.5 * R), leg, p.secondary, sections=8, role="wood")
+    for _ in range(p.arrows):
+        r, a = rng.uniform(0.0, 0.6) * R, rng.uniform(0, 2 * np.pi)
+        x, z = r * np.cos(a), cz + r * np.sin(a)
+        b.rod((x, face_y - 0.5 * thick, z), (x, d / 2, z), 0.006, tint("#8a6a3a", "wood"), sections=4)
+    return b.mesh(p.size)
+
+
+slot_roles("archery_target", "fabric", "wood", "paint")
+register("archery_target", sample_archery_target, build_archery_target)
 slot_roles("dartboard", "plastic", "fabric", "fabric")
 register("dartboard", sample_dartboard, build_dartboard)
