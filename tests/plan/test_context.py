@@ -788,3 +788,10 @@ def test_a_courtyard_well_and_tree_are_objects_not_rooms():
     court = next(r for r in spec.rooms if r.type == "courtyard")
     names = names_of(court)
     assert "old stone well" in names and "date tree" in names
+
+
+def test_a_bar_listed_among_rooms_of_a_building_is_a_room_and_in_a_home_a_counter():
+    hotel = plan_of("A hotel with a restaurant, a bar and a spa.", 0)
+    assert any(r.type == "bar" for r in hotel.rooms)
+    home = plan_of("A house with a kitchen, a bar and a games room.", 0)
+    assert not any(r.type == "bar" for r in home.rooms)

@@ -499,6 +499,8 @@ class ConceptsFile(_Model):
     non_objects: list[Word] = Field(default_factory=list)
     setting_words: list[Word] = Field(default_factory=list, description=(
         "words before a building that say where it stands, never its style ('a village fire station')"))
+    list_rooms: dict[Word, str] = Field(default_factory=dict, description=(
+        "object words that are rooms when listed among rooms ('a restaurant, a bar and a spa')"))
     fallback_object: FallbackObject | None = None
 
 

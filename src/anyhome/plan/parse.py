@@ -184,6 +184,37 @@ def _bath_in_a_list(text: str, kb: KnowledgeBase, mentions: list[Mention]) -> No
             m.kind, m.key, m.concept = "object", "bathtub", None
 
 
+_LIST_GAP = re.compile(r"^\s*(?:,\s*(?:and\s+)?|and\s+|&\s+)(?:(?:a|an|the)\s+)?$")
+"""Between two items of one list: ", a", " and a", ", and the"."""
+
+
+def _rooms_in_a_list(text: str, kb: KnowledgeBase, p: Parsed, mentions: list[Mention]) -> None:
+    """"A hotel with a restaurant, a bar and a spa": a word that names an object and a room
+    (concepts.yaml ``list_rooms``) is the room when rooms stand either side of it in one
+    list, in a building that is no home (a home's "kitchen, a bar and a den" keeps its
+    bar counter)."""
+    words = kb.raw("concepts").get("list_rooms", {})
+    if not words or p.building is None:
+        return
+    program = kb.raw("programs")["buildings"][p.building]["program"]
+    if program in set((kb.raw("programs").get("sizes") or {}).get("homes", [])):  # program.is_dwelling
+        return
+    names = kb.raw("rooms")["names"]
+    for i, m in enumerate(mentions):
+        word = m.name if m.name in words else None
+        if m.kind != "object" or word is None or m.negated or m.count not in (None, 1):
+            continue
+        prev = mentions[i - 1] if i > 0 else None
+        nxt = mentions[i + 1] if i + 1 < len(mentions) else None
+        if prev is None or prev.kind != "room" or not _LIST_GAP.match(text[prev.end : m.start]):
+            continue
+        if nxt is not None and (nxt.kind != "room" or not _LIST_GAP.match(text[m.end : nxt.start])):
+            continue
+        key = words[word]
+        if key in names:
+            m.kind, m.key = "room", key
+
+
 def _toilet_rooms(text: str, kb: KnowledgeBase, mentions: list[Mention]) -> None:
     """"Pupil toilets", "two customer toilets", "a hall with a stage and toilets": rooms (a
     restroom each), not toilet pans; "a restroom with three toilets" keeps its pans."""
@@ -1683,6 +1714,7 @@ def parse(text: str, kb: KnowledgeBase | None = None) -> Parsed:
         p.one_room = True
     _bath_in_a_list(norm, kb, mentions)
     _toilet_rooms(norm, kb, mentions)
+    _rooms_in_a_list(norm, kb, p, mentions)
     _paired_rooms(norm, mentions)  # "boys' and girls' toilets" are rooms now
     _assign_rooms(norm, mentions, kb)
     _subject_room(norm, p, mentions)
