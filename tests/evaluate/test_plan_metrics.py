@@ -127,6 +127,14 @@ def test_open_air_rooms_by_type_and_name(kb) -> None:
     ("A 300 m2 office with a 20 m2 office for the boss.", (), 300.0),
     ("A house with a 20 m2 office.", (), None),
     ("A spacious loft, large and bright, with a 25 m2 master bedroom.", ("spacious",), None),
+    # numbers in words of several parts, thousands separators, hyphens, square feet
+    ("A house of one hundred and twenty square metres.", (), 120.0),
+    ("A seventy-five square metre flat.", (), 75.0),
+    ("A 140-square-metre home with a garden.", (), 140.0),
+    ("A 1,200 sq ft ranch house.", (), pytest.approx(1200 * 0.09290304)),
+    ("A home of about 2,000 square feet.", (), pytest.approx(2000 * 0.09290304)),
+    ("A flat of 12,5 m2.", (), 12.5),
+    ("A house with a 60 sq ft closet.", (), None),
 ])
 def test_read_size(kb, text: str, words: tuple[str, ...], area: float | None) -> None:
     assert read_size(text, kb) == (words, area)

@@ -139,6 +139,32 @@ def test_a_size_word_for_a_room_does_not_resize_the_home():
     assert p.rooms[0].size < 1
 
 
+@pytest.mark.parametrize(("text", "words"), [
+    ("A small 65 m2 house with two bedrooms", ["small"]),  # the number ends the opening phrase
+    ("A grand 1920s Art Deco house", ["grand"]),
+    ("A grand, rambling country house with a ballroom", ["grand"]),
+    ("A grand old Victorian brick house with a ballroom", ["grand"]),  # far from the building word
+    ("A house like a mansion", ["mansion"]),
+    ("A large kitchen and a small house", ["small"]),
+])
+def test_a_size_word_in_the_head_sizes_the_home_and_is_never_the_building(text, words):
+    p = parse(text)
+    assert p.size_words == words
+    assert RAW["programs"]["buildings"][p.building]["program"] == "home"  # not a chapel or a flat
+
+
+def test_the_strongest_of_several_size_words_sizes_the_home():
+    from anyhome.plan.program import choose_program, sizing
+
+    kb = _kb(lambda raw: None)
+    for text, least in [("A large mansion", 300), ("A large, grand house", 300), ("a small, tiny cabin", 0)]:
+        p = parse(text)
+        sz = sizing(kb, p, choose_program(kb, p)[0])
+        assert sz.source == "word" and sz.band is not None and sz.band[0] >= least, (text, sz.band)
+    p = parse("a small, tiny cabin")
+    assert sizing(kb, p, choose_program(kb, p)[0]).band[1] <= 45
+
+
 # ------------------------------------------------------------------ stated totals
 @pytest.mark.parametrize(
     ("text", "m2"),

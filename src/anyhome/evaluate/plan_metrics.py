@@ -137,17 +137,47 @@ SIZE_WORDS = {
 _SIZE_RE = re.compile(r"\b(" + "|".join(SIZE_WORDS) + r")\b", re.IGNORECASE)
 _HEAD_END = re.compile(r",|;|:|\.\s|\bwith\b|\bfeaturing\b|\bincluding\b|\bwhere\b|\bwhich\b",
                        re.IGNORECASE)
-_NUMBER_WORDS = {
-    "ten": 10, "fifteen": 15, "twenty": 20, "thirty": 30, "forty": 40, "fifty": 50, "sixty": 60,
-    "seventy": 70, "eighty": 80, "ninety": 90, "hundred": 100, "one hundred": 100,
-    "two hundred": 200, "three hundred": 300, "four hundred": 400, "five hundred": 500,
+_UNITS = {
+    "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8, "nine": 9,
+    "ten": 10, "eleven": 11, "twelve": 12, "thirteen": 13, "fourteen": 14, "fifteen": 15, "sixteen": 16,
+    "seventeen": 17, "eighteen": 18, "nineteen": 19, "twenty": 20, "thirty": 30, "forty": 40, "fifty": 50,
+    "sixty": 60, "seventy": 70, "eighty": 80, "ninety": 90,
 }
-_UNIT = r"(?:m2|m\^2|m²|sqm|sq\.?\s?m\.?|square\s+met(?:er|re)s?)(?![a-z0-9])"
+_SCALES = {"hundred": 100, "thousand": 1000}
+_NUMBER_WORD = r"(?:" + "|".join(sorted([*_UNITS, *_SCALES], key=len, reverse=True)) + r")"
+_NUMBER_PHRASE = rf"(?:a\s+)?{_NUMBER_WORD}(?:(?:\s+and\s+|[\s-]+){_NUMBER_WORD})*"
+"""A number in words: "thirty", "seventy-five", "one hundred and twenty", "a thousand"."""
+SQ_FT_M2 = 0.09290304
+"""Square metres in a square foot."""
+_M2_UNIT = r"(?:m2|m\^2|m²|sqm|sq\.?\s?m\.?|square[\s-]+met(?:er|re)s?|m(?:et(?:er|re)s?)?\s+squared)"
+_FT2_UNIT = r"(?:sq\.?\s?ft\.?|sqft|square[\s-]+f(?:ee|oo)t|ft2|ft²|sf)"
 _AREA_RE = re.compile(
-    r"(?<![\w.])(\d{1,5}(?:[.,]\d+)?|" + "|".join(sorted(_NUMBER_WORDS, key=len, reverse=True))
-    + r")\s*-?\s*" + _UNIT,
+    r"(?<![\w.,])(?<!\d\s)(\d{1,3}(?:,\d{3})+(?![\d,])|\d{1,5}(?:[.,]\d+)?|" + _NUMBER_PHRASE + r")\s*-?\s*"
+    r"(?:(" + _M2_UNIT + r")|(" + _FT2_UNIT + r"))(?![a-z0-9²])",
     re.IGNORECASE,
 )
+"""A stated area: a number (digits, "1,200", words) and a unit of square metres or square
+feet ("50 m2", "120 sqm", "a 140-square-metre home", "1,200 sq ft")."""
+
+
+def _number(text: str) -> float:
+    """The value of a number written in digits ("1,200": thousands; "12,5": a decimal
+    comma) or in words ("one hundred and twenty")."""
+    t = text.lower().strip()
+    if t[0].isdigit():
+        if re.fullmatch(r"\d{1,3}(?:,\d{3})+", t):
+            return float(t.replace(",", ""))
+        return float(t.replace(",", "."))
+    total, part = 0, 0
+    for w in re.findall(r"[a-z]+", t):
+        if w in _UNITS:
+            part += _UNITS[w]
+        elif w == "hundred":
+            part = max(part, 1) * 100
+        elif w == "thousand":
+            total += max(part, 1) * 1000
+            part = 0
+    return float(total + part)
 
 
 # ---------------------------------------------------------------------- results
@@ -374,8 +404,7 @@ def read_size(text: str, kb: KnowledgeBase) -> tuple[tuple[str, ...], float | No
     for m in _AREA_RE.finditer(text):
         if _names_a_room(text[m.end():], kb, m.start() < head_end):
             continue
-        num = m.group(1).lower()
-        area = float(_NUMBER_WORDS[num]) if num in _NUMBER_WORDS else float(num.replace(",", "."))
+        area = _number(m.group(1)) * (SQ_FT_M2 if m.group(3) else 1.0)
         break
     return tuple(words), area
 

@@ -652,6 +652,8 @@ def _opening_building(kb: KnowledgeBase, text: str, known_start: int, taken: lis
     s = fnp[2] - len(head)
     if any(a < fnp[2] and s < b for a, b in taken) or head in ov.non_objects(kb) or head in vocabulary(kb).forms:
         return None
+    if head in size_factors(kb):  # "a small 65 m2 house", "a grand, rambling house": a size, not a building
+        return None
     mb = ov.map_building(head, kb)
     return (mb.key, (s, fnp[2]), head, mb.score) if mb is not None else None
 
@@ -860,6 +862,31 @@ def _size_words(kb: KnowledgeBase, text: str, start: int, p: Parsed) -> None:
             break
         if (words.get(tok) or {}).get("total_m2") and tok not in p.size_words:
             p.size_words.append(tok)
+
+
+HEAD_END = re.compile(r",|;|:|\.\s|\(|\bwith\b|\bfeaturing\b|\bincluding\b|\bwhere\b|\bwhich\b")
+"""Where the head of the text ends: the words before it describe the whole building."""
+
+
+def _head_size_words(kb: KnowledgeBase, text: str, p: Parsed) -> None:
+    """Size words (programs.yaml sizes.words with a ``total_m2``) anywhere in the head of
+    the text (before the first comma, "with", "featuring"...) that are not followed by a
+    room in the words after them ("a grand old Victorian brick house"; not "a large
+    kitchen and a house"): the whole building's size, as the evaluator reads it."""
+    words = ((kb.raw("programs").get("sizes") or {}).get("words")) or {}
+    voc = vocabulary(kb)
+    end = HEAD_END.search(text)
+    head = text[: end.start()] if end else text
+    toks = _tokens(head)
+    for i, (tok, _, _) in enumerate(toks):
+        if not (words.get(tok) or {}).get("total_m2") or tok in p.size_words:
+            continue
+        nxt = " ".join(t for t, _, _ in toks[i + 1 : i + 4])
+        room = max((len(f) for f in _prefixes(nxt) if f in voc.forms and voc.forms[f][0].kind == "room"), default=0)
+        building = max((len(f) for f in _prefixes(nxt) if f in _building_words(kb)), default=0)
+        if room > building and nxt.split()[:1] != [tok]:
+            continue
+        p.size_words.append(tok)
 
 
 def _apply_codes(text: str, p: Parsed, taken: list[tuple[int, int]]) -> None:
@@ -1588,6 +1615,7 @@ def parse(text: str, kb: KnowledgeBase | None = None) -> Parsed:
     _find_levels(norm, p)
     _stated_area(kb, norm, p, taken)
     span = _parse_building(kb, norm, p, taken)
+    _head_size_words(kb, norm, p)
     if span:
         taken.append(span)
         if (down := IN_A_BASEMENT.match(norm, span[1])) is not None:  # "a cocktail bar in a basement"
