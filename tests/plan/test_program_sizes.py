@@ -189,6 +189,16 @@ def test_a_stated_total_is_honoured_within_ten_percent(text, m2):
         assert not any("stated" in w for w in spec.warnings)
 
 
+def test_an_area_per_floor_and_an_area_of_land():
+    assert parse("a two-storey house with 60 m2 per floor").total_m2 == pytest.approx(120.0)
+    assert parse("a three storey townhouse, 50 square metres on each floor").total_m2 == pytest.approx(150.0)
+    assert parse("a house on a 500 m2 plot with three bedrooms").total_m2 is None
+    assert parse("a 120 m2 house on a 600 m2 plot").total_m2 == pytest.approx(120.0)
+    assert parse("a 90 m2 two bedroom flat").total_m2 == pytest.approx(90.0)
+    assert parse("a studio of 27,5 m2").total_m2 == pytest.approx(27.5)  # a decimal comma
+    assert parse("a 1,200 sq ft house").total_m2 == pytest.approx(1200 * 0.09290304)  # thousands
+
+
 def test_the_number_of_an_area_counts_no_rooms():
     p = parse("a 120 sqm house with a kitchen")
     assert p.total_rooms is None

@@ -799,7 +799,7 @@ _AREA_WORDS = ("ten", "eleven", "twelve", "thirteen", "fourteen", "fifteen", "si
 such as "one hundred and twenty" are figures by then, see :func:`rewrite_numbers`)."""
 
 _AREA = re.compile(
-    r"\b(\d{1,6}(?:\.\d+)?|" + "|".join(_AREA_WORDS) + r")[\s-]*(m2|m²|m\^2|sqm|sq\.? ?m(?:et(?:er|re)s?)?\.?|square met(?:er|re)s?|m(?:et(?:er|re)s?)? squared|"
+    r"\b(\d{1,6}(?:\.\d+|,\d{1,2}(?!\d))?|" + "|".join(_AREA_WORDS) + r")[\s-]*(m2|m²|m\^2|sqm|sq\.? ?m(?:et(?:er|re)s?)?\.?|square met(?:er|re)s?|m(?:et(?:er|re)s?)? squared|"
     r"sq\.? ?ft\.?|sqft|square f(?:ee|oo)t|ft2|ft²|sf)(?![\w²])"
 )
 """A stated floor area: a number and a unit ("50 m2", "30 square meters", "500 sq ft")."""
@@ -807,18 +807,27 @@ _AREA = re.compile(
 SQ_FT_M2 = 0.09290304
 """Square metres in a square foot."""
 
+PER_STOREY = re.compile(r"\s*(?:per|a|each|on each|on every|for each|on all)\s+(?:floor|storey|story|level)\b")
+"""Words after an area that make it each storey's ("60 m2 per floor", "50 square metres
+on each floor"): the total is that times the storeys (a basement and an attic each one)."""
+
 
 def _stated_area(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[int, int]]) -> None:
     """The floor area the text states for the whole building ("a 50 m2 apartment", "about
-    30 square meters"); an area right before a room word ("a 12 m2 bedroom") is no total.
+    30 square meters"); an area right before a room word ("a 12 m2 bedroom") or a word
+    of the land (programs.yaml ``sizes.land_words``: "a 500 m2 plot") is no total.
     Every area's span joins ``taken``: its number counts nothing."""
     voc = vocabulary(kb)
+    land = set((kb.raw("programs").get("sizes") or {}).get("land_words") or [])
     for mt in _AREA.finditer(text):
         taken.append(mt.span())
         after = _tokens(text[mt.end() :])[:3]
         nxt = " ".join(t for t, _, _ in after)
+        if after and after[0][0] in land:  # "a house on a 500 m2 plot": the land's area
+            continue
         num = mt.group(1)
-        value = float(NUMBER_WORDS[num] if num in NUMBER_WORDS else num) * (SQ_FT_M2 if "f" in mt.group(2) or mt.group(2) == "sf" else 1.0)
+        value = float(NUMBER_WORDS[num] if num in NUMBER_WORDS else num.replace(",", "."))  # "12,5 m2"
+        value *= SQ_FT_M2 if "f" in mt.group(2) or mt.group(2) == "sf" else 1.0
         room = max((len(f) for f in _prefixes(nxt) if f in voc.forms and voc.forms[f][0].kind == "room"), default=0)
         building = max((len(f) for f in _prefixes(nxt) if f in _building_words(kb)), default=0)
         # "a 12 m2 bedroom"; "a 30 m2 studio flat" is the flat's; "a house with a 20 m2
@@ -828,6 +837,8 @@ def _stated_area(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[int,
             continue
         if p.total_m2 is None and value > 0:
             p.total_m2 = value
+            if PER_STOREY.match(text, mt.end()):  # "60 m2 per floor": every storey's
+                p.total_m2 = value * max(1, p.storeys + p.basement + p.attic)
 
 
 def _building_words(kb: KnowledgeBase) -> frozenset[str]:
