@@ -370,13 +370,14 @@ def _longest(tail: str, phrases: Sequence[str]) -> int:
     return max((len(p) for p in phrases if tail == p or tail.startswith(p + " ")), default=0)
 
 
-def _names_a_room(rest: str, kb: KnowledgeBase, in_head: bool) -> bool:
+def _names_a_room(rest: str, kb: KnowledgeBase, in_head: bool, area: bool = False) -> bool:
     """``rest`` (the text after a size word or area) names a room in its first words, up
     to the first punctuation or linking word ("a small balcony", "a 20 m2 master
     bedroom"; not "80 square meters with a balcony"), or the land (:data:`LAND_WORDS`: "a
     500 m2 plot"). A building word there wins over a shorter room phrase ("a 27 m2 studio
-    flat") and over a room phrase it follows ("a 90 m2 two bedroom flat"); a word that is
-    both ("office") is the building in the head of the prompt and a room after it."""
+    flat") and, after an ``area``, over a room phrase it follows ("a 90 m2 two bedroom
+    flat"; in "a large two bedroom flat" the size word stays the bedroom's); a word that
+    is both ("office") is the building in the head of the prompt and a room after it."""
     rest = re.split(r"[,.;:!?()]", rest.lower(), maxsplit=1)[0]
     words: list[str] = []
     for w in re.findall(r"[a-z'\-]+", rest):
@@ -389,7 +390,7 @@ def _names_a_room(rest: str, kb: KnowledgeBase, in_head: bool) -> bool:
     for start in range(min(3, len(words))):
         tail = " ".join(words[start:])
         r, b = _longest(tail, rooms), _longest(tail, buildings)
-        if r > b and _longest(tail[r:].strip(), buildings):  # "a 90 m2 two bedroom flat": the flat's
+        if area and r > b and _longest(tail[r:].strip(), buildings):  # "a 90 m2 two bedroom flat": the flat's
             return False
         if r or b:
             return r > b or (r == b and not in_head)
@@ -418,7 +419,7 @@ def read_size(text: str, kb: KnowledgeBase, levels: int = 1) -> tuple[tuple[str,
             words.append(w)
     area: float | None = None
     for m in _AREA_RE.finditer(text):
-        if _names_a_room(text[m.end():], kb, m.start() < head_end):
+        if _names_a_room(text[m.end():], kb, m.start() < head_end, area=True):
             continue
         area = _number(m.group(1)) * (SQ_FT_M2 if m.group(3) else 1.0)
         if PER_STOREY.match(text, m.end()):  # "60 m2 per floor": each of the house's levels

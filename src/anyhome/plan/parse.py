@@ -892,8 +892,14 @@ def _head_size_words(kb: KnowledgeBase, text: str, p: Parsed) -> None:
     for i, (tok, _, _) in enumerate(toks):
         if not (words.get(tok) or {}).get("total_m2") or tok in p.size_words:
             continue
-        nxt = " ".join(t for t, _, _ in toks[i + 1 : i + 4])
+        after = [t for t, _, _ in toks[i + 1 : i + 4]]
+        nxt = " ".join(after)
         room = max((len(f) for f in _prefixes(nxt) if f in voc.forms and voc.forms[f][0].kind == "room"), default=0)
+        counted = " ".join(after[1:])
+        if after and parse_number(after[0]) is not None and any(
+            f in voc.forms and voc.forms[f][0].kind == "room" for f in _prefixes(counted)
+        ):
+            continue  # "a large 2 bedroom flat": a count of rooms ends the size word's phrase
         building = max((len(f) for f in _prefixes(nxt) if f in _building_words(kb)), default=0)
         if room > building and nxt.split()[:1] != [tok]:
             continue
