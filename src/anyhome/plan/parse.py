@@ -1640,7 +1640,9 @@ def parse(text: str, kb: KnowledgeBase | None = None) -> Parsed:
             p.basement = bool(_BASEMENT.search(norm[: down.start()] + " " + norm[down.end() :]))
         elif (place := IN_A_PLACE.match(norm, span[1])) is not None:  # "... in a shopping arcade"
             taken.append(place.span())
-    mentions = _nouns_only(kb, norm, _joined_room_words(kb, norm, _find_mentions(kb, norm, p, taken)))
+    found = _joined_room_words(kb, norm, _find_mentions(kb, norm, p, taken))
+    mentions = _nouns_only(kb, norm, found)
+    taken.extend((m.start, m.end) for m in found if m not in mentions)  # "a snug little sitting room": an adjective, never a room
     tokens = _tokens(norm)
     spans = taken + [(m.start, m.end) for m in mentions]
     for m in mentions:
