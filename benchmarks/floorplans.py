@@ -69,8 +69,10 @@ SETS = {
     "heldout_storeys4": HERE / "prompts" / "heldout_storeys4.jsonl",
     "dev_storeys": HERE / "prompts" / "dev_storeys.jsonl",
     "dev_storeys2": HERE / "prompts" / "dev_storeys2.jsonl",
+    "dev_size": HERE / "prompts" / "dev_size.jsonl",
 }
-"""``dev``, ``dev_storeys`` and ``dev_storeys2`` (multi-storey homes) are the sets to tune on; the held-out sets are for measuring only."""
+"""``dev``, ``dev_storeys``, ``dev_storeys2`` (multi-storey homes) and ``dev_size`` (stated
+totals, grand homes) are the sets to tune on; the held-out sets are for measuring only."""
 OVERHANG_TOL_M2 = 1.0
 """An upper storey may hang over nothing by this much (wall thickness, rounding)."""
 SMALL_HOME_ROOMS = 8
@@ -126,10 +128,23 @@ def run_set(name: str, prompts: list[tuple[str, str]], seeds: list[int],
             log(f"{name:<12} {pid:<28} seed {seed}: {rep.plan.n_rooms:2d} rooms "
                 f"{rep.plan.total_area_m2:6.1f} m2 circ {rep.plan.circulation_share:.2f} "
                 f"corr {rep.plan.longest_corridor_m:4.1f} m fp {1000 * timer.times_s[-1]:.0f} ms "
-                f"viol {len(rep.violations)}")
+                f"viol {len(rep.violations)}{_size_note(rep.plan)}")
     summary = summarise(name, rows, timer.times_s)
     summary["failures"] = failures
     return summary
+
+
+def _size_note(p: PlanMetrics) -> str:
+    """What the evaluator read of the prompt's size, and its verdicts (empty when none)."""
+    parts = []
+    if p.size_words:
+        parts.append("/".join(p.size_words))
+    if p.stated_area_m2 is not None:
+        parts.append(f"stated {p.stated_area_m2:g} m2")
+    bad = [k for k in ("tiny_ok", "stated_area_ok", "mansion_ok") if getattr(p, k) is False]
+    if bad:
+        parts.append("MISSED " + ",".join(bad))
+    return (" | " + " ".join(parts)) if parts else ""
 
 
 def summarise(name: str, rows: list[tuple[str, int, PlanMetrics, int]], fp_times: list[float]) -> dict[str, Any]:

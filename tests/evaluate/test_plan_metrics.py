@@ -127,9 +127,25 @@ def test_open_air_rooms_by_type_and_name(kb) -> None:
     ("A 300 m2 office with a 20 m2 office for the boss.", (), 300.0),
     ("A house with a 20 m2 office.", (), None),
     ("A spacious loft, large and bright, with a 25 m2 master bedroom.", ("spacious",), None),
+    # numbers in words of several parts, thousands separators, hyphens, square feet
+    ("A house of one hundred and twenty square metres.", (), 120.0),
+    ("A seventy-five square metre flat.", (), 75.0),
+    ("A 140-square-metre home with a garden.", (), 140.0),
+    ("A 1,200 sq ft ranch house.", (), pytest.approx(1200 * 0.09290304)),
+    ("A home of about 2,000 square feet.", (), pytest.approx(2000 * 0.09290304)),
+    ("A flat of 12,5 m2.", (), 12.5),
+    ("A house with a 60 sq ft closet.", (), None),
+    ("A 90 m2 two bedroom flat.", (), 90.0),  # the flat's, not the bedroom's
+    ("A house on a 500 m2 plot with three bedrooms.", (), None),  # the land's
 ])
 def test_read_size(kb, text: str, words: tuple[str, ...], area: float | None) -> None:
     assert read_size(text, kb) == (words, area)
+
+
+def test_an_area_per_floor_counts_every_level(kb) -> None:
+    assert read_size("A two-storey house with 60 m2 per floor.", kb, levels=2) == ((), 120.0)
+    assert read_size("A townhouse, 50 square metres on each floor.", kb, levels=3) == ((), 150.0)
+    assert read_size("A two-storey house of 60 m2.", kb, levels=2) == ((), 60.0)
 
 
 def test_size_verdicts(kb) -> None:

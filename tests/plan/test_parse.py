@@ -271,6 +271,8 @@ def test_a_word_that_is_also_an_adjective_names_a_room_only_as_a_noun():
     assert rooms("A snug bedroom with a bed.") == ["bedroom"]
     assert rooms("The living room feels snug and warm.") == ["living room"]
     assert rooms("A cabin with solar panels and a buttery leather sofa.") == []
+    # the adjective is no room for the open vocabulary either (before: "snug little", a second living room)
+    assert [m.name for m in parse("A cottage with a kitchen and a snug little sitting room.").rooms] == ["kitchen", "sitting room"]
 
 
 def test_what_people_do_in_a_room_is_no_room_and_no_object():

@@ -139,6 +139,32 @@ def test_a_size_word_for_a_room_does_not_resize_the_home():
     assert p.rooms[0].size < 1
 
 
+@pytest.mark.parametrize(("text", "words"), [
+    ("A small 65 m2 house with two bedrooms", ["small"]),  # the number ends the opening phrase
+    ("A grand 1920s Art Deco house", ["grand"]),
+    ("A grand, rambling country house with a ballroom", ["grand"]),
+    ("A grand old Victorian brick house with a ballroom", ["grand"]),  # far from the building word
+    ("A house like a mansion", ["mansion"]),
+    ("A large kitchen and a small house", ["small"]),
+])
+def test_a_size_word_in_the_head_sizes_the_home_and_is_never_the_building(text, words):
+    p = parse(text)
+    assert p.size_words == words
+    assert RAW["programs"]["buildings"][p.building]["program"] == "home"  # not a chapel or a flat
+
+
+def test_the_strongest_of_several_size_words_sizes_the_home():
+    from anyhome.plan.program import choose_program, sizing
+
+    kb = _kb(lambda raw: None)
+    for text, least in [("A large mansion", 300), ("A large, grand house", 300), ("a small, tiny cabin", 0)]:
+        p = parse(text)
+        sz = sizing(kb, p, choose_program(kb, p)[0])
+        assert sz.source == "word" and sz.band is not None and sz.band[0] >= least, (text, sz.band)
+    p = parse("a small, tiny cabin")
+    assert sizing(kb, p, choose_program(kb, p)[0]).band[1] <= 45
+
+
 # ------------------------------------------------------------------ stated totals
 @pytest.mark.parametrize(
     ("text", "m2"),
@@ -161,6 +187,16 @@ def test_a_stated_total_is_honoured_within_ten_percent(text, m2):
         area = built_area_m2(spec, stage_rngs(seed)["floorplan"], solve_levels)
         assert area is not None and abs(area - m2) <= 0.10 * m2, (seed, area, total(spec))
         assert not any("stated" in w for w in spec.warnings)
+
+
+def test_an_area_per_floor_and_an_area_of_land():
+    assert parse("a two-storey house with 60 m2 per floor").total_m2 == pytest.approx(120.0)
+    assert parse("a three storey townhouse, 50 square metres on each floor").total_m2 == pytest.approx(150.0)
+    assert parse("a house on a 500 m2 plot with three bedrooms").total_m2 is None
+    assert parse("a 120 m2 house on a 600 m2 plot").total_m2 == pytest.approx(120.0)
+    assert parse("a 90 m2 two bedroom flat").total_m2 == pytest.approx(90.0)
+    assert parse("a studio of 27,5 m2").total_m2 == pytest.approx(27.5)  # a decimal comma
+    assert parse("a 1,200 sq ft house").total_m2 == pytest.approx(1200 * 0.09290304)  # thousands
 
 
 def test_the_number_of_an_area_counts_no_rooms():

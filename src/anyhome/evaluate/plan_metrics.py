@@ -27,7 +27,9 @@ length of a corridor
     minimum rotated rectangle.
 size words, stated total
     Read from the prompt by :func:`read_size` (this evaluator's own reading, independent
-    of the planner's).
+    of the planner's): square feet are converted to m2; an area "per floor" / "on each
+    floor" is multiplied by the house's levels; an area of the land ("a 500 m2 plot") is
+    no total.
 open air
     A room whose ``open_air`` flag is set, whose type is an open-air type
     (:data:`OPEN_AIR_TYPES`) or whose name says so (:data:`OPEN_AIR_NAME`). It "has a
@@ -137,17 +139,47 @@ SIZE_WORDS = {
 _SIZE_RE = re.compile(r"\b(" + "|".join(SIZE_WORDS) + r")\b", re.IGNORECASE)
 _HEAD_END = re.compile(r",|;|:|\.\s|\bwith\b|\bfeaturing\b|\bincluding\b|\bwhere\b|\bwhich\b",
                        re.IGNORECASE)
-_NUMBER_WORDS = {
-    "ten": 10, "fifteen": 15, "twenty": 20, "thirty": 30, "forty": 40, "fifty": 50, "sixty": 60,
-    "seventy": 70, "eighty": 80, "ninety": 90, "hundred": 100, "one hundred": 100,
-    "two hundred": 200, "three hundred": 300, "four hundred": 400, "five hundred": 500,
+_UNITS = {
+    "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8, "nine": 9,
+    "ten": 10, "eleven": 11, "twelve": 12, "thirteen": 13, "fourteen": 14, "fifteen": 15, "sixteen": 16,
+    "seventeen": 17, "eighteen": 18, "nineteen": 19, "twenty": 20, "thirty": 30, "forty": 40, "fifty": 50,
+    "sixty": 60, "seventy": 70, "eighty": 80, "ninety": 90,
 }
-_UNIT = r"(?:m2|m\^2|m²|sqm|sq\.?\s?m\.?|square\s+met(?:er|re)s?)(?![a-z0-9])"
+_SCALES = {"hundred": 100, "thousand": 1000}
+_NUMBER_WORD = r"(?:" + "|".join(sorted([*_UNITS, *_SCALES], key=len, reverse=True)) + r")"
+_NUMBER_PHRASE = rf"(?:a\s+)?{_NUMBER_WORD}(?:(?:\s+and\s+|[\s-]+){_NUMBER_WORD})*"
+"""A number in words: "thirty", "seventy-five", "one hundred and twenty", "a thousand"."""
+SQ_FT_M2 = 0.09290304
+"""Square metres in a square foot."""
+_M2_UNIT = r"(?:m2|m\^2|m²|sqm|sq\.?\s?m(?:et(?:er|re)s?)?\.?|square[\s-]+met(?:er|re)s?|m(?:et(?:er|re)s?)?\s+squared)"
+_FT2_UNIT = r"(?:sq\.?\s?ft\.?|sqft|square[\s-]+f(?:ee|oo)t|ft2|ft²|sf)"
 _AREA_RE = re.compile(
-    r"(?<![\w.])(\d{1,5}(?:[.,]\d+)?|" + "|".join(sorted(_NUMBER_WORDS, key=len, reverse=True))
-    + r")\s*-?\s*" + _UNIT,
+    r"(?<![\w.,])(?<!\d\s)(\d{1,3}(?:,\d{3})+(?![\d,])|\d{1,5}(?:[.,]\d+)?|" + _NUMBER_PHRASE + r")\s*-?\s*"
+    r"(?:(" + _M2_UNIT + r")|(" + _FT2_UNIT + r"))(?![a-z0-9²])",
     re.IGNORECASE,
 )
+"""A stated area: a number (digits, "1,200", words) and a unit of square metres or square
+feet ("50 m2", "120 sqm", "a 140-square-metre home", "1,200 sq ft")."""
+
+
+def _number(text: str) -> float:
+    """The value of a number written in digits ("1,200": thousands; "12,5": a decimal
+    comma) or in words ("one hundred and twenty")."""
+    t = text.lower().strip()
+    if t[0].isdigit():
+        if re.fullmatch(r"\d{1,3}(?:,\d{3})+", t):
+            return float(t.replace(",", ""))
+        return float(t.replace(",", "."))
+    total, part = 0, 0
+    for w in re.findall(r"[a-z]+", t):
+        if w in _UNITS:
+            part += _UNITS[w]
+        elif w == "hundred":
+            part = max(part, 1) * 100
+        elif w == "thousand":
+            total += max(part, 1) * 1000
+            part = 0
+    return float(total + part)
 
 
 # ---------------------------------------------------------------------- results
@@ -324,6 +356,13 @@ def _building_phrases(kb: KnowledgeBase) -> tuple[str, ...]:
     return tuple({w.lower() for b in kb.programs.buildings for w in b.words})
 
 
+PER_STOREY = re.compile(r"\s*(?:per|a|each|on each|on every|for each|on all)\s+(?:floor|storey|story|level)\b",
+                        re.IGNORECASE)
+"""Words after an area that make it each storey's ("60 m2 per floor"): the stated total is
+that times the house's levels."""
+LAND_WORDS = frozenset({"plot", "lot", "site", "land", "grounds", "parcel", "acreage", "yard", "backyard", "field"})
+"""An area right before one of these is the land's, not the building's ("a house on a
+500 m2 plot")."""
 _STOP_WORDS = frozenset({"with", "of", "and", "in", "for", "on", "including", "featuring", "plus", "or"})
 
 
@@ -331,12 +370,14 @@ def _longest(tail: str, phrases: Sequence[str]) -> int:
     return max((len(p) for p in phrases if tail == p or tail.startswith(p + " ")), default=0)
 
 
-def _names_a_room(rest: str, kb: KnowledgeBase, in_head: bool) -> bool:
+def _names_a_room(rest: str, kb: KnowledgeBase, in_head: bool, area: bool = False) -> bool:
     """``rest`` (the text after a size word or area) names a room in its first words, up
     to the first punctuation or linking word ("a small balcony", "a 20 m2 master
-    bedroom"; not "80 square meters with a balcony"). A building word there wins over a
-    shorter room phrase ("a 27 m2 studio flat"); a word that is both ("office") is the
-    building in the head of the prompt and a room after it."""
+    bedroom"; not "80 square meters with a balcony"), or the land (:data:`LAND_WORDS`: "a
+    500 m2 plot"). A building word there wins over a shorter room phrase ("a 27 m2 studio
+    flat") and, after an ``area``, over a room phrase it follows ("a 90 m2 two bedroom
+    flat"; in "a large two bedroom flat" the size word stays the bedroom's); a word that
+    is both ("office") is the building in the head of the prompt and a room after it."""
     rest = re.split(r"[,.;:!?()]", rest.lower(), maxsplit=1)[0]
     words: list[str] = []
     for w in re.findall(r"[a-z'\-]+", rest):
@@ -344,22 +385,28 @@ def _names_a_room(rest: str, kb: KnowledgeBase, in_head: bool) -> bool:
             break
         words.append(w)
     rooms, buildings = _room_phrases(kb), _building_phrases(kb)
+    if words and words[0] in LAND_WORDS:  # "a 500 m2 plot": the land, not a floor
+        return True
     for start in range(min(3, len(words))):
         tail = " ".join(words[start:])
         r, b = _longest(tail, rooms), _longest(tail, buildings)
+        if area and r > b and _longest(tail[r:].strip(), buildings):  # "a 90 m2 two bedroom flat": the flat's
+            return False
         if r or b:
             return r > b or (r == b and not in_head)
     return False
 
 
-def read_size(text: str, kb: KnowledgeBase) -> tuple[tuple[str, ...], float | None]:
+def read_size(text: str, kb: KnowledgeBase, levels: int = 1) -> tuple[tuple[str, ...], float | None]:
     """The size words and the stated total area (m2) of a prompt.
 
     A size word counts when it stands in the head of the prompt (before the first
     comma, "with", "featuring"...) and is not followed by a room ("a small balcony"
     sizes the balcony). An area ("50 m2", "about 80 square meters", "120 sqm", "thirty
-    square metres") counts anywhere unless a room follows it ("a 20 m2 living room");
-    the first that counts is the stated total.
+    square metres", "one hundred and twenty square metres", "1,200 sq ft" in m2) counts
+    anywhere unless a room or the land follows it ("a 20 m2 living room", "a 500 m2
+    plot"); the first that counts is the stated total, times ``levels`` when it is each
+    storey's ("60 m2 per floor").
     """
     end = _HEAD_END.search(text)
     head_end = end.start() if end else len(text)
@@ -372,10 +419,11 @@ def read_size(text: str, kb: KnowledgeBase) -> tuple[tuple[str, ...], float | No
             words.append(w)
     area: float | None = None
     for m in _AREA_RE.finditer(text):
-        if _names_a_room(text[m.end():], kb, m.start() < head_end):
+        if _names_a_room(text[m.end():], kb, m.start() < head_end, area=True):
             continue
-        num = m.group(1).lower()
-        area = float(_NUMBER_WORDS[num]) if num in _NUMBER_WORDS else float(num.replace(",", "."))
+        area = _number(m.group(1)) * (SQ_FT_M2 if m.group(3) else 1.0)
+        if PER_STOREY.match(text, m.end()):  # "60 m2 per floor": each of the house's levels
+            area *= max(1, levels)
         break
     return tuple(words), area
 
@@ -550,7 +598,7 @@ def plan_metrics(house: House, kb: KnowledgeBase) -> PlanMetrics:
     living = [m for m in rooms if m.type == "living_room"]
     building = str(house.building)
     home = is_home(house, kb)
-    words, stated = read_size(house.prompt, kb)
+    words, stated = read_size(house.prompt, kb, levels=len({_level(r) for r in house.rooms}) or 1)
     tiny_ok = total <= TINY_MAX_M2 if home and "tiny" in words else None
     mansion_ok = total >= MANSION_MIN_M2 if home and ("mansion" in words or "grand" in words) else None
     stated_ok = abs(total - stated) <= STATED_TOL * stated if stated else None

@@ -198,6 +198,8 @@ class Sizes(_Model):
         default=1.0, description="most of a home's planned area its entries and hallways take")
     add: list[AddedRoom] = Field(default_factory=list, description="rooms a home gains when its total needs more")
     words: dict[Word, SizeWord] = Field(default_factory=dict)
+    land_words: list[Word] = Field(default_factory=list, description=(
+        "words after an area that make it the land's, not the building's ('a 500 m2 plot')"))
     kinds: dict[Word, BuildingKind] = Field(default_factory=dict)
     draw: SizeDraw | None = Field(default=None, description="how far one house's rooms vary from the ranges' draws")
 

@@ -176,8 +176,9 @@ class OfflinePlanner:
             if parsed.total_m2 is not None:  # aim at the stated figure itself
                 t = float(parsed.total_m2)
                 band = (t * (1 - CALIBRATION_TOLERANCE), t * (1 + CALIBRATION_TOLERANCE))
-            else:  # "a tiny cabin": anywhere in the word's range
-                band = sz.band
+            else:  # "a tiny cabin": within the word's range, clear of its edges
+                lo, hi = sz.band
+                band = (lo * (1 + WORD_BAND_MARGIN), hi * (1 - WORD_BAND_MARGIN)) if lo > 0 else (lo, hi * (1 - WORD_BAND_MARGIN))
             spec = calibrate_total(kb, spec, slots, band, np.random.default_rng(int(rng.integers(2**32))),
                                    self.floorplan)
         return spec
@@ -191,6 +192,11 @@ CALIBRATION_TOLERANCE = 0.03
 """A stated total is met when the probes' mean built area is within this fraction of it
 (the bar is 15 %: one layout differs from the probes' mean; at 6 % a flat whose probes
 came out 6 % over was kept and one layout of it 12 % over)."""
+
+WORD_BAND_MARGIN = 0.06
+"""A size word's range is aimed at this fraction inside each of its edges: one layout
+differs from the probes' mean by up to about this much, so a grand home whose probes came
+out at 305 m2 was built at 292 (issue 13's bar: "grand" at least 300 m2)."""
 
 
 def built_area_m2(spec: HouseSpec, rng: np.random.Generator, floorplan: FloorplanStage) -> float | None:

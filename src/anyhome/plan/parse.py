@@ -685,6 +685,8 @@ def _opening_building(kb: KnowledgeBase, text: str, known_start: int, taken: lis
     s = fnp[2] - len(head)
     if any(a < fnp[2] and s < b for a, b in taken) or head in ov.non_objects(kb) or head in vocabulary(kb).forms:
         return None
+    if head in size_factors(kb):  # "a small 65 m2 house", "a grand, rambling house": a size, not a building
+        return None
     mb = ov.map_building(head, kb)
     return (mb.key, (s, fnp[2]), head, mb.score) if mb is not None else None
 
@@ -830,7 +832,7 @@ _AREA_WORDS = ("ten", "eleven", "twelve", "thirteen", "fourteen", "fifteen", "si
 such as "one hundred and twenty" are figures by then, see :func:`rewrite_numbers`)."""
 
 _AREA = re.compile(
-    r"\b(\d{1,6}(?:\.\d+)?|" + "|".join(_AREA_WORDS) + r")[\s-]*(m2|m²|m\^2|sqm|sq\.? ?m(?:et(?:er|re)s?)?\.?|square met(?:er|re)s?|m(?:et(?:er|re)s?)? squared|"
+    r"\b(\d{1,6}(?:\.\d+|,\d{1,2}(?!\d))?|" + "|".join(_AREA_WORDS) + r")[\s-]*(m2|m²|m\^2|sqm|sq\.? ?m(?:et(?:er|re)s?)?\.?|square met(?:er|re)s?|m(?:et(?:er|re)s?)? squared|"
     r"sq\.? ?ft\.?|sqft|square f(?:ee|oo)t|ft2|ft²|sf)(?![\w²])"
 )
 """A stated floor area: a number and a unit ("50 m2", "30 square meters", "500 sq ft")."""
@@ -838,18 +840,27 @@ _AREA = re.compile(
 SQ_FT_M2 = 0.09290304
 """Square metres in a square foot."""
 
+PER_STOREY = re.compile(r"\s*(?:per|a|each|on each|on every|for each|on all)\s+(?:floor|storey|story|level)\b")
+"""Words after an area that make it each storey's ("60 m2 per floor", "50 square metres
+on each floor"): the total is that times the storeys (a basement and an attic each one)."""
+
 
 def _stated_area(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[int, int]]) -> None:
     """The floor area the text states for the whole building ("a 50 m2 apartment", "about
-    30 square meters"); an area right before a room word ("a 12 m2 bedroom") is no total.
+    30 square meters"); an area right before a room word ("a 12 m2 bedroom") or a word
+    of the land (programs.yaml ``sizes.land_words``: "a 500 m2 plot") is no total.
     Every area's span joins ``taken``: its number counts nothing."""
     voc = vocabulary(kb)
+    land = set((kb.raw("programs").get("sizes") or {}).get("land_words") or [])
     for mt in _AREA.finditer(text):
         taken.append(mt.span())
         after = _tokens(text[mt.end() :])[:3]
         nxt = " ".join(t for t, _, _ in after)
+        if after and after[0][0] in land:  # "a house on a 500 m2 plot": the land's area
+            continue
         num = mt.group(1)
-        value = float(NUMBER_WORDS[num] if num in NUMBER_WORDS else num) * (SQ_FT_M2 if "f" in mt.group(2) or mt.group(2) == "sf" else 1.0)
+        value = float(NUMBER_WORDS[num] if num in NUMBER_WORDS else num.replace(",", "."))  # "12,5 m2"
+        value *= SQ_FT_M2 if "f" in mt.group(2) or mt.group(2) == "sf" else 1.0
         room = max((len(f) for f in _prefixes(nxt) if f in voc.forms and voc.forms[f][0].kind == "room"), default=0)
         building = max((len(f) for f in _prefixes(nxt) if f in _building_words(kb)), default=0)
         # "a 12 m2 bedroom"; "a 30 m2 studio flat" is the flat's; "a house with a 20 m2
@@ -859,6 +870,8 @@ def _stated_area(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[int,
             continue
         if p.total_m2 is None and value > 0:
             p.total_m2 = value
+            if PER_STOREY.match(text, mt.end()):  # "60 m2 per floor": every storey's
+                p.total_m2 = value * max(1, p.storeys + p.basement + p.attic)
 
 
 def _building_words(kb: KnowledgeBase) -> frozenset[str]:
@@ -893,6 +906,37 @@ def _size_words(kb: KnowledgeBase, text: str, start: int, p: Parsed) -> None:
             break
         if (words.get(tok) or {}).get("total_m2") and tok not in p.size_words:
             p.size_words.append(tok)
+
+
+HEAD_END = re.compile(r",|;|:|\.\s|\(|\bwith\b|\bfeaturing\b|\bincluding\b|\bwhere\b|\bwhich\b")
+"""Where the head of the text ends: the words before it describe the whole building."""
+
+
+def _head_size_words(kb: KnowledgeBase, text: str, p: Parsed) -> None:
+    """Size words (programs.yaml sizes.words with a ``total_m2``) anywhere in the head of
+    the text (before the first comma, "with", "featuring"...) that are not followed by a
+    room in the words after them ("a grand old Victorian brick house"; not "a large
+    kitchen and a house"): the whole building's size, as the evaluator reads it."""
+    words = ((kb.raw("programs").get("sizes") or {}).get("words")) or {}
+    voc = vocabulary(kb)
+    end = HEAD_END.search(text)
+    head = text[: end.start()] if end else text
+    toks = _tokens(head)
+    for i, (tok, _, _) in enumerate(toks):
+        if not (words.get(tok) or {}).get("total_m2") or tok in p.size_words:
+            continue
+        after = [t for t, _, _ in toks[i + 1 : i + 4]]
+        nxt = " ".join(after)
+        room = max((len(f) for f in _prefixes(nxt) if f in voc.forms and voc.forms[f][0].kind == "room"), default=0)
+        counted = " ".join(after[1:])
+        if after and parse_number(after[0]) is not None and any(
+            f in voc.forms and voc.forms[f][0].kind == "room" for f in _prefixes(counted)
+        ):
+            continue  # "a large 2 bedroom flat": a count of rooms ends the size word's phrase
+        building = max((len(f) for f in _prefixes(nxt) if f in _building_words(kb)), default=0)
+        if room > building and nxt.split()[:1] != [tok]:
+            continue
+        p.size_words.append(tok)
 
 
 def _apply_codes(text: str, p: Parsed, taken: list[tuple[int, int]]) -> None:
@@ -1684,6 +1728,7 @@ def parse(text: str, kb: KnowledgeBase | None = None) -> Parsed:
     _find_levels(norm, p)
     _stated_area(kb, norm, p, taken)
     span = _parse_building(kb, norm, p, taken)
+    _head_size_words(kb, norm, p)
     if span:
         taken.append(span)
         if (down := IN_A_BASEMENT.match(norm, span[1])) is not None:  # "a cocktail bar in a basement"
@@ -1691,7 +1736,9 @@ def parse(text: str, kb: KnowledgeBase | None = None) -> Parsed:
             p.basement = bool(_BASEMENT.search(norm[: down.start()] + " " + norm[down.end() :]))
         elif (place := IN_A_PLACE.match(norm, span[1])) is not None:  # "... in a shopping arcade"
             taken.append(place.span())
-    mentions = _nouns_only(kb, norm, _joined_room_words(kb, norm, _find_mentions(kb, norm, p, taken)))
+    found = _joined_room_words(kb, norm, _find_mentions(kb, norm, p, taken))
+    mentions = _nouns_only(kb, norm, found)
+    taken.extend((m.start, m.end) for m in found if m not in mentions)  # "a snug little sitting room": an adjective, never a room
     tokens = _tokens(norm)
     spans = taken + [(m.start, m.end) for m in mentions]
     for m in mentions:

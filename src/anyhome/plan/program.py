@@ -1095,6 +1095,23 @@ def is_dwelling(kb: KnowledgeBase, program: str | None) -> bool:
     return program in set(_sizes(kb).get("homes", []))
 
 
+def strongest_first(found: list[str], words: dict) -> list[str]:
+    """The size words of a text, the one that sizes the building first: when all of them
+    with a ``total_m2`` point the same way ("a large, grand house", "a large mansion"), the
+    strongest (the highest least total; "a small, tiny cabin": the lowest most total); words that point
+    both ways keep the text's order."""
+    sized = [w for w in found if (words.get(w) or {}).get("total_m2")]
+    ups = [w for w in sized if float(words[w].get("factor", 1.0)) >= 1.0]  # "mansion" (1.0) sizes up
+    downs = [w for w in sized if float(words[w].get("factor", 1.0)) < 1.0]
+    if len(sized) < 2 or (ups and downs):
+        return list(found)
+    if ups:
+        best = max(ups, key=lambda w: float(words[w]["total_m2"][0]))
+    else:
+        best = min(downs, key=lambda w: float(words[w]["total_m2"][1]))
+    return [best, *(w for w in found if w != best)]
+
+
 def sizing(kb: KnowledgeBase, parsed: Parsed, program: str | None) -> Sizing:
     """The building kind's sizes and the total the text asks for; a home that must stay
     below ``compact.below_m2`` and has no bedrooms asked for becomes the compact program
@@ -1112,7 +1129,7 @@ def sizing(kb: KnowledgeBase, parsed: Parsed, program: str | None) -> Sizing:
     if one_room:  # a studio is one room and a bathroom, whatever its total
         sz.add = []
     word_band = None
-    for w in parsed.size_words:
+    for w in strongest_first(parsed.size_words, sizes.get("words", {})):
         if one_room and sizes.get("words", {}).get(w):  # "a small studio": smaller rooms, not a home's total
             sz.scale = float(sizes["words"][w].get("factor", 1.0))
             if sizes["words"][w].get("total_m2") and program in homes:  # "a tiny house": never more than its total
