@@ -26,7 +26,7 @@ def to_postfix(tree: Cut | int) -> list[Token]:
     return [*to_postfix(tree.low), *to_postfix(tree.high), "V" if tree.axis == 0 else "H"]
 
 
-def from_postfix(expr: list[Token], rect: Rect, weights: np.ndarray) -> Cut | int:
+def from_postfix(expr: list[Token], rect: Rect, weights: np.ndarray | list[float]) -> Cut | int:
     """Tree of an expression, cuts placed by the leaves' ``weights`` (target cells)."""
     stack: list[tuple[Cut | int, float]] = []
     fractions: dict[int, float] = {}  # id(cut): the low side's share of its area
@@ -91,11 +91,11 @@ def anneal(tree: Cut | int, rect: Rect, rooms: TuneRooms, rng: np.random.Generat
             expr, cost = cand, c
             if c < best_cost:
                 best, best_cost, found_at = list(cand), c, step
-    return from_postfix(best, rect, rooms.target_cells)
+    return from_postfix(best, rect, rooms.lists.target_cells)
 
 
 def _cost(expr: list[Token], rect: Rect, rooms: TuneRooms) -> float:
-    return layout_cost(tree_rects(from_postfix(expr, rect, rooms.target_cells), rect), rect, rooms)
+    return layout_cost(tree_rects(from_postfix(expr, rect, rooms.lists.target_cells), rect), rect, rooms)
 
 
 def _move(expr: list[Token], rng: np.random.Generator) -> list[Token] | None:

@@ -11,6 +11,7 @@ U-shaped one a rectangle whose void must touch one side of it only (a notch in i
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 
 import numpy as np
@@ -47,6 +48,26 @@ class SliceRooms:
     """Outline sides the void must touch: 2 (a corner, an L) or 1 (a notch, a U)."""
     min_long: np.ndarray | None = None
     """Shortest long side (m) each room may have (0: any; a stairwell: its stair)."""
+
+    @functools.cached_property
+    def lists(self) -> _SliceLists:
+        """The per-room arrays as Python lists (the scores read them per room, per cut:
+        a list is read faster than an array, and the numbers are the same)."""
+        return _SliceLists(self.min_side.tolist(), self.corridor.tolist(), self.exterior.tolist(),
+                           self.max_aspect.tolist(), None if self.min_long is None else self.min_long.tolist(),
+                           self.pos.tolist())
+
+
+@dataclass(frozen=True)
+class _SliceLists:
+    """:class:`SliceRooms`' per-room arrays as lists (``pos``: one [x, y] per room)."""
+
+    min_side: list[float]
+    corridor: list[bool]
+    exterior: list[bool]
+    max_aspect: list[float]
+    min_long: list[float] | None
+    pos: list[list[float]]
 
 
 @dataclass
@@ -126,7 +147,8 @@ def _ranked_cuts(rect, ids, ext, ports, rooms: SliceRooms, rng=None) -> list[tup
 def _splits(ids: list[int], rooms: SliceRooms):
     """(axis, low rooms, high rooms): prefixes of the seed order, and graph bipartitions."""
     for axis in (0, 1):
-        order = sorted(ids, key=lambda k: rooms.pos[k, axis])
+        pos = rooms.lists.pos
+        order = sorted(ids, key=lambda k: pos[k][axis])
         for i in range(1, len(order)):
             yield axis, order[:i], order[i:]
     for side_a, side_b in _edge_bipartitions(ids, rooms):
@@ -211,7 +233,7 @@ def _leaves_cost(leaves: dict[int, Rect], rect: Rect, ext: Ext, ports: Ports, ro
             continue
         cost += _room_shape_score(k, min(w, h), max(w, h), _leaf_ext(r, rect, ext), rooms)
         cost += sum(_side_deficit(r, rect, side, cell, opts) for side in ports.get(k, ()))
-        if rooms.exterior[k]:
+        if rooms.lists.exterior[k]:
             cost += min((_side_deficit(r, rect, side, cell, opts) for side in range(4) if ext[side]), default=opts.slice_infeasible_cost)
     return cost
 
@@ -285,7 +307,8 @@ def _part_score(rect: Rect, ids: list[int], ext: Ext, ports: Ports, rooms: Slice
     score = _exterior_score(ids, ext, w_m, h_m, rooms) + _port_score(ids, ports, opts)
     if len(ids) == 1:
         return score + _room_shape_score(ids[0], short, long_, ext, rooms)
-    if short < rooms.min_side[ids].min() - 1e-6:
+    min_side = rooms.lists.min_side
+    if short < min(min_side[k] for k in ids) - 1e-6:
         score += opts.slice_infeasible_cost
     return score + opts.slice_part_aspect_weight * max(0.0, long_ / short - opts.slice_part_aspect_soft)
 
@@ -298,20 +321,22 @@ def _room_shape_score(k: int, short: float, long_: float, ext: Ext, rooms: Slice
         else:
             placed = bool((ext[0] or ext[1]) and (ext[2] or ext[3]))
         return 0.0 if placed else opts.slice_infeasible_cost
-    score = opts.slice_infeasible_cost if short < rooms.min_side[k] - 1e-6 else 0.0
-    if rooms.min_long is not None and long_ < rooms.min_long[k] - 1e-6:
+    lists = rooms.lists
+    score = opts.slice_infeasible_cost if short < lists.min_side[k] - 1e-6 else 0.0
+    if lists.min_long is not None and long_ < lists.min_long[k] - 1e-6:
         score += opts.slice_infeasible_cost
-    if rooms.corridor[k]:
+    if lists.corridor[k]:
         return score
     aspect = long_ / short
-    if aspect > rooms.max_aspect[k]:
+    if aspect > lists.max_aspect[k]:
         score += opts.slice_infeasible_cost
     return score + max(0.0, aspect - opts.slice_room_aspect_soft)
 
 
 def _exterior_score(ids: list[int], ext: Ext, w_m: float, h_m: float, rooms: SliceRooms) -> float:
     opts = rooms.opts
-    need = int(rooms.exterior[ids].sum())
+    exterior = rooms.lists.exterior
+    need = sum(1 for k in ids if exterior[k])
     if need == 0:
         return 0.0
     have = (ext[0] + ext[1]) * h_m + (ext[2] + ext[3]) * w_m

@@ -8,6 +8,7 @@ climbing takes the best single-cut nudge per round, for a bounded number of roun
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 
 import numpy as np
@@ -36,6 +37,27 @@ class TuneRooms:
     void_sides: int = 2
     """Outline sides the void must touch: 2 (a corner: free, the slicing placed it) or 1
     (the notch of a U: a void touching another number of sides costs)."""
+
+    @functools.cached_property
+    def lists(self) -> _RoomLists:
+        """The per-room arrays as Python lists (the costs read them per room, per move:
+        a list is read faster than an array, and the numbers are the same)."""
+        return _RoomLists(
+            self.target_cells.tolist(), self.min_side_m.tolist(), self.corridor.tolist(), self.max_aspect.tolist(),
+            None if self.min_long_m is None else self.min_long_m.tolist(), np.flatnonzero(self.exterior).tolist())
+
+
+@dataclass(frozen=True)
+class _RoomLists:
+    """:class:`TuneRooms`' per-room arrays as lists; ``exterior``: the indices of the
+    rooms that need an exterior wall."""
+
+    target_cells: list[float]
+    min_side_m: list[float]
+    corridor: list[bool]
+    max_aspect: list[float]
+    min_long_m: list[float] | None
+    exterior: list[int]
 
 
 def tune_tree(tree: Cut | int, rect: Rect, rooms: TuneRooms) -> float:
@@ -78,7 +100,7 @@ def layout_cost(rects: dict[int, Rect], outer: Rect, rooms: TuneRooms) -> float:
         v = rects[rooms.void]
         sides = (v[0] == outer[0]) + (v[2] == outer[2]) + (v[1] == outer[1]) + (v[3] == outer[3])
         cost += opts.tune_violation_weight * abs(int(sides) - 1)
-    for k in np.flatnonzero(rooms.exterior).tolist():
+    for k in rooms.lists.exterior:
         ext = _exterior(rects[k], outer, rects.get(rooms.void) if rooms.void is not None else None) * rooms.cell_m
         cost += opts.tune_violation_weight * max(0.0, opts.exterior_wall_min_m - ext)
     return cost
@@ -86,14 +108,15 @@ def layout_cost(rects: dict[int, Rect], outer: Rect, rooms: TuneRooms) -> float:
 
 def _room_cost(k: int, r: Rect, rooms: TuneRooms) -> float:
     opts = rooms.opts
+    lists = rooms.lists
     w, h = (r[2] - r[0]) * rooms.cell_m, (r[3] - r[1]) * rooms.cell_m
-    err = abs((r[2] - r[0]) * (r[3] - r[1]) / rooms.target_cells[k] - 1.0)
+    err = abs((r[2] - r[0]) * (r[3] - r[1]) / lists.target_cells[k] - 1.0)
     cost = opts.tune_violation_weight * max(0.0, err - opts.tune_area_slack_frac)
-    cost += opts.tune_violation_weight * max(0.0, rooms.min_side_m[k] - min(w, h))
-    if rooms.min_long_m is not None:
-        cost += opts.tune_violation_weight * max(0.0, rooms.min_long_m[k] - max(w, h))
-    if not rooms.corridor[k]:
-        cost += opts.tune_aspect_weight * max(0.0, max(w, h) / min(w, h) - rooms.max_aspect[k])
+    cost += opts.tune_violation_weight * max(0.0, lists.min_side_m[k] - min(w, h))
+    if lists.min_long_m is not None:
+        cost += opts.tune_violation_weight * max(0.0, lists.min_long_m[k] - max(w, h))
+    if not lists.corridor[k]:
+        cost += opts.tune_aspect_weight * max(0.0, max(w, h) / min(w, h) - lists.max_aspect[k])
     return cost
 
 
