@@ -921,16 +921,14 @@ def _storey_room(s: Slot) -> bool:
     return s.name.split()[-1:] in (["attic"], ["basement"]) and s.type == "storage"
 
 
-LANDING_DOORS = 4
+LANDING_DOORS = 3
 """Doors an upper storey's stairwell would have, from which the stair arrives on a
 landing hallway that the rooms open off (:func:`connect_levels`), as in a farmhouse's
 bedroom floor, not in a stair hall with a door on every wall (measured: a stair hall of
-five doors was laid out 24 times over and the house fell back to one storey, 9-15 s).
-Three doors open onto the strip at the stair's foot, a plain stairwell
-(anyhome.floorplan.stairs ``STAIR_HALL_MIN_DOORS``), with no landing (measured on the
-dev storey sets, 3 -> 4: a Mediterranean villa's, a duplex's, a cottage's upper storeys
-0.04-0.09 less of their floor in circulation, and faster; 5 failed a family home's
-four-door bedroom storey, 500 layout attempts)."""
+five doors was laid out 24 times over and the house fell back to one storey, 9-15 s;
+4, three doors off the stair's strip and no landing, h-circ2 on dev_storeys2: less
+circulation on a villa's, a duplex's, a cottage's upper storeys, but a Victorian
+terrace failed on two seeds, 500 layout attempts)."""
 LANDING_KEY = "landing"
 HELD_KEYS = frozenset({STAIRWELL_KEY, LANDING_KEY})
 """Program keys of rooms whose area is what they hold (a stairwell its flight, a landing
