@@ -920,7 +920,7 @@ _ATTIC = re.compile(r"\b(?:attic|loft conversion|garret)s?\b")
 _MEZZANINE = re.compile(r"\bmezzanines?\b")
 _FLOOR_WORDS = re.compile(
     r"\b(?:on|in|at)\s+the\s+(ground|first|1st|second|2nd|third|3rd|top|upper)\s+(?:floor|storey|story|level)\b"
-    r"|\b(?:on|in|at)\s+the\s+(second|2nd|third|3rd|top)\b(?=\s*(?:[,;.]|and\b|$))"
+    r"|\b(?:on|in|at)\s+the\s+(second|2nd|third|3rd)\b(?=\s*(?:[,;.]|and\b|$))"
     r"|\b(?:on|in)\s+the\s+(basement|attic)\b|\b(downstairs|upstairs)\b|\bup (?:the )?(stairs)\b"
     r"|\b(?:at|on)\s+(street|garden|ground)\s+(?:level|floor)\b|\b(underneath|beneath) (?:them|it)\b")
 """Words that put the rooms named before them on a storey ("a kitchen on the ground

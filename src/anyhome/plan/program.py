@@ -856,7 +856,8 @@ def _worded_levels(parsed: Parsed, slots: list[Slot], top: int, up_types: set[st
         word = found[2] if found else None
         # a list after another storey's words in its sentence is that storey's whole list ("three
         # bedrooms on the ground floor, and the kitchen, dining and living space upstairs")
-        own_clause = any(w[1] <= m_start and not _CLAUSE_END.search(text[w[1]:m_start]) for w in words)
+        own_clause = (any(w[1] <= m_start and not _CLAUSE_END.search(text[w[1]:m_start]) for w in words)
+                      and found is not None and not _LIST_BREAK.search(text[m_end:found[0]]))
         listed = (not before and bool(after) and found is not None and not own_clause
                   and bool(_NOT_ADJACENT.search(text[m_end:found[0]])))
         if found is None or word is None or (listed and word in ("upstairs", "upper", "attic") and s.type not in up_types):
@@ -897,6 +898,9 @@ def _slot_span(s: Slot, parsed: Parsed) -> tuple[int, int] | None:
 
 
 _CLAUSE_END = re.compile(r"[.;]")
+_LIST_BREAK = re.compile(r",\s*(?:and|then|plus)\b")
+"""Where one list of rooms ends and the next begins ("a kitchen and a snug, and two
+bedrooms in the attic": the attic's words take only the bedrooms)."""
 _ARTICLES = frozenset({"a", "an", "the", "our", "my", "its", "their"})
 
 
