@@ -39,6 +39,7 @@ KEPT_CONSTANTS = {
     "RISER_MAX_M", "GOING_M", "FLIGHT_WIDTH_M", "WELL_GAP_M", "STRIP_M", "DOOR_CORNER_M", "STAIR_CLEAR_M", "HEADROOM_MIN_M", "STAIR_DEPTH_M",
     "SLAB_M",  # stairs (Approved Document K)
     "PASSAGE_M", "HALL_DOORS", "HALL_DOOR_M", "DOOR_SLIDE_M",  # a stair hall: the landing beside the stair, its doors; how far a door slides clear of the stair
+    "STAIR_HALL_MIN_DOORS", "LADDER_HALL_MIN_DOORS",  # doors from which a stairwell is a stair hall (those below open onto the strip at its foot)
     "L_CORNERS", "INSCRIBED_TOL_M",  # merge.py: an L's corner count; the widest-disc search's precision
     "THROUGH_FACTOR", "THROUGH_OVERLAP_OK_M2",  # levels.py: what is a double-height room; a snapping sliver
     "SPIRAL_RISER_MAX_M",  # a spiral stair's riser (BS 5395-2)

@@ -90,6 +90,7 @@ from anyhome.floorplan.stairs import (
     is_stairwell,
     ladder_risers,
     spiral_risers,
+    stair_hall_min_doors,
     stair_kind,
     stair_length_m,
     stair_width_m,
@@ -218,14 +219,14 @@ def stairwell_min_m(spec: HouseSpec, k: int) -> tuple[float, float]:
 
 def stair_hall_width_m(spec: HouseSpec, k: int) -> float:
     """Narrowest side the solver is asked to give the stairwell of storey ``k``: a stair
-    hall (three doors or more) holds its stair and a landing beside it
+    hall (:func:`~anyhome.floorplan.stairs.stair_hall_min_doors` or more) holds its stair and a landing beside it
     (:data:`~anyhome.floorplan.stairs.PASSAGE_M`) that the doors across from the stair
     open onto; a plain stairwell, the stair's width. (A hall narrower than that comes out
     with its flight cutting it in two and is refused, :func:`~anyhome.floorplan.stairs.doors_joined`: measured, a
     townhouse's five-door ground floor was laid out 40 times over, 10-20 s.)"""
     kind = house_stair_kind(spec)
     plain = well_width_m(kind)
-    if _stair_doors(spec, k) >= 3:
+    if _stair_doors(spec, k) >= stair_hall_min_doors(kind):
         return round(max(plain, stair_width_m(kind) + PASSAGE_M), 4)
     return plain
 

@@ -43,6 +43,21 @@ clear of the stair."""
 HALL_DOORS = 5
 """Doors a stair hall of the stair's length holds: two in the end wall at the stair's
 foot, two or three in the long wall across from the stair."""
+STAIR_HALL_MIN_DOORS = 4
+"""Doors from which a dog-leg's or a spiral's stairwell is a stair hall, planned and laid
+out with a landing beside its stair (:data:`PASSAGE_M`): up to three, the front door
+among them, open onto the strip at the stair's foot (its end wall and its two sides), so
+such a stairwell is planned as a plain one (measured on dev_storeys: a narrow
+townhouse's three-door ground-floor stair hall came out 11-13 m2, then 6.5-10 m2, its
+circulation share 0.13-0.17 -> 0.10-0.15). A ladder's narrower well: from three."""
+LADDER_HALL_MIN_DOORS = 3
+
+
+def stair_hall_min_doors(kind: str) -> int:
+    """Doors from which the stairwell of a stair of ``kind`` is a stair hall."""
+    return LADDER_HALL_MIN_DOORS if kind == LADDER else STAIR_HALL_MIN_DOORS
+
+
 HALL_DOOR_M = 0.9
 """Length a stair hall gains for every door beyond :data:`HALL_DOORS`."""
 STAIR_CLEAR_M = 0.03

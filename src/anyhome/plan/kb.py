@@ -105,6 +105,9 @@ class Program(_Model):
     holds: list[str] = Field(default_factory=list, description=(
         "room types the main room takes in: one mention of each is read as a part of it, "
         "not a room of its own (a studio apartment's kitchenette, its sleeping area)"))
+    main_beside_bedrooms: str | None = Field(default=None, description=(
+        "furnishing set of the main room where the plan gives the home bedrooms of its own "
+        "(a tiny house's studio under two sleeping lofts: its sleeping area is theirs)"))
     one_room: bool = Field(default=False, description=(
         "its rooms are all it has: it gains no rooms to reach a total, and a size word scales "
         "its rooms ('a small studio') instead of setting a home's total"))
@@ -809,6 +812,9 @@ class KnowledgeBase:
                 need(r.type in types, "programs", ("programs", key, "rooms", j, "type"), lambda: known(r.type, types, "room type"))
                 if r.furnish is not None:
                     need(r.furnish in sets, "programs", ("programs", key, "rooms", j, "furnish"), lambda: known(str(r.furnish), sets, "furnishing set"))
+            if p.main_beside_bedrooms is not None:
+                need(p.main_beside_bedrooms in sets, "programs", ("programs", key, "main_beside_bedrooms"),
+                     lambda: known(str(p.main_beside_bedrooms), sets, "furnishing set"))
             for t in p.holds:
                 need(t in types, "programs", ("programs", key, "holds"), lambda: known(t, types, "room type"))
             for room, gs in p.extra.items():

@@ -127,6 +127,7 @@ class OfflinePlanner:
         sz = sizing(kb, parsed, program)  # the kind's room sizes, the total asked for
         program = sz.program
         slots, main_key = plan_rooms(kb, parsed, program, rng, warnings, sz)
+        _main_beside_bedrooms(slots, main_key, kb.raw("programs")["programs"].get(program or "", {}))
         if sz.band is not None:
             fit_rooms(kb, parsed, slots, sz, kb.raw("programs")["programs"].get(program or ""), _furnished_need(kb))
             renumber(slots)
@@ -299,6 +300,16 @@ def _seated(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], main_key: str 
         if idx is not None:
             out.append((idx, n))
     return out
+
+
+def _main_beside_bedrooms(slots: list[Slot], main_key: str | None, prog: dict[str, Any]) -> None:
+    """The main room of a program whose main room sleeps its people (a studio), in a
+    plan that gives them bedrooms of their own, furnished as programs.yaml
+    ``main_beside_bedrooms`` says (no bed of its own)."""
+    furnish = prog.get("main_beside_bedrooms")
+    main = next((s for s in slots if main_key is not None and s.key == main_key), None)
+    if furnish and main is not None and any(s.type == "bedroom" for s in slots if s is not main):
+        main.furnish = furnish
 
 
 def in_a_home(kb: KnowledgeBase, parsed: Parsed) -> bool:

@@ -997,11 +997,14 @@ _ATTIC = re.compile(r"\b(?:attic|loft conversion|garret)s?\b")
 _MEZZANINE = re.compile(r"\bmezzanines?\b")
 _FLOOR_WORDS = re.compile(
     r"\b(?:on|in|at)\s+the\s+(ground|first|1st|second|2nd|third|3rd|top|upper)\s+(?:floor|storey|story|level)\b"
+    r"|\b(?:on|in|at)\s+the\s+(second|2nd|third|3rd)\b(?=\s*(?:[,;.]|and\b|$))"
     r"|\b(?:on|in)\s+the\s+(basement|attic)\b|\b(downstairs|upstairs)\b|\bup (?:the )?(stairs)\b"
-    r"|\b(?:at|on)\s+(street|garden|ground)\s+(?:level|floor)\b")
+    r"|\b(?:at|on)\s+(street|garden|ground)\s+(?:level|floor)\b|\b(underneath|beneath) (?:them|it)\b")
 """Words that put the rooms named before them on a storey ("a kitchen on the ground
-floor", "three bedrooms upstairs"; :func:`anyhome.plan.program.assign_levels`)."""
-_FLOOR_WORD_OF = {"stairs": "upstairs", "street": "ground", "garden": "ground"}
+floor", "three bedrooms upstairs", "two bedrooms on the second" after "... on the first
+floor", "two sleeping lofts, underneath them a kitchenette";
+:func:`anyhome.plan.program.assign_levels`)."""
+_FLOOR_WORD_OF = {"stairs": "upstairs", "street": "ground", "garden": "ground", "underneath": "downstairs", "beneath": "downstairs"}
 """Floor words read as another ("at street level" is the ground floor: a "first floor"
 named with it is the one above, British usage)."""
 _TIERS = re.compile(
@@ -1028,9 +1031,11 @@ MAX_STOREYS = 4
 def _find_levels(text: str, p: Parsed) -> None:
     """Storeys ("two-storey", "3-story", "three floors"; "upstairs", a mezzanine: two),
     a basement and an attic."""
+    one_storey = False  # "a single-storey bungalow with a basement": "upstairs" is its ground floor
     for mt in _STOREYS.finditer(text):
         word = mt.group(1) or mt.group(2)
         n = {"single": 1, "one": 1, "double": 2, "twin": 2, "multi": 3, "split": 2}.get(word) or parse_number(word)
+        one_storey = one_storey or n == 1
         if n is not None and n >= 1:
             if n > MAX_STOREYS:
                 p.warnings.append(f"asked for {n} storeys; a plan holds at most {MAX_STOREYS}, planned {MAX_STOREYS}")
@@ -1042,9 +1047,9 @@ def _find_levels(text: str, p: Parsed) -> None:
     for word, n in ORDINAL_FLOORS.items():  # "bedrooms on the first floor" of a house with a ground floor: two
         if word in named:
             p.storeys = max(p.storeys, min(MAX_STOREYS, n + ("ground" in named)))
-    if p.storeys == 1 and (_UPSTAIRS.search(text) or _MEZZANINE.search(text)):
-        p.storeys = 2
     p.basement = bool(_BASEMENT.search(text))
+    if p.storeys == 1 and (_MEZZANINE.search(text) or (_UPSTAIRS.search(text) and not (one_storey and p.basement))):
+        p.storeys = 2
     p.attic = bool(_ATTIC.search(text))
     p.floor_words = [(mt.start(), mt.end(), _FLOOR_WORD_OF.get(g, g))
                      for mt in _FLOOR_WORDS.finditer(text) for g in [next(g for g in mt.groups() if g)]]
@@ -1146,7 +1151,7 @@ def _assign_rooms(text: str, mentions: list[Mention], kb: KnowledgeBase) -> None
             m.room = room_idx[id(m.host)]
             _spread(m, m.host)  # "six en-suite showers": one in each
             continue
-        m.room = context
+        m.room = None if context is not None and _out_of_place(m, rooms[context], kb) else context
         m.each = each is not None and context is not None and any(rooms[context] is x for x in [each, *spread])
         if m.each:
             spread.append(m)
@@ -1160,6 +1165,19 @@ def _assign_rooms(text: str, mentions: list[Mention], kb: KnowledgeBase) -> None
             words_before = _strip_lookback(text, nxt)
             if IN_ROOM.match(between[: len(between) - words_before]):
                 m.room = room_idx[id(nxt)]
+
+
+def _out_of_place(obj: Mention, room: Mention, kb: KnowledgeBase) -> bool:
+    """Whether ``obj``, listed after ``room`` ("a shower room with a composting toilet
+    and a built-in sofa"), is a known object that never stands in a wet room of that
+    type (objects.yaml ``rooms`` without it): it goes where the house's other loose
+    objects go, not into the bathroom."""
+    rooms = kb.raw("rooms")
+    rtype = (rooms["names"].get(room.key) or {}).get("type")
+    if not rtype or not rooms["types"].get(rtype, {}).get("wet"):
+        return False
+    where = (kb.raw("objects").get(obj.key) or {}).get("rooms")
+    return bool(where) and rtype not in where
 
 
 EACH_LIST = re.compile(r"^\s*(?:,\s*(?:and\s+)?|and\s+)(?:(?:a|an|its own|their own)\s+)?[^\W\d_]*\s*$")
@@ -1507,6 +1525,11 @@ NOT_NOUNS = frozenset("full empty upstairs downstairs outside inside below above
 ADVERBS = frozenset("just only also even then still simply merely mostly mainly down up".split())
 """Words that are never an object's name nor lead one ("downstairs just a kitchenette")."""
 
+STAIR_HEADS = frozenset("stair stairs staircase staircases stairway ladder".split())
+"""Words that, right after a room word, make it a kind of stair, not a room ("a storage
+staircase": a stair with cupboards under its treads; the storeys' stairs are planned
+with them)."""
+
 ROOM_SUFFIXES = frozenset("area corner bay zone space nook wing section suite end".split())
 """Words that, right after a room word, make a larger room name ("kennel area", "café corner")."""
 
@@ -1522,6 +1545,9 @@ def _room_compounds(kb: KnowledgeBase, text: str, tokens: list[tuple[str, int, i
             continue
         word, s, e = tokens[k]
         after = tokens[k + 1][0] if k + 1 < len(tokens) else "."
+        if word in STAIR_HEADS:  # "a storage staircase" is no storage room
+            mentions.remove(m)
+            continue
         if _opens_context(text[m.end :]) or word in NOT_NOUNS:
             continue
         known = next((x for x in mentions if x.kind == "object" and x.start == s), None)

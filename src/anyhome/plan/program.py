@@ -686,7 +686,7 @@ half landing: 2.6 m long for a 2.9 m storey in 16 risers of 0.181 m and goings o
 its foot (anyhome.floorplan.stairs): 6.3 m2 at least; the floorplan solver makes it
 about 2 x 4 m (a tall storey's stairwell grows with its stair: floorplan.levels)."""
 STAIR_HALL_M2 = 9.6
-"""Floor of a stairwell with three doors or more: a stair hall (the storey's hall, in
+"""Floor of a stairwell with four doors or more: a stair hall (the storey's hall, in
 place of a landing or a hallway): the stair and its strip (3.6 m) by the stair's width
 and a 0.9 m landing beside it (2.65 m), with room for five doors
 (anyhome.floorplan.stairs ``PASSAGE_M``, ``HALL_DOORS``)."""
@@ -698,7 +698,7 @@ SPIRAL_STAIRWELL_AREA_M2 = 5.7
 ``stair_kind``: 1.75 m across, one full turn, ending over its foot) and the 1 m strip at
 its foot: 2.75 x 1.75 = 4.8 m2 at least, planned 2.05 m wide as the solver's least."""
 SPIRAL_STAIR_HALL_M2 = 7.3
-"""Floor of a spiral stair hall (three doors or more): the stair and its strip (2.75 m)
+"""Floor of a spiral stair hall (four doors or more): the stair and its strip (2.75 m)
 by the stair's width and the 0.9 m landing beside it (2.65 m)."""
 LADDER_STAIRWELL_AREA_M2 = 3.5
 """Floor of a tiny house's stairwell holding its ship's ladder (anyhome.floorplan.stairs
@@ -712,13 +712,14 @@ by the ladder's width and the 0.9 m landing beside it (1.5 m)."""
 def stairwell_area_m2(doors: int, kind: str = "dogleg") -> float:
     """Planned floor of a stairwell with ``doors`` doors holding stairs of ``kind``
     (anyhome.floorplan.stairs ``DOGLEG``, ``SPIRAL`` or ``LADDER``): a plain stairwell
-    for one or two, else a stair hall (:data:`STAIR_HALL_M2`) growing with its doors."""
-    from anyhome.floorplan.stairs import LADDER, SPIRAL
+    below ``stair_hall_min_doors`` (up to three doors, a ladder's up to two, open onto the strip at
+    the stair's foot), else a stair hall (:data:`STAIR_HALL_M2`) growing with its doors."""
+    from anyhome.floorplan.stairs import LADDER, SPIRAL, stair_hall_min_doors
 
     spiral = kind == SPIRAL
     if kind == LADDER:
-        return LADDER_STAIRWELL_AREA_M2 if doors <= 2 else LADDER_STAIR_HALL_M2 + STAIR_HALL_M2_PER_DOOR * max(0, doors - STAIR_HALL_DOORS)
-    if doors <= 2:
+        return LADDER_STAIRWELL_AREA_M2 if doors < stair_hall_min_doors(kind) else LADDER_STAIR_HALL_M2 + STAIR_HALL_M2_PER_DOOR * max(0, doors - STAIR_HALL_DOORS)
+    if doors < stair_hall_min_doors(kind):
         return SPIRAL_STAIRWELL_AREA_M2 if spiral else STAIRWELL_AREA_M2
     return (SPIRAL_STAIR_HALL_M2 if spiral else STAIR_HALL_M2) + STAIR_HALL_M2_PER_DOOR * max(0, doors - STAIR_HALL_DOORS)
 
@@ -828,7 +829,9 @@ def _worded_levels(parsed: Parsed, slots: list[Slot], top: int, up_types: set[st
     (British), else the ground floor (American); "top floor" the highest full storey;
     "upstairs" any storey above the ground floor (a room already up stays where it is);
     an "upstairs" or "in the attic" after a list takes only its rooms of ``up_types`` ("a
-    hallway, a kitchen and three bedrooms upstairs": the bedrooms), right after a room
+    hallway, a kitchen and three bedrooms upstairs": the bedrooms; all of them where
+    another storey's words come before in its sentence: "three bedrooms on the ground
+    floor, and the kitchen, dining and living space upstairs"), right after a room
     any room ("a home cinema in the attic"). Levels stay within the storeys planned.
     The room the words themselves name ("in the attic", "in the basement") is no room of
     its own where they place another room there ("a study in the attic")."""
@@ -853,7 +856,12 @@ def _worded_levels(parsed: Parsed, slots: list[Slot], top: int, up_types: set[st
         opened = [w for w in leading if w[1] <= m_start and not _CLAUSE_END.search(text[w[1]:m_start])]
         found = before[-1] if before else after[0] if after else opened[-1] if opened else None
         word = found[2] if found else None
-        listed = not before and bool(after) and found is not None and bool(_NOT_ADJACENT.search(text[m_end:found[0]]))
+        # a list after another storey's words in its sentence is that storey's whole list ("three
+        # bedrooms on the ground floor, and the kitchen, dining and living space upstairs")
+        own_clause = (any(w[1] <= m_start and not _CLAUSE_END.search(text[w[1]:m_start]) for w in words)
+                      and found is not None and not _LIST_BREAK.search(text[m_end:found[0]]))
+        listed = (not before and bool(after) and found is not None and not own_clause
+                  and bool(_NOT_ADJACENT.search(text[m_end:found[0]])))
         if found is None or word is None or (listed and word in ("upstairs", "upper", "attic") and s.type not in up_types):
             continue
         placed.add(word)
@@ -892,6 +900,9 @@ def _slot_span(s: Slot, parsed: Parsed) -> tuple[int, int] | None:
 
 
 _CLAUSE_END = re.compile(r"[.;]")
+_LIST_BREAK = re.compile(r",\s*(?:and|then|plus)\b")
+"""Where one list of rooms ends and the next begins ("a kitchen and a snug, and two
+bedrooms in the attic": the attic's words take only the bedrooms)."""
 _ARTICLES = frozenset({"a", "an", "the", "our", "my", "its", "their"})
 
 
@@ -920,7 +931,10 @@ LANDING_DOORS = 3
 """Doors an upper storey's stairwell would have, from which the stair arrives on a
 landing hallway that the rooms open off (:func:`connect_levels`), as in a farmhouse's
 bedroom floor, not in a stair hall with a door on every wall (measured: a stair hall of
-five doors was laid out 24 times over and the house fell back to one storey, 9-15 s)."""
+five doors was laid out 24 times over and the house fell back to one storey, 9-15 s;
+4, three doors off the stair's strip and no landing, h-circ2 on dev_storeys2: less
+circulation on a villa's, a duplex's, a cottage's upper storeys, but a Victorian
+terrace failed on two seeds, 500 layout attempts)."""
 LANDING_KEY = "landing"
 HELD_KEYS = frozenset({STAIRWELL_KEY, LANDING_KEY})
 """Program keys of rooms whose area is what they hold (a stairwell its flight, a landing
