@@ -1176,7 +1176,7 @@ def _out_of_place(obj: Mention, room: Mention, kb: KnowledgeBase) -> bool:
     rtype = (rooms["names"].get(room.key) or {}).get("type")
     if not rtype or not rooms["types"].get(rtype, {}).get("wet"):
         return False
-    where = (kb.raw("objects").get(obj.key) or {}).get("rooms")
+    where = (kb.raw("objects").get(obj.key) or {}).get("rooms") or []
     return bool(where) and rtype not in where
 
 
