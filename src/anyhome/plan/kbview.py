@@ -38,3 +38,8 @@ def resolve(kb: KnowledgeBase | None) -> KnowledgeBase:
     """``kb``, or :func:`default` for a caller outside the stages that passed none (a
     test, a tool calling one planner function); the stages always pass theirs."""
     return kb if kb is not None else default()
+
+
+def is_dwelling(kb: KnowledgeBase, program: str | None) -> bool:
+    """Whether ``program`` is one people live in (programs.yaml ``sizes.homes``)."""
+    return program in set((kb.raw("programs").get("sizes") or {}).get("homes", []))

@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 
 from anyhome.plan import openvocab as ov
 from anyhome.plan.kb import KnowledgeBase
-from anyhome.plan.kbview import resolve, vocabulary
+from anyhome.plan.kbview import is_dwelling, resolve, vocabulary
 from anyhome.plan.knowledge import normalize, planner_materials
 from anyhome.plan.spec import MAX_COUNT
 from anyhome.sanitize import clean_text
@@ -196,8 +196,7 @@ def _rooms_in_a_list(text: str, kb: KnowledgeBase, p: Parsed, mentions: list[Men
     words = kb.raw("concepts").get("list_rooms", {})
     if not words or p.building is None:
         return
-    program = kb.raw("programs")["buildings"][p.building]["program"]
-    if program in set((kb.raw("programs").get("sizes") or {}).get("homes", [])):  # program.is_dwelling
+    if is_dwelling(kb, kb.raw("programs")["buildings"][p.building]["program"]):
         return
     names = kb.raw("rooms")["names"]
     for i, m in enumerate(mentions):
@@ -861,8 +860,7 @@ def _stated_area(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[int,
         num = mt.group(1)
         value = float(NUMBER_WORDS[num] if num in NUMBER_WORDS else num.replace(",", "."))  # "12,5 m2"
         value *= SQ_FT_M2 if "f" in mt.group(2) or mt.group(2) == "sf" else 1.0
-        room = max((len(f) for f in _prefixes(nxt) if f in voc.forms and voc.forms[f][0].kind == "room"), default=0)
-        building = max((len(f) for f in _prefixes(nxt) if f in _building_words(kb)), default=0)
+        room, building = _room_prefix(kb, nxt), _building_prefix(kb, nxt)
         # "a 12 m2 bedroom"; "a 30 m2 studio flat" is the flat's; "a house with a 20 m2
         # studio": a word of both kinds after another building word is a room
         if room and (room > building or (room == building and voc.building_regex.search(text[: mt.start()]))):
@@ -882,6 +880,17 @@ def _building_words(kb: KnowledgeBase) -> frozenset[str]:
 def _prefixes(phrase: str) -> list[str]:
     words = phrase.split()
     return [" ".join(words[:n]) for n in range(len(words), 0, -1)]
+
+
+def _room_prefix(kb: KnowledgeBase, phrase: str) -> int:
+    """Length of the longest room word ``phrase`` starts with (0: none)."""
+    forms = vocabulary(kb).forms
+    return max((len(f) for f in _prefixes(phrase) if f in forms and forms[f][0].kind == "room"), default=0)
+
+
+def _building_prefix(kb: KnowledgeBase, phrase: str) -> int:
+    """Length of the longest building word ``phrase`` starts with (0: none)."""
+    return max((len(f) for f in _prefixes(phrase) if f in _building_words(kb)), default=0)
 
 
 SIZE_WORD_SPAN = 4
@@ -918,7 +927,6 @@ def _head_size_words(kb: KnowledgeBase, text: str, p: Parsed) -> None:
     room in the words after them ("a grand old Victorian brick house"; not "a large
     kitchen and a house"): the whole building's size, as the evaluator reads it."""
     words = ((kb.raw("programs").get("sizes") or {}).get("words")) or {}
-    voc = vocabulary(kb)
     end = HEAD_END.search(text)
     head = text[: end.start()] if end else text
     toks = _tokens(head)
@@ -927,13 +935,9 @@ def _head_size_words(kb: KnowledgeBase, text: str, p: Parsed) -> None:
             continue
         after = [t for t, _, _ in toks[i + 1 : i + 4]]
         nxt = " ".join(after)
-        room = max((len(f) for f in _prefixes(nxt) if f in voc.forms and voc.forms[f][0].kind == "room"), default=0)
-        counted = " ".join(after[1:])
-        if after and parse_number(after[0]) is not None and any(
-            f in voc.forms and voc.forms[f][0].kind == "room" for f in _prefixes(counted)
-        ):
+        if after and parse_number(after[0]) is not None and _room_prefix(kb, " ".join(after[1:])):
             continue  # "a large 2 bedroom flat": a count of rooms ends the size word's phrase
-        building = max((len(f) for f in _prefixes(nxt) if f in _building_words(kb)), default=0)
+        room, building = _room_prefix(kb, nxt), _building_prefix(kb, nxt)
         if room > building and nxt.split()[:1] != [tok]:
             continue
         p.size_words.append(tok)
@@ -1229,16 +1233,17 @@ def _table_seats(text: str, kb: KnowledgeBase, mentions: list[Mention]) -> None:
     those seats are the table's (``Mention.seat_of``), in place of its chairs."""
     objects = kb.raw("objects")
     for m in mentions:
-        proto = objects.get(m.key) or {} if m.kind == "object" else {}
+        proto = (objects.get(m.key) or {}) if m.kind == "object" else {}
         if "seat" not in (proto.get("tags") or []) or m.negated:
             continue
-        before = _last_before(mentions, m.start - _strip_lookback(text, m))
+        head = m.start - _strip_lookback(text, m)
+        before = _last_before(mentions, head)
         if before is None or before.kind != "object" or before.negated:
             continue
         table = objects.get(before.key) or {}
         if "table" not in str(table.get("category", "")).split("_"):
             continue
-        gap = text[before.end : m.start - _strip_lookback(text, m)]
+        gap = text[before.end : head]
         gap = re.sub(r"\b(?:\d+|" + "|".join(NUMBER_WORDS) + r"|a|an|its|their|matching)\b", " ", gap)
         if _SEATS_WITH.match(gap):
             m.seat_of = before

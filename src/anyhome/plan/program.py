@@ -20,6 +20,7 @@ from anyhome.errors import PlanError
 from anyhome.house import ROOM_TYPES
 from anyhome.plan.concepts import furnish_type
 from anyhome.plan.kb import KnowledgeBase
+from anyhome.plan.kbview import is_dwelling
 from anyhome.plan.parse import ORDINAL_FLOORS, Mention, Parsed, format_count, plural
 from anyhome.plan.spec import MAX_COUNT, MAX_ROOMS
 
@@ -1102,11 +1103,6 @@ class Sizing:
 
 def _sizes(kb: KnowledgeBase) -> dict:
     return kb.raw("programs").get("sizes") or {}
-
-
-def is_dwelling(kb: KnowledgeBase, program: str | None) -> bool:
-    """Whether ``program`` is one people live in (programs.yaml ``sizes.homes``)."""
-    return program in set(_sizes(kb).get("homes", []))
 
 
 def strongest_first(found: list[str], words: dict) -> list[str]:
