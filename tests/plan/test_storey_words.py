@@ -200,3 +200,41 @@ def test_street_level_is_the_ground_floor_and_the_first_floor_the_one_above():
 
     p = parse("a canal house: kitchen and dining room at street level, a living room on the first floor, bedrooms at the top")
     assert [w for _, _, w in p.floor_words] == ["ground", "first"] and p.storeys >= 2
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+def test_a_room_squeezed_into_the_attic_is_the_attic(seed):
+    levels = _levels("Tiny fisherman's cottage: the bedroom is squeezed into the attic, and on the ground floor "
+                     "there's a kitchen, a bathroom and a snug little sitting room.", seed)
+    bedrooms = [k for k in levels if "bedroom" in k]
+    assert len(bedrooms) == 1 and levels[bedrooms[0]] == 1
+    assert "attic" not in levels  # the bedroom is the attic: no storage room of that name beside it
+    assert levels["kitchen"] == levels["sitting_room"] == 0
+
+
+def test_downstairs_with_a_room_under_the_eaves_is_two_storeys():
+    text = "A small cottage with a kitchen and living room downstairs and a bedroom tucked under the eaves."
+    assert parse(text).attic
+    levels = _levels(text)
+    assert max(levels.values()) == 1  # the eaves are the upstairs, not a storey over one
+    assert levels["bedroom"] == 1 and levels["kitchen"] == levels["living_room"] == 0
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_a_storey_by_storey_list_is_not_a_bed_and_bath_total(seed):
+    text = ("Narrow new-build townhouse on four storeys: garage and utility on the ground floor, kitchen and "
+            "living room on the first floor, two bedrooms and a bathroom on the second, and a master bedroom "
+            "with en suite on the third floor.")
+    p = parse(text)
+    assert p.bedrooms is None and p.bathrooms is None  # "two bedrooms and a bathroom on the second": one storey's
+    spec = plan_house(text, np.random.default_rng(seed))
+    by_type: dict[str, list[int]] = {}
+    for r in spec.rooms:
+        by_type.setdefault(r.type, []).append(r.level)
+    assert sorted(by_type["bedroom"]) == [2, 2, 3]
+    assert sorted(by_type["bathroom"]) == [2, 3]
+    assert "dining_room" not in by_type and "study" not in by_type  # every storey listed: no extras
+
+
+def test_two_bedrooms_and_a_bathroom_is_still_a_total():
+    assert parse("a cottage with two bedrooms and a bathroom").bedrooms == 2

@@ -952,7 +952,9 @@ def _apply_codes(text: str, p: Parsed, taken: list[tuple[int, int]]) -> None:
         p.bedrooms = int(mt.group(1))
         p.bathrooms = max(1, int(float(mt.group(2))))
         taken.append(mt.span())
-    elif mw and parse_number(mw.group(1)) is not None and parse_number(mw.group(2)) is not None:
+    elif (mw and parse_number(mw.group(1)) is not None and parse_number(mw.group(2)) is not None
+          and not _FLOOR_WORDS.match(text[mw.end():].lstrip(" ,"))):  # "two bedrooms and a bathroom on the
+        # second floor" lists one storey's rooms, not the home's totals
         p.bedrooms = parse_number(mw.group(1))
         p.bathrooms = max(1, parse_number(mw.group(2)) or 1)
         if "room" not in mw.group():  # "bedroom"/"bathroom" stay room mentions
@@ -997,18 +999,20 @@ IN_A_PLACE = re.compile(
 """Right after the building: where it stands ("a nail salon in a shopping arcade", "a
 boxing gym under a railway arch"); the place's words name no rooms or objects."""
 _BASEMENT = re.compile(r"\b(?:basement|lower ground floor|underground level)s?\b")
-_ATTIC = re.compile(r"\b(?:attic|loft conversion|garret)s?\b")
+_ATTIC = re.compile(r"\b(?:attic|loft conversion|garret)s?\b|\b(?:in|into|under|up under) the (?:eaves|roof space)\b")
 _MEZZANINE = re.compile(r"\bmezzanines?\b")
 _FLOOR_WORDS = re.compile(
     r"\b(?:on|in|at)\s+the\s+(ground|first|1st|second|2nd|third|3rd|top|upper)\s+(?:floor|storey|story|level)\b"
     r"|\b(?:on|in|at)\s+the\s+(second|2nd|third|3rd)\b(?=\s*(?:[,;.]|and\b|$))"
-    r"|\b(?:on|in)\s+the\s+(basement|attic)\b|\b(downstairs|upstairs)\b|\bup (?:the )?(stairs)\b"
+    r"|\b(?:on|in|into|up in|up into|down in|down into)\s+the\s+(basement|attic|garret)\b"
+    r"|\b(?:in|into|under|up in|up into|up under)\s+the\s+(eaves|roof space)\b|\b(downstairs|upstairs)\b|\bup (?:the )?(stairs)\b"
     r"|\b(?:at|on)\s+(street|garden|ground)\s+(?:level|floor)\b|\b(underneath|beneath) (?:them|it)\b")
 """Words that put the rooms named before them on a storey ("a kitchen on the ground
 floor", "three bedrooms upstairs", "two bedrooms on the second" after "... on the first
 floor", "two sleeping lofts, underneath them a kitchenette";
 :func:`anyhome.plan.program.assign_levels`)."""
-_FLOOR_WORD_OF = {"stairs": "upstairs", "street": "ground", "garden": "ground", "underneath": "downstairs", "beneath": "downstairs"}
+_FLOOR_WORD_OF = {"stairs": "upstairs", "street": "ground", "garret": "attic", "eaves": "attic",
+                  "roof space": "attic", "garden": "ground", "underneath": "downstairs", "beneath": "downstairs"}
 """Floor words read as another ("at street level" is the ground floor: a "first floor"
 named with it is the one above, British usage)."""
 _TIERS = re.compile(
@@ -1052,9 +1056,10 @@ def _find_levels(text: str, p: Parsed) -> None:
         if word in named:
             p.storeys = max(p.storeys, min(MAX_STOREYS, n + ("ground" in named)))
     p.basement = bool(_BASEMENT.search(text))
-    if p.storeys == 1 and (_MEZZANINE.search(text) or (_UPSTAIRS.search(text) and not (one_storey and p.basement))):
-        p.storeys = 2
     p.attic = bool(_ATTIC.search(text))
+    above = {m.group(0) for m in _UPSTAIRS.finditer(text)} - ({"downstairs"} if p.attic else set())
+    if p.storeys == 1 and (_MEZZANINE.search(text) or (above and not (one_storey and p.basement))):
+        p.storeys = 2  # "downstairs" in a house with an attic: the attic is its upstairs
     p.floor_words = [(mt.start(), mt.end(), _FLOOR_WORD_OF.get(g, g))
                      for mt in _FLOOR_WORDS.finditer(text) for g in [next(g for g in mt.groups() if g)]]
     _find_tiers(text, p)

@@ -773,7 +773,12 @@ def assign_levels(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], warnings
             slots.append(down[0])
         for s in down:
             s.level = -1
-    _worded_levels(parsed, slots, top, set(st.up) | {"bathroom"})
+    worded = _worded_levels(parsed, slots, top, set(st.up) | {"bathroom"})
+    if top >= 1 and set(range(top + 1)) <= {s.level for s in worded}:
+        # the text lists every storey's rooms ("garage and utility on the ground floor, kitchen
+        # and living room on the first floor, ..."): the program's optional extras (a dining
+        # room, a study) are not asked for anywhere
+        slots[:] = [s for s in slots if not (s.optional and s.mention is None and _slot_span(s, parsed) is None)]
     _keep_a_ground_floor(parsed, slots, main)
     _fill_empty_storeys(kb, slots, top)  # one the words emptied
     levels = sorted({s.level for s in slots} | {0})  # "a den in the basement": entered down a stair from a hall
@@ -822,7 +827,7 @@ def _fill_empty_storeys(kb: KnowledgeBase, slots: list[Slot], top: int) -> None:
 _NOT_ADJACENT = re.compile(r"[,.;:]|\b(?:and|with|plus|or|then|while)\b")
 
 
-def _worded_levels(parsed: Parsed, slots: list[Slot], top: int, up_types: set[str]) -> None:
+def _worded_levels(parsed: Parsed, slots: list[Slot], top: int, up_types: set[str]) -> list[Slot]:
     """Put each room the text places on a storey there: the storey words right before
     its name ("an upstairs study") or else the first after it in its sentence ("a
     kitchen and a dining room on the ground floor", "three bedrooms upstairs"). "First
@@ -835,10 +840,12 @@ def _worded_levels(parsed: Parsed, slots: list[Slot], top: int, up_types: set[st
     floor, and the kitchen, dining and living space upstairs"), right after a room
     any room ("a home cinema in the attic"). Levels stay within the storeys planned.
     The room the words themselves name ("in the attic", "in the basement") is no room of
-    its own where they place another room there ("a study in the attic")."""
+    its own where they place another room there ("a study in the attic"). Returns the
+    rooms the words placed."""
     words = parsed.floor_words
     if not words:
-        return
+        return []
+    moved: list[Slot] = []
     british = any(w == "ground" for _, _, w in words)
     text = parsed.text
     leading = [w for w in words if _leads(w, parsed)]
@@ -866,6 +873,7 @@ def _worded_levels(parsed: Parsed, slots: list[Slot], top: int, up_types: set[st
         if found is None or word is None or (listed and word in ("upstairs", "upper", "attic") and s.type not in up_types):
             continue
         placed.add(word)
+        moved.append(s)
         if word.startswith("tier:"):  # "the lower level", "the middle level": parse._find_tiers
             s.level = max(-1 if parsed.basement else 0, min(top, int(word[5:])))
             if s.level < 0:  # the storey under the entry is the basement: no basement room of its own
@@ -884,6 +892,7 @@ def _worded_levels(parsed: Parsed, slots: list[Slot], top: int, up_types: set[st
             s.level = max(0, min(top, ORDINAL_FLOORS[word] - (0 if british else 1)))
     for s in [s for s in slots if _storey_room(s) and s.name.split()[-1] in placed]:  # "a study in the attic": no attic room
         slots.remove(s)
+    return [s for s in moved if s in slots]
 
 
 def _slot_span(s: Slot, parsed: Parsed) -> tuple[int, int] | None:
