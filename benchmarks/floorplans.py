@@ -69,9 +69,10 @@ SETS = {
     "heldout_storeys4": HERE / "prompts" / "heldout_storeys4.jsonl",
     "dev_storeys": HERE / "prompts" / "dev_storeys.jsonl",
     "dev_storeys2": HERE / "prompts" / "dev_storeys2.jsonl",
+    "dev_storeys3": HERE / "prompts" / "dev_storeys3.jsonl",
     "dev_size": HERE / "prompts" / "dev_size.jsonl",
 }
-"""``dev``, ``dev_storeys``, ``dev_storeys2`` (multi-storey homes) and ``dev_size`` (stated
+"""``dev``, ``dev_storeys``, ``dev_storeys2``, ``dev_storeys3`` (multi-storey homes) and ``dev_size`` (stated
 totals, grand homes) are the sets to tune on; the held-out sets are for measuring only."""
 OVERHANG_TOL_M2 = 1.0
 """An upper storey may hang over nothing by this much (wall thickness, rounding)."""

@@ -314,3 +314,20 @@ def test_a_stated_room_too_small_for_its_furniture_says_so():
     spec = plan("a house with a 5 m2 bedroom")
     small = [r for r in spec.rooms if r.type == "bedroom" and r.area_m2 < 10]
     assert small and any("instead of the 5 m2 asked for" in w for w in spec.warnings), spec.warnings
+
+
+def test_a_grand_villa_is_sized_by_the_word_not_the_villa():
+    # a villa's range ends where "grand" begins: the two met at one figure and the band's
+    # margins crossed (282-318 m2), so the house was scaled to under 300 m2
+    spec = plan("a grand villa with a drawing room, a dining room, a library, five bedrooms and two bathrooms", 1)
+    assert total(spec) >= 300
+
+
+def test_an_en_suite_opens_off_the_master_bedroom():
+    for text in ("a bungalow with three bedrooms, an en-suite and a family bathroom",
+                 "a family house on two floors: living room and kitchen downstairs; upstairs three bedrooms, one "
+                 "with an en suite, and a family bathroom"):
+        spec = plan(text)
+        pairs = {frozenset((c[0], c[1])) if isinstance(c, tuple) else frozenset((c.a, c.b)) for c in spec.connections}
+        suite = next(r.id for r in spec.rooms if "en-suite" in r.name)
+        assert any(suite in p and any(x.startswith("master_bedroom") for x in p) for p in pairs), pairs

@@ -30,8 +30,10 @@ KNOWLEDGE_FILES = ("programs", "rooms", "objects", "furniture", "styles", "conce
 
 def normalize(text: str) -> str:
     """Lower-case, unify quotes and hyphens to spaces (a minus sign before a figure,
-    "-3", stays), collapse whitespace."""
+    "-3", stays; a dash between words, "a small footprint - kitchen on the bottom floor",
+    "a footprint—kitchen", is a comma: it ends a name), collapse whitespace."""
     t = text.lower().replace("\u2019", "'").replace("\u2018", "'")
+    t = re.sub(r"\s+[-\u2013\u2014]+\s+|\s*\u2014\s*", ", ", t)
     t = re.sub(r"(?!(?<!\S)-\d)[-\u2010-\u2015_/]+", " ", t)
     return re.sub(r"\s+", " ", t).strip()
 

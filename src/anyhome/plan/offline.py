@@ -180,6 +180,8 @@ class OfflinePlanner:
             else:  # "a tiny cabin": within the word's range, clear of its edges
                 lo, hi = sz.band
                 band = (lo * (1 + WORD_BAND_MARGIN), hi * (1 - WORD_BAND_MARGIN)) if lo > 0 else (lo, hi * (1 - WORD_BAND_MARGIN))
+                if band[0] > band[1]:  # a range too narrow for the margins: its middle
+                    band = ((lo + hi) / 2, (lo + hi) / 2)
             spec = calibrate_total(kb, spec, slots, band, np.random.default_rng(int(rng.integers(2**32))),
                                    self.floorplan)
         return spec

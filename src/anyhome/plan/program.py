@@ -620,6 +620,10 @@ def size_rng(rng: np.random.Generator, text: str) -> np.random.Generator:
     return np.random.default_rng([seed, zlib.crc32(words.encode())])
 
 
+_EN_SUITE = re.compile(r"\ben[ -]?suite\b")
+"""A bathroom named an en-suite opens off a bedroom (the master's first), never a hall."""
+
+
 def connect(kb: KnowledgeBase, slots: list[Slot], entrance_types: list[str]) -> list[tuple[str, str]]:
     """A tree over the rooms (hubs first) plus one (room, "outside") entrance edge."""
     types = kb.raw("rooms")["types"]
@@ -649,8 +653,10 @@ def connect(kb: KnowledgeBase, slots: list[Slot], entrance_types: list[str]) -> 
 
         free = [p for p in placed if degree[p.id] < cap(p)]
         ranked = [p for t in attach for p in free if p.type == t]
-        if s.type == "bathroom" and en_suite:  # "each with its own bathroom": off a bedroom without one
-            ranked = [p for p in free if p.type == "bedroom" and p.id not in bathed] + ranked
+        own = s.type == "bathroom" and bool(_EN_SUITE.search(s.name))  # "a master bedroom with en suite"
+        if s.type == "bathroom" and (en_suite or own):  # "each with its own bathroom": off a bedroom without one
+            beds_free = [p for p in free if p.type == "bedroom" and p.id not in bathed]
+            ranked = sorted(beds_free, key=lambda p: "master" not in p.name) + ranked
         if s.key == CORRIDOR_KEY:  # an added corridor carries on from the hallway it relieves
             ranked = [p for p in reversed(free) if p.type == "hallway"] + ranked  # the last one: a chain
         if _type_info(kb, s.type).get("habitable"):  # rooms open onto the courtyard they wrap
@@ -701,6 +707,11 @@ its foot: 2.75 x 1.75 = 4.8 m2 at least, planned 2.05 m wide as the solver's lea
 SPIRAL_STAIR_HALL_M2 = 7.3
 """Floor of a spiral stair hall (four doors or more): the stair and its strip (2.75 m)
 by the stair's width and the 0.9 m landing beside it (2.65 m)."""
+STAIRWELL_FEW_DOORS_M2 = 6.8
+"""Floor of a dog-leg stairwell with one or two doors (an upper storey's, opening onto its
+landing or two rooms): the stair and the 1 m strip at its foot, 3.6 m, by 1.9 m; the doors
+open off the strip (planned at :data:`STAIRWELL_AREA_M2` the solver gave it 2.2 m2 or more
+of floor no one uses)."""
 LADDER_STAIRWELL_AREA_M2 = 3.5
 """Floor of a tiny house's stairwell holding its ship's ladder (anyhome.floorplan.stairs
 ``LADDER``: a 2.6-2.65 m storey's 11-12 risers, goings of 0.13 m and 0.5 m of floor at the
@@ -721,7 +732,7 @@ def stairwell_area_m2(doors: int, kind: str = "dogleg") -> float:
     if kind == LADDER:
         return LADDER_STAIRWELL_AREA_M2 if doors < stair_hall_min_doors(kind) else LADDER_STAIR_HALL_M2 + STAIR_HALL_M2_PER_DOOR * max(0, doors - STAIR_HALL_DOORS)
     if doors < stair_hall_min_doors(kind):
-        return SPIRAL_STAIRWELL_AREA_M2 if spiral else STAIRWELL_AREA_M2
+        return SPIRAL_STAIRWELL_AREA_M2 if spiral else STAIRWELL_FEW_DOORS_M2 if doors <= 2 else STAIRWELL_AREA_M2
     return (SPIRAL_STAIR_HALL_M2 if spiral else STAIR_HALL_M2) + STAIR_HALL_M2_PER_DOOR * max(0, doors - STAIR_HALL_DOORS)
 
 
@@ -748,10 +759,11 @@ def assign_levels(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], warnings
         raise PlanError("the knowledge base's programs.yaml has no `storeys` section: which rooms go upstairs")
     top = parsed.storeys - 1  # highest full storey
     up = [s for s in slots if s.type in st.up]
+    fillers: list[Slot] = []
     if top >= 1:
         for i, s in enumerate(up):  # contiguous runs of bedrooms per storey, bottom first
             s.level = 1 + i * top // max(1, len(up))
-        _fill_empty_storeys(kb, slots, top)
+        fillers = _fill_empty_storeys(kb, slots, top)
         baths = [s for s in slots if s.type == "bathroom"]
         keep = 1 if len(baths) > 1 else 0  # a cloakroom stays on the ground floor
         for i, s in enumerate(baths[keep:]):
@@ -774,6 +786,9 @@ def assign_levels(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], warnings
         for s in down:
             s.level = -1
     worded = _worded_levels(parsed, slots, top, set(st.up) | {"bathroom"})
+    for s in fillers:  # a storey the words gave rooms ("a bedroom with a bathroom at the top") needs no filler
+        if any(w.level == s.level for w in worded):
+            slots.remove(s)
     if top >= 1 and set(range(top + 1)) <= {s.level for s in worded}:
         # the text lists every storey's rooms ("garage and utility on the ground floor, kitchen
         # and living room on the first floor, ..."): the program's optional extras (a dining
@@ -815,13 +830,16 @@ def _keep_a_ground_floor(parsed: Parsed, slots: list[Slot], main: str | None = N
             s.level = 0
 
 
-def _fill_empty_storeys(kb: KnowledgeBase, slots: list[Slot], top: int) -> None:
-    """A bedroom on every storey from 1 to ``top`` that has no room."""
+def _fill_empty_storeys(kb: KnowledgeBase, slots: list[Slot], top: int) -> list[Slot]:
+    """A bedroom on every storey from 1 to ``top`` that has no room; returns them."""
+    added = []
     for k in range(1, top + 1):
         if not any(s.level == k for s in slots):
             s = _slot_from_entry(kb, {"type": "bedroom", "name": "bedroom"})
             s.level = k
             slots.append(s)
+            added.append(s)
+    return added
 
 
 _NOT_ADJACENT = re.compile(r"[,.;:]|\b(?:and|with|plus|or|then|while)\b")
@@ -1088,6 +1106,9 @@ def stairwells_sized(slots: list[Slot], edges: list[tuple[str, str]]) -> None:
 # 50 m2 flat") sets. The rooms are dropped or added before the areas are drawn; the
 # drawn areas are then scaled to the total, each within its type's norms.
 
+KIND_BAND_OVERLAP = 0.25
+"""Share of a size word's range of totals that the building kind's range must share for
+the two to narrow each other; below it the word's range holds alone."""
 STATED_TOLERANCE = 0.05
 """A stated total is aimed at within this fraction (the bar is 10 %: furniture may
 still grow a room)."""
@@ -1172,7 +1193,9 @@ def sizing(kb: KnowledgeBase, parsed: Parsed, program: str | None) -> Sizing:
     elif program in homes and word_band is not None:
         kt = kind.get("total_m2")
         lo, hi = word_band
-        if kt and not one_room and max(lo, kt[0]) <= min(hi, kt[1]):  # "a grand mansion": both hold
+        # "a grand mansion": both hold, where they share a good part of the word's range (a
+        # villa's range ends at 300 m2, where "grand" begins: the word's)
+        if kt and not one_room and min(hi, kt[1]) - max(lo, kt[0]) >= KIND_BAND_OVERLAP * (hi - lo):
             lo, hi = max(lo, kt[0]), min(hi, kt[1])
         sz.band = (float(lo), float(hi))
         sz.source = "word"
