@@ -795,3 +795,15 @@ def test_a_bar_listed_among_rooms_of_a_building_is_a_room_and_in_a_home_a_counte
     assert any(r.type == "bar" for r in hotel.rooms)
     home = plan_of("A house with a kitchen, a bar and a games room.", 0)
     assert not any(r.type == "bar" for r in home.rooms)
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+def test_counted_guest_bedrooms_are_a_b_and_bs_guest_rooms(seed):
+    spec = plan_of("A seaside bed and breakfast with three guest bedrooms, each with its own shower room, "
+                   "and a breakfast room.", seed)
+    assert sum(r.type == "bedroom" for r in spec.rooms) == 3  # not three more beside the program's guest rooms
+
+
+def test_counted_guest_bedrooms_keep_a_homes_master_bedroom():
+    spec = plan_of("a family house with two guest bedrooms", 0)
+    assert sum(r.type == "bedroom" for r in spec.rooms) >= 3

@@ -183,7 +183,7 @@ def plan_rooms(kb: KnowledgeBase, parsed: Parsed, program: str | None, rng: np.r
                 slots.append(s)
     fixed = _fixed_counts(kb, parsed)
     _claim_mentions(kb, parsed, slots, fixed, prog, program)
-    _drop_replaced(parsed, slots)
+    _drop_replaced(parsed, slots, program is None or is_dwelling(kb, program))
     totals = frozenset(t for t, n in (("bedroom", parsed.bedrooms), ("bathroom", parsed.bathrooms)) if n is not None)
     _apply_fixed(kb, slots, fixed, prog, totals)
     if program is None or is_dwelling(kb, program):  # "a restaurant for 40 guests" sleeps no one
@@ -367,14 +367,17 @@ COUNTED_KEEPS = frozenset({"bedroom", "bathroom", "hallway", "entry", "other"})
 type ("two guest bedrooms" keeps the master bedroom)."""
 
 
-def _drop_replaced(parsed: Parsed, slots: list[Slot]) -> None:
+def _drop_replaced(parsed: Parsed, slots: list[Slot], dwelling: bool = True) -> None:
     """"Three massage rooms" in a spa: the text fixed how many treatment rooms there are,
     so the program's unclaimed rooms of that type go; so do those of the very name
-    counted ("four guest rooms" in a hotel), whatever their type."""
+    counted ("four guest rooms" in a hotel), whatever their type. Outside a dwelling
+    counted bedrooms are the building's ("three guest bedrooms" in a B&B: its guest
+    rooms), not rooms beside a household's own."""
+    keeps = COUNTED_KEEPS if dwelling else COUNTED_KEEPS - {"bedroom"}
     counted = {s.type for s in slots if s.mention is not None and parsed.rooms[s.mention].count}
     # "four guest rooms" in a hotel: the count is that of the hotel's own guest rooms
     named = {parsed.rooms[s.mention].key for s in slots if s.mention is not None and parsed.rooms[s.mention].count}
-    for s in [s for s in slots if s.mention is None and (s.type in counted - COUNTED_KEEPS or s.name in named)]:
+    for s in [s for s in slots if s.mention is None and (s.type in counted - keeps or s.name in named)]:
         slots.remove(s)
 
 
