@@ -199,7 +199,7 @@ def test_street_level_is_the_ground_floor_and_the_first_floor_the_one_above():
     from anyhome.plan.parse import parse
 
     p = parse("a canal house: kitchen and dining room at street level, a living room on the first floor, bedrooms at the top")
-    assert [w for _, _, w in p.floor_words] == ["ground", "first"] and p.storeys >= 2
+    assert [w for _, _, w in p.floor_words] == ["ground", "first", "top"] and p.storeys >= 2
 
 
 @pytest.mark.parametrize("seed", [0, 1])
@@ -238,3 +238,10 @@ def test_a_storey_by_storey_list_is_not_a_bed_and_bath_total(seed):
 
 def test_two_bedrooms_and_a_bathroom_is_still_a_total():
     assert parse("a cottage with two bedrooms and a bathroom").bedrooms == 2
+
+
+def test_at_the_top_is_the_top_floor():
+    levels = _levels("A narrow three-storey canal house with a kitchen and dining room on the ground floor, a living "
+                     "room on the first floor and a master bedroom with a bathroom at the top.")
+    assert levels["master_bedroom"] == 2 and levels["kitchen"] == 0 and levels["living_room"] == 1
+    assert "top" not in [w for _, _, w in parse("a reading nook at the top of the stairs").floor_words]

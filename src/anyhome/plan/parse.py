@@ -1006,11 +1006,15 @@ _FLOOR_WORDS = re.compile(
     r"|\b(?:on|in|at)\s+the\s+(second|2nd|third|3rd)\b(?=\s*(?:[,;.]|and\b|$))"
     r"|\b(?:on|in|into|up in|up into|down in|down into)\s+the\s+(basement|attic|garret)\b"
     r"|\b(?:in|into|under|up in|up into|up under)\s+the\s+(eaves|roof space)\b|\b(downstairs|upstairs)\b|\bup (?:the )?(stairs)\b"
-    r"|\b(?:at|on)\s+(street|garden|ground)\s+(?:level|floor)\b|\b(underneath|beneath) (?:them|it)\b")
+    r"|\b(?:at|on)\s+(street|garden|ground)\s+(?:level|floor)\b|\b(underneath|beneath) (?:them|it)\b"
+    r"|\bat the very (top)\b(?!\s+of)|\b(?:at|on) the (top)\b(?=\s*(?:[,;.]|and\b|$))")
 """Words that put the rooms named before them on a storey ("a kitchen on the ground
 floor", "three bedrooms upstairs", "two bedrooms on the second" after "... on the first
 floor", "two sleeping lofts, underneath them a kitchenette";
 :func:`anyhome.plan.program.assign_levels`)."""
+_STOREY_NOUN = re.compile(r"\b(?:floor|storey|story|level)\b")
+"""A storey's noun: "at the top" without one names a storey only in a text of several
+("a shelf at the top" of a one-storey home names none)."""
 _FLOOR_WORD_OF = {"stairs": "upstairs", "street": "ground", "garret": "attic", "eaves": "attic",
                   "roof space": "attic", "garden": "ground", "underneath": "downstairs", "beneath": "downstairs"}
 """Floor words read as another ("at street level" is the ground floor: a "first floor"
@@ -1061,7 +1065,8 @@ def _find_levels(text: str, p: Parsed) -> None:
     if p.storeys == 1 and (_MEZZANINE.search(text) or (above and not (one_storey and p.basement))):
         p.storeys = 2  # "downstairs" in a house with an attic: the attic is its upstairs
     p.floor_words = [(mt.start(), mt.end(), _FLOOR_WORD_OF.get(g, g))
-                     for mt in _FLOOR_WORDS.finditer(text) for g in [next(g for g in mt.groups() if g)]]
+                     for mt in _FLOOR_WORDS.finditer(text) for g in [next(g for g in mt.groups() if g)]
+                     if not (p.storeys <= 1 and g == "top" and not _STOREY_NOUN.search(mt.group()))]
     _find_tiers(text, p)
 
 
