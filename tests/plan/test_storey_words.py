@@ -245,3 +245,18 @@ def test_at_the_top_is_the_top_floor():
                      "room on the first floor and a master bedroom with a bathroom at the top.")
     assert levels["master_bedroom"] == 2 and levels["kitchen"] == 0 and levels["living_room"] == 1
     assert "top" not in [w for _, _, w in parse("a reading nook at the top of the stairs").floor_words]
+
+
+def test_a_farmhouse_cellar_is_its_basement_and_what_it_is_for_no_rooms():
+    text = ("Old two-storey farmhouse with a cellar: farmhouse kitchen, parlour, boot room and pantry on the ground "
+            "floor, four bedrooms and a bathroom upstairs, and a cellar for storage and preserves.")
+    p = parse(text)
+    assert [m.name for m in p.rooms].count("cellar") == 1  # announced before the colon, named again in the list
+    assert not any(m.name in ("storage", "preserve") for m in p.rooms)  # "for storage and preserves": its use
+    assert p.basement
+    levels = _levels(text, 2)
+    assert levels["cellar"] == -1 and levels["kitchen"] == levels["parlour"] == 0
+
+
+def test_a_wine_cellar_is_no_basement():
+    assert not parse("a restaurant with a wine cellar").basement

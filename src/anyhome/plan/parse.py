@@ -234,6 +234,30 @@ def _toilet_rooms(text: str, kb: KnowledgeBase, mentions: list[Mention]) -> None
 THE_BEFORE = re.compile(r"\bthe\s+$")
 
 
+_FOR_USE = re.compile(r"\s+for\s+$")
+_USE_LIST = re.compile(r"\s*(?:and|or|&)\s*$")
+
+
+def _purpose_words(text: str, mentions: list[Mention]) -> list[Mention]:
+    """"A cellar for storage and preserves": the room words right after a room's "for",
+    with no article or number, joined by "and" or commas, say what the room is for; they
+    are no rooms of their own."""
+    out: list[Mention] = []
+    owner: Mention | None = None  # the room whose "for" list is being read
+    last_end = 0  # end of the mention read last, kept or not
+    for m in mentions:
+        if m.kind == "room" and m.count is None and out:
+            if owner is None and out[-1].kind == "room" and _FOR_USE.fullmatch(text[out[-1].end:m.start]):
+                owner, last_end = out[-1], m.end
+                continue
+            if owner is not None and _USE_LIST.fullmatch(text[last_end:m.start]):
+                last_end = m.end
+                continue
+        owner, last_end = None, m.end
+        out.append(m)
+    return out
+
+
 def _corefer(text: str, p: Parsed, mentions: list[Mention]) -> list[Mention]:
     """"The hall" after "a church hall", "the kitchen" after "a kitchen": the room named
     before, not another one; "the church" of a parish church is the building (its main
@@ -241,8 +265,11 @@ def _corefer(text: str, p: Parsed, mentions: list[Mention]) -> list[Mention]:
     rooms = [m for m in mentions if m.kind == "room"]
     head = (p.building_phrase or "").split()[-1:]
     alias: dict[int, int | None] = {}
+    head_end = text.find(":")  # "a farmhouse with a cellar: ..., and a cellar for storage": the one announced
     for j, m in enumerate(rooms):
-        if m.count is not None or m.plural or m.negated or not THE_BEFORE.search(text[: m.start]):
+        announced = (0 < head_end < m.start and (m.count or 1) == 1 and not m.plural and not m.negated
+                     and any(r.name == m.name and r.end <= head_end and (r.count or 1) == 1 for r in rooms[:j]))
+        if not announced and (m.count is not None or m.plural or m.negated or not THE_BEFORE.search(text[: m.start])):
             continue
         earlier = next((i for i in range(j - 1, -1, -1)
                         if i not in alias and (rooms[i].name == m.name or rooms[i].name.endswith(" " + m.name))), None)
@@ -998,7 +1025,7 @@ IN_A_PLACE = re.compile(
     r"industrial estate|business park|retail park|estate)\b")
 """Right after the building: where it stands ("a nail salon in a shopping arcade", "a
 boxing gym under a railway arch"); the place's words name no rooms or objects."""
-_BASEMENT = re.compile(r"\b(?:basement|lower ground floor|underground level)s?\b")
+_BASEMENT = re.compile(r"\b(?:basement|lower ground floor|underground level)s?\b|(?<!wine )(?<!beer )\bcellars?\b(?! (?:bar|club|door)s?\b)")
 _ATTIC = re.compile(r"\b(?:attic|loft conversion|garret)s?\b|\b(?:in|into|under|up under) the (?:eaves|roof space)\b")
 _MEZZANINE = re.compile(r"\bmezzanines?\b")
 _FLOOR_WORDS = re.compile(
@@ -1804,6 +1831,7 @@ def parse(text: str, kb: KnowledgeBase | None = None) -> Parsed:
     _toilet_rooms(norm, kb, mentions)
     _rooms_in_a_list(norm, kb, p, mentions)
     _paired_rooms(norm, mentions)  # "boys' and girls' toilets" are rooms now
+    mentions = _purpose_words(norm, mentions)
     _assign_rooms(norm, mentions, kb)
     _subject_room(norm, p, mentions)
     _table_seats(norm, kb, mentions)

@@ -881,7 +881,7 @@ def _worded_levels(parsed: Parsed, slots: list[Slot], top: int, up_types: set[st
         m_start, m_end = span
         before = [w for w in words if w[1] <= m_start and len(text[w[1]:m_start].split()) <= 2
                   and not _NOT_ADJACENT.search(text[w[1]:m_start])]
-        after = [w for w in trailing if w[0] >= m_end and "." not in text[m_end:w[0]]]
+        after = [w for w in trailing if w[0] >= m_end and not _LIST_OPENS.search(text[m_end:w[0]])]
         opened = [w for w in leading if w[1] <= m_start and not _CLAUSE_END.search(text[w[1]:m_start])]
         found = before[-1] if before else after[0] if after else opened[-1] if opened else None
         word = found[2] if found else None
@@ -931,6 +931,9 @@ def _slot_span(s: Slot, parsed: Parsed) -> tuple[int, int] | None:
 
 
 _CLAUSE_END = re.compile(r"[.;]")
+_LIST_OPENS = re.compile(r"[.:]")
+"""Between a room and storey words after it: they are another sentence's, or a list's that
+a colon opens ("a farmhouse with a cellar: a kitchen and a parlour on the ground floor")."""
 _LIST_BREAK = re.compile(r",\s*(?:and|then|plus)\b")
 """Where one list of rooms ends and the next begins ("a kitchen and a snug, and two
 bedrooms in the attic": the attic's words take only the bedrooms)."""
