@@ -352,6 +352,40 @@ def _table(c: np.ndarray, thr: float, inclusive: bool, kind: int, z0: np.ndarray
     return c, f, flags
 
 
+STAIR_FLOOR_ZONE_TOP_M = 1.0
+"""A stair well (the floor of an upper storey over a flight) and the strip of floor at a
+flight's foot keep the floor clear: what hangs on a wall from this height up (a painting, a
+mirror) may hang over them, as over a landing."""
+
+
+def stair_blocks(floorplan: Floorplan, room_id: str) -> tuple[list[np.ndarray], list[np.ndarray]]:
+    """The stairs' zones of room ``room_id`` (:func:`anyhome.floorplan.levels.stair_zones`), as
+    corners (4, 2): (the boxes of the flights standing in it, kept clear at every height; the
+    zones, kept clear below :data:`STAIR_FLOOR_ZONE_TOP_M`: the strip at a flight's foot, the
+    well of a flight from the storey below)."""
+    from anyhome.floorplan.levels import stair_zones, stairs_objects
+
+    flights = [np.asarray(rect_corners(np.asarray([o.position[:2]]), o.size[:2], [o.yaw])[0])
+               for o in stairs_objects(floorplan) if o.room == room_id]
+    return flights, list(stair_zones(floorplan).get(room_id, []))
+
+
+def _zone_table(zones: np.ndarray, tops: np.ndarray) -> tuple[np.ndarray, ...]:
+    """The rows of door zones (m, 4, 2) as :meth:`RoomSpace._blockers` stacks them: a zone of
+    top ``inf`` meets a pose at any height, one of a finite top the poses whose bottom is below it."""
+    full = np.isinf(tops)
+    if full.all():
+        return _table(zones, -DOOR_MARGIN_M, True, _ZONE_KIND, np.nan, np.nan)
+    parts = [_table(zones[full], -DOOR_MARGIN_M, True, _ZONE_KIND, np.nan, np.nan),
+             _table(zones[~full], -DOOR_MARGIN_M, True, _PLACED, -np.inf, tops[~full])]
+    order = np.concatenate([np.flatnonzero(full), np.flatnonzero(~full)])
+    back = np.argsort(order)  # the rows in the zones' order
+    out = tuple(np.concatenate(cols)[back] for cols in zip(*parts, strict=True))
+    for a in out:
+        a.flags.writeable = False
+    return out
+
+
 def _own_rows(p: Placed) -> tuple[np.ndarray, ...]:
     """The row of one placed object as :meth:`RoomSpace._blockers` stacks it (read-only)."""
     return _table(p.corners[None], EPS_COLLIDE_M, False, _PLACED, p.z0, p.z1)
@@ -478,7 +512,10 @@ class RoomSpace:
         openings = []
         zones = []
         self.doors = []
+        storey = {r.id for r in self.floorplan.rooms if r.level == self.room.level}
         for d in self.floorplan.doors:
+            if not storey.intersection(d.rooms):  # a door of another storey, above or below
+                continue
             seg = np.asarray(d.segment, dtype=float)
             openings.append((seg[0], seg[1], 0.0, float(d.height), True))
             z = np.asarray(opening_zone(d.segment).exterior.coords)[:4]
@@ -487,14 +524,18 @@ class RoomSpace:
                 zones.append(z)
             if self.room.id in d.rooms:
                 self.doors.append(d)
+        tops = [math.inf] * len(zones)
         if self.floorplan.levels:  # the stairs' flights and the floor at their feet
-            from anyhome.floorplan.levels import stair_zones
-
-            zones += stair_zones(self.floorplan).get(self.room.id, [])
+            flights, floor_only = stair_blocks(self.floorplan, self.room.id)
+            zones += flights + floor_only
+            tops += [math.inf] * len(flights) + [STAIR_FLOOR_ZONE_TOP_M] * len(floor_only)
         self.door_zones = np.asarray(zones).reshape(-1, 4, 2)
+        self.zone_tops = np.asarray(tops, dtype=float)
+        """Per door zone, the height from which a pose may overlap it: infinite (never) but
+        for a stair well or the strip at a flight's foot (:func:`stair_blocks`)."""
         self.zone_lo, self.zone_hi = self.door_zones.min(1), self.door_zones.max(1)
         self.zone_aligned = _aligned(self.door_zones)
-        self._zone_rows = _table(self.door_zones, -DOOR_MARGIN_M, True, _ZONE_KIND, np.nan, np.nan)
+        self._zone_rows = _zone_table(self.door_zones, self.zone_tops)
         """The door zones as :meth:`_blockers` stacks them, first."""
         self._kc: tuple[list[np.ndarray], tuple[np.ndarray, ...]] = ([], ())
         """The sightlines whose rows :meth:`_blockers` made last, and those rows."""
@@ -503,6 +544,8 @@ class RoomSpace:
         self.zone_polys = [Polygon(z) for z in zones]
         wzones = []
         for w in self.floorplan.windows:
+            if w.room not in storey:
+                continue
             seg = np.asarray(w.segment, dtype=float)
             openings.append((seg[0], seg[1], float(w.sill), float(w.sill + w.height), False))
             if w.room == self.room.id:

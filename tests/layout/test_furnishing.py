@@ -116,10 +116,24 @@ def test_members_of_other_key_groups_give_way_to_a_key_anchor(seed):
 
 
 def test_key_item_that_cannot_fit_is_marked():
-    fp = single_room(rect(0, 0, 2.0, 2.0), door=((0.2, 0.0), (1.1, 0.0)))
+    fp = single_room(rect(0, 0, 1.6, 1.6), door=((0.2, 0.0), (1.1, 0.0)))  # shorter than the narrowest bed
     bed = group("bed", item("bed", "bed", (1.8, 2.1, 0.5), "place_wall", tags=["bed"]), priority=0)
     res = layout_house(house_spec({"r1": [bed]}), fp, np.random.default_rng(0))
     assert [d.key for d in res.dropped if d.name == "bed"] == [True]
+
+
+def test_a_key_anchor_too_big_for_the_room_is_placed_narrower_last():
+    """A 1.8 m wide bed in a 2 x 2 m room fits at none of the shrink scales: it is placed
+    at NARROW_SCALES (1.08 m wide, 1.68 m long) rather than dropped."""
+    from anyhome.layout.solver import NARROW_SCALES
+
+    fp = single_room(rect(0, 0, 2.0, 2.0), door=((0.2, 0.0), (1.1, 0.0)))
+    bed = group("bed", item("bed", "bed", (1.8, 2.1, 0.5), "place_wall", tags=["bed"]), priority=0)
+    res = layout_house(house_spec({"r1": [bed]}), fp, np.random.default_rng(0))
+    assert not res.dropped
+    (got,) = res.objects
+    assert got.size[:2] == pytest.approx((1.8 * NARROW_SCALES[0], 2.1 * NARROW_SCALES[1]))
+    assert check_valid(fp, res.objects) == []
 
 
 def test_curtain_hangs_beside_a_window():

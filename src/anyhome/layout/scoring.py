@@ -227,6 +227,8 @@ def exact_ok(st: RoomState, ch: Choice, size: Sequence[float], kind: str, suppor
     if kind != "top" and sp.zone_polys:
         meet = ~((sp.zone_lo > hi).any(1) | (sp.zone_hi < lo).any(1))  # bounding boxes apart: no intersection
         for z in meet.nonzero()[0].tolist():
+            if ch.z >= sp.zone_tops[z]:  # hung over a stair well or a flight's foot
+                continue
             zone = sp.zone_polys[z]
             fp = Polygon(corners) if fp is None else fp
             if fp.intersects(zone) and fp.intersection(zone).area > 1e-6:

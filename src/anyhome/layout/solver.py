@@ -81,6 +81,10 @@ def layout_house(spec: HouseSpec, floorplan: Floorplan, rng: np.random.Generator
 
 SHRINK_SCALES = (0.85, 0.7)
 """Footprint scales of a key anchor tried when it does not fit at its planned size."""
+NARROW_SCALES = (0.6, 0.8)
+"""(width, depth) scales of a key anchor tried last, when it fits at none of
+:data:`SHRINK_SCALES`: the narrower piece a designer would pick for a small room (a
+loveseat for a sectional sofa), its depth kept more than its width."""
 
 
 def furnish_room(st: RoomState) -> None:
@@ -89,8 +93,9 @@ def furnish_room(st: RoomState) -> None:
 
     When a key group's anchor (:attr:`GroupSpec.key`) is dropped, the room is furnished again
     making room for it: key groups first, the others after; then with each key anchor
-    dropped so far (in any of these furnishings) smaller (:data:`SHRINK_SCALES`); last, with
-    the other key groups' members left out (they go before a key anchor does). The
+    dropped so far (in any of these furnishings) smaller (:data:`SHRINK_SCALES`); then with
+    the other key groups' members left out (they go before a key anchor does); last, the same
+    two with those anchors narrower (:data:`NARROW_SCALES`: a loveseat for a sectional). The
     furnishing that drops the fewest key anchors, then the fewest items, is kept; a key
     anchor is dropped only when none fits."""
     _make_room(st)
@@ -110,7 +115,9 @@ def _make_room(st: RoomState) -> None:
     keys_first = sorted(order, key=lambda i: not groups[i].key)
     # last: the smallest, with the members of the other key groups giving way (a coat
     # rack for the boot shelf)
-    for scale, bare in [*((s, False) for s in (1.0, *SHRINK_SCALES)), (SHRINK_SCALES[-1], True)]:
+    smallest = (SHRINK_SCALES[-1], SHRINK_SCALES[-1])
+    for scale, bare in [*(((s, s), False) for s in (1.0, *SHRINK_SCALES)), (smallest, True),
+                        (NARROW_SCALES, False), (NARROW_SCALES, True)]:
         st.restore(start)
         # the members the text asked for ("a bar with eight stools") never make room
         keep = {i for i in keys_first if groups[i].key and not groups[i].required and i not in missing} if bare else set()
@@ -139,8 +146,9 @@ def _key_dropped(st: RoomState) -> list[int]:
     return [i for i, g in enumerate(st.spec.groups) if g.key and g.anchor.name in gone]
 
 
-def _furnish(st: RoomState, order: list[int], scales: dict[int, float], bare: set[int] | None = None) -> None:
-    """The groups in ``order``; ``scales``: a footprint scale for some anchors; ``bare``:
+def _furnish(st: RoomState, order: list[int], scales: dict[int, tuple[float, float]],
+             bare: set[int] | None = None) -> None:
+    """The groups in ``order``; ``scales``: (width, depth) scales of some anchors' footprints; ``bare``:
     groups placed without their members, which are dropped to make room."""
     rugs = []
     zones = []
@@ -150,10 +158,10 @@ def _furnish(st: RoomState, order: list[int], scales: dict[int, float], bare: se
             for m in g.members:
                 st.drop(m.name, "left out to make room for what the room is for", copies=g.repeat * m.count)
             g = g.model_copy(update={"members": []})
-        if scales.get(i, 1.0) != 1.0:
+        if scales.get(i, (1.0, 1.0)) != (1.0, 1.0):
             w, d, h = g.anchor.size_m
-            s = scales[i]
-            g = g.model_copy(update={"anchor": g.anchor.model_copy(update={"size_m": (w * s, d * s, h)})})
+            sw, sd = scales[i]
+            g = g.model_copy(update={"anchor": g.anchor.model_copy(update={"size_m": (w * sw, d * sd, h)})})
         if layers.is_layer_group(g):
             rugs.append(g)
             continue

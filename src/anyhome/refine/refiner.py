@@ -94,7 +94,13 @@ class _Refiner:
         self.objs: list[HouseObject | None] = [o.model_copy() for o in objects]
         self.rooms = {r.id: room_polygon(r) for r in floorplan.rooms}
         self.heights = {r.id: r.height for r in floorplan.rooms}
-        self.zones = [opening_zone(d.segment) for d in floorplan.doors]
+        level = {r.id: r.level for r in floorplan.rooms}
+        self.zones: dict[int, list[Polygon]] = {}
+        """Storey -> the zones of its doors (a door of another storey is no obstacle)."""
+        for d in floorplan.doors:
+            for lv in {level[r] for r in d.rooms if r in level}:
+                self.zones.setdefault(lv, []).append(opening_zone(d.segment))
+        self.levels = level
         self.spaces = {r.id: RoomSpace(floorplan, r) for r in floorplan.rooms}
         self.changed_rooms: set[str] = set()
 
@@ -136,7 +142,7 @@ class _Refiner:
         if o.support == "floor":
             if abs(o.position[2]) > TOLERANCE_M:
                 n += 1
-            for z in self.zones:
+            for z in self.zones.get(self.levels[o.room], []):
                 if poly.intersects(z) and poly.intersection(z).area > 1e-6:
                     n += 1
         elif o.support == "wall":
