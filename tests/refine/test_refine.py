@@ -88,6 +88,15 @@ def test_unfixable_dropped_with_what_it_carries():
     assert [o.id for o in out] == ["a"]
 
 
+def test_a_member_of_a_dropped_anchor_keeps_no_dangling_anchor():
+    a = obj("a", "bed", "bed", (2.5, 2.43, 0.0), (4.9, 3.1, 0.6))
+    b = obj("b", "table", "table", (2.5, 2.0, 0.0), (1.0, 1.0, 0.75))  # dropped: no spot clear of the bed
+    c = obj("c", "chair", "chair", (4.7, 0.3, 0.0), (0.45, 0.45, 0.9)).model_copy(update={"anchor": "b"})
+    fp, out = refine([a, b, c])
+    assert "b" not in [o.id for o in out]
+    assert all(o.anchor is None or o.anchor in {x.id for x in out} for o in out)
+
+
 def test_refine_keeps_valid_layouts_valid_and_deterministic():
     fp = two_rooms()
     sofa = group("sofa", item("sofa", "sofa", (2.0, 0.9, 0.85), "place_wall"), [

@@ -67,13 +67,16 @@ def refine_objects(floorplan: Floorplan, objects: list[HouseObject], rng: np.ran
     Returns
     -------
     objects : the refined list, same order, possibly shorter (dropped objects and
-        whatever stood on them are left out)
+        whatever stood on them are left out; an object whose group anchor was dropped
+        stands on as an object of no group's, ``anchor`` None, so no id is left dangling)
     """
     ref = _Refiner(floorplan, objects, rng)
     ref.settle()
     ref.resolve()
     ref.guard_navigation()
-    return [o for o in ref.objs if o is not None]
+    live = [o for o in ref.objs if o is not None]
+    ids = {o.id for o in live}
+    return [o if o.anchor is None or o.anchor in ids else o.model_copy(update={"anchor": None}) for o in live]
 
 
 def _is_seat(o: HouseObject) -> bool:
