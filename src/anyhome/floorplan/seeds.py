@@ -66,7 +66,7 @@ class _Forces:
         ij = np.asarray(edges, dtype=np.intp).reshape(-1, 2)
         self.i, self.j = ij[:, 0], ij[:, 1]
         self.rest = opts.seed_rest_distance_frac * (radius[self.i] + radius[self.j])
-        self.pairs = ij.ravel()  # i0, j0, i1, j1 ...: the order the pulls were added in
+        self.edges = ij.tolist()
         self.rooms = np.flatnonzero(exterior)
         self.reach = opts.seed_edge_reach_frac * radius[self.rooms]
         self.rows = np.arange(len(self.rooms))
@@ -79,23 +79,21 @@ class _Forces:
         return self.opts.seed_repel_gain * 0.5 * np.sum((overlap / dist)[:, :, None] * delta, axis=1)
 
     def attract(self, pos: np.ndarray) -> np.ndarray:
-        move = np.zeros_like(pos)
         if not len(self.i):
-            return move
+            return np.zeros_like(pos)
         delta = pos[self.j] - pos[self.i]
         dist = np.sqrt(np.vecdot(delta, delta)) + 1e-6
         excess = dist - self.rest
-        pulled = excess > 0
-        if not pulled.all():
-            if not pulled.any():
-                return move
-            step = (self.opts.seed_attract_gain * 0.5 * excess[pulled])[:, None] * delta[pulled] / dist[pulled][:, None]
-            pairs = np.stack([self.i[pulled], self.j[pulled]], axis=1).ravel()
-        else:
-            step = (self.opts.seed_attract_gain * 0.5 * excess)[:, None] * delta / dist[:, None]
-            pairs = self.pairs
-        np.add.at(move, pairs, np.stack([step, -step], axis=1).reshape(-1, 2))
-        return move
+        step = (self.opts.seed_attract_gain * 0.5 * excess)[:, None] * delta / dist[:, None]
+        move = [[0.0, 0.0] for _ in range(self.n)]
+        for (i, j), pulled, (sx, sy) in zip(self.edges, (excess > 0).tolist(), step.tolist()):
+            if pulled:  # added in the connections' order, as Python floats: the same sums
+                mi, mj = move[i], move[j]
+                mi[0] += sx
+                mi[1] += sy
+                mj[0] -= sx
+                mj[1] -= sy
+        return np.array(move)
 
     def to_edge(self, pos: np.ndarray) -> np.ndarray:
         move = np.zeros_like(pos)
