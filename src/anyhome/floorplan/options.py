@@ -315,8 +315,8 @@ class FloorplanOptions:
     """Narrowest strip of a room left beside a stairwell carved from its corner along it (a passage), m."""
     open_stair_max_corners: int = _opt(8, 4, 8)
     """Most corners of a room with its stairwell merged in: 4 a rectangle, 6 an L, 8 a T or Z (the stairwell an alcove off part of one wall)."""
-    stair_carve_max_attempts: int = _opt(6, 1, 10_000)
-    """Slicing attempts of one such search (``max_attempts`` at most). 6, not 12 (branch h-scpu2): measured on dev_storeys and dev_storeys2, seeds 0-2, 143 of the 158 carve searches that found a layout did so within six attempts, and the 177 that found none (most of them a small ground floor's kitchen and living room, every attempt off its areas) took 41 of the stage's 63 s."""
+    stair_carve_max_attempts: int = _opt(12, 1, 10_000)
+    """Slicing attempts of one such search (``max_attempts`` at most)."""
     well_end_trim: int = _opt(1, 0, 1)
     """1: a stairwell's ends beyond its stair's box and foot strip go to the room across (floorplan.wells.wells_end_trimmed); 0: kept."""
     well_doors_to_strip: int = _opt(1, 0, 1)
