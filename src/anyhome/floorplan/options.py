@@ -17,6 +17,7 @@ sill, height and width (``windows.WINDOW_SILL_M`` ...), the 5 cm snapping grid
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass, field, fields
 from typing import Any
 
@@ -350,15 +351,20 @@ class FloorplanOptions:
     """Longest side / widest disc of a room with its storey's stairwell merged in (an open stair, ``levels.stairs_opened``): the room itself keeps ``max_habitable_aspect_ratio``, the stair's end is floor kept clear; under the plan metrics' 2."""
 
     def __post_init__(self) -> None:
-        for f in fields(self):
-            v = getattr(self, f.name)
-            lo, hi = f.metadata["range"]
-            is_int = isinstance(f.default, int)
-            kind = "an integer" if is_int else "a number"
+        for name, lo, hi, is_int in _ranges():
+            v = getattr(self, name)
             if isinstance(v, bool) or not isinstance(v, int if is_int else (int, float)) or not lo <= v <= hi:
-                raise FloorplanOptionsError(f"FloorplanOptions.{f.name} must be {kind} in [{lo}, {hi}], got {v!r}")
+                kind = "an integer" if is_int else "a number"
+                raise FloorplanOptionsError(f"FloorplanOptions.{name} must be {kind} in [{lo}, {hi}], got {v!r}")
         for low, high in _ORDERED:
             if getattr(self, low) > getattr(self, high):
                 raise FloorplanOptionsError(
                     f"FloorplanOptions.{low} ({getattr(self, low)!r}) must not exceed {high} ({getattr(self, high)!r})"
                 )
+
+
+@functools.cache
+def _ranges() -> tuple[tuple[str, float, float, bool], ...]:
+    """(name, low, high, is an integer) of every field of :class:`FloorplanOptions`,
+    read once (the options are checked at every ``dataclasses.replace``)."""
+    return tuple((f.name, *f.metadata["range"], isinstance(f.default, int)) for f in fields(FloorplanOptions))

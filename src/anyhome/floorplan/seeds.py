@@ -36,50 +36,78 @@ def seed_positions(
     radius = np.sqrt(areas_m2) / grid.cell_m / 2.0
     pos = free[rng.choice(len(free), size=len(areas_m2), replace=len(free) < len(areas_m2))]
     pos = pos + rng.uniform(-opts.seed_jitter_cells, opts.seed_jitter_cells, size=pos.shape)
-    border = _border_cells(grid)
+    forces = _Forces(radius, edges, exterior, _border_cells(grid), opts)
     center = free.mean(axis=0)
+    pull = hub[:, None] * opts.seed_center_gain
     inside = grid.owner == FREE
+    lo, hi = free.min(axis=0), free.max(axis=0)
     for _ in range(opts.seed_force_iterations):
         before = pos
-        pos = pos + _repel(pos, radius, opts) + _attract(pos, radius, edges, opts)
-        pos = pos + _to_edge(pos, radius, exterior, border, opts) + hub[:, None] * opts.seed_center_gain * (center - pos)
-        pos = _snap_inside(pos, free, inside)
+        pos = pos + forces.repel(pos) + forces.attract(pos)
+        pos = pos + forces.to_edge(pos) + pull * (center - pos)
+        pos = _snap_inside(pos, free, inside, lo, hi)
         if float(np.abs(pos - before).max()) <= opts.seed_settled_cells:  # settled: further steps barely move a seed
             break
     return pos
 
 
-def _repel(pos: np.ndarray, radius: np.ndarray, opts: FloorplanOptions) -> np.ndarray:
-    delta = pos[:, None, :] - pos[None, :, :]
-    dist = np.linalg.norm(delta, axis=2) + 1e-6
-    overlap = np.clip(radius[:, None] + radius[None, :] - dist, 0.0, None)
-    np.fill_diagonal(overlap, 0.0)
-    return opts.seed_repel_gain * 0.5 * np.sum((overlap / dist)[:, :, None] * delta, axis=1)
+class _Forces:
+    """The force layout's three forces, with what does not change between its steps
+    worked out once. Each gives the same floats as the force computed step by step with
+    ``np.linalg.norm`` (of one vector: the dot product, ``np.vecdot``; along an axis: the
+    sum of squares) and each connection's pull added in the connections' order."""
 
+    def __init__(self, radius: np.ndarray, edges: list[tuple[int, int]], exterior: np.ndarray,
+                 border: np.ndarray, opts: FloorplanOptions) -> None:
+        n = len(radius)
+        self.n, self.opts, self.border = n, opts, border
+        self.reach_sum = radius[:, None] + radius[None, :]
+        self.diagonal = np.arange(n)
+        ij = np.asarray(edges, dtype=np.intp).reshape(-1, 2)
+        self.i, self.j = ij[:, 0], ij[:, 1]
+        self.rest = opts.seed_rest_distance_frac * (radius[self.i] + radius[self.j])
+        self.edges = ij.tolist()
+        self.rooms = np.flatnonzero(exterior)
+        self.reach = opts.seed_edge_reach_frac * radius[self.rooms]
+        self.rows = np.arange(len(self.rooms))
 
-def _attract(pos: np.ndarray, radius: np.ndarray, edges: list[tuple[int, int]], opts: FloorplanOptions) -> np.ndarray:
-    move = np.zeros_like(pos)
-    for i, j in edges:
-        delta = pos[j] - pos[i]
-        dist = float(np.linalg.norm(delta)) + 1e-6
-        excess = dist - opts.seed_rest_distance_frac * (radius[i] + radius[j])
-        if excess > 0:
-            step = opts.seed_attract_gain * 0.5 * excess * delta / dist
-            move[i] += step
-            move[j] -= step
-    return move
+    def repel(self, pos: np.ndarray) -> np.ndarray:
+        delta = pos[:, None, :] - pos[None, :, :]
+        dist = np.sqrt(np.add.reduce(delta * delta, axis=2)) + 1e-6
+        overlap = np.clip(self.reach_sum - dist, 0.0, None)
+        overlap[self.diagonal, self.diagonal] = 0.0
+        return self.opts.seed_repel_gain * 0.5 * np.sum((overlap / dist)[:, :, None] * delta, axis=1)
 
+    def attract(self, pos: np.ndarray) -> np.ndarray:
+        if not len(self.i):
+            return np.zeros_like(pos)
+        delta = pos[self.j] - pos[self.i]
+        dist = np.sqrt(np.vecdot(delta, delta)) + 1e-6
+        excess = dist - self.rest
+        step = (self.opts.seed_attract_gain * 0.5 * excess)[:, None] * delta / dist[:, None]
+        move = [[0.0, 0.0] for _ in range(self.n)]
+        for (i, j), pulled, (sx, sy) in zip(self.edges, (excess > 0).tolist(), step.tolist()):
+            if pulled:  # added in the connections' order, as Python floats: the same sums
+                mi, mj = move[i], move[j]
+                mi[0] += sx
+                mi[1] += sy
+                mj[0] -= sx
+                mj[1] -= sy
+        return np.array(move)
 
-def _to_edge(pos: np.ndarray, radius: np.ndarray, exterior: np.ndarray, border: np.ndarray, opts: FloorplanOptions) -> np.ndarray:
-    move = np.zeros_like(pos)
-    rooms = np.flatnonzero(exterior)
-    dists = np.linalg.norm(border[None, :, :] - pos[rooms][:, None, :], axis=2)  # every room at once, the same numbers
-    for i, d in zip(rooms, dists):
-        k = int(np.argmin(d))
-        reach = opts.seed_edge_reach_frac
-        if d[k] > reach * radius[i]:
-            move[i] = opts.seed_edge_gain * (border[k] - pos[i]) * (1.0 - reach * radius[i] / d[k])
-    return move
+    def to_edge(self, pos: np.ndarray) -> np.ndarray:
+        move = np.zeros_like(pos)
+        if not len(self.rooms):
+            return move
+        gap = self.border[None, :, :] - pos[self.rooms][:, None, :]
+        dists = np.sqrt(np.add.reduce(gap * gap, axis=2))  # every room at once
+        k = np.argmin(dists, axis=1)
+        d = dists[self.rows, k]
+        far = d > self.reach
+        if far.any():
+            i, k, d, reach = self.rooms[far], k[far], d[far], self.reach[far]
+            move[i] = self.opts.seed_edge_gain * (self.border[k] - pos[i]) * (1.0 - reach / d)[:, None]
+        return move
 
 
 def _border_cells(grid: Grid) -> np.ndarray:
@@ -92,10 +120,11 @@ def _border_cells(grid: Grid) -> np.ndarray:
     return np.argwhere(edge).astype(float) + 0.5
 
 
-def _snap_inside(pos: np.ndarray, free: np.ndarray, inside: np.ndarray) -> np.ndarray:
-    """Move positions outside the footprint to the nearest free cell centre."""
-    pos = np.clip(pos, free.min(axis=0), free.max(axis=0))
-    idx = np.floor(pos).astype(int)
+def _snap_inside(pos: np.ndarray, free: np.ndarray, inside: np.ndarray, lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
+    """Move positions outside the footprint to the nearest free cell centre (``lo``,
+    ``hi``: the free cells' least and greatest centres)."""
+    pos = np.clip(pos, lo, hi)
+    idx = pos.astype(int)  # >= 0.5: the floor
     for i in np.flatnonzero(~inside[idx[:, 0], idx[:, 1]]):
         pos[i] = free[int(np.argmin(np.linalg.norm(free - pos[i], axis=1)))]
     return pos

@@ -50,6 +50,12 @@ class SliceRooms:
     """Shortest long side (m) each room may have (0: any; a stairwell: its stair)."""
 
     @functools.cached_property
+    def greedy(self) -> dict[tuple, tuple[tuple[int, Rect], ...]]:
+        """A part (rect, rooms, exterior sides, ports in their order) -> its rooms'
+        rectangles cut greedily (:func:`_greedy_rects`), in the order found."""
+        return {}
+
+    @functools.cached_property
     def lists(self) -> _SliceLists:
         """The per-room arrays as Python lists (the scores read them per room, per cut:
         a list is read faster than an array, and the numbers are the same)."""
@@ -209,16 +215,26 @@ def _completed_cost(parts, rooms: SliceRooms) -> float:
 
 
 def _greedy_rects(rect, ids, ext, ports, rooms: SliceRooms, out: dict[int, Rect]) -> None:
+    """``out`` given the rectangle of each of ``ids``, ``rect`` cut greedily (the best
+    cut by its immediate score, no noise): the same part comes back for many cuts, so
+    each part's rectangles are worked out once per slicing (``SliceRooms.greedy``) and
+    added to ``out`` in the order they were found."""
     if len(ids) == 1:
         out[ids[0]] = rect
         return
-    ranked = _ranked_cuts(rect, ids, ext, ports, rooms)
-    if not ranked:
-        for k in ids:
-            out[k] = (rect[0], rect[1], rect[0], rect[1])
-        return
-    for part in ranked[0][1][:2]:
-        _greedy_rects(*part, rooms, out)
+    key = (rect, tuple(ids), ext, tuple(ports.items()))
+    found = rooms.greedy.get(key)
+    if found is None:
+        part: dict[int, Rect] = {}
+        ranked = _ranked_cuts(rect, ids, ext, ports, rooms)
+        if not ranked:
+            for k in ids:
+                part[k] = (rect[0], rect[1], rect[0], rect[1])
+        else:
+            for sub in ranked[0][1][:2]:
+                _greedy_rects(*sub, rooms, part)
+        found = rooms.greedy[key] = tuple(part.items())
+    out.update(found)
 
 
 def _leaves_cost(leaves: dict[int, Rect], rect: Rect, ext: Ext, ports: Ports, rooms: SliceRooms) -> float:

@@ -39,6 +39,12 @@ class TuneRooms:
     (the notch of a U: a void touching another number of sides costs)."""
 
     @functools.cached_property
+    def room_costs(self) -> dict[tuple[int, Rect], float]:
+        """(room, rectangle) -> :func:`_room_cost`, worked out once: the annealing and the
+        nudges come back to the same rectangles of most rooms at every move."""
+        return {}
+
+    @functools.cached_property
     def lists(self) -> _RoomLists:
         """The per-room arrays as Python lists (the costs read them per room, per move:
         a list is read faster than an array, and the numbers are the same)."""
@@ -87,11 +93,15 @@ def layout_cost(rects: dict[int, Rect], outer: Rect, rooms: TuneRooms) -> float:
     """Hard-rule violations of the leaf rectangles (0 when none)."""
     opts = rooms.opts
     cost = 0.0
+    known = rooms.room_costs
     for k, r in rects.items():
         if r[2] <= r[0] or r[3] <= r[1]:
             return np.inf
         if k != rooms.void:
-            cost += _room_cost(k, r, rooms)
+            c = known.get((k, r))
+            if c is None:
+                c = known[(k, r)] = _room_cost(k, r, rooms)
+            cost += c
     for i, j in rooms.edges:
         shared = shared_wall_cells(rects[i], rects[j]) * rooms.cell_m
         if shared < opts.shared_wall_min_m:
