@@ -240,7 +240,7 @@ _USE_LIST = re.compile(r"\s*(?:and|or|&)\s*$")
 
 def _purpose_words(text: str, mentions: list[Mention]) -> list[Mention]:
     """"A cellar for storage and preserves": the room words right after a room's "for",
-    with no article or number, joined by "and" or commas, say what the room is for; they
+    with no article or number, joined by "and" or "or", say what the room is for; they
     are no rooms of their own."""
     out: list[Mention] = []
     owner: Mention | None = None  # the room whose "for" list is being read
