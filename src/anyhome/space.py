@@ -22,7 +22,7 @@ from shapely.geometry import Polygon
 from shapely.geometry.polygon import orient
 
 from anyhome.geometry import TOLERANCE_M, blocks_navigation, opening_zone
-from anyhome.house import Floorplan, HouseObject, Room
+from anyhome.house import Door, Floorplan, HouseObject, Room
 
 if TYPE_CHECKING:
     from anyhome.navgrid import Obstacle
@@ -352,6 +352,13 @@ def _table(c: np.ndarray, thr: float, inclusive: bool, kind: int, z0: np.ndarray
     return c, f, flags
 
 
+def storey_doors(floorplan: Floorplan, level: int) -> list[Door]:
+    """The doors of storey ``level``: those of its rooms. A door of another storey, above
+    or below, is no obstacle on this one (a door below once kept a top-floor bedroom's bed out)."""
+    rooms = {r.id for r in floorplan.rooms if r.level == level}
+    return [d for d in floorplan.doors if rooms.intersection(d.rooms)]
+
+
 STAIR_FLOOR_ZONE_TOP_M = 1.0
 """A stair well (the floor of an upper storey over a flight) and the strip of floor at a
 flight's foot keep the floor clear: what hangs on a wall from this height up (a painting, a
@@ -512,10 +519,7 @@ class RoomSpace:
         openings = []
         zones = []
         self.doors = []
-        storey = {r.id for r in self.floorplan.rooms if r.level == self.room.level}
-        for d in self.floorplan.doors:
-            if not storey.intersection(d.rooms):  # a door of another storey, above or below
-                continue
+        for d in storey_doors(self.floorplan, self.room.level):
             seg = np.asarray(d.segment, dtype=float)
             openings.append((seg[0], seg[1], 0.0, float(d.height), True))
             z = np.asarray(opening_zone(d.segment).exterior.coords)[:4]
@@ -543,8 +547,9 @@ class RoomSpace:
         """The last table and sightline rows :meth:`_blockers` joined, and the table joined."""
         self.zone_polys = [Polygon(z) for z in zones]
         wzones = []
+        level = {r.id: r.level for r in self.floorplan.rooms}
         for w in self.floorplan.windows:
-            if w.room not in storey:
+            if level.get(w.room) != self.room.level:  # a window of another storey
                 continue
             seg = np.asarray(w.segment, dtype=float)
             openings.append((seg[0], seg[1], float(w.sill), float(w.sill + w.height), False))

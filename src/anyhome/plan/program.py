@@ -367,7 +367,7 @@ COUNTED_KEEPS = frozenset({"bedroom", "bathroom", "hallway", "entry", "other"})
 type ("two guest bedrooms" keeps the master bedroom)."""
 
 
-def _drop_replaced(parsed: Parsed, slots: list[Slot], dwelling: bool = True) -> None:
+def _drop_replaced(parsed: Parsed, slots: list[Slot], dwelling: bool) -> None:
     """"Three massage rooms" in a spa: the text fixed how many treatment rooms there are,
     so the program's unclaimed rooms of that type go; so do those of the very name
     counted ("four guest rooms" in a hotel), whatever their type. Outside a dwelling
@@ -656,8 +656,8 @@ def connect(kb: KnowledgeBase, slots: list[Slot], entrance_types: list[str]) -> 
 
         free = [p for p in placed if degree[p.id] < cap(p)]
         ranked = [p for t in attach for p in free if p.type == t]
-        own = s.type == "bathroom" and bool(_EN_SUITE.search(s.name))  # "a master bedroom with en suite"
-        if s.type == "bathroom" and (en_suite or own):  # "each with its own bathroom": off a bedroom without one
+        # "each with its own bathroom", "a master bedroom with en suite": off a bedroom without one
+        if s.type == "bathroom" and (en_suite or _EN_SUITE.search(s.name)):
             beds_free = [p for p in free if p.type == "bedroom" and p.id not in bathed]
             ranked = sorted(beds_free, key=lambda p: "master" not in p.name) + ranked
         if s.key == CORRIDOR_KEY:  # an added corridor carries on from the hallway it relieves

@@ -35,6 +35,7 @@ from anyhome.space import (
     Wall,
     rect_corners,
     room_polygon,
+    storey_doors,
 )
 from anyhome.tags import is_seat, is_table
 
@@ -97,13 +98,10 @@ class _Refiner:
         self.objs: list[HouseObject | None] = [o.model_copy() for o in objects]
         self.rooms = {r.id: room_polygon(r) for r in floorplan.rooms}
         self.heights = {r.id: r.height for r in floorplan.rooms}
-        level = {r.id: r.level for r in floorplan.rooms}
-        self.zones: dict[int, list[Polygon]] = {}
+        self.levels = {r.id: r.level for r in floorplan.rooms}
+        self.zones = {lv: [opening_zone(d.segment) for d in storey_doors(floorplan, lv)]
+                      for lv in set(self.levels.values())}
         """Storey -> the zones of its doors (a door of another storey is no obstacle)."""
-        for d in floorplan.doors:
-            for lv in {level[r] for r in d.rooms if r in level}:
-                self.zones.setdefault(lv, []).append(opening_zone(d.segment))
-        self.levels = level
         self.spaces = {r.id: RoomSpace(floorplan, r) for r in floorplan.rooms}
         self.changed_rooms: set[str] = set()
 
