@@ -678,3 +678,37 @@ def test_an_open_stair_takes_a_room_a_little_taller_than_its_stairwell_not_one_r
     a_little_taller = ordinary.model_copy(update={"height": ordinary.height + 0.05})
     assert a_little_taller.height < ground.height_m - 0.2 + 1e-6
     assert not _rises_through(plan, 0, a_little_taller)
+
+
+def test_a_stair_in_an_alcove_walked_into_in_front_of_its_flight_opens_into_the_room():
+    """A duplex's stairwell opening onto the living room only, which meets it along the
+    flight (not at its foot), with a passage of PASSAGE_M in front of the flight: merged
+    into the living room as an alcove (it was kept as an 11.5 m2 hall), and the passage
+    from the room to the stair's foot is kept clear of furniture (stair_zones)."""
+    from shapely.geometry import Polygon
+
+    from anyhome.floorplan.levels import stair_zones
+    from anyhome.floorplan.stairs import PASSAGE_M
+    from anyhome.geometry import footprint_polygon
+
+    h, _ = _valid_storeys("duplex flat over a bakery. lower level: open kitchen/living + wc. "
+                          "upper level: 2 bedrooms, bathroom", 2)
+    living = next(r for r in h.rooms if r.type == "living_room")
+    assert any("stair" in m for m in living.merged) and len(living.polygon) > 6  # a T or Z: the alcove
+    assert not any(r.type == "stairwell" and r.level == 0 for r in h.rooms)
+    zones = [Polygon(z) for z in stair_zones(h.floorplan)[living.id]]
+    bands = [z for z in zones if abs(min(z.bounds[3] - z.bounds[1], z.bounds[2] - z.bounds[0]) - PASSAGE_M) < 1e-6]
+    assert bands  # the way in front of the flight
+    for o in (o for o in h.objects if o.room == living.id and o.support == "floor" and o.category != "stairs"):
+        assert all(footprint_polygon(o.position, o.size, o.yaw).intersection(z).area < 1e-6 for z in zones), o.name
+
+
+def test_alcove_passage_needs_a_passage_wide_enough(monkeypatch):
+    """The same duplex with a passage asked wider than the 1.5 m of floor in front of its
+    flight: its stairwell stays a hall of its own."""
+    from anyhome.floorplan import levels as L
+
+    monkeypatch.setattr(L, "PASSAGE_M", 1.6)
+    h = generate("duplex flat over a bakery. lower level: open kitchen/living + wc. "
+                 "upper level: 2 bedrooms, bathroom", 2)
+    assert any(r.type == "stairwell" and r.level == 0 for r in h.rooms)

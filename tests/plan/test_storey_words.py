@@ -260,3 +260,86 @@ def test_a_farmhouse_cellar_is_its_basement_and_what_it_is_for_no_rooms():
 
 def test_a_wine_cellar_is_no_basement():
     assert not parse("a restaurant with a wine cellar").basement
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_a_basement_named_before_a_room_is_its_storey(seed):
+    """"a basement playroom": the playroom is in the basement and no storage room is
+    planned there as the basement itself (the playroom went to the top floor)."""
+    spec = plan_house("a three-storey house with a basement playroom, a kitchen, a living room and 3 bedrooms",
+                      np.random.default_rng(seed))
+    down = [r for r in spec.rooms if r.level == -1 and r.type != "stairwell"]
+    assert [r.type for r in down] == ["playroom"]
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_top_floor_words_closing_a_whole_house_list_leave_the_middle_storeys_their_bedrooms(seed):
+    """"... 5 bedrooms, 4 bathrooms, a library and a roof terrace room on the top floor" of a
+    four-storey house: the top floor takes the room named last; the bedrooms spread over
+    the storeys above the ground floor, five of them, none added to fill a storey."""
+    spec = plan_house("large 4 storey house with a basement gym, 5 bedrooms, 4 bathrooms, a library and "
+                      "a roof terrace room on the top floor", np.random.default_rng(seed))
+    level = {r.id: r.level for r in spec.rooms}
+    bedrooms = [r for r in spec.rooms if r.type == "bedroom"]
+    assert len(bedrooms) == 5
+    assert {r.level for r in bedrooms} >= {1, 2}
+    assert level["roof_terrace"] == 3 and level["gym"] == -1
+
+
+def test_words_closing_a_list_still_take_it_all_when_no_storey_is_left_empty():
+    levels = _levels("A three-storey townhouse with a kitchen and dining room on the ground floor, a living room "
+                     "and study on the first floor and two bedrooms with a bathroom on the top floor.")
+    assert {levels[r] for r in levels if r.startswith(("bedroom", "master_bedroom", "bathroom"))} == {2}
+
+
+FOUR_BED = ("Four-bedroom detached family home. Ground floor: lounge, kitchen/family room, study, cloakroom. "
+            "First floor: master bedroom with en suite and walk-in wardrobe, three further bedrooms, family bathroom.")
+
+
+def test_a_sentence_opening_with_a_floor_and_a_colon_names_that_storey():
+    p = parse(FOUR_BED)
+    assert [w for _, _, w in p.floor_words] == ["ground", "first"] and p.storeys == 2
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_a_four_bedroom_home_listing_its_bedrooms_has_four(seed):
+    spec = plan_house(FOUR_BED, np.random.default_rng(seed))
+    bedrooms = [r for r in spec.rooms if r.type == "bedroom"]
+    assert len(bedrooms) == 4 and {r.level for r in bedrooms} == {1}
+    assert {r.level for r in spec.rooms if r.type in ("living_room", "kitchen", "study")} == {0}
+
+
+@pytest.mark.parametrize(("text", "n"), [
+    ("A three-bedroom house with a master bedroom and a kitchen", 3),
+    ("A three-bedroom house with a master bedroom, two bedrooms and a kitchen", 3),
+    ("A three-bedroom house with a master bedroom, three bedrooms and a kitchen", 4),  # the list says more
+    ("a two-bedroom flat with a kitchen", 2),
+])
+def test_a_bedroom_count_before_the_building_is_the_total_of_those_named_after(text, n):
+    spec = plan_house(text, np.random.default_rng(0))
+    assert sum(r.type == "bedroom" for r in spec.rooms) == n
+
+
+def test_an_each_with_list_ends_at_a_comma_and_a_room_of_its_own():
+    """"eight bedrooms each with an en suite, and staff quarters": one staff quarters (a
+    bedroom), not eight restaurants."""
+    p = parse("a mansion with a library, eight bedrooms each with an en suite, and staff quarters on the top floor.")
+    counts = {m.name: m.count for m in p.rooms}
+    assert counts["en suite"] == 8 and counts["staff quarters"] is None
+    spec = plan_house("A three-storey mansion with a ballroom, a library, eight bedrooms each with an en suite, "
+                      "and staff quarters on the top floor.", np.random.default_rng(0))
+    staff = [r for r in spec.rooms if r.name.startswith("staff quarters")]
+    assert [r.type for r in staff] == ["bedroom"]
+
+
+def test_a_homes_cloakroom_is_its_wc_a_theatres_a_coat_room():
+    home = plan_house("Four-bedroom detached family home. Ground floor: lounge, kitchen, cloakroom.",
+                      np.random.default_rng(0))
+    theatre = plan_house("a theatre with a stage, a foyer, a cloakroom and a bar", np.random.default_rng(0))
+    assert next(r.type for r in home.rooms if r.name == "cloakroom") == "bathroom"
+    assert next(r.type for r in theatre.rooms if r.name == "cloakroom") == "entry"
+
+
+def test_further_bedrooms_are_bedrooms():
+    spec = plan_house(FOUR_BED, np.random.default_rng(0))
+    assert not any("further" in r.name for r in spec.rooms)

@@ -513,7 +513,7 @@ def _merged_well(plan: Floorplan, k: int, room: Room, well: Room, opts: Floorpla
     if outline is None or l_aspect(outline) > opts.open_stair_max_aspect_ratio + 1e-9:
         return None
     if len(outline) > 6 and (_shared_wall_m(room, well) < opts.shared_wall_min_m - 1e-6  # an alcove wide enough to walk into
-                             or not _strip_off(plan, room)):
+                             or not (_strip_off(plan, room) or _alcove_passage(plan, room, well, k))):
         return None
     opened = merge_rooms(plan, room.id, well.id, name=room.name, outline=outline)
     if well.height > room.height:  # the storey stays as high as its tallest room
@@ -541,6 +541,44 @@ def _strip_off(plan: Floorplan, room: Room) -> bool:
     width = stair_width_m(plan_stair_kind(plan))
     strip = box(foot, ya, foot + STRIP_M, ya + width) if yaw == 0.0 else box(foot - STRIP_M, ya, foot, ya + width)
     return float(Polygon(room.polygon).boundary.intersection(strip.boundary).length) >= DOOR_WIDTH_M - 1e-6
+
+
+def _alcove_passage(plan: Floorplan, room: Room, well: Room, k: int) -> bool:
+    """Whether ``well`` (storey ``k``) leaves a passage at least
+    :data:`~anyhome.floorplan.stairs.PASSAGE_M` wide, clear of every flight standing in it
+    or rising through it from below, from its wall shared with ``room`` (over a door's
+    width) to the strip at the stairs' foot: an alcove walked into in front of its flight
+    (measured on the dev storey sets: a duplex's 11.5 m2 stairwell, opening onto the
+    living room only, was kept as a hall because the living room met it along the flight,
+    not at its foot). :func:`stair_zones` keeps that passage clear of furniture."""
+    from shapely.geometry import Polygon, box
+    from shapely.ops import unary_union
+
+    wpoly = Polygon(well.polygon)
+    flights = [b for b in _flight_boxes(plan, (k, k - 1)) if b.intersection(wpoly).area > 1e-6]
+    free = wpoly.difference(unary_union(flights)) if flights else wpoly
+    r = PASSAGE_M / 2 - 1e-3
+    reach = free.buffer(-r, join_style=2).buffer(r, join_style=2)  # where a walker of PASSAGE_M's width goes
+    foot, ya, yaw = _stairs_place(plan)
+    width = stair_width_m(plan_stair_kind(plan))
+    strip = box(foot, ya, foot + STRIP_M, ya + width) if yaw == 0.0 else box(foot - STRIP_M, ya, foot, ya + width)
+    shared = Polygon(room.polygon).boundary.intersection(wpoly.boundary).buffer(1e-3)
+    return any(part.intersection(strip).area >= PASSAGE_M * min(width, STRIP_M) - 1e-3
+               and part.boundary.intersection(shared).length >= DOOR_WIDTH_M - 1e-6
+               for part in getattr(reach, "geoms", [reach]))
+
+
+def _flight_boxes(plan: Floorplan, levels: tuple[int, ...]):
+    """The boxes (shapely) of the stairs standing on the storeys ``levels``."""
+    from shapely.geometry import box
+
+    level_of = {r.id: r.level for r in plan.rooms}
+    out = []
+    for o in stairs_objects(plan):
+        if level_of.get(o.room) in levels:
+            x, y, _ = o.position
+            out.append(box(x - o.size[0] / 2, y - o.size[1] / 2, x + o.size[0] / 2, y + o.size[1] / 2))
+    return out
 
 
 def _door_beside_flight(plan: Floorplan, room_id: str, k: int) -> bool:
@@ -1173,7 +1211,23 @@ def stair_zones(plan: Floorplan) -> dict[str, list[np.ndarray]]:
             for r in plan.rooms:
                 if r.id == o.room or (r.level == level + 1 and Polygon(r.polygon).intersection(zone).area > 1e-6):
                     out.setdefault(r.id, []).append(corners)
+            own = by_id[o.room]
+            if len(own.polygon) > 6 and any("stair" in m.lower() for m in own.merged):  # a stair in an alcove
+                out[own.id].extend(_passage_bands(own, zone))
     return out
+
+
+def _passage_bands(room: Room, zone) -> list[np.ndarray]:
+    """The bands :data:`~anyhome.floorplan.stairs.PASSAGE_M` deep along either long side
+    of ``zone`` (a flight and the strip at its foot) that lie in ``room``: the way into an
+    alcove holding a stair, walked in front of the flight to its foot
+    (:func:`_alcove_passage`)."""
+    from shapely.geometry import Polygon, box
+
+    poly = Polygon(room.polygon)
+    x0, y0, x1, y1 = zone.bounds
+    bands = (box(x0, y1, x1, y1 + PASSAGE_M), box(x0, y0 - PASSAGE_M, x1, y0))
+    return [np.asarray(b.exterior.coords)[:4] for b in bands if poly.intersection(b).area >= 0.95 * b.area]
 
 
 def _stairwell(plan: Floorplan, level: int) -> Room:

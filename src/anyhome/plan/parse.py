@@ -277,6 +277,12 @@ def _corefer(text: str, p: Parsed, mentions: list[Mention]) -> list[Mention]:
             alias[j] = earlier
         elif head and m.name == head[0] and not m.key:
             alias[j] = None
+    return _aliased(mentions, rooms, alias)
+
+
+def _aliased(mentions: list[Mention], rooms: list[Mention], alias: dict[int, int | None]) -> list[Mention]:
+    """``mentions`` without the rooms ``alias`` maps (index in ``rooms`` -> the room they
+    are, or None), each object in one of them moved to the room it maps to."""
     if not alias:
         return mentions
     keep = {j: k for k, j in enumerate(j for j in range(len(rooms)) if j not in alias)}
@@ -288,6 +294,42 @@ def _corefer(text: str, p: Parsed, mentions: list[Mention]) -> list[Mention]:
             o.room = None if r is None else keep[r]
     gone = {id(rooms[j]) for j in alias}
     return [m for m in mentions if id(m) not in gone]
+
+
+_MORE_WORDS = frozenset({"further", "other", "additional", "extra", "remaining"})
+"""Words that say a room is one more of its kind, not what kind ("three further
+bedrooms" are bedrooms, not "further bedrooms")."""
+TOTAL_KEYS = frozenset({"bedroom", "bathroom"})
+"""Rooms whose count before the building's noun is the house's total ("a four-bedroom
+detached house"; :func:`_house_totals`)."""
+TOTAL_GAP_TOKENS = 3
+
+
+def _house_totals(text: str, p: Parsed, mentions: list[Mention]) -> list[Mention]:
+    """"A four-bedroom family home ... a master bedroom, three further bedrooms": the
+    count hyphenated before the building's noun is the house's total, and the bedrooms
+    the text names after it are among them, not more (measured on dev_storeys3: eight
+    bedrooms for a four-bedroom home, "a three-bedroom house with a master bedroom" four).
+    The total keeps the rooms not named (four less the four named: none)."""
+    rooms = [m for m in mentions if m.kind == "room"]
+    head = p.building_phrase or ""
+    alias: dict[int, int | None] = {}
+    for j, t in enumerate(rooms):
+        if t.key not in TOTAL_KEYS or not t.count or t.count < 1 or t.negated:
+            continue
+        at = text.find(head, t.end) if head else -1
+        if at < 0 or len(_tokens(text[t.end:at])) > TOTAL_GAP_TOKENS or re.search(r"[,.;:]", text[t.end:at]):
+            continue
+        named = [i for i in range(j + 1, len(rooms)) if not rooms[i].negated
+                 and (rooms[i].key == t.key or rooms[i].name.endswith(" " + t.key))]
+        n_named = sum(rooms[i].count or 1 for i in named)
+        if not named:
+            continue
+        if n_named >= t.count:
+            alias[j] = named[0]
+        else:
+            t.count = t.asked = t.count - n_named
+    return _aliased(mentions, rooms, alias)
 
 
 ONE_PERSON_HEADS = frozenset("desk desks workstation bed cot berth station locker".split())
@@ -1025,7 +1067,7 @@ IN_A_PLACE = re.compile(
     r"industrial estate|business park|retail park|estate)\b")
 """Right after the building: where it stands ("a nail salon in a shopping arcade", "a
 boxing gym under a railway arch"); the place's words name no rooms or objects."""
-_BASEMENT = re.compile(r"\b(?:basement|lower ground floor|underground level)s?\b|(?<!wine )(?<!beer )\bcellars?\b(?! (?:bar|club|door)s?\b)")
+_BASEMENT = re.compile(r"\b(?:basement|lower ground(?: floor)?|underground level)s?\b|(?<!wine )(?<!beer )\bcellars?\b(?! (?:bar|club|door)s?\b)")
 _ATTIC = re.compile(r"\b(?:attic|loft conversion|garret)s?\b|\b(?:in|into|under|up under) the (?:eaves|roof space)\b")
 _MEZZANINE = re.compile(r"\bmezzanines?\b")
 _FLOOR_WORDS = re.compile(
@@ -1034,15 +1076,17 @@ _FLOOR_WORDS = re.compile(
     r"|\b(?:on|in|into|up in|up into|down in|down into)\s+the\s+(basement|attic|garret)\b"
     r"|\b(?:in|into|under|up in|up into|up under)\s+the\s+(eaves|roof space)\b|\b(downstairs|upstairs)\b|\bup (?:the )?(stairs)\b"
     r"|\b(?:at|on)\s+(street|garden|ground)\s+(?:level|floor)\b|\b(underneath|beneath) (?:them|it)\b"
-    r"|\bat the very (top)\b(?!\s+of)|\b(?:at|on) the (top)\b(?=\s*(?:[,;.]|and\b|$))")
+    r"|\bat the very (top)\b(?!\s+of)|\b(?:at|on) the (top)\b(?=\s*(?:[,;.]|and\b|$))"
+    r"|(?:^|(?<=[.;]\s))(?:raised\s+|upper\s+)?(ground|first|1st|second|2nd|third|3rd|top)(?:\s+(?:floor|storey|story))?\s*:"
+    r"|(?:^|(?<=[.;]\s))(lower ground|attic|basement)(?:\s+(?:floor|level))?\s*:")
 """Words that put the rooms named before them on a storey ("a kitchen on the ground
 floor", "three bedrooms upstairs", "two bedrooms on the second" after "... on the first
-floor", "two sleeping lofts, underneath them a kitchenette";
+floor", "two sleeping lofts, underneath them a kitchenette", a sentence opening "Ground floor:";
 :func:`anyhome.plan.program.assign_levels`)."""
 _STOREY_NOUN = re.compile(r"\b(?:floor|storey|story|level)\b")
 """A storey's noun: "at the top" without one names a storey only in a text of several
 ("a shelf at the top" of a one-storey home names none)."""
-_FLOOR_WORD_OF = {"stairs": "upstairs", "street": "ground", "garret": "attic", "eaves": "attic",
+_FLOOR_WORD_OF = {"lower ground": "basement", "stairs": "upstairs", "street": "ground", "garret": "attic", "eaves": "attic",
                   "roof space": "attic", "garden": "ground", "underneath": "downstairs", "beneath": "downstairs"}
 """Floor words read as another ("at street level" is the ground floor: a "first floor"
 named with it is the one above, British usage)."""
@@ -1095,6 +1139,22 @@ def _find_levels(text: str, p: Parsed) -> None:
                      for mt in _FLOOR_WORDS.finditer(text) for g in [next(g for g in mt.groups() if g)]
                      if not (p.storeys <= 1 and g == "top" and not _STOREY_NOUN.search(mt.group()))]
     _find_tiers(text, p)
+
+
+_STOREY_MODIFIERS = frozenset({"basement", "attic"})
+
+
+def _storey_modifiers(text: str, p: Parsed) -> None:
+    """A basement or an attic named right before another room ("a basement gym", "a
+    basement playroom") is that room's storey, not a room of its own: a floor word
+    (:data:`_FLOOR_WORDS`) at its place (measured on the dev storey sets: "a three-storey
+    house with a basement playroom" put the playroom on the top floor and a storage room
+    in the basement)."""
+    for m, nxt in zip(p.rooms, p.rooms[1:]):
+        if (m.key in _STOREY_MODIFIERS and m.name == m.key and m.count in (None, 1) and nxt.key not in _STOREY_MODIFIERS
+                and nxt.start > m.end and not text[m.end:nxt.start].strip()):
+            p.floor_words.append((m.start, m.end, m.key))
+    p.floor_words.sort()
 
 
 def _find_tiers(text: str, p: Parsed) -> None:
@@ -1164,7 +1224,8 @@ def _assign_rooms(text: str, mentions: list[Mention], kb: KnowledgeBase) -> None
             right_after = prev is not None and (prev is each or (
                 any(prev is x for x in spread) and EACH_LIST.match(text[prev.end : m.start]) is not None
                 and _own_part(m, kb)))
-            if (each is not None and (m.count is None or (m.count == 1 and not m.plural and right_after))
+            closed = prev is not None and _EACH_CLOSED.match(text[prev.end : m.start]) is not None and not _own_part(m, kb)
+            if (each is not None and ((m.count is None and not closed) or (m.count == 1 and not m.plural and right_after))
                     and "." not in text[each.end : m.start]):
                 m.count, m.plural = each.count, True  # "six guest rooms, each with its own bathroom" / "an en-suite"
                 spread.append(m)
@@ -1221,6 +1282,9 @@ def _out_of_place(obj: Mention, room: Mention, kb: KnowledgeBase) -> bool:
     return bool(where) and rtype not in where
 
 
+_EACH_CLOSED = re.compile(r"^\s*,\s*and\b")
+"""", and" before a room that is no room's own part ends an "each with" list ("eight
+bedrooms each with an en suite, and staff quarters": the staff quarters are one, not eight)."""
 EACH_LIST = re.compile(r"^\s*(?:,\s*(?:and\s+)?|and\s+)(?:(?:a|an|its own|their own)\s+)?[^\W\d_]*\s*$")
 """Text between two items of one "each with ..." list: ", a", " and a", ", and an"."""
 
@@ -1814,7 +1878,7 @@ def parse(text: str, kb: KnowledgeBase | None = None) -> Parsed:
         if m.kind == "room":
             kept = []
             for w in m.words:
-                if w in vocabulary(kb).style_forms or vocabulary(kb).colour_regex.fullmatch(w):
+                if w in vocabulary(kb).style_forms or vocabulary(kb).colour_regex.fullmatch(w) or w in _MORE_WORDS:
                     continue
                 kept.append(w)
             m.words = kept
@@ -1836,8 +1900,10 @@ def parse(text: str, kb: KnowledgeBase | None = None) -> Parsed:
     _subject_room(norm, p, mentions)
     _table_seats(norm, kb, mentions)
     mentions = _corefer(norm, p, mentions)
+    mentions = _house_totals(norm, p, mentions)
     _apply_arrangements(norm, mentions)
     p.rooms = [m for m in mentions if m.kind == "room"]
+    _storey_modifiers(norm, p)
     for end, value in p.room_areas:  # "a 12 m2 bedroom": the next room word's own area
         room = next((m for m in p.rooms if m.start >= end and len(_tokens(norm[end : m.start])) <= 2), None)
         if room is not None and value > 0:

@@ -788,7 +788,9 @@ def assign_levels(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], warnings
             slots.append(down[0])
         for s in down:
             s.level = -1
-    worded = _worded_levels(parsed, slots, top, set(st.up) | {"bathroom"})
+    loose: list[tuple[Slot, int, int]] = []
+    worded = _worded_levels(parsed, slots, top, set(st.up) | {"bathroom"}, loose)
+    _loose_kept_down(slots, fillers, loose, top)
     for s in fillers:  # a storey the words gave rooms ("a bedroom with a bathroom at the top") needs no filler
         if any(w.level == s.level for w in worded):
             slots.remove(s)
@@ -848,7 +850,8 @@ def _fill_empty_storeys(kb: KnowledgeBase, slots: list[Slot], top: int) -> list[
 _NOT_ADJACENT = re.compile(r"[,.;:]|\b(?:and|with|plus|or|then|while)\b")
 
 
-def _worded_levels(parsed: Parsed, slots: list[Slot], top: int, up_types: set[str]) -> list[Slot]:
+def _worded_levels(parsed: Parsed, slots: list[Slot], top: int, up_types: set[str],
+                   loose: list[tuple[Slot, int, int]] | None = None) -> list[Slot]:
     """Put each room the text places on a storey there: the storey words right before
     its name ("an upstairs study") or else the first after it in its sentence ("a
     kitchen and a dining room on the ground floor", "three bedrooms upstairs"). "First
@@ -862,7 +865,9 @@ def _worded_levels(parsed: Parsed, slots: list[Slot], top: int, up_types: set[st
     any room ("a home cinema in the attic"). Levels stay within the storeys planned.
     The room the words themselves name ("in the attic", "in the basement") is no room of
     its own where they place another room there ("a study in the attic"). Returns the
-    rooms the words placed."""
+    rooms the words placed; ``loose`` (if given) gets (room, its storey before, where it
+    is named) for each room of a list sent up by words closing the list
+    (:func:`_loose_kept_down`)."""
     words = parsed.floor_words
     if not words:
         return []
@@ -872,6 +877,7 @@ def _worded_levels(parsed: Parsed, slots: list[Slot], top: int, up_types: set[st
     leading = [w for w in words if _leads(w, parsed)]
     trailing = [w for w in words if w not in leading]
     placed: set[str] = set()  # the storey words that placed a room
+    modifiers = {w for w in words if any(m.start >= w[1] and not text[w[1]:m.start].strip() for m in parsed.rooms)}
     for s in slots:
         if _storey_room(s):  # "plus an attic", "in the basement": the storey itself, moved by no word
             continue
@@ -887,7 +893,7 @@ def _worded_levels(parsed: Parsed, slots: list[Slot], top: int, up_types: set[st
         word = found[2] if found else None
         # a list after another storey's words in its sentence is that storey's whole list ("three
         # bedrooms on the ground floor, and the kitchen, dining and living space upstairs")
-        own_clause = (any(w[1] <= m_start and not _CLAUSE_END.search(text[w[1]:m_start]) for w in words)
+        own_clause = (any(w[1] <= m_start and not _CLAUSE_END.search(text[w[1]:m_start]) for w in words if w not in modifiers)
                       and found is not None and not _LIST_BREAK.search(text[m_end:found[0]]))
         listed = (not before and bool(after) and found is not None and not own_clause
                   and bool(_NOT_ADJACENT.search(text[m_end:found[0]])))
@@ -895,6 +901,8 @@ def _worded_levels(parsed: Parsed, slots: list[Slot], top: int, up_types: set[st
             continue
         placed.add(word)
         moved.append(s)
+        if loose is not None and listed and word in ("top", "upstairs", "upper"):
+            loose.append((s, s.level, m_start))
         if word.startswith("tier:"):  # "the lower level", "the middle level": parse._find_tiers
             s.level = max(-1 if parsed.basement else 0, min(top, int(word[5:])))
             if s.level < 0:  # the storey under the entry is the basement: no basement room of its own
@@ -914,6 +922,25 @@ def _worded_levels(parsed: Parsed, slots: list[Slot], top: int, up_types: set[st
     for s in [s for s in slots if _storey_room(s) and s.name.split()[-1] in placed]:  # "a study in the attic": no attic room
         slots.remove(s)
     return [s for s in moved if s in slots]
+
+
+def _loose_kept_down(slots: list[Slot], fillers: list[Slot], loose: list[tuple[Slot, int, int]], top: int) -> None:
+    """Where words closing a list ("... 5 bedrooms, 4 bathrooms, a library and a roof
+    terrace room on the top floor") sent its rooms up and left a storey between the ground
+    floor and the top with none of the rooms asked for (only ``fillers``), the words
+    take only the room named last before them; the others go back to the storeys they
+    had (the bedrooms spread over the upper storeys). Measured on dev_storeys3: a
+    four-storey house got all 5 bedrooms, 4 bathrooms, its library and gym on the top
+    floor, a filler bedroom on each storey between."""
+    if top < 2 or len(loose) < 2:
+        return
+    asked = {s.level for s in slots if s not in fillers}
+    if all(k in asked for k in range(1, top)):
+        return
+    last = max(loose, key=lambda x: x[2])[0]
+    for s, level, _ in loose:
+        if s is not last:
+            s.level = level
 
 
 def _slot_span(s: Slot, parsed: Parsed) -> tuple[int, int] | None:
