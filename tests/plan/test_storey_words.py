@@ -343,3 +343,18 @@ def test_a_homes_cloakroom_is_its_wc_a_theatres_a_coat_room():
 def test_further_bedrooms_are_bedrooms():
     spec = plan_house(FOUR_BED, np.random.default_rng(0))
     assert not any("further" in r.name for r in spec.rooms)
+
+
+def test_a_basement_modifier_places_only_its_own_room():
+    """"a three-bedroom cottage with a basement den": the den goes down, not the
+    bedrooms named before the word."""
+    levels = _levels("a three-bedroom cottage with a basement den, a kitchen, a sitting room and a bathroom", 3)
+    assert levels["den"] == -1
+    assert all(v == 0 for k, v in levels.items() if "bedroom" in k)
+
+
+def test_a_downstairs_loo_is_a_wc_on_the_ground_floor():
+    spec = plan_house("a two-storey brick semi with a through lounge, a kitchen-diner and a downstairs loo, "
+                      "three bedrooms and a bathroom upstairs", np.random.default_rng(5))
+    loo = next(r for r in spec.rooms if "loo" in r.name)
+    assert loo.type == "bathroom" and loo.level == 0

@@ -877,7 +877,9 @@ def _worded_levels(parsed: Parsed, slots: list[Slot], top: int, up_types: set[st
     leading = [w for w in words if _leads(w, parsed)]
     trailing = [w for w in words if w not in leading]
     placed: set[str] = set()  # the storey words that placed a room
-    modifiers = {w for w in words if any(m.start >= w[1] and not text[w[1]:m.start].strip() for m in parsed.rooms)}
+    # words right before a room's name ("a basement den", "an upstairs study") place that room only
+    modifiers = {w for w in words if not text[w[0]:w[1]].rstrip().endswith(":")
+                 and any(m.start >= w[1] and not text[w[1]:m.start].strip() for m in parsed.rooms)}
     for s in slots:
         if _storey_room(s):  # "plus an attic", "in the basement": the storey itself, moved by no word
             continue
@@ -887,8 +889,8 @@ def _worded_levels(parsed: Parsed, slots: list[Slot], top: int, up_types: set[st
         m_start, m_end = span
         before = [w for w in words if w[1] <= m_start and len(text[w[1]:m_start].split()) <= 2
                   and not _NOT_ADJACENT.search(text[w[1]:m_start])]
-        after = [w for w in trailing if w[0] >= m_end and not _LIST_OPENS.search(text[m_end:w[0]])]
-        opened = [w for w in leading if w[1] <= m_start and not _CLAUSE_END.search(text[w[1]:m_start])]
+        after = [w for w in trailing if w[0] >= m_end and not _LIST_OPENS.search(text[m_end:w[0]]) and w not in modifiers]
+        opened = [w for w in leading if w[1] <= m_start and not _CLAUSE_END.search(text[w[1]:m_start]) and w not in modifiers]
         found = before[-1] if before else after[0] if after else opened[-1] if opened else None
         word = found[2] if found else None
         # a list after another storey's words in its sentence is that storey's whole list ("three
