@@ -317,6 +317,8 @@ class FloorplanOptions:
     """Most corners of a room with its stairwell merged in: 4 a rectangle, 6 an L, 8 a T or Z (the stairwell an alcove off part of one wall)."""
     stair_carve_max_attempts: int = _opt(12, 1, 10_000)
     """Slicing attempts of one such search (``max_attempts`` at most)."""
+    stair_carve_hopeless_test: int = _opt(1, 0, 1)
+    """1: a carve search known to fail from the storey's program alone (floorplan.carve_fit: a hallway with too many doors for its passage, two rooms no rectangle cut once holds) is not run; 0: run (as before)."""
     well_end_trim: int = _opt(1, 0, 1)
     """1: a stairwell's ends beyond its stair's box and foot strip go to the room across (floorplan.wells.wells_end_trimmed); 0: kept."""
     well_doors_to_strip: int = _opt(1, 0, 1)
