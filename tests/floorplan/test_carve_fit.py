@@ -8,7 +8,7 @@ import dataclasses
 import numpy as np
 
 from anyhome.floorplan import budget, levels
-from anyhome.floorplan.carve_fit import CROWDED_HALL_LINKS, crowded_hall, two_rooms_unfit
+from anyhome.floorplan.carve_fit import crowded_hall, two_rooms_unfit
 from anyhome.floorplan.options import FloorplanOptions
 from anyhome.plan.spec import HouseSpec, RoomSpec
 
@@ -22,10 +22,12 @@ def _hall_storey(n_beds: int, hall_type: str = "hallway") -> HouseSpec:
 
 
 def test_a_hall_with_too_many_doors_for_its_passage_is_crowded():
-    assert crowded_hall(_hall_storey(CROWDED_HALL_LINKS - 1), "hall")  # the outside is a link too
-    assert not crowded_hall(_hall_storey(CROWDED_HALL_LINKS - 2), "hall")
-    assert not crowded_hall(_hall_storey(CROWDED_HALL_LINKS), "bed0")  # a bedroom holds no stair
-    assert not crowded_hall(_hall_storey(CROWDED_HALL_LINKS, "living_room"), "hall")
+    opts = FloorplanOptions()
+    most = opts.stair_carve_hall_max_links
+    assert crowded_hall(_hall_storey(most - 1), "hall", opts)  # the outside is a link too
+    assert not crowded_hall(_hall_storey(most - 2), "hall", opts)
+    assert not crowded_hall(_hall_storey(most), "bed0", opts)  # a bedroom holds no stair
+    assert not crowded_hall(_hall_storey(most, "living_room"), "hall", opts)
 
 
 def _cottage_ground(kitchen_m2: float, living_m2: float) -> HouseSpec:
@@ -88,6 +90,6 @@ def test_two_rooms_a_rectangle_holds_are_searched():
 
 def test_the_hopeless_test_can_be_switched_off():
     opts = FloorplanOptions()
-    hall = _hall_storey(CROWDED_HALL_LINKS)
+    hall = _hall_storey(opts.stair_carve_hall_max_links)
     assert levels._carve_hopeless(hall, "hall", 3.6, 1.75, opts)
     assert not levels._carve_hopeless(hall, "hall", 3.6, 1.75, dataclasses.replace(opts, stair_carve_hopeless_test=0))

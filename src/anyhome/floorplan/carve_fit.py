@@ -10,16 +10,17 @@ searches' CPU. Two kinds of them are told here from the storey's program alone:
 
 - **a crowded hall** (:func:`crowded_hall`): a hallway carved into the stair and the
   passage beside it (``stair_carve_left_m``) that must still door onto
-  :data:`CROWDED_HALL_LINKS` or more rooms (the outside counted: an upper storey's
-  stand-in entrance): 0 of 91 such searches found a layout (upper storeys' landings
+  ``stair_carve_hall_max_links`` or more rooms (the outside counted: an upper storey's
+  stand-in entrance): 0 of 88 such searches found a layout (upper storeys' landings
   between four or five bedrooms and bathrooms);
 - **two rooms that cannot share a rectangle** (:func:`two_rooms_unfit`): a storey of the
   carved room and one other is laid out in a rectangular footprint (fewer rooms than
   ``l_shape_min_rooms``) cut once; where no footprint of the drawn proportions
   (``footprint_aspect_min`` to ``footprint_aspect_max``) and no straight cut gives both
   rooms their area (within ``area_tolerance_frac``), least side, greatest aspect and the
-  carved room the stair's length, to within half a grid cell, no slicing can (a cottage's
-  small kitchen beside a living room holding the stair).
+  carved room the stair's length, to within ``stair_carve_fit_slack_cells`` of a grid cell, no slicing can (a cottage's
+  small kitchen beside a living room holding the stair: of 266 such searches, 199 found
+  nothing; 169 of those are told, none of the 67 that found a layout).
 """
 
 from __future__ import annotations
@@ -34,28 +35,17 @@ from anyhome.floorplan.options import FloorplanOptions
 from anyhome.floorplan.program import Program
 from anyhome.plan.spec import HouseSpec
 
-CROWDED_HALL_LINKS = 5
-"""Links (doors to rooms, the outside counted) at which a hallway carved into a stair and its
-passage is not searched (measured: 5 or more, 0 of 91 searches found a layout; 4, 39 of 56)."""
 CROWDED_HALL_TYPES = frozenset({"hallway"})
 """Room types :func:`crowded_hall` applies to (an entry of as many links did find layouts
 on a large spine-laid storey: not included)."""
-_ASPECT_STEPS = 25
-"""Footprint proportions tried between ``footprint_aspect_min`` and ``footprint_aspect_max``."""
-_CUT_STEPS = 200
-"""Places of the one cut tried across the footprint."""
-SLACK_CELLS = 0.5
-"""Grid cells a side may be off in :func:`two_rooms_unfit`: the footprint's sides are
-rounded to whole cells (measured on the dev storey sets: 0.5, 169 of the 384 failed carve
-searches told, none of the 572 that found a layout; 1.0, 147; 0, two that found one told)."""
 
 
-def crowded_hall(carved_sub: HouseSpec, room: str) -> bool:
+def crowded_hall(carved_sub: HouseSpec, room: str, opts: FloorplanOptions) -> bool:
     """Whether ``room`` of the carved storey ``carved_sub`` is a hallway with
-    :data:`CROWDED_HALL_LINKS` or more links (its carve search is known to fail)."""
+    ``stair_carve_hall_max_links`` or more links (its carve search is known to fail)."""
     r = next((x for x in carved_sub.rooms if x.id == room), None)
     links = sum(room in c for c in carved_sub.connections)
-    return r is not None and r.type in CROWDED_HALL_TYPES and links >= CROWDED_HALL_LINKS
+    return r is not None and r.type in CROWDED_HALL_TYPES and links >= opts.stair_carve_hall_max_links
 
 
 def two_rooms_unfit(carved_sub: HouseSpec, room: str, long_m: float, side_m: float, opts: FloorplanOptions,
@@ -76,7 +66,7 @@ def two_rooms_unfit(carved_sub: HouseSpec, room: str, long_m: float, side_m: flo
                                            for k, w in enumerate(prog.min_width_m or (0.0,) * prog.n)))
     areas = [float(a) for a in prog.areas_m2]
     total_m2 = sum(areas)
-    slack_m = SLACK_CELLS * cell_size_m(total_m2, opts)
+    slack_m = opts.stair_carve_fit_slack_cells * cell_size_m(total_m2, opts)
     least = [prog.min_side_m(k) for k in range(2)]
     aspect = [prog.max_aspect(k) for k in range(2)]
 
@@ -90,11 +80,11 @@ def two_rooms_unfit(carved_sub: HouseSpec, room: str, long_m: float, side_m: flo
                      | ((ratio > 1) & (w * h <= (1 + opts.area_tolerance_frac) * least[k] ** 2)))
 
     other = 1 - i
-    for a in np.linspace(opts.footprint_aspect_min, opts.footprint_aspect_max, _ASPECT_STEPS):
+    for a in np.linspace(opts.footprint_aspect_min, opts.footprint_aspect_max, max(2, opts.stair_carve_fit_steps // 8)):
         x_m = max(math.sqrt(total_m2 * a), long_m)
         y_m = total_m2 / x_m
         for along_m, across_m in ((x_m, y_m), (y_m, x_m)):  # the cut across ``along_m``, at every place t
-            t = np.linspace(0.0, along_m, _CUT_STEPS)[1:-1]
+            t = np.linspace(0.0, along_m, opts.stair_carve_fit_steps)[1:-1]
             if np.any(fits(other, t, across_m) & fits(i, along_m - t, across_m)):
                 return False
     return True

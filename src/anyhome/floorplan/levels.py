@@ -848,7 +848,7 @@ def _carve_hopeless(carved_sub: HouseSpec, room: str, long_m: float, short_m: fl
         return False
     from anyhome.floorplan.carve_fit import crowded_hall, two_rooms_unfit
 
-    return crowded_hall(carved_sub, room) or two_rooms_unfit(carved_sub, room, long_m, short_m + opts.stair_carve_left_m, opts)
+    return crowded_hall(carved_sub, room, opts) or two_rooms_unfit(carved_sub, room, long_m, short_m + opts.stair_carve_left_m, opts)
 
 
 def _spine_hall(carved_sub: HouseSpec, room: str, opts: FloorplanOptions) -> bool:
