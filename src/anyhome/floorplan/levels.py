@@ -850,7 +850,7 @@ def _carved_storey(spec: HouseSpec, k: int, sub: HouseSpec, rng: np.random.Gener
         return None
     well = next(r for r in spec.rooms if r.id == stair)
     carved_sub = carved_spec(sub, stair, room, _carved_m2(sub, room, long_m, short_m, opts))
-    if _spine_hall(carved_sub, room, opts):
+    if _carve_hopeless(carved_sub, room, long_m, short_m, opts):
         return None
 
     def fitted(plan: Floorplan) -> Floorplan | None:
@@ -871,6 +871,22 @@ def _carved_storey(spec: HouseSpec, k: int, sub: HouseSpec, rng: np.random.Gener
     if uncarved is not None:
         uncarved.add(k)
     return None
+
+
+def _carve_hopeless(carved_sub: HouseSpec, room: str, long_m: float, short_m: float, opts: FloorplanOptions) -> bool:
+    """Whether the carve search of a storey (``carved_sub``, its stairwell of ``long_m`` x
+    ``short_m`` in ``room``) is known to fail before it is run: a hallway only the spine
+    lays out (:func:`_spine_hall`), a hallway with too many doors for the passage left
+    beside the stair (:func:`~anyhome.floorplan.carve_fit.crowded_hall`), two rooms no
+    rectangle cut once holds (:func:`~anyhome.floorplan.carve_fit.two_rooms_unfit`).
+    ``stair_carve_hopeless_test`` 0: only the first (as before)."""
+    if _spine_hall(carved_sub, room, opts):
+        return True
+    if not opts.stair_carve_hopeless_test:
+        return False
+    from anyhome.floorplan.carve_fit import crowded_hall, two_rooms_unfit
+
+    return crowded_hall(carved_sub, room, opts) or two_rooms_unfit(carved_sub, room, long_m, short_m + opts.stair_carve_left_m, opts)
 
 
 def _spine_hall(carved_sub: HouseSpec, room: str, opts: FloorplanOptions) -> bool:

@@ -317,6 +317,14 @@ class FloorplanOptions:
     """Most corners of a room with its stairwell merged in: 4 a rectangle, 6 an L, 8 a T or Z (the stairwell an alcove off part of one wall)."""
     stair_carve_max_attempts: int = _opt(12, 1, 10_000)
     """Slicing attempts of one such search (``max_attempts`` at most)."""
+    stair_carve_hopeless_test: int = _opt(1, 0, 1)
+    """1: a carve search known to fail from the storey's program alone (floorplan.carve_fit: a hallway with too many doors for its passage, two rooms no rectangle cut once holds) is not run; 0: run (as before)."""
+    stair_carve_hall_max_links: int = _opt(5, 1, 1_000)
+    """Links (doors to rooms, the outside counted) at which a hallway carved into a stair and its passage is not searched (floorplan.carve_fit.crowded_hall; measured on the dev storey sets: 5 or more, 0 of 88 such searches found a layout; 4, 40 of 59)."""
+    stair_carve_fit_slack_cells: float = _opt(0.5, 0.0, 10.0)
+    """Grid cells a side may be off in floorplan.carve_fit.two_rooms_unfit: the footprint's sides are rounded to whole cells (measured on the dev storey sets: 0.5, 169 of the 384 failed carve searches told, none of the 572 that found a layout; 1.0, 147; 0, two that found one told)."""
+    stair_carve_fit_steps: int = _opt(200, 10, 100_000)
+    """Places of the one cut tried across the footprint in floorplan.carve_fit.two_rooms_unfit (its proportions: an eighth as many)."""
     well_end_trim: int = _opt(1, 0, 1)
     """1: a stairwell's ends beyond its stair's box and foot strip go to the room across (floorplan.wells.wells_end_trimmed); 0: kept."""
     well_doors_to_strip: int = _opt(1, 0, 1)
