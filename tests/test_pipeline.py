@@ -1,5 +1,7 @@
 """The Python API: generate, save, load."""
 
+import pytest
+
 import anyhome
 from anyhome.pipeline import STAGES
 
@@ -51,3 +53,19 @@ def test_write_outputs_all_or_nothing_with_extra(tmp_path):
         write_outputs(anyhome.generate("A kitchen.", seed=1), tmp_path / "h", glb=False, extra=failing_render)
     assert {p.name: p.read_bytes() for p in (tmp_path / "h").iterdir()} == before
     assert [p.name for p in tmp_path.iterdir()] == ["h"]
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_a_staircase_asked_for_in_a_house_of_storeys_is_its_stairs(seed):
+    """"... up a steep staircase" of a two-storey cottage: the plan keeps the staircase,
+    the house has its flight between the storeys and no staircase furniture beside it,
+    nothing dropped for it."""
+    from anyhome.pipeline import generate
+
+    h = generate("A tiny two-storey cottage: kitchen and sitting room downstairs, one bedroom and a little "
+                 "shower room up a steep staircase.", seed)
+    planned = [i for r in h.plan["rooms"] for g in r["groups"] for i in [g["anchor"], *g["members"]]]
+    assert any(i["category"] == "staircase" for i in planned)
+    assert any(o.category == "stairs" for o in h.objects)
+    assert not any(o.category in ("staircase", "spiral_staircase") for o in h.objects)
+    assert not any("stair" in d.name for d in h.dropped)

@@ -155,7 +155,7 @@ def generate_from_spec(
     with _stage("floorplan", timings, progress):
         floorplan = stages.floorplan(spec, rngs["floorplan"])
     with _stage("layout", timings, progress):
-        result = stages.layout(spec, floorplan, rngs["layout"])
+        result = stages.layout(_stairs_given(spec, floorplan), floorplan, rngs["layout"])
     with _stage("refine", timings, progress):
         objects = _with_stairs(floorplan, stages.refine(floorplan, result.objects, rngs["refine"]))
     with _stage("assets", timings, progress):
@@ -184,6 +184,28 @@ def generate_from_spec(
     )
     house._timings_s.update(timings)
     return house
+
+
+STAIR_ITEM_CATEGORIES = frozenset({"staircase", "spiral_staircase"})
+"""Categories of planned items that are a house's stairs ("up a steep staircase", "a
+grand staircase hall")."""
+
+
+def _stairs_given(spec: HouseSpec, floorplan: Floorplan) -> HouseSpec:
+    """``spec`` for the layout: in a house of several storeys, without the staircases
+    the plan asks for (and what stands on them), which the floorplan's flights between
+    the storeys are (measured on dev_storeys3: a tiny cottage's "steep staircase" and a
+    mansion's "grand staircase" were laid out as furniture beside the stairs, or dropped
+    as key items for want of a wall). The plan kept in house.json still says them."""
+    if len(floorplan.levels) < 2:
+        return spec
+    rooms = []
+    for r in spec.rooms:
+        groups = [g.model_copy(update={"members": [m for m in g.members if m.category not in STAIR_ITEM_CATEGORIES]})
+                  for g in r.groups if g.anchor.category not in STAIR_ITEM_CATEGORIES]
+        ornaments = [o for o in r.ornaments if o.category not in STAIR_ITEM_CATEGORIES]
+        rooms.append(r.model_copy(update={"groups": groups, "ornaments": ornaments}))
+    return spec.model_copy(update={"rooms": rooms})
 
 
 def _with_stairs(floorplan: Floorplan, objects: list[HouseObject]) -> list[HouseObject]:
@@ -291,7 +313,7 @@ def relayout(
     sub = spec.model_copy(update={"rooms": [rs for rs in spec.rooms if rs.id in chosen | held]})
     kept = [o for o in house.objects if o.room not in chosen]
     with _stage("layout", timings, _quiet):
-        result = stages.layout(sub, floorplan, rngs["layout"])
+        result = stages.layout(_stairs_given(sub, floorplan), floorplan, rngs["layout"])
     new = [o for o in result.objects if o.room in chosen]
     with _stage("refine", timings, _quiet):
         # the other rooms' objects are there as context (the walkways are house-wide);
