@@ -358,3 +358,11 @@ def test_a_downstairs_loo_is_a_wc_on_the_ground_floor():
                       "three bedrooms and a bathroom upstairs", np.random.default_rng(5))
     loo = next(r for r in spec.rooms if "loo" in r.name)
     assert loo.type == "bathroom" and loo.level == 0
+
+
+def test_rooms_underneath_the_lofts_put_the_lofts_upstairs():
+    spec = plan_house("A tiny house on wheels with two sleeping lofts at either end, one reached by a ladder and one by "
+                      "a storage staircase; underneath them a kitchenette, a compact shower room with a composting "
+                      "toilet and a built-in sofa.", np.random.default_rng(0))
+    assert {r.level for r in spec.rooms if "loft" in r.name} == {1}
+    assert {r.level for r in spec.rooms if r.type == "bathroom"} == {0}

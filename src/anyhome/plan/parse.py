@@ -1133,6 +1133,7 @@ def _find_levels(text: str, p: Parsed) -> None:
     p.basement = bool(_BASEMENT.search(text))
     p.attic = bool(_ATTIC.search(text))
     above = {m.group(0) for m in _UPSTAIRS.finditer(text)} - ({"downstairs"} if p.attic else set())
+    above |= named & {"upstairs", "downstairs"} - ({"downstairs"} if p.attic else set())  # "underneath them a kitchenette": the lofts are up
     if p.storeys == 1 and (_MEZZANINE.search(text) or (above and not (one_storey and p.basement))):
         p.storeys = 2  # "downstairs" in a house with an attic: the attic is its upstairs
     p.floor_words = [(mt.start(), mt.end(), _FLOOR_WORD_OF.get(g, g))
