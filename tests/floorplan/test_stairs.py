@@ -193,3 +193,21 @@ def test_tiny_two_storey_house_gets_a_ladder_and_stays_tiny():
     planned = [r["area_m2"] for r in h.plan["rooms"] if r["type"] == "stairwell"]
     assert planned == [LADDER_STAIRWELL_AREA_M2] * 2
     assert LADDER_STAIRWELL_AREA_M2 < SPIRAL_STAIRWELL_AREA_M2
+
+
+def test_a_downstairs_or_upstairs_room_is_no_stairwell():
+    from anyhome.floorplan.stairs import says_stair
+
+    assert says_stair("stairwell_2") and says_stair("spiral stairs") and says_stair("Staircase hall")
+    assert not says_stair("downstairs_loo") and not says_stair("upstairs study")
+
+
+def test_a_semi_with_a_downstairs_loo_keeps_its_two_storeys():
+    """The loo's id said "stair": it was taken for the ground floor's stairwell and the
+    storeys fell back to one (every seed)."""
+    from anyhome.pipeline import generate
+
+    h = generate("a two-storey brick semi with a through lounge, a kitchen-diner and a downstairs loo, "
+                 "three bedrooms and a bathroom upstairs", 5)
+    assert len(h.levels) == 2 and not h.warnings
+    assert next(r for r in h.rooms if "loo" in r.id).type == "bathroom"

@@ -89,6 +89,7 @@ from anyhome.floorplan.stairs import (
     is_dogleg_box,
     is_stairwell,
     ladder_risers,
+    says_stair,
     spiral_risers,
     stair_hall_min_doors,
     stair_kind,
@@ -1228,7 +1229,7 @@ def stair_zones(plan: Floorplan) -> dict[str, list[np.ndarray]]:
                 if r.id == o.room or (r.level == level + 1 and Polygon(r.polygon).intersection(zone).area > 1e-6):
                     out.setdefault(r.id, []).append(corners)
             own = by_id[o.room]
-            if len(own.polygon) > 6 and any("stair" in m.lower() for m in own.merged):  # a stair in an alcove
+            if len(own.polygon) > 6 and any(says_stair(m) for m in own.merged):  # a stair in an alcove
                 out[own.id].extend(_passage_bands(own, zone))
     return out
 
@@ -1250,7 +1251,7 @@ def _stairwell(plan: Floorplan, level: int) -> Room:
     """The room of storey ``level`` the stairs stand in: its stairwell, or the room a
     stairwell was merged into (:func:`stairs_opened`)."""
     for r in plan.rooms:
-        if r.level == level and (is_stairwell(r) or any("stair" in m.lower() for m in r.merged)):
+        if r.level == level and (is_stairwell(r) or any(says_stair(m) for m in r.merged)):
             return r
     raise FloorplanError(f"level {level} has no stairwell room")
 

@@ -19,6 +19,7 @@ Dimensions follow UK Approved Document K (private stair): rise <= 220 mm, going 
 from __future__ import annotations
 
 import math
+import re
 from contextvars import ContextVar
 from dataclasses import dataclass
 
@@ -220,10 +221,21 @@ def is_dogleg_box(length_m: float, width_m: float) -> bool:
     return short >= 2 * FLIGHT_WIDTH_M - 1e-6 and long_ <= 2.5 * short
 
 
+_STAIR_WORD = re.compile(r"(?<![a-z])stair")
+""""stair" starting a word ("stairwell_2", "spiral stairs"), not the end of "upstairs" or
+"downstairs": a "downstairs loo" is no stairwell (measured: a semi's downstairs loo was
+taken for its ground floor's stairwell and the storeys fell back to one)."""
+
+
+def says_stair(text: str) -> bool:
+    """Whether a room's id or name ``text`` names a stair."""
+    return _STAIR_WORD.search(text.lower()) is not None
+
+
 def is_stairwell(room) -> bool:
     """Whether ``room`` (anything with an ``id`` and a ``name``: a planned or laid-out
-    room) is a stairwell: its id or name says stair."""
-    return "stair" in room.id.lower() or "stair" in room.name.lower()
+    room) is a stairwell: its id or name says stair (:func:`says_stair`)."""
+    return says_stair(room.id) or says_stair(room.name)
 
 
 def flight_rect(foot: float, y0: float, length: float, width: float, yaw: float):
