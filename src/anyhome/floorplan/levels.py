@@ -536,12 +536,20 @@ def _strip_off(plan: Floorplan, room: Room) -> bool:
     or Z) is walked into there, not past the flight (measured: a country house's snug
     whose alcove met it beside the flight left the stair's foot reached only through the
     boot room, and the furnished snug cut off three rooms)."""
-    from shapely.geometry import Polygon, box
+    from shapely.geometry import Polygon
+
+    strip = _foot_strip(plan)
+    return float(Polygon(room.polygon).boundary.intersection(strip.boundary).length) >= DOOR_WIDTH_M - 1e-6
+
+
+def _foot_strip(plan: Floorplan):
+    """The strip of floor at the stairs' foot (recorded on the storeys), as a shapely box
+    :data:`~anyhome.floorplan.stairs.STRIP_M` deep and as wide as the stair."""
+    from shapely.geometry import box
 
     foot, ya, yaw = _stairs_place(plan)
     width = stair_width_m(plan_stair_kind(plan))
-    strip = box(foot, ya, foot + STRIP_M, ya + width) if yaw == 0.0 else box(foot - STRIP_M, ya, foot, ya + width)
-    return float(Polygon(room.polygon).boundary.intersection(strip.boundary).length) >= DOOR_WIDTH_M - 1e-6
+    return box(foot, ya, foot + STRIP_M, ya + width) if yaw == 0.0 else box(foot - STRIP_M, ya, foot, ya + width)
 
 
 def _alcove_passage(plan: Floorplan, room: Room, well: Room, k: int) -> bool:
@@ -552,7 +560,7 @@ def _alcove_passage(plan: Floorplan, room: Room, well: Room, k: int) -> bool:
     (measured on the dev storey sets: a duplex's 11.5 m2 stairwell, opening onto the
     living room only, was kept as a hall because the living room met it along the flight,
     not at its foot). :func:`stair_zones` keeps that passage clear of furniture."""
-    from shapely.geometry import Polygon, box
+    from shapely.geometry import Polygon
     from shapely.ops import unary_union
 
     wpoly = Polygon(well.polygon)
@@ -560,9 +568,8 @@ def _alcove_passage(plan: Floorplan, room: Room, well: Room, k: int) -> bool:
     free = wpoly.difference(unary_union(flights)) if flights else wpoly
     r = PASSAGE_M / 2 - 1e-3
     reach = free.buffer(-r, join_style=2).buffer(r, join_style=2)  # where a walker of PASSAGE_M's width goes
-    foot, ya, yaw = _stairs_place(plan)
+    strip = _foot_strip(plan)
     width = stair_width_m(plan_stair_kind(plan))
-    strip = box(foot, ya, foot + STRIP_M, ya + width) if yaw == 0.0 else box(foot - STRIP_M, ya, foot, ya + width)
     shared = Polygon(room.polygon).boundary.intersection(wpoly.boundary).buffer(1e-3)
     return any(part.intersection(strip).area >= PASSAGE_M * min(width, STRIP_M) - 1e-3
                and part.boundary.intersection(shared).length >= DOOR_WIDTH_M - 1e-6
@@ -571,15 +578,16 @@ def _alcove_passage(plan: Floorplan, room: Room, well: Room, k: int) -> bool:
 
 def _flight_boxes(plan: Floorplan, levels: tuple[int, ...]):
     """The boxes (shapely) of the stairs standing on the storeys ``levels``."""
+    level_of = {r.id: r.level for r in plan.rooms}
+    return [_flight_box(o) for o in stairs_objects(plan) if level_of.get(o.room) in levels]
+
+
+def _flight_box(o: HouseObject):
+    """The box (shapely) of a ``stairs`` object (its long side east-west: yaw 0 or pi)."""
     from shapely.geometry import box
 
-    level_of = {r.id: r.level for r in plan.rooms}
-    out = []
-    for o in stairs_objects(plan):
-        if level_of.get(o.room) in levels:
-            x, y, _ = o.position
-            out.append(box(x - o.size[0] / 2, y - o.size[1] / 2, x + o.size[0] / 2, y + o.size[1] / 2))
-    return out
+    x, y, _ = o.position
+    return box(x - o.size[0] / 2, y - o.size[1] / 2, x + o.size[0] / 2, y + o.size[1] / 2)
 
 
 def _door_beside_flight(plan: Floorplan, room_id: str, k: int) -> bool:
@@ -1217,12 +1225,11 @@ def stair_zones(plan: Floorplan) -> dict[str, list[np.ndarray]]:
 
         by_id = {r.id: r for r in plan.rooms}
         for o in stairs_objects(plan):
-            x, y, _ = o.position
-            half_l, half_w = o.size[0] / 2, o.size[1] / 2
+            x0, y0, x1, y1 = _flight_box(o).bounds
             if o.yaw == 0.0:  # the foot end at +x, turned by the yaw (0 or pi: stack_box)
-                zone = box(x - half_l, y - half_w, x + half_l + STRIP_M, y + half_w)
+                zone = box(x0, y0, x1 + STRIP_M, y1)
             else:
-                zone = box(x - half_l - STRIP_M, y - half_w, x + half_l, y + half_w)
+                zone = box(x0 - STRIP_M, y0, x1, y1)
             corners = np.asarray(zone.exterior.coords)[:4]
             level = by_id[o.room].level
             for r in plan.rooms:

@@ -303,6 +303,7 @@ TOTAL_KEYS = frozenset({"bedroom", "bathroom"})
 """Rooms whose count before the building's noun is the house's total ("a four-bedroom
 detached house"; :func:`_house_totals`)."""
 TOTAL_GAP_TOKENS = 3
+"""Most words between such a count and the building's noun ("four-bedroom detached family home")."""
 
 
 def _house_totals(text: str, p: Parsed, mentions: list[Mention]) -> list[Mention]:
@@ -315,20 +316,21 @@ def _house_totals(text: str, p: Parsed, mentions: list[Mention]) -> list[Mention
     head = p.building_phrase or ""
     alias: dict[int, int | None] = {}
     for j, t in enumerate(rooms):
-        if t.key not in TOTAL_KEYS or not t.count or t.count < 1 or t.negated:
+        total = t.count or 0
+        if t.key not in TOTAL_KEYS or total < 1 or t.negated:
             continue
         at = text.find(head, t.end) if head else -1
         if at < 0 or len(_tokens(text[t.end:at])) > TOTAL_GAP_TOKENS or re.search(r"[,.;:]", text[t.end:at]):
             continue
         named = [i for i in range(j + 1, len(rooms)) if not rooms[i].negated
                  and (rooms[i].key == t.key or rooms[i].name.endswith(" " + t.key))]
-        n_named = sum(rooms[i].count or 1 for i in named)
         if not named:
             continue
-        if n_named >= t.count:
+        n_named = sum(rooms[i].count or 1 for i in named)
+        if n_named >= total:
             alias[j] = named[0]
         else:
-            t.count = t.asked = t.count - n_named
+            t.count = t.asked = total - n_named
     return _aliased(mentions, rooms, alias)
 
 
