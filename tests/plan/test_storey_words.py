@@ -366,3 +366,13 @@ def test_rooms_underneath_the_lofts_put_the_lofts_upstairs():
                       "toilet and a built-in sofa.", np.random.default_rng(0))
     assert {r.level for r in spec.rooms if "loft" in r.name} == {1}
     assert {r.level for r in spec.rooms if r.type == "bathroom"} == {0}
+
+
+def test_under_the_roof_names_no_room_and_an_aga_is_a_cooker():
+    spec = plan_house("A converted Victorian chapel turned into a two-bedroom home with a mezzanine study and a big "
+                      "open kitchen under the vaulted roof", np.random.default_rng(11))
+    assert not any("roof" in r.name for r in spec.rooms)
+    farm = plan_house("A four-bedroom farmhouse with a basement wine cellar, a large kitchen with an Aga, a snug and "
+                      "a boot room", np.random.default_rng(11))
+    items = [i for r in farm.rooms for g in r.groups for i in [g.anchor, *g.members]]
+    assert any(i.name == "aga" and i.category == "stove" for i in items) and not farm.warnings
