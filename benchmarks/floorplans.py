@@ -71,9 +71,11 @@ SETS = {
     "dev_storeys2": HERE / "prompts" / "dev_storeys2.jsonl",
     "dev_storeys3": HERE / "prompts" / "dev_storeys3.jsonl",
     "dev_size": HERE / "prompts" / "dev_size.jsonl",
+    "dev_storeys4": HERE / "prompts" / "dev_storeys4.jsonl",
+    "dev_size2": HERE / "prompts" / "dev_size2.jsonl",
 }
-"""``dev``, ``dev_storeys``, ``dev_storeys2``, ``dev_storeys3`` (multi-storey homes) and ``dev_size`` (stated
-totals, grand homes) are the sets to tune on; the held-out sets are for measuring only."""
+"""``dev``, ``dev_storeys``, ``dev_storeys2``, ``dev_storeys3``, ``dev_storeys4`` (multi-storey homes), ``dev_size`` and
+``dev_size2`` (stated totals, grand homes) are the sets to tune on; the held-out sets are for measuring only."""
 OVERHANG_TOL_M2 = 1.0
 """An upper storey may hang over nothing by this much (wall thickness, rounding)."""
 SMALL_HOME_ROOMS = 8

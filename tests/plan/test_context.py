@@ -807,3 +807,12 @@ def test_counted_guest_bedrooms_are_a_b_and_bs_guest_rooms(seed):
 def test_counted_guest_bedrooms_keep_a_homes_master_bedroom():
     spec = plan_of("a family house with two guest bedrooms", 0)
     assert sum(r.type == "bedroom" for r in spec.rooms) >= 3
+
+
+@pytest.mark.parametrize("seed", range(2))
+def test_an_office_suite_is_offices_and_an_a_frame_a_home(seed):
+    office = plan_of("1,200 sq. ft. office suite: reception, four private offices, a conference room and a break room.", seed)
+    types = [r.type for r in office.rooms]
+    assert "bedroom" not in types and types.count("office") == 4
+    assert sum(r.area_m2 for r in office.rooms) <= 111.5 * 1.15  # the suite's stated 1,200 sq ft
+    assert plan_of("Tiny A-frame with a loft and a wood stove.", seed).building == "home"  # not a loft apartment

@@ -376,3 +376,27 @@ def test_under_the_roof_names_no_room_and_an_aga_is_a_cooker():
                       "a boot room", np.random.default_rng(11))
     items = [i for r in farm.rooms for g in r.groups for i in [g.anchor, *g.members]]
     assert any(i.name == "aga" and i.category == "stove" for i in items) and not farm.warnings
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+def test_a_room_in_the_roof_of_a_counted_house_is_on_its_top_storey(seed):
+    spec = plan_house("A tiny three-storey micro-house on an infill plot: bathroom and kitchenette at street level, "
+                      "living room on the first floor, bedroom in the roof.", np.random.default_rng(seed))
+    levels = {r.id: r.level for r in spec.rooms}
+    assert max(levels.values()) == 2  # three storeys, not a fourth for the roof
+    assert [r.level for r in spec.rooms if r.type == "bedroom"] == [2]  # the bedroom asked for, and no other
+
+
+def test_the_eaves_of_a_two_storey_cottage_are_its_upper_storey_and_of_an_uncounted_one_its_attic():
+    counted = _levels("A two-storey cottage with a kitchen and living room downstairs and a bedroom under the eaves.")
+    assert max(counted.values()) == 1 and counted["bedroom"] == 1
+    assert parse("A cottage with a bedroom under the eaves.").attic
+    assert not parse("A two-storey cottage with a bedroom under the eaves.").attic
+    assert not parse("A bungalow with a roof terrace, bedroom in the roof terrace.").attic  # a roof terrace is no roof space
+
+
+def test_a_loft_above_is_upstairs_and_shelves_above_are_not():
+    levels = _levels("Tiny A-frame with a loft: one open room downstairs with a kitchenette and wood stove, "
+                     "a little bathroom, and a sleeping loft above.")
+    assert levels["sleeping_loft"] == 1 and levels["living_room"] == 0
+    assert parse("A kitchen with open shelves above, and a dining room.").storeys == 1

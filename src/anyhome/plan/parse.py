@@ -1070,13 +1070,20 @@ IN_A_PLACE = re.compile(
 """Right after the building: where it stands ("a nail salon in a shopping arcade", "a
 boxing gym under a railway arch"); the place's words name no rooms or objects."""
 _BASEMENT = re.compile(r"\b(?:basement|lower ground(?: floor)?|underground level)s?\b|(?<!wine )(?<!beer )\bcellars?\b(?! (?:bar|club|door)s?\b)")
-_ATTIC = re.compile(r"\b(?:attic|loft conversion|garret)s?\b|\b(?:in|into|under|up under) the (?:eaves|roof space)\b")
+_ATTIC = re.compile(r"\b(?:attic|loft conversion|garret)s?\b")
+_ROOF_ROOMS = re.compile(r"\b(?:in|into|under|up in|up into|up under)\s+the\s+(?:eaves|roof space|roof)\b(?![\w-]|\s+(?:terrace|garden|deck|top)s?\b)")
+"""Words that put a room under the roof ("a bedroom under the eaves", "a bedroom in the
+roof"): the attic of a house whose storeys the text does not count; the top storey of
+one it does ("a three-storey micro-house ... bedroom in the roof" has three storeys, not
+four: :func:`_find_levels`)."""
 _MEZZANINE = re.compile(r"\bmezzanines?\b")
 _FLOOR_WORDS = re.compile(
     r"\b(?:on|in|at)\s+the\s+(ground|first|1st|second|2nd|third|3rd|top|upper)\s+(?:floor|storey|story|level)\b"
     r"|\b(?:on|in|at)\s+the\s+(second|2nd|third|3rd)\b(?=\s*(?:[,;.]|and\b|$))"
     r"|\b(?:on|in|into|up in|up into|down in|down into)\s+the\s+(basement|attic|garret)\b"
-    r"|\b(?:in|into|under|up in|up into|up under)\s+the\s+(eaves|roof space)\b|\b(downstairs|upstairs)\b|\bup (?:the )?(stairs)\b"
+    r"|\b(?:in|into|under|up in|up into|up under)\s+the\s+(eaves|roof space|roof)\b(?![\w-]|\s+(?:terrace|garden|deck|top)s?\b)"
+    r"|\b(downstairs|upstairs)\b|\bup (?:the )?(stairs)\b"
+    r"|\b(?:lofts?|mezzanines?|galler(?:y|ies)|bedrooms?|rooms?|beds?)\s+(above)\b(?=\s*(?:[,;.]|and\b|$))"
     r"|\b(?:at|on)\s+(street|garden|ground)\s+(?:level|floor)\b|\b(underneath|beneath) (?:them|it)\b"
     r"|\bat the very (top)\b(?!\s+of)|\b(?:at|on) the (top)\b(?=\s*(?:[,;.]|and\b|$))"
     r"|(?:^|(?<=[.;]\s))(?:raised\s+|upper\s+)?(ground|first|1st|second|2nd|third|3rd|top)(?:\s+(?:floor|storey|story))?\s*:"
@@ -1089,9 +1096,12 @@ _STOREY_NOUN = re.compile(r"\b(?:floor|storey|story|level)\b")
 """A storey's noun: "at the top" without one names a storey only in a text of several
 ("a shelf at the top" of a one-storey home names none)."""
 _FLOOR_WORD_OF = {"lower ground": "basement", "stairs": "upstairs", "street": "ground", "garret": "attic", "eaves": "attic",
-                  "roof space": "attic", "garden": "ground", "underneath": "downstairs", "beneath": "downstairs"}
+                  "roof space": "attic", "roof": "attic", "above": "upstairs", "garden": "ground", "underneath": "downstairs", "beneath": "downstairs"}
 """Floor words read as another ("at street level" is the ground floor: a "first floor"
 named with it is the one above, British usage)."""
+_ROOF_WORDS = frozenset({"eaves", "roof space", "roof"})
+"""Floor words for the space under the roof: the attic, or the top storey of a house whose
+storeys the text counts (:data:`_ROOF_ROOMS`)."""
 _TIERS = re.compile(
     r"\b(?:(?:on|in|at)\s+the\s+)?(lowest|lower|bottom|middle|main|entry|upper|top)\s+(?:level|floor|storey|story)\b"
     r"|\b(half a flight up|half a level up)\b")
@@ -1133,13 +1143,16 @@ def _find_levels(text: str, p: Parsed) -> None:
         if word in named:
             p.storeys = max(p.storeys, min(MAX_STOREYS, n + ("ground" in named)))
     p.basement = bool(_BASEMENT.search(text))
-    p.attic = bool(_ATTIC.search(text))
+    counted = p.storeys >= 2  # "a two-storey cottage with a bedroom under the eaves": the eaves are its top storey
+    p.attic = bool(_ATTIC.search(text)) or (not counted and bool(_ROOF_ROOMS.search(text)))
     above = {m.group(0) for m in _UPSTAIRS.finditer(text)} - ({"downstairs"} if p.attic else set())
     above |= named & {"upstairs", "downstairs"} - ({"downstairs"} if p.attic else set())  # "underneath them a kitchenette": the lofts are up
     if p.storeys == 1 and (_MEZZANINE.search(text) or (above and not (one_storey and p.basement))):
         p.storeys = 2  # "downstairs" in a house with an attic: the attic is its upstairs
-    p.floor_words = [(mt.start(), mt.end(), _FLOOR_WORD_OF.get(g, g))
-                     for mt in _FLOOR_WORDS.finditer(text) for g in [next(g for g in mt.groups() if g)]
+    roof_word = "attic" if p.attic else "top"
+    p.floor_words = [(mt.start(i) if g == "above" else mt.start(), mt.end(),  # "a sleeping loft above": the word after the room
+                      roof_word if g in _ROOF_WORDS else _FLOOR_WORD_OF.get(g, g))
+                     for mt in _FLOOR_WORDS.finditer(text) for i, g in [next((i, g) for i, g in enumerate(mt.groups(), 1) if g)]
                      if not (p.storeys <= 1 and g == "top" and not _STOREY_NOUN.search(mt.group()))]
     _find_tiers(text, p)
 
