@@ -816,3 +816,18 @@ def test_an_office_suite_is_offices_and_an_a_frame_a_home(seed):
     assert "bedroom" not in types and types.count("office") == 4
     assert sum(r.area_m2 for r in office.rooms) <= 111.5 * 1.15  # the suite's stated 1,200 sq ft
     assert plan_of("Tiny A-frame with a loft and a wood stove.", seed).building == "home"  # not a loft apartment
+
+
+@pytest.mark.parametrize("seed", range(2))
+def test_a_homes_reception_rooms_are_sitting_rooms_and_a_terrace_house_is_no_open_air_terrace(seed):
+    semi = plan_of("Victorian semi-detached house over two storeys plus a cellar: front and back reception rooms "
+                   "and a galley kitchen on the ground floor, three bedrooms and a family bathroom upstairs.", seed)
+    receptions = [r for r in semi.rooms if "reception" in r.name]
+    assert len(receptions) == 2 and all(r.type == "living_room" for r in receptions)
+    for text in ("A two-up two-down terrace with a front room, a back room and a kitchen",
+                 "A mid-terrace house with a garden"):
+        spec = plan_of(text, seed)
+        assert spec.building == "home" and "terrace" not in {r.type for r in spec.rooms}
+    assert max(r.level for r in plan_of("A two-up two-down terrace with a front room, a back room and a kitchen", seed).rooms) == 1
+    clinic = plan_of("A dental practice with a reception, a waiting room and two surgeries", seed)
+    assert "reception" in {r.type for r in clinic.rooms}  # a practice's reception is still a front desk

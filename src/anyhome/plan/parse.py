@@ -703,6 +703,7 @@ def _parse_building(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[i
     if not matches:
         return None
     best = matches[0]
+    run_start = best.start()  # "a mid-terrace house": the run of building words is the building's, no room's
     for nxt in matches[1:]:  # "a boutique hotel": the head of adjacent building words wins
         if text[best.end() : nxt.start()].strip():
             break
@@ -717,10 +718,10 @@ def _parse_building(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[i
         p.building_phrase = _with_modifier(kb, text, span[0], head, taken)
         return span
     p.building = voc.building_forms[best.group()]
-    _building_modifiers(kb, text, best.start(), p, taken=taken)
+    _building_modifiers(kb, text, run_start, p, taken=taken)
     _size_words(kb, text, best.end(), p)  # "a tiny house": the size word is in the building's phrase
     p.building_phrase = _with_modifier(kb, text, best.start(), best.group(), taken)
-    return best.start(), best.end()
+    return run_start, best.end()
 
 
 def _ruled_out_building(entry: dict, text: str) -> bool:
@@ -1114,7 +1115,7 @@ places or more this way (:func:`_find_tiers`)."""
 _TIER_OF = {"lowest": "low", "lower": "low", "bottom": "low", "middle": "mid", "main": "mid", "entry": "mid",
             "half a flight up": "mid", "half a level up": "mid", "upper": "high", "top": "high"}
 _ENTRANCE_WORDS = re.compile(r"\b(?:entry|entrance|foyer|front door|lobby|vestibule)\b")
-_SOME_STOREYS = {"duplex": 2, "triplex": 3}
+_SOME_STOREYS = {"duplex": 2, "triplex": 3, "two-up two-down": 2, "two up two down": 2}
 """Building words that give a number of storeys ("a duplex apartment"; "split-level": _STOREYS)."""
 ORDINAL_FLOORS = {"first": 1, "1st": 1, "second": 2, "2nd": 2, "third": 3, "3rd": 3}
 """Floors named by number: "the second floor" is the second storey, or the third where the
@@ -1750,7 +1751,7 @@ _NO_COMPOUND = re.compile(r"\b([Nn]o)[-\u2010\u2011](?=[^\W\d_])")
 COUNT_COMPOUNDS = frozenset(
     "bedroom bedrooms bathroom bathrooms bed beds bath baths room rooms storey storeys story stories floor "
     "floors level levels square sq metre metres meter meters m m2 foot feet ft sqft year years month months "
-    "person people family families bay bays stall stalls".split())
+    "person people family families bay bays stall stalls up down".split())  # "a two-up two-down"
 """Words that keep a hyphenated number before them a count ("a two-bedroom flat", "a
 50-square-metre studio"); before other words it is part of an adjective."""
 _NUMBER_COMPOUND = re.compile(
