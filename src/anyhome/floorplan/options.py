@@ -325,6 +325,16 @@ class FloorplanOptions:
     """Grid cells a side may be off in floorplan.carve_fit.two_rooms_unfit: the footprint's sides are rounded to whole cells (measured on the dev storey sets: 0.5, 169 of the 384 failed carve searches told, none of the 572 that found a layout; 1.0, 147; 0, two that found one told)."""
     stair_carve_fit_steps: int = _opt(200, 10, 100_000)
     """Places of the one cut tried across the footprint in floorplan.carve_fit.two_rooms_unfit (its proportions: an eighth as many)."""
+    small_exact_max_rooms: int = _opt(3, 0, 3)
+    """Most rooms of a storey (of a house of several) laid out first by the exact arrangements of floorplan.small (strips, or one room along a side and two beside it) before the slicing search; 0: never."""
+    small_exact_candidates: int = _opt(8, 1, 1_000)
+    """Best exact arrangements of such a storey tried (floorplan.small), each an attempt."""
+    small_circulation_excess_weight: float = _opt(2.0, 0.0, 1_000.0)
+    """Extra weight in floorplan.small's score of a circulation room's floor beyond its target: of two arrangements equally far off, the one whose stairwell is the larger is the worse."""
+    small_stair_excess_frac: float = _opt(0.35, 0.0, 10.0)
+    """Most a room holding a stair may exceed its least rectangle in floorplan.small (its ends beyond the stair go to the room across when the storeys are stacked, floorplan.wells)."""
+    small_door_wall_m: float = _opt(1.0, 0.5, 10.0)
+    """Least wall two linked rooms share in floorplan.small's arrangements (a door and its frame), m."""
     well_end_trim: int = _opt(1, 0, 1)
     """1: a stairwell's ends beyond its stair's box and foot strip go to the room across (floorplan.wells.wells_end_trimmed); 0: kept."""
     well_doors_to_strip: int = _opt(1, 0, 1)

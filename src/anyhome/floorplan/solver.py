@@ -33,6 +33,7 @@ from anyhome.floorplan.options import FloorplanOptions
 from anyhome.floorplan.program import CORRIDOR_TYPES, Program
 from anyhome.floorplan.seeds import seed_positions
 from anyhome.floorplan.slicing import SliceRooms, slice_footprint, tree_rects
+from anyhome.floorplan.small import small_owners
 from anyhome.floorplan.spine import spine_owner
 from anyhome.floorplan.tune import TuneRooms, tune_tree
 from anyhome.floorplan.walls import (
@@ -183,8 +184,12 @@ def _layouts(spec: HouseSpec, rng: np.random.Generator, options: FloorplanOption
         return prog, [ring]
     slicing_attempts = opts.slicing_attempts if prog.n <= opts.slicing_max_rooms else 0
     short = [0]  # slicing attempts so far, every one of which left a room too short
+    exact = small_owners(prog, opts, rng)  # a storey of two or three rooms: its exact arrangements first
 
     def attempt(i: int) -> Layout | str:
+        if i < len(exact):
+            return checked(_constructed_attempt(prog, exact[i], rng, opts))
+        i -= len(exact)
         if i < slicing_attempts and not (opts.slicing_short_give_up and short[0] >= opts.slicing_short_give_up):
             result = checked(_attempt(prog, rng, opts))
             short[0] = short[0] + 1 if short[0] == i and isinstance(result, str) and result.endswith(TOO_SHORT) else 0

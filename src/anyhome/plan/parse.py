@@ -1081,7 +1081,7 @@ _MEZZANINE = re.compile(r"\bmezzanines?\b")
 _FLOOR_WORDS = re.compile(
     r"\b(?:on|in|at)\s+the\s+(ground|first|1st|second|2nd|third|3rd|top|upper)\s+(?:floor|storey|story|level)\b"
     r"|\b(?:on|in|at)\s+the\s+(second|2nd|third|3rd)\b(?=\s*(?:[,;.]|and\b|$))"
-    r"|\b(?:on|in|into|up in|up into|down in|down into)\s+the\s+(basement|attic|garret)\b"
+    r"|\b(?:on|in|into|up in|up into|down in|down into)\s+the\s+(basement|cellar|attic|garret)\b"
     r"|\b(?:in|into|under|up in|up into|up under)\s+the\s+(eaves|roof space|roof)\b(?![\w-]|\s+(?:terrace|garden|deck|top)s?\b)"
     r"|\b(downstairs|upstairs)\b|\bup (?:the )?(stairs)\b"
     r"|\b(?:lofts?|mezzanines?|galler(?:y|ies)|bedrooms?|rooms?|beds?)\s+(above)\b(?=\s*(?:[,;.]|and\b|$))"
@@ -1096,7 +1096,7 @@ floor", "two sleeping lofts, underneath them a kitchenette", a sentence opening 
 _STOREY_NOUN = re.compile(r"\b(?:floor|storey|story|level)\b")
 """A storey's noun: "at the top" without one names a storey only in a text of several
 ("a shelf at the top" of a one-storey home names none)."""
-_FLOOR_WORD_OF = {"lower ground": "basement", "stairs": "upstairs", "street": "ground", "garret": "attic", "eaves": "attic",
+_FLOOR_WORD_OF = {"lower ground": "basement", "cellar": "basement", "stairs": "upstairs", "street": "ground", "garret": "attic", "eaves": "attic",
                   "roof space": "attic", "roof": "attic", "above": "upstairs", "garden": "ground", "underneath": "downstairs", "beneath": "downstairs"}
 """Floor words read as another ("at street level" is the ground floor: a "first floor"
 named with it is the one above, British usage)."""
