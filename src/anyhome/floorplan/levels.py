@@ -1148,7 +1148,9 @@ def _clear_of_doors(tries: list[tuple[float, float]], ya: float, width: float, l
     """For each (foot, yaw) of ``tries``: whether the flight box of every storey ``k``
     (``lengths[k]`` long, on the strip ``ya`` to ``ya`` + ``width``), grown by
     :data:`~anyhome.floorplan.stairs.STAIR_CLEAR_M`, meets none of that storey's door
-    ``zones`` (:func:`stack_box`'s first test, as :func:`flight_rect` draws the box)."""
+    ``zones`` (:func:`stack_box`'s first test, as :func:`flight_rect` draws the box). The
+    rounded grown box is built only where the box grown square (which holds it) meets a
+    zone: the same answer, without most of the buffers."""
     import shapely
 
     ok = np.ones(len(tries), dtype=bool)
@@ -1161,9 +1163,16 @@ def _clear_of_doors(tries: list[tuple[float, float]], ya: float, width: float, l
             continue
         x0 = np.where(east, foot - length, foot)
         x1 = np.where(east, foot, foot + length)
-        grown = shapely.buffer(shapely.box(x0, ya, x1, ya + width), STAIR_CLEAR_M, quad_segs=16)
+        reach = STAIR_CLEAR_M + 1e-9  # the grown box lies inside the box grown square by this
+        near = np.zeros(len(tries), dtype=bool)
         for z in zones[k]:
-            ok &= ~shapely.intersects(grown, z)
+            near |= shapely.intersects(shapely.box(x0 - reach, ya - reach, x1 + reach, ya + width + reach), z)
+        idx = np.flatnonzero(near & ok)  # only these can meet a zone: their rounded boxes are built and tested
+        if not len(idx):
+            continue
+        grown = shapely.buffer(shapely.box(x0[idx], ya, x1[idx], ya + width), STAIR_CLEAR_M, quad_segs=16)
+        for z in zones[k]:
+            ok[idx] &= ~shapely.intersects(grown, z)
     return ok
 
 
