@@ -44,3 +44,22 @@ def test_anneal_stops_early_without_progress() -> None:
     short, full = _run(0.0), _run(1.0)
     assert short[0] > 0 and full[0] > 0  # the cost cannot reach 0: only patience ends it early
     assert short[1] != full[1]  # the full schedule drew more numbers from the generator
+
+
+def test_room_swap_draws_the_rooms_choice_of_the_leaves_drew() -> None:
+    """A move draws its two rooms by their rank among the leaves (cheaper than choosing
+    from the leaves' list): the same rooms, and the generator left as it was before."""
+    from anyhome.floorplan.anneal import _move
+
+    expr = [0, 1, "V", 2, "H", 3, 4, "V", "H"]
+    leaves = [i for i, t in enumerate(expr) if not isinstance(t, str)]
+    ours, theirs = np.random.default_rng(7), np.random.default_rng(7)
+    for _ in range(300):
+        moved = _move(expr, ours)
+        if theirs.integers(3) == 0:
+            i, j = theirs.choice(leaves, size=2, replace=False)
+            swapped = list(expr)
+            swapped[i], swapped[j] = swapped[j], swapped[i]
+            assert moved == swapped
+        else:
+            theirs.bit_generator.state = ours.bit_generator.state  # other moves: not this test's

@@ -99,3 +99,48 @@ def test_a_stair_hall_is_planned_no_larger_than_the_stair_and_its_passage():
     big = sub.model_copy(update={"rooms": [hall.model_copy(update={"area_m2": 14.0}) if r.id == room.id else r
                                            for r in spec.rooms]})
     assert _carved_m2(big, room.id, 3.6, 1.75, opts) == 0.0  # a hall that holds it already grows no larger
+
+
+def _slid_all_at_once(segment, walls, rest_wall, near, on, off):
+    """``carve._slid`` as it was: every test on every place, the first that passes all."""
+    import numpy as np
+    import shapely
+
+    from anyhome.floorplan.levels import DOOR_SLIDE_M
+    from anyhome.floorplan.stairs import DOOR_CORNER_M
+
+    (ax, ay), (bx, by) = segment
+    ux, uy = (1.0, 0.0) if abs(ay - by) < 1e-6 else (0.0, 1.0)
+    shifts = [sign * i * 0.05 for i in range(1, int(DOOR_SLIDE_M / 0.05) + 1) for sign in (1, -1)]
+    segs = [((round(ax + ux * t, 4), round(ay + uy * t, 4)), (round(bx + ux * t, 4), round(by + uy * t, 4))) for t in shifts]
+    lines = shapely.linestrings(np.asarray(segs, dtype=float))
+    ok = shapely.contains(rest_wall, lines) & (shapely.length(shapely.intersection(lines, walls)) <= 1e-6)
+    for e in near:
+        ok &= shapely.distance(shapely.linestrings(np.asarray(e, dtype=float)), lines) >= 2 * DOOR_CORNER_M
+    if on is not None:
+        ok &= shapely.contains(on, lines)
+    if off is not None:
+        ok &= shapely.length(shapely.intersection(lines, off)) <= 1e-6
+    first = np.flatnonzero(ok)
+    return segs[int(first[0])] if len(first) else None
+
+
+def test_a_door_slid_with_each_test_on_the_survivors_lands_where_every_test_put_it(monkeypatch):
+    """A slid door's places are each tested only while they pass (speed only): on rooms
+    with doors in every corner and along every wall, every slide lands where testing
+    every place with every test put it."""
+    from anyhome.floorplan import carve
+
+    slid, calls = carve._slid, []
+
+    def both(*args):
+        calls.append(slid(*args))
+        assert calls[-1] == _slid_all_at_once(*args)
+        return calls[-1]
+
+    monkeypatch.setattr(carve, "_slid", both)
+    for i, y in enumerate((0.1, 0.6, 1.3, 2.2, 3.4, 3.6)):  # along the wall shared with the kitchen
+        doors = [Door(id="door-0", rooms=("living_room", "kitchen"), segment=((6.0, y), (6.0, y + 0.9))),
+                 Door(id="door-1", rooms=("living_room", "outside"), segment=((0.2 + i, 0.0), (1.1 + i, 0.0)))]
+        list(carved(_plan(doors), WELL, "living_room", 3.6, 1.75, 1.2))
+    assert any(c is not None for c in calls) and any(c is None for c in calls)

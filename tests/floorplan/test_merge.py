@@ -132,3 +132,21 @@ def test_any_open_plan_house_is_valid(seed: int) -> None:
         if room.merged:
             assert len(room.polygon) == 6 and Polygon(room.polygon).exterior.is_ccw
             assert all(d.rooms.count(room.id) < 2 for d in house.doors)
+
+
+def test_the_aspect_test_answers_as_the_widest_disc_does():
+    """``l_aspect_over`` skips the widest-disc search where the bounding box alone is too
+    long: its answer is still ``l_aspect(...) > limit`` for rectangles and Ls of every
+    proportion, at limits around their aspects."""
+    from anyhome.floorplan.merge import l_aspect, l_aspect_over
+
+    rng = np.random.default_rng(3)
+    for _ in range(150):
+        w, h = (round(float(v), 2) for v in rng.uniform(1.0, 9.0, size=2))
+        cx, cy = round(float(rng.uniform(0.2, 0.8)) * w, 2), round(float(rng.uniform(0.2, 0.8)) * h, 2)
+        rect = [(0.0, 0.0), (w, 0.0), (w, h), (0.0, h)]
+        ell = [(0.0, 0.0), (w, 0.0), (w, cy), (cx, cy), (cx, h), (0.0, h)]
+        for outline in (rect, ell):
+            aspect = l_aspect(outline)
+            for limit in (aspect - 1e-6, aspect, aspect + 1e-6, 1.5, 2.0, 3.0):
+                assert l_aspect_over(outline, limit) == (aspect > limit)

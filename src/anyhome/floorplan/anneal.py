@@ -103,7 +103,8 @@ def _move(expr: list[Token], rng: np.random.Generator) -> list[Token] | None:
     kind = rng.integers(3)
     if kind == 0:  # swap two rooms
         leaves = [i for i, t in enumerate(out) if not isinstance(t, str)]
-        i, j = rng.choice(leaves, size=2, replace=False)
+        a, b = rng.choice(len(leaves), size=2, replace=False).tolist()  # the draws of choice(leaves, ...), without the array
+        i, j = leaves[a], leaves[b]
         out[i], out[j] = out[j], out[i]
     elif kind == 1:  # flip one cut
         ops = [i for i, t in enumerate(out) if isinstance(t, str)]

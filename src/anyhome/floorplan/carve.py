@@ -16,7 +16,7 @@ half of such houses before).
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 
 import numpy as np
 from shapely.geometry import LineString, Polygon, box
@@ -93,7 +93,13 @@ def _cut(plan: Floorplan, well: RoomSpec, r: Room, cut, along_x: bool, cx: int, 
     walls = cut.exterior.intersection(outline.exterior)  # the room's walls the stairwell takes
     ax, ay, bx, by = cut.bounds
     rest_wall = rest.exterior.buffer(1e-6)
-    others = {x.id: Polygon(x.polygon).exterior.buffer(1e-6) for x in plan.rooms if x.level == r.level and x.id != r.id}
+    neighbours = {x.id: x for x in plan.rooms if x.level == r.level and x.id != r.id}
+    outlines: dict[str, object] = {}  # room id -> its outline, buffered: built once a door in the way needs them
+
+    def others() -> dict[str, object]:
+        if not outlines:
+            outlines.update({i: Polygon(x.polygon).exterior.buffer(1e-6) for i, x in neighbours.items()})
+        return outlines
 
     def in_way(seg) -> bool:
         return bool(LineString(seg).intersection(walls).length > 1e-6)
@@ -105,11 +111,11 @@ def _cut(plan: Floorplan, well: RoomSpec, r: Room, cut, along_x: bool, cx: int, 
         if r.id not in d.rooms or not in_way(d.segment):
             continue
         other = next(x for x in d.rooms if x != r.id)
-        if other != "outside" and other not in others:
+        if other != "outside" and other not in neighbours:
             return None
         near = [e.segment for j, e in enumerate(doors) if j != i] + [w.segment for w in plan.windows]
-        on = others[other] if other != "outside" else None
-        off = unary_union(list(others.values())) if other == "outside" else None  # an outside door stays off them
+        on = others()[other] if other != "outside" else None
+        off = unary_union(list(others().values())) if other == "outside" else None  # an outside door stays off them
         seg = _slid(d.segment, walls, rest_wall, near, on, off)
         if seg is None:
             return None  # a door of the room that no place along its wall clears
@@ -154,7 +160,8 @@ def _slid(segment, walls, rest_wall, near: list, on, off) -> tuple | None:
     stairwell takes), on ``rest_wall`` (what is left of the
     room's outline), :data:`~anyhome.floorplan.stairs.DOOR_CORNER_M` twice from every segment of ``near``, on ``on`` (the other
     room's outline, buffered) or off ``off`` (an outside door: every other room's
-    outline); None: no such place. Every place is tested at once (shapely's arrays)."""
+    outline); None: no such place. Every place is tested at once (shapely's arrays),
+    each test only on the places every test before it passed (:func:`first_passing`)."""
     import shapely
 
     from anyhome.floorplan.levels import DOOR_SLIDE_M
@@ -163,14 +170,30 @@ def _slid(segment, walls, rest_wall, near: list, on, off) -> tuple | None:
     ux, uy = (1.0, 0.0) if abs(ay - by) < 1e-6 else (0.0, 1.0)
     shifts = [sign * i * SNAP_M for i in range(1, int(DOOR_SLIDE_M / SNAP_M) + 1) for sign in (1, -1)]
     segs = [((round(ax + ux * t, 4), round(ay + uy * t, 4)), (round(bx + ux * t, 4), round(by + uy * t, 4))) for t in shifts]
-    ends = np.asarray(segs, dtype=float)
-    lines = shapely.linestrings(ends)
-    ok = shapely.contains(rest_wall, lines) & (shapely.length(shapely.intersection(lines, walls)) <= 1e-6)
-    for e in near:
-        ok &= shapely.distance(shapely.linestrings(np.asarray(e, dtype=float)), lines) >= 2 * DOOR_CORNER_M
+    lines = shapely.linestrings(np.asarray(segs, dtype=float))
+    def clear_of(e) -> Callable[[np.ndarray], np.ndarray]:
+        line = shapely.linestrings(np.asarray(e, dtype=float))
+        return lambda ls: shapely.distance(line, ls) >= 2 * DOOR_CORNER_M
+
+    tests: list[Callable[[np.ndarray], np.ndarray]] = [
+        lambda ls: shapely.contains(rest_wall, ls), lambda ls: shapely.length(shapely.intersection(ls, walls)) <= 1e-6]
+    tests += [clear_of(e) for e in near]
     if on is not None:
-        ok &= shapely.contains(on, lines)
+        tests.append(lambda ls: shapely.contains(on, ls))
     if off is not None:
-        ok &= shapely.length(shapely.intersection(lines, off)) <= 1e-6
-    first = np.flatnonzero(ok)
-    return segs[int(first[0])] if len(first) else None
+        tests.append(lambda ls: shapely.length(shapely.intersection(ls, off)) <= 1e-6)
+    first = first_passing(lines, tests)
+    return None if first is None else segs[first]
+
+
+def first_passing(items: np.ndarray, tests: list) -> int | None:
+    """Index of the first of ``items`` that every one of ``tests`` (an array of items ->
+    an array of bools) passes, or None: each test is run only on the items that passed
+    the ones before it (the same answer as every test on every item, for less work:
+    most places of a slid door fail the first test)."""
+    alive = np.arange(len(items))
+    for test in tests:
+        if not len(alive):
+            return None
+        alive = alive[np.asarray(test(items[alive]), dtype=bool)]
+    return int(alive[0]) if len(alive) else None

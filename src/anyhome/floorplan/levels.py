@@ -57,7 +57,7 @@ from __future__ import annotations
 import dataclasses
 import functools
 import math
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from contextvars import ContextVar
 from typing import TYPE_CHECKING
 
@@ -506,12 +506,12 @@ def _merged_well(plan: Floorplan, k: int, room: Room, well: Room, opts: Floorpla
     stand in, or arrive in, the room."""
     from shapely.geometry import Polygon
 
-    from anyhome.floorplan.merge import l_aspect, merge_rooms, union_outline
+    from anyhome.floorplan.merge import l_aspect_over, merge_rooms, union_outline
 
     if not (Polygon(room.polygon).is_valid and Polygon(well.polygon).is_valid):
         return None
     outline = union_outline(room.polygon, well.polygon, tuple(range(4, opts.open_stair_max_corners + 1, 2)))
-    if outline is None or l_aspect(outline) > opts.open_stair_max_aspect_ratio + 1e-9:
+    if outline is None or l_aspect_over(outline, opts.open_stair_max_aspect_ratio + 1e-9):
         return None
     if len(outline) > 6 and (_shared_wall_m(room, well) < opts.shared_wall_min_m - 1e-6  # an alcove wide enough to walk into
                              or not (_strip_off(plan, room) or _alcove_passage(plan, room, well, k))):
@@ -1013,8 +1013,11 @@ def _clear_spot(segment, stair_box, walls: tuple, near: list) -> tuple | None:
     most :data:`DOOR_SLIDE_M`) where its swing clears ``stair_box``, it still lies on both
     ``walls`` (the two rooms' outlines, buffered; None: outside, not moved) and no door
     of ``near`` is within 0.1 m; None: no such place. Every place is tested at once
-    (shapely's array functions), the nearest that passes wins."""
+    (shapely's array functions), each test only on the places the tests before it
+    passed (:func:`~anyhome.floorplan.carve.first_passing`), the nearest that passes wins."""
     import shapely
+
+    from anyhome.floorplan.carve import first_passing
 
     if any(w is None for w in walls):
         return None
@@ -1024,13 +1027,19 @@ def _clear_spot(segment, stair_box, walls: tuple, near: list) -> tuple | None:
     segs = [((round(ax + ux * t, 6), round(ay + uy * t, 6)), (round(bx + ux * t, 6), round(by + uy * t, 6))) for t in shifts]
     ends = np.asarray(segs, dtype=float)  # (place, end, xy)
     lines = shapely.linestrings(ends)
-    ok = ~(shapely.intersects(_opening_zones(ends), stair_box) | shapely.intersects(lines, stair_box))
-    for w in walls:
-        ok &= shapely.contains(w, lines)
-    for e in near:
-        ok &= shapely.distance(shapely.linestrings(np.asarray(e, dtype=float)), lines) >= 0.1
-    first = np.flatnonzero(ok)
-    return segs[int(first[0])] if len(first) else None
+    alive = np.arange(len(segs))
+
+    def on(wall) -> Callable[[np.ndarray], np.ndarray]:
+        return lambda idx: shapely.contains(wall, lines[idx])
+
+    def clear_of(e) -> Callable[[np.ndarray], np.ndarray]:
+        line = shapely.linestrings(np.asarray(e, dtype=float))
+        return lambda idx: shapely.distance(line, lines[idx]) >= 0.1
+
+    tests = [*(on(w) for w in walls), lambda idx: ~shapely.intersects(lines[idx], stair_box),
+             lambda idx: ~shapely.intersects(_opening_zones(ends[idx]), stair_box), *(clear_of(e) for e in near)]
+    first = first_passing(alive, tests)
+    return None if first is None else segs[first]
 
 
 def _opening_zones(ends: np.ndarray):
@@ -1139,7 +1148,9 @@ def _clear_of_doors(tries: list[tuple[float, float]], ya: float, width: float, l
     """For each (foot, yaw) of ``tries``: whether the flight box of every storey ``k``
     (``lengths[k]`` long, on the strip ``ya`` to ``ya`` + ``width``), grown by
     :data:`~anyhome.floorplan.stairs.STAIR_CLEAR_M`, meets none of that storey's door
-    ``zones`` (:func:`stack_box`'s first test, as :func:`flight_rect` draws the box)."""
+    ``zones`` (:func:`stack_box`'s first test, as :func:`flight_rect` draws the box). The
+    rounded grown box is built only where the box grown square (which holds it) meets a
+    zone: the same answer, without most of the buffers."""
     import shapely
 
     ok = np.ones(len(tries), dtype=bool)
@@ -1152,9 +1163,16 @@ def _clear_of_doors(tries: list[tuple[float, float]], ya: float, width: float, l
             continue
         x0 = np.where(east, foot - length, foot)
         x1 = np.where(east, foot, foot + length)
-        grown = shapely.buffer(shapely.box(x0, ya, x1, ya + width), STAIR_CLEAR_M, quad_segs=16)
+        reach = STAIR_CLEAR_M + 1e-9  # the grown box lies inside the box grown square by this
+        near = np.zeros(len(tries), dtype=bool)
         for z in zones[k]:
-            ok &= ~shapely.intersects(grown, z)
+            near |= shapely.intersects(shapely.box(x0 - reach, ya - reach, x1 + reach, ya + width + reach), z)
+        idx = np.flatnonzero(near & ok)  # only these can meet a zone: their rounded boxes are built and tested
+        if not len(idx):
+            continue
+        grown = shapely.buffer(shapely.box(x0[idx], ya, x1[idx], ya + width), STAIR_CLEAR_M, quad_segs=16)
+        for z in zones[k]:
+            ok[idx] &= ~shapely.intersects(grown, z)
     return ok
 
 

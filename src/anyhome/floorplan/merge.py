@@ -133,7 +133,7 @@ def l_candidates(floorplan: Floorplan, data: OpenPlan, opts: FloorplanOptions) -
         if key not in rank or not _compatible(ra, rb):
             continue
         union = l_polygon(ra.polygon, rb.polygon)
-        if union is None or l_aspect(union) > opts.max_habitable_aspect_ratio + 1e-9:
+        if union is None or l_aspect_over(union, opts.max_habitable_aspect_ratio + 1e-9):
             continue
         found.append((rank[key], -Polygon(union).area, ra.id, rb.id))
     return [(a, b) for _, _, a, b in sorted(found)]
@@ -175,10 +175,30 @@ def l_aspect(points: list[tuple[float, float]]) -> float:
     """Aspect of an L room: its bounding box's long side over the widest disc that fits
     in it (the plan metrics' aspect, :mod:`anyhome.evaluate.plan_metrics`; for a
     rectangle, long over short side)."""
+    return _l_aspect(tuple((float(x), float(y)) for x, y in points))
+
+
+@lru_cache(maxsize=4096)
+def _l_aspect(points: tuple[tuple[float, float], ...]) -> float:
+    """:func:`l_aspect`, once per outline: a storey's outlines are measured again when
+    its stairwells are opened a second time (``levels._stacked``), half of the calls."""
     xs, ys = [p[0] for p in points], [p[1] for p in points]
     long_m = max(max(xs) - min(xs), max(ys) - min(ys))
     width_m = 2.0 * float(shapely.maximum_inscribed_circle(Polygon(points), INSCRIBED_TOL_M).length)
     return long_m / max(width_m, 1e-9)
+
+
+def l_aspect_over(points: list[tuple[float, float]], limit: float) -> bool:
+    """Whether ``l_aspect(points) > limit``, answered without the widest-disc search where
+    the bounding box's own aspect is over ``limit``: no disc in the outline is wider than
+    the box's short side (a ray from its centre leaves the outline within the box), so
+    the box's aspect is a lower bound of :func:`l_aspect`'s (the short side taken a
+    billionth wider, for the disc's rounding)."""
+    xs, ys = [p[0] for p in points], [p[1] for p in points]
+    w_m, h_m = max(xs) - min(xs), max(ys) - min(ys)
+    if min(w_m, h_m) > 0 and max(w_m, h_m) / (min(w_m, h_m) * (1 + 1e-9)) > limit:
+        return True
+    return l_aspect(points) > limit
 
 
 def merge_rooms(floorplan: Floorplan, keep: str, absorb: str, name: str | None = None,

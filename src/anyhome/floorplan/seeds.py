@@ -7,6 +7,8 @@ rooms (hallways, entries, service rooms) to its middle.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from anyhome.floorplan.grid import FREE, Grid
@@ -41,6 +43,17 @@ def seed_positions(
     pull = hub[:, None] * opts.seed_center_gain
     inside = grid.owner == FREE
     lo, hi = free.min(axis=0), free.max(axis=0)
+    layout = _scalar_layout if len(areas_m2) <= opts.seed_scalar_max_rooms else _array_layout
+    return layout(pos, forces, center, pull, free, inside, lo, hi, opts)
+
+
+def _array_layout(pos: np.ndarray, forces: _Forces, center: np.ndarray, pull: np.ndarray, free: np.ndarray,
+                  inside: np.ndarray, lo: np.ndarray, hi: np.ndarray, opts: FloorplanOptions) -> np.ndarray:
+    """The force layout's steps from ``pos`` (the rooms' first places), on arrays: each
+    room repelled, attracted and pulled to the edge (``forces``) and to ``center``
+    (``pull``: each room's gain), then snapped inside the footprint (``free`` cell
+    centres, the ``inside`` mask, their least and greatest centres ``lo``, ``hi``), until
+    ``seed_force_iterations`` steps or no seed moves more than ``seed_settled_cells``."""
     for _ in range(opts.seed_force_iterations):
         before = pos
         pos = pos + forces.repel(pos) + forces.attract(pos)
@@ -49,6 +62,74 @@ def seed_positions(
         if float(np.abs(pos - before).max()) <= opts.seed_settled_cells:  # settled: further steps barely move a seed
             break
     return pos
+
+
+def _scalar_layout(pos: np.ndarray, forces: _Forces, center: np.ndarray, pull: np.ndarray, free: np.ndarray,
+                   inside: np.ndarray, lo: np.ndarray, hi: np.ndarray, opts: FloorplanOptions) -> np.ndarray:
+    """:func:`_array_layout` in Python floats: the same operations, in the same order,
+    on the same doubles (each force of :class:`_Forces`, the pull to the middle,
+    :func:`_snap_inside`), so the same positions (tests/floorplan/test_seeds.py compares
+    the two); the pull to the edge and the connections' lengths still on arrays."""
+    p = pos.tolist()
+    n = len(p)
+    reach = forces.reach_sum.tolist()
+    repel_gain, attract_gain = opts.seed_repel_gain * 0.5, opts.seed_attract_gain * 0.5
+    links = list(zip(forces.edges, forces.rest.tolist()))
+    cx, cy = center.tolist()
+    gains = pull[:, 0].tolist()
+    (lo_x, lo_y), (hi_x, hi_y) = lo.tolist(), hi.tolist()
+    rows = inside.tolist()
+    settled = opts.seed_settled_cells
+    for _ in range(opts.seed_force_iterations):
+        before = p
+        moves = [[0.0, 0.0] for _ in range(n)]
+        deltas = [(p[j][0] - p[i][0], p[j][1] - p[i][1]) for (i, j), _ in links]
+        dists = _link_lengths(deltas) if deltas else []
+        for ((i, j), rest), (dx, dy), dist in zip(links, deltas, dists):  # attraction, in the connections' order
+            excess = dist - rest
+            if excess > 0:
+                pulled = attract_gain * excess
+                sx, sy = pulled * dx / dist, pulled * dy / dist
+                mi, mj = moves[i], moves[j]
+                mi[0] += sx
+                mi[1] += sy
+                mj[0] -= sx
+                mj[1] -= sy
+        pushed = []
+        for i, (x, y) in enumerate(p):
+            rx = ry = 0.0  # repulsion, summed over the other rooms in order
+            reach_i = reach[i]
+            for j, (xj, yj) in enumerate(p):
+                dx, dy = x - xj, y - yj
+                dist = math.sqrt(dx * dx + dy * dy) + 1e-6
+                over = reach_i[j] - dist if j != i else 0.0
+                share = (over if over > 0.0 else 0.0) / dist
+                rx, ry = (share * dx, share * dy) if j == 0 else (rx + share * dx, ry + share * dy)
+            pushed.append([x + repel_gain * rx + moves[i][0], y + repel_gain * ry + moves[i][1]])
+        edge = forces.to_edge(np.array(pushed)).tolist() if len(forces.rooms) else None
+        out = []
+        for i, (x, y) in enumerate(pushed):
+            g = gains[i]
+            if edge is None:
+                x, y = x + g * (cx - x), y + g * (cy - y)
+            else:  # the pull to the middle from where the rooms were pushed, as the arrays' sum
+                x, y = x + edge[i][0] + g * (cx - x), y + edge[i][1] + g * (cy - y)
+            x = hi_x if (x if x > lo_x else lo_x) > hi_x else (x if x > lo_x else lo_x)
+            y = hi_y if (y if y > lo_y else lo_y) > hi_y else (y if y > lo_y else lo_y)
+            if not rows[int(x)][int(y)]:
+                x, y = free[int(np.argmin(np.linalg.norm(free - np.array([x, y]), axis=1)))].tolist()
+            out.append([x, y])
+        p = out
+        if max(max(abs(a[0] - b[0]), abs(a[1] - b[1])) for a, b in zip(p, before)) <= settled:
+            break
+    return np.array(p)
+
+
+def _link_lengths(deltas: list[tuple[float, float]]) -> list[float]:
+    """Length (+ 1e-6) of each vector of ``deltas`` as :meth:`_Forces.attract` works it
+    out (``np.vecdot``, whose sum of two products is not always Python's)."""
+    delta = np.array(deltas)
+    return (np.sqrt(np.vecdot(delta, delta)) + 1e-6).tolist()
 
 
 class _Forces:

@@ -252,17 +252,36 @@ def doors_joined(rect: tuple[float, float, float, float], flight, doors: list) -
     flight's box ``flight`` reaches every door of it (``doors``: their segments, shapely
     lines) and the strip at the stair's foot: a flight across the whole well would cut it
     in two."""
+    pieces = walkable_pieces(rect, flight)
+    return pieces_joined(pieces, [reached_pieces(pieces, d) for d in doors] if len(pieces) > 1 else [], bool(doors))
+
+
+def walkable_pieces(rect: tuple[float, float, float, float], flight) -> list:
+    """The walkable pieces of the stairwell ``rect`` (x0, y0, w, h) round the flight's box
+    ``flight`` (:func:`doors_joined`; shapely polygons)."""
     from shapely.geometry import box
 
     from anyhome.geometry import AGENT_RADIUS_M
 
     x0, y0, w, h = rect
     free = box(x0, y0, x0 + w, y0 + h).difference(flight).buffer(-AGENT_RADIUS_M)
-    pieces = [g for g in getattr(free, "geoms", [free]) if not g.is_empty]
-    if len(pieces) <= 1:
-        return bool(pieces) or not doors
+    return [g for g in getattr(free, "geoms", [free]) if not g.is_empty]
+
+
+def reached_pieces(pieces: list, door) -> set[int]:
+    """The pieces of ``pieces`` (:func:`walkable_pieces`, more than one) a door (its
+    segment, a shapely line) opens onto."""
+    from anyhome.geometry import AGENT_RADIUS_M
+
     near = AGENT_RADIUS_M + 0.1
-    reached = [{i for i, g in enumerate(pieces) if g.distance(d) <= near} for d in doors]
+    return {i for i, g in enumerate(pieces) if g.distance(door) <= near}
+
+
+def pieces_joined(pieces: list, reached: list[set[int]], any_doors: bool) -> bool:
+    """:func:`doors_joined` of the walkable ``pieces``, each door's ``reached`` pieces
+    given (where more than one piece; ``any_doors``: whether the stairwell has doors)."""
+    if len(pieces) <= 1:
+        return bool(pieces) or not any_doors
     return bool(reached) and bool(set.intersection(*reached))
 
 
@@ -309,13 +328,23 @@ def stair_fitter(rect: tuple[float, float, float, float], doors: list, length_m:
             if not any(clear.intersects(z) for z in zones):
                 places.append((box_, clear))
 
+    joined: dict[int, tuple[list, list[set[int]]]] = {}  # place -> its walkable pieces, the pieces each of ``doors`` reaches
+
+    def joined_with(i: int, extra_lines: list) -> bool:  # doors_joined(rect, box_, lines + extra_lines), the doors' share once
+        if i not in joined:
+            pieces = walkable_pieces(rect, places[i][0])
+            joined[i] = pieces, [reached_pieces(pieces, d) for d in lines] if len(pieces) > 1 else []
+        pieces, reached = joined[i]
+        more = [reached_pieces(pieces, d) for d in extra_lines] if len(pieces) > 1 else []
+        return pieces_joined(pieces, reached + more, bool(lines or extra_lines))
+
     def fits(extra: list) -> bool:
         if turned:
             extra = [((a[1], a[0]), (b[1], b[0])) for a, b in extra]
         more = [opening_zone(d).union(LineString(d)) for d in extra]
-        all_lines = lines + [LineString(d) for d in extra]
-        return any(not any(clear.intersects(z) for z in more) and doors_joined(rect, box_, all_lines)
-                   for box_, clear in places)
+        extra_lines = [LineString(d) for d in extra]
+        return any(not any(clear.intersects(z) for z in more) and joined_with(i, extra_lines)
+                   for i, (_, clear) in enumerate(places))
 
     return fits
     zones = [opening_zone(d).union(LineString(d)) for d in doors]

@@ -225,10 +225,10 @@ def _across(plan: Floorplan, k: int, well_id: str, wall: LineString) -> Room | N
 
 def _grown(room: Room, band, most_aspect: float) -> list[tuple[float, float]] | None:
     """``room``'s outline with ``band`` added, when a rectangle or an L within ``most_aspect``."""
-    from anyhome.floorplan.merge import l_aspect, union_outline
+    from anyhome.floorplan.merge import l_aspect_over, union_outline
 
     outline = union_outline(room.polygon, [(round(x, 4), round(y, 4)) for x, y in band.exterior.coords[:-1]])
-    if outline is None or l_aspect(outline) > most_aspect + 1e-9:
+    if outline is None or l_aspect_over(outline, most_aspect + 1e-9):
         return None
     return outline
 
