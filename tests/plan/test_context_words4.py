@@ -132,3 +132,41 @@ def test_an_outbuilding_is_a_room():
 def test_a_room_becoming_another_is_that_room():
     p = parse("the smallest bedroom, right next to ours, is becoming the nursery for the new baby")
     assert [m.name for m in p.rooms] == ["nursery"]
+
+
+@pytest.mark.parametrize("text, n", [("a snug on the mezzanine, and three en-suite bedrooms", 3), ("two ensuite bedrooms and a kitchen", 2)])
+def test_en_suite_bedrooms_are_that_many_bedrooms_each_with_its_bathroom(text, n):
+    rooms = parse(text).rooms
+    bedrooms = next(m for m in rooms if m.key == "bedroom")
+    ensuites = next(m for m in rooms if m.key in ("en-suite", "ensuite"))
+    assert bedrooms.count == n and ensuites.count == n
+
+
+def test_cauldrons_over_fire_holes_are_cauldrons_and_the_holes_nothing():
+    objects = _objects("a bueok kitchen with iron cauldrons set over the fire holes")
+    assert "cauldron" in objects.values() and not any("hole" in n for n in objects)
+
+
+def test_an_oxford_college_set_has_a_scholars_look():
+    assert "dark_academia" in parse("Oxford college staircase, a fellow's set: a book-lined study").styles
+
+
+@pytest.mark.parametrize("text, key", [("a granny annexe over the garage", "granny annexe"), ("a summerhouse at the end of the garden", "summerhouse"),
+                                       ("a coach house", "coach house"), ("a garden office", "garden office"),
+                                       ("a cleaner's cupboard", "cleaner's cupboard"), ("a tea point", "tea point"),
+                                       ("a shed at the bottom of the garden", "shed")])
+def test_a_homes_outbuildings_and_small_rooms_are_rooms(text, key):
+    assert key in _rooms(text).values()
+
+
+def test_a_shed_roof_is_no_shed():
+    assert "shed" not in _rooms("a cabin with a shed roof")
+
+
+@pytest.mark.parametrize("text, key", [("a room with a brass bed and a press for the linen", "wardrobe"),
+                                       ("the press room with a rotary press", "printing press"),
+                                       ("a kitchen with a French press", "espresso machine"),
+                                       ("an old cider press in the barn", "wine press")])
+def test_a_press_is_a_cupboard_unless_it_says_what_it_presses(text, key):
+    assert key in _objects(text).values()
+    assert "wardrobe" not in _objects("the press room with a rotary press").values()

@@ -305,7 +305,7 @@ def _former_rooms(text: str, mentions: list[Mention]) -> list[Mention]:
     alias: dict[int, int | None] = {}
     for j, (a, b) in enumerate(zip(rooms, rooms[1:])):
         link = NOW_ROOM.fullmatch(text, a.end, b.start)
-        if link is None or a.negated or b.negated or not b.key:
+        if link is None or a.negated or b.negated or not (b.key or b.name.split()[-1] in DESCRIBED_HEADS):
             continue
         said_old = FORMER_ROOM.search(text, max(0, a.start - 40), a.start) is not None or any(
             w in {"former", "old", "original", "erstwhile", "disused"} for w in a.name.split())
@@ -1964,6 +1964,20 @@ QUANTITY_LEAD = re.compile(r"\b(?:a|an|the|this|that)\s+(?:[a-z]+\s+){0,2}$")
 """The article and adjectives before a quantity word ("a wide range")."""
 
 
+EN_SUITE_KEYS = frozenset({"en-suite", "ensuite"})
+"""Room words that, written before a bedroom, say it has its own bathroom."""
+
+
+def _ensuite_counts(kb: KnowledgeBase, text: str, mentions: list[Mention]) -> None:
+    """"Three en-suite bedrooms": the count is the bedrooms' too (an en-suite each), not
+    three bathrooms beside bedrooms of any number."""
+    names = kb.raw("rooms")["names"]
+    for a, b in zip(mentions, mentions[1:]):
+        if (a.kind == b.kind == "room" and a.key in EN_SUITE_KEYS and b.count is None and a.count is not None
+                and (names.get(b.key) or {}).get("type") == "bedroom" and not text[a.end : b.start].strip()):
+            b.count, b.plural = a.count, a.plural
+
+
 def _nouns_only(kb: KnowledgeBase, text: str, mentions: list[Mention]) -> list[Mention]:
     """``mentions`` less the rooms named by a word that is here an adjective (rooms.yaml
     ``noun_only``): "a snug bedroom", "solar panels", "buttery leather"; and less the
@@ -2052,6 +2066,7 @@ def parse(text: str, kb: KnowledgeBase | None = None) -> Parsed:
             m.words = kept
         if m.words:
             m.name = " ".join(m.words + [m.name])
+    _ensuite_counts(kb, norm, mentions)
     mentions = _open_vocabulary(kb, norm, p, taken, mentions, tokens)
     _apply_negation(norm, mentions, kb)
     _paired_rooms(norm, mentions)
