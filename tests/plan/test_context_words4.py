@@ -170,3 +170,7 @@ def test_a_shed_roof_is_no_shed():
 def test_a_press_is_a_cupboard_unless_it_says_what_it_presses(text, key):
     assert key in _objects(text).values()
     assert "wardrobe" not in _objects("the press room with a rotary press").values()
+
+
+def test_out_names_no_object():
+    assert "out" not in _objects("a covered walkway out to the boarding ramp")
