@@ -23,7 +23,8 @@ were written the same way at the start of the eighth session: the first to tune 
 second for measuring only. dev_context3.jsonl (40) was written the same way at the start
 of the ninth session, to tune on. heldout_storeys4.jsonl (30, floorplans.py) and
 heldout_context3.jsonl (40) were written the same way at the start of the tenth session,
-for measuring only.
+for measuring only. dev_context4.jsonl (40) was written the same way in the thirteenth
+session, to tune on.
 """
 
 from __future__ import annotations
@@ -49,6 +50,7 @@ SETS = {
     "dev_context": HERE / "prompts" / "dev_context.jsonl",
     "dev_context2": HERE / "prompts" / "dev_context2.jsonl",
     "dev_context3": HERE / "prompts" / "dev_context3.jsonl",
+    "dev_context4": HERE / "prompts" / "dev_context4.jsonl",
     "heldout_context2": HERE / "prompts" / "heldout_context2.jsonl",
     "heldout_context3": HERE / "prompts" / "heldout_context3.jsonl",
 }

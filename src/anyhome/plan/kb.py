@@ -215,8 +215,27 @@ class Storeys(_Model):
     attic: list[str] = Field(min_length=1, description="room types an attic takes (the first of them the plan has)")
 
 
+class ConversionLook(_Model):
+    """What a converted building keeps of its former use: looks and features as decor."""
+
+    styles: list[str] = Field(default_factory=list)
+    ornaments: list[GroupItem] = Field(default_factory=list, description="decor in the home's main room")
+
+
+class Conversions(_Model):
+    """A building's former use ("a converted chapel", "a barn conversion", "a former
+    school turned into flats"): the building is what it became, never the old one."""
+
+    program: str = Field(description="the building a conversion is when the text names no other")
+    before: list[Word] = Field(min_length=1, description="words before the old building's word: converted, former")
+    after: list[Word] = Field(default_factory=list, description="words right after it: conversion")
+    into: list[Word] = Field(default_factory=list, description="words leading to what it became: turned into, now a")
+    keeps: dict[str, ConversionLook] = Field(default_factory=dict, description="former program -> what the home keeps")
+
+
 class ProgramsFile(_Model):
     buildings: list[Building]
+    conversions: Conversions | None = None
     programs: dict[str, Program] = Field(min_length=1)
     sizes: Sizes | None = None
     storeys: Storeys | None = None
@@ -502,6 +521,8 @@ class ConceptsFile(_Model):
     objects: dict[str, list[Word]] = Field(default_factory=dict)
     buildings: dict[str, list[Word]] = Field(default_factory=dict)
     non_objects: list[Word] = Field(default_factory=list)
+    quantity_words: list[Word] = Field(default_factory=list, description=(
+        "object words that name no object before 'of' ('a wide range of teas', not a kitchen range)"))
     setting_words: list[Word] = Field(default_factory=list, description=(
         "words before a building that say where it stands, never its style ('a village fire station')"))
     list_rooms: dict[Word, str] = Field(default_factory=dict, description=(
@@ -804,6 +825,16 @@ class KnowledgeBase:
             if b.kind is not None:
                 kinds = self.programs.sizes.kinds if self.programs.sizes else {}
                 need(b.kind in kinds, "programs", ("buildings", i, "kind"), lambda: known(str(b.kind), kinds, "building kind (sizes.kinds)"))
+        if (conv := self.programs.conversions) is not None:
+            need(conv.program in {b.program for b in self.programs.buildings}, "programs", ("conversions", "program"),
+                 lambda: known(conv.program, programs, "program with building words"))
+            for k, look in conv.keeps.items():
+                need(k in programs, "programs", ("conversions", "keeps", k), lambda: known(k, programs, "program"))
+                for s in look.styles:
+                    need(s in styles, "programs", ("conversions", "keeps", k, "styles"), lambda: known(s, styles, "style"))
+                for j, it in enumerate(look.ornaments):
+                    need(it.use in objects, "programs", ("conversions", "keeps", k, "ornaments", j, "use"),
+                         lambda: known(str(it.use), objects, "object"))
         self._check_sizes(need, known, types)
         for key, p in programs.items():
             for t in p.entrance:

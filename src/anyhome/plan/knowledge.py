@@ -11,7 +11,7 @@ import functools
 import os
 import re
 import sys
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -241,6 +241,7 @@ class Vocabulary:
     material_regex: re.Pattern[str]
     colour_regex: re.Pattern[str]
     finish_regex: re.Pattern[str]  # weathering words and the words of ceiling structures ("peeling", "exposed")
+    hidden_objects: dict[str, tuple[Entry, bool]] = field(default_factory=dict)  # object forms a room word of the same spelling hides
 
 
 def _alternation(phrases: list[str]) -> re.Pattern[str]:
@@ -279,10 +280,14 @@ def compile_vocabulary(kb: KnowledgeBase) -> Vocabulary:
             p = normalize(phrase)
             for i, f in enumerate(_plural_forms(p)):
                 forms.setdefault(f, (Entry("object", key, p), i > 0))
+    hidden: dict[str, tuple[Entry, bool]] = {}
     for key in load("rooms")["names"]:
         p = normalize(key)
         for i, f in enumerate(_plural_forms(p)):
-            # room words win over object words of the same spelling
+            # room words win over object words of the same spelling (kept aside for a
+            # room word that names a room in some buildings alone: an archery club's "range")
+            if f in forms and forms[f][0].kind == "object":
+                hidden[f] = forms[f]
             forms[f] = (Entry("room", key, p), i > 0)
     building_forms: dict[str, int] = {}
     for i, b in enumerate(load("programs")["buildings"]):
@@ -306,4 +311,5 @@ def compile_vocabulary(kb: KnowledgeBase) -> Vocabulary:
         material_regex=_alternation(mats),
         colour_regex=_alternation(cols),
         finish_regex=_alternation(finish or ["\x00"]),
+        hidden_objects=hidden,
     )

@@ -35,6 +35,7 @@ from anyhome.plan.program import (
     connect_levels,
     fit_areas,
     fit_rooms,
+    former_keeps,
     is_dwelling,
     norm_area_m2,
     open_air_by_name,
@@ -335,6 +336,7 @@ def _furnish(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], main_key: str
             d = fu.group_def(kb, {"group": key})
             groups.append(fu.build_group(kb, d, s.area, rng))
         built.append((groups, ornaments, unused))
+    _former_features(kb, parsed, slots, main_key, built, rng)
     for m in parsed.objects:
         if m.negated:
             continue
@@ -373,6 +375,16 @@ def _furnish(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], main_key: str
     _cap_house_area(slots, warnings)
     _add_zones(kb, parsed, slots, out, rng, at_work)
     return out
+
+
+def _former_features(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], main_key: str | None,
+                     built: list[tuple[list[fu.Group], list[fu.Item], Any]], rng: np.random.Generator) -> None:
+    """A converted building's old features as decor in its main room (programs.yaml
+    ``conversions.keeps``): a converted chapel's living room keeps stained glass, not pews."""
+    entries = former_keeps(kb, parsed).get("ornaments", [])
+    main = next((i for i, s in enumerate(slots) if main_key is not None and s.key == main_key), None)
+    if entries and main is not None:
+        built[main][1].extend(fu.make_item(kb, e, rng, ornament=True) for e in entries)
 
 
 def _add_zones(kb: KnowledgeBase, parsed: Parsed, slots: list[Slot], rooms: list[tuple[list[fu.Group], list[fu.Item]]],

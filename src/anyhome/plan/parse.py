@@ -145,6 +145,10 @@ _ONE_ROOM = re.compile(
 )
 _BED_BATH_WORDS = re.compile(r"\b(\w+) bed(?:room)?s?\s*(?:,|and|\+)?\s*(\w+) bath(?:room)?s?\b")
 _BR_ONLY = re.compile(r"\b(\d{1,3})\s*(?:br|bd|bdr|bdrm)\b")
+_BED_HOME = re.compile(
+    r"\b(\w+) bed(?:ed)?\s+(?:[a-z]+\s+)?(?:flat|apartment|house|home|bungalow|cottage|semi|terrace|maisonette"
+    r"|condo|townhouse|villa|cabin|chalet|penthouse|unit|duplex|detached|property)s?\b")
+"""An estate agent's "2 bed flat", "a three-bed semi", "4 bed detached house": bedrooms, not beds."""
 _PEOPLE = re.compile(
     r"\b(?:family|household|group) of (\w+)\b|\bfor (\w+) (?:people|persons|adults|kids|children|guests)\b"
     r"|\bsleep(?:s|ing)? (?:up to )?(\w+)\b"
@@ -277,6 +281,60 @@ def _corefer(text: str, p: Parsed, mentions: list[Mention]) -> list[Mention]:
             alias[j] = earlier
         elif head and m.name == head[0] and not m.key:
             alias[j] = None
+    return _aliased(mentions, rooms, alias)
+
+
+FORMER_ROOM = re.compile(r"\b(?:former|old|original|one time|erstwhile|disused)\s+(?:[\w'-]+\s+){0,2}$")
+"""Words before a room that say it was once that room ("the old engine bay is ...")."""
+
+NOW_ROOM = re.compile(
+    r"(?:\s*,[^,.;:()]{1,40},)?\s+(?:(?:is|was)\s+)?(?:now\s+)?"
+    r"(?:is|has become|became|becomes|is becoming|will become|serves as|is used as|used as|turned into|houses|now)"
+    r"(?:\s+now)?\s+(?:the|a|an|our|my|his|her|their)\s+(?:[\w'-]+\s+){0,2}")
+"""What links a room's former use to the room it now is: "... is now the", "... has become
+a", "..., right next to ours, is becoming the"."""
+
+
+def _former_rooms(text: str, mentions: list[Mention]) -> list[Mention]:
+    """"The old engine bay is the living room", "the former crew dormitory is now the
+    primary bedroom": a room named as what it was, linked to the room it is now, is that
+    room (what the text puts in it goes there); the old use names no room of its own. A
+    plain "the kitchen is the heart of the home" says no former use: the first room must
+    be said to be old or former, or the link must say "now" or "become"."""
+    rooms = [m for m in mentions if m.kind == "room"]
+    alias: dict[int, int | None] = {}
+    for j, (a, b) in enumerate(zip(rooms, rooms[1:])):
+        link = NOW_ROOM.fullmatch(text, a.end, b.start)
+        if link is None or a.negated or b.negated or not (b.key or b.name.split()[-1] in DESCRIBED_HEADS):
+            continue
+        said_old = FORMER_ROOM.search(text, max(0, a.start - 40), a.start) is not None or any(
+            w in {"former", "old", "original", "erstwhile", "disused"} for w in a.name.split())
+        if said_old or re.search(r"\b(?:now|become|became|becomes|becoming)\b", link.group()):
+            alias[j] = j + 1
+    return _aliased(mentions, rooms, alias)
+
+
+APPOSED = re.compile(r"\s*\(\s*|\s*:\s*(?:a|an|the|one)\s+(?:[\w'-]+\s+){0,3}")
+"""Between a room and another name for it: "a Turkish bath (hammam", "the cabinet of
+curiosities: a wood-panelled room"."""
+
+DESCRIBED_HEADS = frozenset({"room", "space", "chamber"})
+"""Words a description of a room ends in ("a wood-panelled room"), naming no kind of room."""
+
+
+def _apposed_rooms(text: str, mentions: list[Mention]) -> list[Mention]:
+    """A room named again right after itself is one room: in brackets ("a Turkish bath
+    (hammam)"), or described after a colon by words that name no kind of room ("the
+    cabinet of curiosities: a wood-panelled room lined with cases"). What the text puts
+    in the second goes to the first."""
+    rooms = [m for m in mentions if m.kind == "room"]
+    alias: dict[int, int | None] = {}
+    for j, (a, b) in enumerate(zip(rooms, rooms[1:])):
+        link = APPOSED.fullmatch(text, a.end, b.start)
+        if link is None or a.negated or b.negated or (b.count or 1) > 1 or j in alias:
+            continue
+        if "(" in link.group() or (not b.key and b.name.split()[-1] in DESCRIBED_HEADS):
+            alias[j + 1] = j
     return _aliased(mentions, rooms, alias)
 
 
@@ -454,6 +512,7 @@ class Parsed:
     building_score: float = 1.0  # how close the embedding matcher found it (1.0: a word the knowledge lists)
     building_size: float = 1.0
     building_phrase: str | None = None  # the user's words for the building ("pilates studio", "sushi restaurant")
+    former: int | None = None  # buildings entry of the building's former use ("a converted chapel")
     rooms: list[Mention] = field(default_factory=list)
     objects: list[Mention] = field(default_factory=list)
     styles: list[str] = field(default_factory=list)  # style keys, in order of appearance
@@ -700,6 +759,16 @@ def _parse_building(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[i
         if not any(a <= b.start() and b.end() <= e and e - a > b.end() - b.start() for a, e in longer)
         and not _ruled_out_building(buildings[voc.building_forms[b.group()]], text)
     ]  # fmt: skip  ("a box office": a room, not an office building)
+    old = _former_uses(kb, text, matches)
+    if old:  # "a converted chapel": the chapel names neither the building nor a room
+        (first, (a, e)), into_end = old[0], _into_end(kb, text, old[0][1][1])
+        p.former = voc.building_forms[first.group()]
+        taken.extend(span for _, span in old)
+        matches = [b for b in matches if not any(x <= b.start() < y for _, (x, y) in old)
+                   and (b.start() < a or not text[e : b.start()].strip()  # "a hotel in a former bank", "a chapel home"
+                        or (into_end is not None and b.start() >= into_end and len(_tokens(text[into_end : b.start()])) <= 3))]
+        if not matches:
+            return _converted_building(kb, text, p, (a, e), into_end)
     if not matches:
         return None
     best = matches[0]
@@ -707,7 +776,8 @@ def _parse_building(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[i
     for nxt in matches[1:]:  # "a boutique hotel": the head of adjacent building words wins
         if text[best.end() : nxt.start()].strip():
             break
-        best = nxt
+        if not _plain_home_after_a_home(kb, best, nxt):  # "a narrowboat home" stays a narrowboat
+            best = nxt
     opening = _opening_building(kb, text, best.start(), taken)
     if opening is not None:  # "a steakhouse with ... a bar": the text's subject is the building
         program, span, head, score = opening
@@ -722,6 +792,80 @@ def _parse_building(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[i
     _size_words(kb, text, best.end(), p)  # "a tiny house": the size word is in the building's phrase
     p.building_phrase = _with_modifier(kb, text, best.start(), best.group(), taken)
     return run_start, best.end()
+
+
+def _plain_home_after_a_home(kb: KnowledgeBase, first: re.Match[str], head: re.Match[str]) -> bool:
+    """Whether ``head`` is the plain word for a home (the first buildings entry: house,
+    home) after a word naming a kind of home ("a narrowboat home", "a farmhouse home"):
+    the kind says more, its look and sizes included."""
+    forms = vocabulary(kb).building_forms
+    buildings = kb.raw("programs")["buildings"]
+    return forms[head.group()] == 0 and forms[first.group()] != 0 and is_dwelling(kb, buildings[forms[first.group()]]["program"])
+
+
+def _words_alternation(words: Sequence[str]) -> str:
+    """A regex alternation of ``words`` as the parser reads them, longest first."""
+    return "|".join(re.escape(normalize(w)) for w in sorted(words, key=len, reverse=True)) or "(?!)"
+
+
+FORMER_GAP_WORDS = 3
+"""Words that may stand between a `before` word and the old building's word ("converted
+1920s fire station", "a former Methodist chapel", "converted grade ii listed barn")."""
+
+
+def _former_uses(kb: KnowledgeBase, text: str, matches: Sequence[re.Match[str]]) -> list[tuple[re.Match[str], tuple[int, int]]]:
+    """The building words that name a building's former use (programs.yaml
+    ``conversions``), each with the span of its words ("converted stone barn", "chapel
+    conversion"). A dwelling's word is never one: "a converted farmhouse" is a farmhouse."""
+    conv = kb.raw("programs").get("conversions")
+    if not conv:
+        return []
+    before = re.compile(rf"\b(?:{_words_alternation(conv['before'])})\s+(?:[\w'-]+\s+){{0,{FORMER_GAP_WORDS}}}$")
+    after = re.compile(rf"\s+(?:{_words_alternation(conv.get('after', []))})\b")
+    buildings = kb.raw("programs")["buildings"]
+    out = []
+    for b in matches:
+        if is_dwelling(kb, buildings[vocabulary(kb).building_forms[b.group()]]["program"]):
+            continue
+        start, end = b.span()
+        if (pre := before.search(text, 0, b.start())) is not None:
+            start = pre.start()
+        if (post := after.match(text, b.end())) is not None:
+            end = post.end()
+        if (start, end) == b.span() and _into_end(kb, text, end) is None:
+            continue
+        out.append((b, (start, end)))
+    return out
+
+
+def _into_end(kb: KnowledgeBase, text: str, pos: int) -> int | None:
+    """Where an `into` phrase right after ``pos`` ends ("turned into", ", now a"), if any."""
+    conv = kb.raw("programs").get("conversions") or {}
+    into = re.compile(rf"[\s,]*(?:(?:that|which)\s+(?:is|was|has been)\s+)?(?:{_words_alternation(conv.get('into', []))})\b")
+    mt = into.match(text, pos)
+    return mt.end() if mt is not None else None
+
+
+def _converted_building(kb: KnowledgeBase, text: str, p: Parsed, span: tuple[int, int], into_end: int | None) -> tuple[int, int]:
+    """The building a converted one is, when the text names no other building word: a
+    plural after its `into` phrase ("turned into flats"), else ``conversions.program``'s
+    first building entry. Returns the old building's span (the building's phrase)."""
+    buildings = kb.raw("programs")["buildings"]
+    forms = vocabulary(kb).building_forms
+    target = None
+    if into_end is not None:
+        for tok, _, _ in _tokens(text[into_end:])[:FORMER_GAP_WORDS + 1]:
+            if tok.isalpha() and (word := _singular(tok)[0]) in forms:
+                target = forms[word]
+                break
+    if target is None:
+        program = kb.raw("programs")["conversions"]["program"]
+        target = next(i for i, b in enumerate(buildings) if b["program"] == program)
+    p.building = target
+    _building_modifiers(kb, text, span[0], p, taken=[])
+    _size_words(kb, text, span[1], p)
+    p.building_phrase = text[span[0] : span[1]]
+    return span
 
 
 def _ruled_out_building(entry: dict, text: str) -> bool:
@@ -862,7 +1006,9 @@ def _find_mentions(kb: KnowledgeBase, text: str, p: Parsed, taken: list[tuple[in
         entry, plural = voc.forms[mt.group()]
         only = names.get(entry.key, {}).get("only_within") if entry.kind == "room" else None
         if only and program not in only:  # "vendor stalls" of a market: no rooms
-            continue
+            if mt.group() not in voc.hidden_objects:
+                continue
+            entry, plural = voc.hidden_objects[mt.group()]  # "the range" of a farmhouse kitchen: its stove
         key = words.get(entry.key, entry.key) if entry.kind == "object" else entry.key  # a lab's workbench
         phrase = key if key != entry.key else entry.phrase  # ... is a lab bench, by name too
         found.append(Mention(entry.kind, key, phrase, mt.start(), mt.end(), plural=plural))
@@ -1033,8 +1179,12 @@ def _apply_codes(text: str, p: Parsed, taken: list[tuple[int, int]]) -> None:
             taken.append(mw.span())
     else:
         mt2 = _BR_ONLY.search(text)
+        mt4 = _BED_HOME.search(text)
         if mt2:
             p.bedrooms = int(mt2.group(1))
+        elif mt4 and (n := parse_number(mt4.group(1))) is not None and n > 0:
+            p.bedrooms = n
+            taken.append((mt4.start(), mt4.start(1) + len(mt4.group(1)) + len(" bed")))
     mt3 = _PEOPLE.search(text)
     if mt3:
         n = parse_number(mt3.group(1) or mt3.group(2) or mt3.group(3) or "")
@@ -1820,12 +1970,41 @@ BEFORE_AN_ADJECTIVE = frozenset(
 """Words before a ``noun_only`` room word that make it an adjective ("feels snug")."""
 
 
+OF_QUANTITY = re.compile(r"\s+of\s+(?!(?:the|a|an|this|that|his|her|its|their|my|our|your)\b)")
+"""What follows a word used as a quantity: "a range of teas", not "the range of the house"."""
+
+
+QUANTITY_LEAD = re.compile(r"\b(?:a|an|the|this|that)\s+(?:[a-z]+\s+){0,2}$")
+"""The article and adjectives before a quantity word ("a wide range")."""
+
+
+EN_SUITE_KEYS = frozenset({"en-suite", "ensuite"})
+"""Room words that, written before a bedroom, say it has its own bathroom."""
+
+
+def _ensuite_counts(kb: KnowledgeBase, text: str, mentions: list[Mention]) -> None:
+    """"Three en-suite bedrooms": the count is the bedrooms' too (an en-suite each), not
+    three bathrooms beside bedrooms of any number."""
+    names = kb.raw("rooms")["names"]
+    for a, b in zip(mentions, mentions[1:]):
+        if (a.kind == b.kind == "room" and a.key in EN_SUITE_KEYS and b.count is None and a.count is not None
+                and (names.get(b.key) or {}).get("type") == "bedroom" and not text[a.end : b.start].strip()):
+            b.count, b.plural = a.count, a.plural
+
+
 def _nouns_only(kb: KnowledgeBase, text: str, mentions: list[Mention]) -> list[Mention]:
     """``mentions`` less the rooms named by a word that is here an adjective (rooms.yaml
-    ``noun_only``): "a snug bedroom", "solar panels", "buttery leather"."""
+    ``noun_only``): "a snug bedroom", "solar panels", "buttery leather"; and less the
+    objects named by a word that is here a quantity (concepts.yaml ``quantity_words``):
+    "a wide range of teas" holds no kitchen range."""
     names = kb.raw("rooms")["names"]
+    quantities = frozenset(kb.raw("concepts").get("quantity_words", []))
     keep = []
     for m in mentions:
+        if m.kind == "object" and m.name.split()[-1] in quantities and OF_QUANTITY.match(text, m.end):
+            if (lead := QUANTITY_LEAD.search(text, 0, m.start)) is not None:
+                m.start = lead.start()  # "a wide range": its adjectives name nothing either
+            continue
         if m.kind == "room" and (names.get(m.key) or {}).get("noun_only"):
             nxt = re.match(r"\s*([a-z][a-z'-]*)", text[m.end :])
             if nxt is not None and nxt.group(1) not in AFTER_A_NOUN:
@@ -1901,6 +2080,7 @@ def parse(text: str, kb: KnowledgeBase | None = None) -> Parsed:
             m.words = kept
         if m.words:
             m.name = " ".join(m.words + [m.name])
+    _ensuite_counts(kb, norm, mentions)
     mentions = _open_vocabulary(kb, norm, p, taken, mentions, tokens)
     _apply_negation(norm, mentions, kb)
     _paired_rooms(norm, mentions)
@@ -1917,6 +2097,8 @@ def parse(text: str, kb: KnowledgeBase | None = None) -> Parsed:
     _subject_room(norm, p, mentions)
     _table_seats(norm, kb, mentions)
     mentions = _corefer(norm, p, mentions)
+    mentions = _former_rooms(norm, mentions)
+    mentions = _apposed_rooms(norm, mentions)
     mentions = _house_totals(norm, p, mentions)
     _apply_arrangements(norm, mentions)
     p.rooms = [m for m in mentions if m.kind == "room"]

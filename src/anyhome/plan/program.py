@@ -13,6 +13,7 @@ import unicodedata
 import zlib
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
@@ -134,13 +135,24 @@ def choose_program(kb: KnowledgeBase, parsed: Parsed) -> tuple[str | None, list[
         b = kb.raw("programs")["buildings"][parsed.building]
         if _guessed_home(kb, parsed, b["program"]):
             return None, []
-        return b["program"], list(b.get("styles", []))
+        return b["program"], list(b.get("styles", [])) + former_keeps(kb, parsed).get("styles", [])
     if any(not m.negated for m in parsed.rooms):
         types = _named_types(kb, parsed)
         if parsed.bedrooms or parsed.people or (len(types) >= 3 and types & HOME_TYPES):
             return DEFAULT_PROGRAM, []
         return None, []
     return DEFAULT_PROGRAM, []
+
+
+def former_keeps(kb: KnowledgeBase, parsed: Parsed) -> dict[str, Any]:
+    """What a converted building keeps of its former use (programs.yaml
+    ``conversions.keeps``: a barn's farmhouse look, a chapel's stained glass); empty when
+    the text names no former use."""
+    if parsed.former is None:
+        return {}
+    programs = kb.raw("programs")
+    old = programs["buildings"][parsed.former]["program"]
+    return dict((programs.get("conversions") or {}).get("keeps", {}).get(old) or {})
 
 
 GUESSED_HOME_MAX = 0.9
