@@ -395,8 +395,7 @@ def test_the_eaves_of_a_two_storey_cottage_are_its_upper_storey_and_of_an_uncoun
     assert not parse("A bungalow with a roof terrace, bedroom in the roof terrace.").attic  # a roof terrace is no roof space
 
 
-def test_a_loft_above_is_upstairs_and_shelves_above_are_not():
-    levels = _levels("Tiny A-frame with a loft: one open room downstairs with a kitchenette and wood stove, "
-                     "a little bathroom, and a sleeping loft above.")
-    assert levels["sleeping_loft"] == 1 and levels["living_room"] == 0
-    assert parse("A kitchen with open shelves above, and a dining room.").storeys == 1
+def test_a_tiny_houses_loft_above_adds_no_storey():
+    spec = plan_house("A tiny house with a kitchen, a bathroom and a sleeping loft above.", np.random.default_rng(0))
+    assert {r.level for r in spec.rooms} == {0}  # the loft is in the one storey: no stairwells to pay for
+    assert parse("A tiny house with a kitchen, a bathroom and a sleeping loft above.").storeys == 1

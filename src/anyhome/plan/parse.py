@@ -1234,7 +1234,7 @@ _FLOOR_WORDS = re.compile(
     r"|\b(?:on|in|into|up in|up into|down in|down into)\s+the\s+(basement|cellar|attic|garret)\b"
     r"|\b(?:in|into|under|up in|up into|up under)\s+the\s+(eaves|roof space|roof)\b(?![\w-]|\s+(?:terrace|garden|deck|top)s?\b)"
     r"|\b(downstairs|upstairs)\b|\bup (?:the )?(stairs)\b"
-    r"|\b(?:lofts?|mezzanines?|galler(?:y|ies)|bedrooms?|rooms?|beds?)\s+(above)\b(?=\s*(?:[,;.]|and\b|$))"
+
     r"|\b(?:at|on)\s+(street|garden|ground)\s+(?:level|floor)\b|\b(underneath|beneath) (?:them|it)\b"
     r"|\bat the very (top)\b(?!\s+of)|\b(?:at|on) the (top)\b(?=\s*(?:[,;.]|and\b|$))"
     r"|(?:^|(?<=[.;]\s))(?:raised\s+|upper\s+)?(ground|first|1st|second|2nd|third|3rd|top)(?:\s+(?:floor|storey|story))?\s*:"
@@ -1247,7 +1247,7 @@ _STOREY_NOUN = re.compile(r"\b(?:floor|storey|story|level)\b")
 """A storey's noun: "at the top" without one names a storey only in a text of several
 ("a shelf at the top" of a one-storey home names none)."""
 _FLOOR_WORD_OF = {"lower ground": "basement", "cellar": "basement", "stairs": "upstairs", "street": "ground", "garret": "attic", "eaves": "attic",
-                  "roof space": "attic", "roof": "attic", "above": "upstairs", "garden": "ground", "underneath": "downstairs", "beneath": "downstairs"}
+                  "roof space": "attic", "roof": "attic", "garden": "ground", "underneath": "downstairs", "beneath": "downstairs"}
 """Floor words read as another ("at street level" is the ground floor: a "first floor"
 named with it is the one above, British usage)."""
 _ROOF_WORDS = frozenset({"eaves", "roof space", "roof"})
@@ -1265,7 +1265,7 @@ places or more this way (:func:`_find_tiers`)."""
 _TIER_OF = {"lowest": "low", "lower": "low", "bottom": "low", "middle": "mid", "main": "mid", "entry": "mid",
             "half a flight up": "mid", "half a level up": "mid", "upper": "high", "top": "high"}
 _ENTRANCE_WORDS = re.compile(r"\b(?:entry|entrance|foyer|front door|lobby|vestibule)\b")
-_SOME_STOREYS = {"duplex": 2, "triplex": 3, "two-up two-down": 2, "two up two down": 2}
+_SOME_STOREYS = {"duplex": 2, "triplex": 3, "twoup twodown": 2}  # "a two-up two-down" (its numbers joined, _number_adjectives)
 """Building words that give a number of storeys ("a duplex apartment"; "split-level": _STOREYS)."""
 ORDINAL_FLOORS = {"first": 1, "1st": 1, "second": 2, "2nd": 2, "third": 3, "3rd": 3}
 """Floors named by number: "the second floor" is the second storey, or the third where the
@@ -1301,9 +1301,8 @@ def _find_levels(text: str, p: Parsed) -> None:
     if p.storeys == 1 and (_MEZZANINE.search(text) or (above and not (one_storey and p.basement))):
         p.storeys = 2  # "downstairs" in a house with an attic: the attic is its upstairs
     roof_word = "attic" if p.attic else "top"
-    p.floor_words = [(mt.start(i) if g == "above" else mt.start(), mt.end(),  # "a sleeping loft above": the word after the room
-                      roof_word if g in _ROOF_WORDS else _FLOOR_WORD_OF.get(g, g))
-                     for mt in _FLOOR_WORDS.finditer(text) for i, g in [next((i, g) for i, g in enumerate(mt.groups(), 1) if g)]
+    p.floor_words = [(mt.start(), mt.end(), roof_word if g in _ROOF_WORDS else _FLOOR_WORD_OF.get(g, g))
+                     for mt in _FLOOR_WORDS.finditer(text) for g in [next(g for g in mt.groups() if g)]
                      if not (p.storeys <= 1 and g == "top" and not _STOREY_NOUN.search(mt.group()))]
     _find_tiers(text, p)
 
@@ -1901,7 +1900,7 @@ _NO_COMPOUND = re.compile(r"\b([Nn]o)[-\u2010\u2011](?=[^\W\d_])")
 COUNT_COMPOUNDS = frozenset(
     "bedroom bedrooms bathroom bathrooms bed beds bath baths room rooms storey storeys story stories floor "
     "floors level levels square sq metre metres meter meters m m2 foot feet ft sqft year years month months "
-    "person people family families bay bays stall stalls up down".split())  # "a two-up two-down"
+    "person people family families bay bays stall stalls".split())
 """Words that keep a hyphenated number before them a count ("a two-bedroom flat", "a
 50-square-metre studio"); before other words it is part of an adjective."""
 _NUMBER_COMPOUND = re.compile(
