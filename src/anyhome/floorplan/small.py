@@ -24,13 +24,12 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from anyhome.floorplan.grid import FREE, OUTSIDE, min_side_cells
+from anyhome.floorplan.slicing import Rect, shared_wall_cells
 
 if TYPE_CHECKING:
     from anyhome.floorplan.options import FloorplanOptions
     from anyhome.floorplan.program import Program
 
-Rect = tuple[int, int, int, int]
-"""(x0, y0, x1, y1) in cells, end exclusive."""
 
 
 def small_owners(prog: Program, opts: FloorplanOptions, rng: np.random.Generator) -> list[np.ndarray]:
@@ -54,7 +53,7 @@ def small_owners(prog: Program, opts: FloorplanOptions, rng: np.random.Generator
     for depth in range(max(2, min(least)), int(math.sqrt(total) * 3) + 1):
         for rects in _arrangements(prog.n, depth, target, least):
             score = _score(rects, target, least, longest, aspect, opts, prog.circulation or (False,) * prog.n, stairs)
-            if score is not None and all(_shared_cells(rects[a], rects[b]) >= door_cells for a, b in prog.edges):
+            if score is not None and all(shared_wall_cells(rects[a], rects[b]) >= door_cells for a, b in prog.edges):
                 scored.append((score + _compactness(rects, opts), rects))
     scored.sort(key=lambda t: t[0])
     out = []
@@ -109,15 +108,6 @@ def _score(rects: dict[int, Rect], target: np.ndarray, least: list[int], longest
         if circulation[k]:
             score += opts.small_circulation_excess_weight * max(0.0, ratio - 1)
     return score
-
-
-def _shared_cells(a: Rect, b: Rect) -> int:
-    """Length (cells) of the wall two rectangles share (0 where they do not touch)."""
-    if a[2] == b[0] or b[2] == a[0]:
-        return max(0, min(a[3], b[3]) - max(a[1], b[1]))
-    if a[3] == b[1] or b[3] == a[1]:
-        return max(0, min(a[2], b[2]) - max(a[0], b[0]))
-    return 0
 
 
 def _compactness(rects: dict[int, Rect], opts: FloorplanOptions) -> float:
