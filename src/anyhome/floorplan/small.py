@@ -31,7 +31,6 @@ if TYPE_CHECKING:
     from anyhome.floorplan.program import Program
 
 
-
 def small_owners(prog: Program, opts: FloorplanOptions, rng: np.random.Generator) -> list[np.ndarray]:
     """Owner arrays (cells of ``opts.spine_cell_m``, a ring of outside around them) of the
     best exact arrangements of a storey of 2 to ``opts.small_exact_max_rooms`` rooms of a

@@ -347,12 +347,3 @@ def stair_fitter(rect: tuple[float, float, float, float], doors: list, length_m:
                    for i, (_, clear) in enumerate(places))
 
     return fits
-    zones = [opening_zone(d).union(LineString(d)) for d in doors]
-    lines = [LineString(d) for d in doors]
-    for ya in (y0, y0 + h - width_m):
-        for foot, yaw in ((x0 + length_m, 0.0), (x0 + w - length_m, math.pi)):  # the box against an end wall
-            box_ = flight_rect(foot, ya, length_m, width_m, yaw)
-            clear = box_.buffer(STAIR_CLEAR_M)
-            if not any(clear.intersects(z) for z in zones) and doors_joined(rect, box_, lines):
-                return True
-    return False

@@ -1222,7 +1222,10 @@ IN_A_PLACE = re.compile(
 boxing gym under a railway arch"); the place's words name no rooms or objects."""
 _BASEMENT = re.compile(r"\b(?:basement|lower ground(?: floor)?|underground level)s?\b|(?<!wine )(?<!beer )\bcellars?\b(?! (?:bar|club|door)s?\b)")
 _ATTIC = re.compile(r"\b(?:attic|loft conversion|garret)s?\b")
-_ROOF_ROOMS = re.compile(r"\b(?:in|into|under|up in|up into|up under)\s+the\s+(?:eaves|roof space|roof)\b(?![\w-]|\s+(?:terrace|garden|deck|top)s?\b)")
+_ROOF_SPACE = r"\b(?:in|into|under|up in|up into|up under)\s+the\s+(eaves|roof space|roof)\b(?![\w-]|\s+(?:terrace|garden|deck|top)s?\b)"
+"""The space under the roof as a place ("under the eaves", "in the roof"; not "the roof
+terrace"): its one group names it (:data:`_ROOF_ROOMS`, :data:`_FLOOR_WORDS`)."""
+_ROOF_ROOMS = re.compile(_ROOF_SPACE)
 """Words that put a room under the roof ("a bedroom under the eaves", "a bedroom in the
 roof"): the attic of a house whose storeys the text does not count; the top storey of
 one it does ("a three-storey micro-house ... bedroom in the roof" has three storeys, not
@@ -1232,9 +1235,8 @@ _FLOOR_WORDS = re.compile(
     r"\b(?:on|in|at)\s+the\s+(ground|first|1st|second|2nd|third|3rd|top|upper)\s+(?:floor|storey|story|level)\b"
     r"|\b(?:on|in|at)\s+the\s+(second|2nd|third|3rd)\b(?=\s*(?:[,;.]|and\b|$))"
     r"|\b(?:on|in|into|up in|up into|down in|down into)\s+the\s+(basement|cellar|attic|garret)\b"
-    r"|\b(?:in|into|under|up in|up into|up under)\s+the\s+(eaves|roof space|roof)\b(?![\w-]|\s+(?:terrace|garden|deck|top)s?\b)"
+    rf"|{_ROOF_SPACE}"
     r"|\b(downstairs|upstairs)\b|\bup (?:the )?(stairs)\b"
-
     r"|\b(?:at|on)\s+(street|garden|ground)\s+(?:level|floor)\b|\b(underneath|beneath) (?:them|it)\b"
     r"|\bat the very (top)\b(?!\s+of)|\b(?:at|on) the (top)\b(?=\s*(?:[,;.]|and\b|$))"
     r"|(?:^|(?<=[.;]\s))(?:raised\s+|upper\s+)?(ground|first|1st|second|2nd|third|3rd|top)(?:\s+(?:floor|storey|story))?\s*:"
@@ -1246,8 +1248,8 @@ floor", "two sleeping lofts, underneath them a kitchenette", a sentence opening 
 _STOREY_NOUN = re.compile(r"\b(?:floor|storey|story|level)\b")
 """A storey's noun: "at the top" without one names a storey only in a text of several
 ("a shelf at the top" of a one-storey home names none)."""
-_FLOOR_WORD_OF = {"lower ground": "basement", "cellar": "basement", "stairs": "upstairs", "street": "ground", "garret": "attic", "eaves": "attic",
-                  "roof space": "attic", "roof": "attic", "garden": "ground", "underneath": "downstairs", "beneath": "downstairs"}
+_FLOOR_WORD_OF = {"lower ground": "basement", "cellar": "basement", "stairs": "upstairs", "street": "ground", "garret": "attic",
+                  "garden": "ground", "underneath": "downstairs", "beneath": "downstairs"}
 """Floor words read as another ("at street level" is the ground floor: a "first floor"
 named with it is the one above, British usage)."""
 _ROOF_WORDS = frozenset({"eaves", "roof space", "roof"})
@@ -1300,7 +1302,7 @@ def _find_levels(text: str, p: Parsed) -> None:
     above |= named & {"upstairs", "downstairs"} - ({"downstairs"} if p.attic else set())  # "underneath them a kitchenette": the lofts are up
     if p.storeys == 1 and (_MEZZANINE.search(text) or (above and not (one_storey and p.basement))):
         p.storeys = 2  # "downstairs" in a house with an attic: the attic is its upstairs
-    roof_word = "attic" if p.attic else "top"
+    roof_word = "attic" if p.attic else "top"  # the roof words (_ROOF_WORDS) read as one or the other
     p.floor_words = [(mt.start(), mt.end(), roof_word if g in _ROOF_WORDS else _FLOOR_WORD_OF.get(g, g))
                      for mt in _FLOOR_WORDS.finditer(text) for g in [next(g for g in mt.groups() if g)]
                      if not (p.storeys <= 1 and g == "top" and not _STOREY_NOUN.search(mt.group()))]
